@@ -1,0 +1,17 @@
+#pragma once
+// The flight software's configuration file (TOML; keys in boards/README.md).
+// Init-time only: throws config::ConfigError naming file, line and problem;
+// a configuration the firmware cannot fly safely is refused here, before launch.
+#include <filesystem>
+
+#include "glider/config/toml_document.hpp"
+#include "glider/firmware/flight_software.hpp"
+
+namespace glider::fw {
+
+// Reads the [mission], [limits], [pitch_servo] and [safety] tables. Does not
+// reject unknown keys: the caller may read its own tables first, then calls
+// doc.reject_unknown_keys().
+FlightSoftwareConfig read_flight_config(const config::TomlDocument& doc);
+
+}  // namespace glider::fw

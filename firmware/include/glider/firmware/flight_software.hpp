@@ -1,0 +1,94 @@
+#pragma once
+#include <cstdint>
+
+#include "glider/firmware/executive.hpp"
+#include "glider/firmware/pi_controller.hpp"
+#include "glider/firmware/yo_mission.hpp"
+#include "glider/hal/hal.hpp"
+
+namespace glider::fw {
+
+struct ActuatorLimits {
+  double ballast_min_cc = -250.0;
+  double ballast_max_cc = 250.0;
+  double battery_min_in = -1.0;  // full aft
+  double battery_max_in = 1.0;   // full forward
+  // The pump counts as "there" within this band; until then the pitch servo
+  // holds the battery (pitch is dominated by the moving ballast mid-inflection).
+  double ballast_settled_cc = 10.0;
+};
+
+struct FlightSoftwareConfig {
+  YoMissionConfig mission;
+  ActuatorLimits limits;
+  // Battery-slide pitch servo, error in rad, output in inches. Tuned on the
+  // SLOCUM model: ~0.6 rad of pitch per inch of battery and a pitch pendulum
+  // of ~0.4 rad/s give an integral crossover of ~0.12 rad/s, well below the
+  // pendulum; the slide's 0.05 in/s rate limit bounds the rest.
+  double pitch_kp_in_per_rad = 1.0;
+  double pitch_ki_in_per_rad_s = 0.2;
+  // First battery position of each glide (the servo starts from there and
+  // then remembers where each direction settled: the vehicle's trim).
+  double dive_battpos_in = 0.2;
+  double climb_battpos_in = -0.2;
+  double sensor_timeout_s = 10.0;    // older than this = stale -> abort
+  double depth_rate_filter_s = 4.0;  // first-order filter of d(depth)/dt
+};
+
+const char* validate(const FlightSoftwareConfig& config);
+
+// The flight software's one periodic task: read sensors, check them, run the
+// mission and the pitch servo, command the actuators, log a row. Runs in
+// constant time, allocates nothing, never throws.
+class FlightSoftware final : public PeriodicTask {
+ public:
+  FlightSoftware(const hal::Hal& hal, const FlightSoftwareConfig& config);
+
+  void run(hal::Micros now_us) override;
+
+  // The executive's overrun count goes into the log rows.
+  void attach_executive(const Executive* executive) { executive_ = executive; }
+
+  bool complete() const { return last_.complete; }
+  Phase phase() const { return last_.phase; }
+  AbortCause abort_cause() const { return last_.abort_cause; }
+  std::int32_t yos_completed() const { return last_.yos_completed; }
+  std::uint64_t log_rows_lost() const { return log_rows_lost_; }
+
+ private:
+  void update_depth_rate(const hal::DepthSample& depth);
+  double battery_command(const MissionOutputs& mission, double pitch_rad, double ballast_cc,
+                         double dt_s);
+
+  hal::Hal hal_;
+  FlightSoftwareConfig config_;
+  YoMission mission_;
+  PiController pitch_servo_;
+  const Executive* executive_ = nullptr;
+
+  MissionOutputs last_{};
+  hal::Micros last_run_us_ = 0;
+  bool has_run_ = false;
+
+  // Last valid sensor values and when they were measured.
+  double depth_m_ = 0.0;
+  hal::Micros depth_time_us_ = 0;
+  bool have_depth_ = false;
+  hal::AttitudeSample attitude_{};
+  bool have_attitude_ = false;
+
+  double depth_rate_m_s_ = 0.0;
+  bool have_depth_rate_ = false;
+  double prev_depth_m_ = 0.0;
+  hal::Micros prev_depth_time_us_ = 0;
+
+  Phase servo_phase_ = Phase::kSurface;  // glide the servo last ran in
+  double dive_trim_in_;
+  double climb_trim_in_;
+  double battery_cmd_in_ = 0.0;
+  double ballast_cmd_cc_ = 0.0;
+  bool commanded_ = false;
+  std::uint64_t log_rows_lost_ = 0;
+};
+
+}  // namespace glider::fw

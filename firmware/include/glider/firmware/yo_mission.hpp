@@ -1,0 +1,91 @@
+#pragma once
+#include <cstdint>
+
+#include "glider/hal/time.hpp"
+
+namespace glider::fw {
+
+// Values of m_depth_state as the real Slocum logs them, plus an abort state.
+enum class Phase : std::int32_t {
+  kSurface = 0,  // at the surface: before the first dive and when complete
+  kDive = 1,
+  kClimb = 2,
+  kAbort = 99,
+};
+
+enum class AbortCause : std::int32_t {
+  kNone = 0,
+  kOverdepth = 1,
+  kOvertime = 2,
+  kDepthSensor = 3,
+  kAttitudeSensor = 4,
+  kActuatorFault = 5,
+};
+
+const char* to_string(Phase phase);
+const char* to_string(AbortCause cause);
+
+struct YoMissionConfig {
+  double dive_to_m = 50.0;       // inflect to climb at this depth
+  double climb_to_m = 5.0;       // inflect to dive at this depth
+  std::int32_t yos = 3;          // dive+climb cycles, then surface
+  double surfaced_depth_m = 1.0; // shallower than this counts as surfaced
+  double dive_ballast_cc = -250.0;
+  double climb_ballast_cc = 250.0;
+  double dive_pitch_rad = -0.4537856;  // -26 deg
+  double climb_pitch_rad = 0.4537856;  // +26 deg
+  // Safety envelope (the abort sequence surfaces the vehicle).
+  double max_depth_m = 60.0;
+  double max_duration_s = 4.0 * 3600.0;
+};
+
+// Returns an empty string when the configuration is flyable, otherwise a
+// sentence naming the first problem (checked before launch, never in flight).
+const char* validate(const YoMissionConfig& config);
+
+struct MissionInputs {
+  hal::Micros now_us = 0;
+  double depth_m = 0.0;  // last valid depth
+  bool depth_ok = false;     // valid and not stale
+  bool attitude_ok = false;  // valid and not stale
+  bool actuator_fault = false;
+};
+
+struct MissionOutputs {
+  Phase phase = Phase::kSurface;
+  AbortCause abort_cause = AbortCause::kNone;
+  double ballast_cc = 0.0;
+  double pitch_target_rad = 0.0;
+  bool pitch_control = false;  // false: hold the battery where it is told
+  bool phase_changed = false;  // true on the cycle a new phase begins
+  bool complete = false;       // mission over (surfaced or aborted and up)
+  std::int32_t yos_completed = 0;
+};
+
+// The yo mission as a pure state machine: inputs in, set-points out.
+// Dive from the surface to dive_to_m, climb to climb_to_m, repeat `yos`
+// times; the last climb continues to the surface. Any sensor, actuator or
+// envelope violation latches the abort phase (full buoyancy, battery aft).
+class YoMission {
+ public:
+  explicit YoMission(const YoMissionConfig& config) : config_(config) {}
+
+  MissionOutputs update(const MissionInputs& in);
+
+  Phase phase() const { return phase_; }
+
+ private:
+  void enter(Phase phase, MissionOutputs& out);
+  AbortCause check_envelope(const MissionInputs& in) const;
+
+  YoMissionConfig config_;
+  Phase phase_ = Phase::kSurface;
+  AbortCause abort_cause_ = AbortCause::kNone;
+  bool started_ = false;
+  bool final_climb_ = false;
+  bool complete_ = false;
+  hal::Micros start_us_ = 0;
+  std::int32_t yos_completed_ = 0;
+};
+
+}  // namespace glider::fw

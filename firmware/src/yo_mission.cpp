@@ -1,0 +1,124 @@
+#include "glider/firmware/yo_mission.hpp"
+
+namespace glider::fw {
+
+const char* to_string(Phase phase) {
+  switch (phase) {
+    case Phase::kSurface: return "surface";
+    case Phase::kDive: return "dive";
+    case Phase::kClimb: return "climb";
+    case Phase::kAbort: return "abort";
+  }
+  return "?";
+}
+
+const char* to_string(AbortCause cause) {
+  switch (cause) {
+    case AbortCause::kNone: return "none";
+    case AbortCause::kOverdepth: return "overdepth";
+    case AbortCause::kOvertime: return "overtime";
+    case AbortCause::kDepthSensor: return "depth sensor invalid or stale";
+    case AbortCause::kAttitudeSensor: return "attitude sensor invalid or stale";
+    case AbortCause::kActuatorFault: return "actuator fault";
+  }
+  return "?";
+}
+
+const char* validate(const YoMissionConfig& c) {
+  if (c.yos < 1) return "yos must be at least 1";
+  if (!(c.climb_to_m > c.surfaced_depth_m)) return "climb_to_m must be deeper than surfaced_depth_m";
+  if (!(c.dive_to_m > c.climb_to_m)) return "dive_to_m must be deeper than climb_to_m";
+  if (!(c.max_depth_m > c.dive_to_m)) return "max_depth_m must be deeper than dive_to_m";
+  if (!(c.dive_ballast_cc < 0.0)) return "dive_ballast_cc must be negative (heavier)";
+  if (!(c.climb_ballast_cc > 0.0)) return "climb_ballast_cc must be positive (lighter)";
+  if (!(c.dive_pitch_rad < 0.0)) return "dive pitch must be negative (nose down)";
+  if (!(c.climb_pitch_rad > 0.0)) return "climb pitch must be positive (nose up)";
+  if (!(c.max_duration_s > 0.0)) return "max_duration_s must be positive";
+  return "";
+}
+
+AbortCause YoMission::check_envelope(const MissionInputs& in) const {
+  if (!in.depth_ok) return AbortCause::kDepthSensor;
+  if (!in.attitude_ok) return AbortCause::kAttitudeSensor;
+  if (in.actuator_fault) return AbortCause::kActuatorFault;
+  if (in.depth_m > config_.max_depth_m) return AbortCause::kOverdepth;
+  if (hal::to_seconds(in.now_us - start_us_) > config_.max_duration_s) return AbortCause::kOvertime;
+  return AbortCause::kNone;
+}
+
+void YoMission::enter(Phase phase, MissionOutputs& out) {
+  phase_ = phase;
+  out.phase_changed = true;
+}
+
+MissionOutputs YoMission::update(const MissionInputs& in) {
+  MissionOutputs out;
+  if (!started_) {
+    started_ = true;
+    start_us_ = in.now_us;
+    enter(Phase::kDive, out);
+  }
+
+  if (phase_ != Phase::kAbort && !complete_) {
+    const AbortCause cause = check_envelope(in);
+    if (cause != AbortCause::kNone) {
+      abort_cause_ = cause;
+      enter(Phase::kAbort, out);
+    }
+  }
+
+  switch (phase_) {
+    case Phase::kDive:
+      if (in.depth_m >= config_.dive_to_m) {
+        enter(Phase::kClimb, out);
+      }
+      break;
+    case Phase::kClimb:
+      if (!final_climb_ && in.depth_m <= config_.climb_to_m) {
+        ++yos_completed_;
+        if (yos_completed_ < config_.yos) {
+          enter(Phase::kDive, out);
+        } else {
+          final_climb_ = true;  // keep climbing to the surface
+        }
+      } else if (final_climb_ && in.depth_m <= config_.surfaced_depth_m) {
+        complete_ = true;
+        enter(Phase::kSurface, out);
+      }
+      break;
+    case Phase::kAbort:
+      // Stay in abort; the mission is over once the vehicle is up (a valid
+      // shallow depth), otherwise it keeps ascending as far as it knows.
+      complete_ = in.depth_ok && in.depth_m <= config_.surfaced_depth_m;
+      break;
+    case Phase::kSurface:
+      break;
+  }
+
+  out.phase = phase_;
+  out.abort_cause = abort_cause_;
+  out.yos_completed = yos_completed_;
+  out.complete = complete_;
+  switch (phase_) {
+    case Phase::kDive:
+      out.ballast_cc = config_.dive_ballast_cc;
+      out.pitch_target_rad = config_.dive_pitch_rad;
+      out.pitch_control = true;
+      break;
+    case Phase::kClimb:
+      out.ballast_cc = config_.climb_ballast_cc;
+      out.pitch_target_rad = config_.climb_pitch_rad;
+      out.pitch_control = true;
+      break;
+    case Phase::kSurface:
+    case Phase::kAbort:
+      // Full buoyancy; the flight software puts the battery aft.
+      out.ballast_cc = config_.climb_ballast_cc;
+      out.pitch_target_rad = 0.0;
+      out.pitch_control = false;
+      break;
+  }
+  return out;
+}
+
+}  // namespace glider::fw

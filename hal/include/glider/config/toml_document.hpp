@@ -1,0 +1,56 @@
+#pragma once
+// Reading the project's TOML configuration files (vehicles, missions, boards)
+// with errors that name the file, the line and the problem. Init-time only:
+// this throws and allocates, the flight loop never calls it.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glider::config {
+
+// "path:line:column: problem" (line/column omitted when not known).
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class TomlDocument {
+ public:
+  static TomlDocument load(const std::filesystem::path& path);
+  static TomlDocument parse(std::string_view text, const std::string& source_name);
+
+  TomlDocument(TomlDocument&&) noexcept;
+  TomlDocument& operator=(TomlDocument&&) noexcept;
+  ~TomlDocument();
+
+  const std::string& source() const { return source_; }
+
+  bool has(std::string_view dotted_key) const;
+  double number(std::string_view dotted_key) const;
+  double number_or(std::string_view dotted_key, double fallback) const;
+  std::int64_t integer(std::string_view dotted_key) const;
+  std::int64_t integer_or(std::string_view dotted_key, std::int64_t fallback) const;
+  std::string string(std::string_view dotted_key) const;
+  std::string string_or(std::string_view dotted_key, std::string fallback) const;
+
+  // Every leaf key of the document that no accessor has asked for is a typo
+  // or an unsupported setting: report the first one with its line.
+  void reject_unknown_keys() const;
+
+  // "file:line:col: message" for the key's value (or the file alone).
+  [[noreturn]] void fail(std::string_view dotted_key, const std::string& message) const;
+
+ private:
+  struct Impl;
+  TomlDocument(std::unique_ptr<Impl> impl, std::string source);
+  std::unique_ptr<Impl> impl_;
+  std::string source_;
+  mutable std::set<std::string, std::less<>> used_;
+};
+
+}  // namespace glider::config

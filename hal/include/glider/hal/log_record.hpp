@@ -1,0 +1,38 @@
+#pragma once
+#include <cstdint>
+
+#include "glider/hal/time.hpp"
+
+namespace glider::hal {
+
+// One row of the flight log, as the firmware knows it, in Slocum names and
+// units (see docs/flight-log.md). A field the firmware has no valid value for
+// this cycle is NaN and is written as an empty CSV field.
+struct FlightLogRecord {
+  Micros time_us = 0;            // m_present_time (mission clock)
+  double m_depth = 0.0;          // m
+  double m_depth_rate = 0.0;     // m/s, + descending
+  double m_pitch = 0.0;          // rad
+  double m_roll = 0.0;           // rad
+  double m_heading = 0.0;        // rad
+  double m_ballast_pumped = 0.0; // cc
+  double c_ballast_pumped = 0.0; // cc
+  double m_battpos = 0.0;        // in
+  double c_battpos = 0.0;        // in
+  double c_pitch = 0.0;          // rad, pitch target of the battery servo
+  std::int32_t m_depth_state = 0;   // 1 dive, 2 climb, 3 hover, 0 surface, 99 abort
+  std::int32_t x_yo_count = 0;      // completed yos in this mission
+  std::int32_t x_abort_cause = 0;   // fw::AbortCause, 0 = none
+  std::uint32_t x_loop_overruns = 0;  // executive cycles over budget, cumulative
+};
+
+// Where the firmware hands its log rows. Implementations must not block the
+// control loop (SIL: buffered file; Linux: ring buffer drained by a writer).
+// Returns false when the row could not be stored (the firmware counts it).
+class LogSink {
+ public:
+  virtual ~LogSink() = default;
+  virtual bool write(const FlightLogRecord& record) = 0;
+};
+
+}  // namespace glider::hal

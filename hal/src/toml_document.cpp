@@ -1,0 +1,140 @@
+#include "glider/config/toml_document.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace glider::config {
+
+struct TomlDocument::Impl {
+  toml::table table;
+};
+
+namespace {
+
+std::string location(const std::string& source, const toml::source_region& region) {
+  std::ostringstream out;
+  out << source;
+  if (region.begin.line > 0) {
+    out << ':' << region.begin.line << ':' << region.begin.column;
+  }
+  return out.str();
+}
+
+void collect_leaves(const toml::table& table, const std::string& prefix,
+                    std::vector<std::pair<std::string, toml::source_region>>& out) {
+  for (const auto& [key, node] : table) {
+    const std::string name = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    if (const toml::table* sub = node.as_table()) {
+      collect_leaves(*sub, name, out);
+    } else {
+      out.emplace_back(name, node.source());
+    }
+  }
+}
+
+}  // namespace
+
+TomlDocument::TomlDocument(std::unique_ptr<Impl> impl, std::string source)
+    : impl_(std::move(impl)), source_(std::move(source)) {}
+TomlDocument::TomlDocument(TomlDocument&&) noexcept = default;
+TomlDocument& TomlDocument::operator=(TomlDocument&&) noexcept = default;
+TomlDocument::~TomlDocument() = default;
+
+TomlDocument TomlDocument::load(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw ConfigError(path.string() + ": no such file");
+  }
+  try {
+    auto impl = std::make_unique<Impl>();
+    impl->table = toml::parse_file(path.string());
+    return TomlDocument(std::move(impl), path.string());
+  } catch (const toml::parse_error& error) {
+    throw ConfigError(location(path.string(), error.source()) + ": " + std::string(error.description()));
+  }
+}
+
+TomlDocument TomlDocument::parse(std::string_view text, const std::string& source_name) {
+  try {
+    auto impl = std::make_unique<Impl>();
+    impl->table = toml::parse(text, source_name);
+    return TomlDocument(std::move(impl), source_name);
+  } catch (const toml::parse_error& error) {
+    throw ConfigError(location(source_name, error.source()) + ": " + std::string(error.description()));
+  }
+}
+
+void TomlDocument::fail(std::string_view dotted_key, const std::string& message) const {
+  const auto node = impl_->table.at_path(dotted_key);
+  const std::string where = node ? location(source_, node.node()->source()) : source_;
+  throw ConfigError(where + ": " + std::string(dotted_key) + ": " + message);
+}
+
+bool TomlDocument::has(std::string_view dotted_key) const {
+  return static_cast<bool>(impl_->table.at_path(dotted_key));
+}
+
+double TomlDocument::number(std::string_view dotted_key) const {
+  const auto node = impl_->table.at_path(dotted_key);
+  if (!node) {
+    throw ConfigError(source_ + ": missing required key '" + std::string(dotted_key) + "'");
+  }
+  used_.emplace(dotted_key);
+  std::optional<double> value = node.value<double>();  // accepts integers too
+  if (!value || !node.is_number()) {
+    fail(dotted_key, "expected a number");
+  }
+  if (!std::isfinite(*value)) {
+    fail(dotted_key, "must be finite");
+  }
+  return *value;
+}
+
+double TomlDocument::number_or(std::string_view dotted_key, double fallback) const {
+  return has(dotted_key) ? number(dotted_key) : fallback;
+}
+
+std::int64_t TomlDocument::integer(std::string_view dotted_key) const {
+  const auto node = impl_->table.at_path(dotted_key);
+  if (!node) {
+    throw ConfigError(source_ + ": missing required key '" + std::string(dotted_key) + "'");
+  }
+  used_.emplace(dotted_key);
+  if (!node.is_integer()) {
+    fail(dotted_key, "expected an integer");
+  }
+  return *node.value<std::int64_t>();
+}
+
+std::int64_t TomlDocument::integer_or(std::string_view dotted_key, std::int64_t fallback) const {
+  return has(dotted_key) ? integer(dotted_key) : fallback;
+}
+
+std::string TomlDocument::string(std::string_view dotted_key) const {
+  const auto node = impl_->table.at_path(dotted_key);
+  if (!node) {
+    throw ConfigError(source_ + ": missing required key '" + std::string(dotted_key) + "'");
+  }
+  used_.emplace(dotted_key);
+  if (!node.is_string()) {
+    fail(dotted_key, "expected a string");
+  }
+  return *node.value<std::string>();
+}
+
+std::string TomlDocument::string_or(std::string_view dotted_key, std::string fallback) const {
+  return has(dotted_key) ? string(dotted_key) : std::move(fallback);
+}
+
+void TomlDocument::reject_unknown_keys() const {
+  std::vector<std::pair<std::string, toml::source_region>> leaves;
+  collect_leaves(impl_->table, "", leaves);
+  for (const auto& [name, region] : leaves) {
+    if (used_.find(name) == used_.end()) {
+      throw ConfigError(location(source_, region) + ": unknown key '" + name + "'");
+    }
+  }
+}
+
+}  // namespace glider::config

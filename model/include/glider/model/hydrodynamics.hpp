@@ -1,0 +1,22 @@
+#pragma once
+#include "glider/model/vehicle.hpp"
+
+namespace glider::model {
+
+// Force coefficients at angle of attack `alpha_rad` (any value in [-pi, pi]).
+// Up to fit_valid_to_rad they are the identified polynomial fits (paper 000:
+// C_L = 11.76 a + 4.6 a|a|, C_D = 0.214 + 32.3 a^2); beyond crossflow_from_rad
+// a crossflow (normal-force) model, so that inflections, the surface and
+// stalls stay physical; in between a smooth blend.
+struct ForceCoefficients {
+  double lift = 0.0;
+  double drag = 0.0;
+};
+
+ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad);
+
+// Viscous pitching moment coefficient (m), without damping and without Munk:
+// cm0 + cm_alpha a inside the fit, cm_alpha sin a cos a in crossflow.
+double moment_coefficient(const Hydrodynamics& h, double alpha_rad);
+
+}  // namespace glider::model

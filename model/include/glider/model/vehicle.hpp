@@ -1,0 +1,79 @@
+#pragma once
+// Vehicle parameters of the vertical-plane Leonard-Graver glider model, in SI
+// units. Body frame: origin at the centre of buoyancy (CB), x forward along the
+// hull, z down when level (Graver et al. 2003, paper 000, Fig. 5).
+// The file format that fills this struct is documented in boards/README.md.
+#include <string>
+
+namespace glider::model {
+
+struct PointMass {
+  double mass_kg = 0.0;
+  double x_m = 0.0;
+  double z_m = 0.0;
+};
+
+// The pitch battery: a point mass sliding along x, driven by a position servo.
+struct SlidingMass {
+  double mass_kg = 0.0;
+  double x_at_zero_m = 0.0;  // x of the mass when the slide reads 0
+  double z_m = 0.0;
+  double travel_min_m = 0.0;  // slide position limits (m_battpos / 39.37)
+  double travel_max_m = 0.0;
+  double rate_m_s = 0.0;      // slide speed
+};
+
+// The buoyancy engine: pumped volume at a point of the body (SLOCUM: nose).
+// Positive pumped volume = water out = more buoyant (Slocum's sign).
+struct BuoyancyEngine {
+  double x_m = 0.0;
+  double z_m = 0.0;
+  double volume_min_m3 = 0.0;
+  double volume_max_m3 = 0.0;
+  double rate_m3_s = 0.0;
+};
+
+// Quasi-steady hydrodynamics, coefficients by the reference (frontal) area:
+// L = q A C_L(a), D = q A C_D(a), M = q A C_M(a) + damping, q = rho V^2 / 2.
+struct Hydrodynamics {
+  double reference_area_m2 = 0.0;
+  double cl_alpha = 0.0;            // C_L = cl_alpha a + cl_alpha_abs_alpha a|a|
+  double cl_alpha_abs_alpha = 0.0;
+  double cd0 = 0.0;                 // C_D = cd0 + cd_alpha2 a^2
+  double cd_alpha2 = 0.0;
+  double cm0_m = 0.0;               // viscous moment only: the Munk moment comes
+  double cm_alpha_m = 0.0;          //   from the added masses in the dynamics
+  double cmq_m2 = 0.0;              // pitch damping: M_q = rho A V cmq q / 2
+  double crossflow_cn90 = 0.0;      // normal-force coefficient broadside (a = 90 deg)
+  double fit_valid_to_rad = 0.0;    // the fits above hold up to |a| = this ...
+  double crossflow_from_rad = 0.0;  // ... and crossflow alone beyond this
+};
+
+struct VehicleParams {
+  std::string name;
+  std::string description;
+  double hull_mass_kg = 0.0;         // uniformly distributed: at the CB
+  double hull_inertia_kg_m2 = 0.0;   // pitch inertia of the hull mass about the CB
+  double hull_diameter_m = 0.0;      // for the surface (partial immersion) model
+  PointMass offset;                  // fixed trim mass m_w at r_w
+  SlidingMass battery;
+  BuoyancyEngine ballast;
+  double added_mass_x_kg = 0.0;      // m_f1
+  double added_mass_z_kg = 0.0;      // m_f3
+  double added_inertia_kg_m2 = 0.0;  // J_f2
+  Hydrodynamics hydro;
+  double trim_density_kg_m3 = 0.0;   // water density at which the net buoyancy below holds
+  double buoyancy_offset_kg = 0.0;   // net weight at zero ballast and that density (- = light)
+};
+
+// Mass of the vehicle at zero pumped volume (hull + offset + battery).
+double dry_mass_kg(const VehicleParams& v);
+
+// Displaced volume that makes the vehicle weigh buoyancy_offset_kg in water
+// of trim_density_kg_m3 at zero pumped volume.
+double displaced_volume_m3(const VehicleParams& v);
+
+// Empty string when the parameters are physically usable, else the problem.
+std::string validate(const VehicleParams& v);
+
+}  // namespace glider::model

@@ -1,0 +1,21 @@
+#pragma once
+// The vehicle parameter file (TOML, SI units, keys documented in
+// boards/README.md). Init-time only: throws config::ConfigError naming the
+// file, the line and the problem.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "glider/model/vehicle.hpp"
+
+namespace glider::model {
+
+VehicleParams load_vehicle_file(const std::filesystem::path& path);
+VehicleParams parse_vehicle_text(const std::string& text, const std::string& source_name);
+
+// Every parameter as (dotted key of the file, value), in file order: the
+// `# vehicle.KEY: value` metadata of flight logs, readable back by the tools.
+std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleParams& v);
+
+}  // namespace glider::model

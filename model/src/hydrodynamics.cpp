@@ -1,0 +1,54 @@
+#include "glider/model/hydrodynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glider::model {
+namespace {
+
+// 1 inside the fit's range, 0 in the crossflow range, C1-smooth in between.
+double fit_weight(const Hydrodynamics& h, double alpha_rad) {
+  const double a = std::abs(alpha_rad);
+  if (a <= h.fit_valid_to_rad) return 1.0;
+  if (a >= h.crossflow_from_rad) return 0.0;
+  const double u = (a - h.fit_valid_to_rad) / (h.crossflow_from_rad - h.fit_valid_to_rad);
+  return 1.0 - u * u * (3.0 - 2.0 * u);
+}
+
+}  // namespace
+
+ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad) {
+  const double w = fit_weight(h, alpha_rad);
+  ForceCoefficients fit{};
+  if (w > 0.0) {
+    // Beyond its range the polynomial is evaluated at the range's edge (it is
+    // then only a fading part of the blend).
+    const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
+    fit.lift = h.cl_alpha * a + h.cl_alpha_abs_alpha * a * std::abs(a);
+    fit.drag = h.cd0 + h.cd_alpha2 * a * a;
+  }
+  if (w >= 1.0) return fit;
+  // Crossflow: normal force ~ sin a |sin a|, axial (skin) force ~ cos a |cos a|,
+  // rotated into lift (normal to the flow) and drag (along the flow).
+  const double s = std::sin(alpha_rad);
+  const double c = std::cos(alpha_rad);
+  const double normal = h.crossflow_cn90 * s * std::abs(s);
+  const double axial = h.cd0 * c * std::abs(c);
+  const ForceCoefficients cross{normal * c - axial * s, normal * s + axial * c};
+  return {w * fit.lift + (1.0 - w) * cross.lift, w * fit.drag + (1.0 - w) * cross.drag};
+}
+
+double moment_coefficient(const Hydrodynamics& h, double alpha_rad) {
+  const double w = fit_weight(h, alpha_rad);
+  const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
+  const double fit = h.cm0_m + h.cm_alpha_m * a;
+  if (w >= 1.0) return fit;
+  // Past the fit the stabilising moment of wings and tail must not vanish
+  // (else the Munk moment alone would pitch the vehicle into a deep stall):
+  // it keeps the slope at small angles and the sin a cos a shape of a
+  // crossflow moment, zero broadside.
+  const double cross = h.cm_alpha_m * std::sin(alpha_rad) * std::cos(alpha_rad);
+  return w * fit + (1.0 - w) * cross;
+}
+
+}  // namespace glider::model

@@ -1,0 +1,40 @@
+#include "glider/model/vehicle.hpp"
+
+namespace glider::model {
+
+double dry_mass_kg(const VehicleParams& v) {
+  return v.hull_mass_kg + v.offset.mass_kg + v.battery.mass_kg;
+}
+
+double displaced_volume_m3(const VehicleParams& v) {
+  return (dry_mass_kg(v) - v.buoyancy_offset_kg) / v.trim_density_kg_m3;
+}
+
+std::string validate(const VehicleParams& v) {
+  if (!(v.hull_mass_kg > 0.0)) return "mass.hull_kg must be positive";
+  if (!(v.hull_inertia_kg_m2 > 0.0)) return "mass.hull_inertia_kg_m2 must be positive";
+  if (!(v.offset.mass_kg >= 0.0)) return "mass.offset_kg must not be negative";
+  if (!(v.battery.mass_kg > 0.0)) return "battery.mass_kg must be positive";
+  if (!(v.battery.travel_min_m < v.battery.travel_max_m)) return "battery travel: min must be below max";
+  if (!(v.battery.rate_m_s > 0.0)) return "battery.rate_m_s must be positive";
+  if (!(v.ballast.volume_min_m3 < v.ballast.volume_max_m3)) return "ballast volume: min must be below max";
+  if (!(v.ballast.rate_m3_s > 0.0)) return "ballast.rate_m3_s must be positive";
+  if (!(v.added_mass_x_kg >= 0.0 && v.added_mass_z_kg >= 0.0 && v.added_inertia_kg_m2 >= 0.0)) {
+    return "added masses and inertia must not be negative";
+  }
+  if (!(v.hull_diameter_m > 0.0)) return "hull.diameter_m must be positive";
+  const Hydrodynamics& h = v.hydro;
+  if (!(h.reference_area_m2 > 0.0)) return "hydrodynamics.reference_area_m2 must be positive";
+  if (!(h.cd0 > 0.0)) return "hydrodynamics.cd0 must be positive";
+  if (!(h.cmq_m2 <= 0.0)) return "hydrodynamics.cmq_m2 must not be positive (damping)";
+  if (!(h.fit_valid_to_rad > 0.0 && h.crossflow_from_rad > h.fit_valid_to_rad)) {
+    return "hydrodynamics: need 0 < fit_valid_to_rad < crossflow_from_rad";
+  }
+  if (!(v.trim_density_kg_m3 > 900.0 && v.trim_density_kg_m3 < 1100.0)) {
+    return "buoyancy.trim_density_kg_m3 must be a water density (900..1100)";
+  }
+  if (!(displaced_volume_m3(v) > 0.0)) return "displaced volume must be positive";
+  return "";
+}
+
+}  // namespace glider::model

@@ -1,0 +1,62 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "glider/hal/log_record.hpp"
+
+namespace glider::sil {
+
+struct GlideStats {
+  std::uint64_t samples = 0;
+  double pitch_sum_rad = 0.0;
+  double depth_rate_sum_m_s = 0.0;
+  double max_pitch_error_rad = 0.0;  // |m_pitch - c_pitch| on settled samples
+  double mean_pitch_rad() const { return samples ? pitch_sum_rad / static_cast<double>(samples) : 0.0; }
+  double mean_depth_rate_m_s() const {
+    return samples ? depth_rate_sum_m_s / static_cast<double>(samples) : 0.0;
+  }
+};
+
+// What the summary and the SIL tests look at, computed from the log rows as
+// they are written. "Settled" = at least settle_s into a dive or climb.
+class FlightStats final : public hal::LogSink {
+ public:
+  explicit FlightStats(double settle_s = 60.0) : settle_s_(settle_s) {}
+
+  bool write(const hal::FlightLogRecord& record) override;
+
+  const GlideStats& dives() const { return dives_; }
+  const GlideStats& climbs() const { return climbs_; }
+  std::int32_t yos() const { return yos_; }
+  // Depth of every inflection: the bottom of each dive, the top of each climb.
+  const std::vector<double>& inflection_depths_m() const { return inflections_; }
+  double max_depth_m() const { return max_depth_; }
+
+ private:
+  double settle_s_;
+  GlideStats dives_;
+  GlideStats climbs_;
+  std::int32_t yos_ = 0;
+  std::int32_t phase_ = -1;
+  hal::Micros phase_start_us_ = 0;
+  double extreme_depth_ = 0.0;
+  double max_depth_ = 0.0;
+  std::vector<double> inflections_;
+};
+
+// Hands every row to two sinks (e.g. the CSV file and the statistics).
+class TeeLogSink final : public hal::LogSink {
+ public:
+  TeeLogSink(hal::LogSink& first, hal::LogSink& second) : first_(first), second_(second) {}
+  bool write(const hal::FlightLogRecord& record) override {
+    const bool a = first_.write(record);
+    const bool b = second_.write(record);
+    return a && b;
+  }
+
+ private:
+  hal::LogSink& first_;
+  hal::LogSink& second_;
+};
+
+}  // namespace glider::sil

@@ -1,0 +1,51 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "glider/firmware/executive.hpp"
+#include "glider/firmware/flight_software.hpp"
+#include "glider/model/environment.hpp"
+#include "glider/model/simulator.hpp"
+#include "glider/model/vehicle.hpp"
+#include "glider/sil/csv_flight_log.hpp"
+#include "glider/sil/flight_stats.hpp"
+#include "glider/sil/sim_hal.hpp"
+
+namespace glider::sil {
+
+struct ScenarioOptions {
+  std::uint64_t seed = 1;
+  double heading_deg = 90.0;
+  SensorNoise noise{};
+  model::Environment environment{};
+  double max_sim_time_s = 6.0 * 3600.0;  // the runner's own stop, beyond the mission's
+  hal::Micros period_us = fw::Executive::kDefaultPeriodUs;
+  std::string log_path;  // empty: no CSV file
+  Metadata metadata;     // extra `# key: value` lines (vehicle.* are added)
+  // Called before every firmware cycle with the simulated time: tests inject
+  // faults through it.
+  std::function<void(double sim_time_s, SimHal& hal)> before_cycle;
+};
+
+struct ScenarioResult {
+  bool completed = false;  // the firmware declared the mission over
+  fw::Phase final_phase = fw::Phase::kSurface;
+  fw::AbortCause abort_cause = fw::AbortCause::kNone;
+  std::int32_t yos = 0;
+  double sim_time_s = 0.0;
+  model::Truth final_truth;  // where the vehicle really is at the end
+  FlightStats stats;
+  fw::ExecutiveStats executive;
+  std::uint64_t log_rows = 0;
+  std::uint64_t log_rows_lost = 0;
+  std::string error;  // set when the run could not start or the log failed
+};
+
+// Flies the flight software against the model in lockstep: one firmware
+// cycle, then the plant advances one period. Deterministic for a given
+// vehicle, configuration and options.
+ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::FlightSoftwareConfig& config,
+                            const ScenarioOptions& options);
+
+}  // namespace glider::sil

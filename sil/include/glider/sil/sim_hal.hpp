@@ -1,0 +1,79 @@
+#pragma once
+#include <cstdint>
+#include <random>
+
+#include "glider/hal/attitude_sensor.hpp"
+#include "glider/hal/battery_slide.hpp"
+#include "glider/hal/buoyancy_pump.hpp"
+#include "glider/hal/depth_sensor.hpp"
+#include "glider/model/simulator.hpp"
+#include "glider/sil/sim_clock.hpp"
+
+namespace glider::sil {
+
+// Measurement noise of the simulated sensors (1 sigma). Defaults are those of
+// a Slocum's pressure sensor and compass as seen in the real logs.
+struct SensorNoise {
+  double depth_m = 0.01;
+  double pitch_rad = 0.0017;  // 0.1 deg
+  double roll_rad = 0.0017;
+  double heading_rad = 0.0035;
+};
+
+// Faults a test can switch on to exercise the firmware's abort paths.
+struct FaultInjection {
+  bool depth_invalid = false;
+  bool attitude_invalid = false;
+  bool pump_fault = false;
+  bool battery_fault = false;
+};
+
+// The HAL implemented on the vehicle model. Deterministic: the noise comes
+// from a seeded generator with a portable normal transform (Box-Muller on
+// mt19937_64), so logs are bit-identical across runs and machines.
+class SimHal final : public hal::DepthSensor,
+                     public hal::BuoyancyPump,
+                     public hal::BatterySlide {
+ public:
+  SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
+         double heading_rad);
+
+  hal::DepthSample read() override;
+  hal::AttitudeSample read_attitude();
+
+  void command_volume_cc(double volume_cc) override;
+  hal::ActuatorReading read_volume_cc() override;
+  void command_position_in(double position_in) override;
+  hal::ActuatorReading read_position_in() override;
+
+  FaultInjection& faults() { return faults_; }
+
+  // AttitudeSensor::read() would clash with DepthSensor::read(): the attitude
+  // sensor is a small port object.
+  hal::DepthSensor& depth() { return *this; }
+  hal::AttitudeSensor& attitude() { return attitude_port_; }
+
+ private:
+  class AttitudePort final : public hal::AttitudeSensor {
+   public:
+    explicit AttitudePort(SimHal& owner) : owner_(owner) {}
+    hal::AttitudeSample read() override { return owner_.read_attitude(); }
+
+   private:
+    SimHal& owner_;
+  };
+
+  double gaussian();
+
+  model::GliderSimulator& sim_;
+  const SimClock& clock_;
+  SensorNoise noise_;
+  std::mt19937_64 rng_;
+  double heading_rad_;
+  FaultInjection faults_{};
+  AttitudePort attitude_port_{*this};
+  bool has_spare_ = false;
+  double spare_ = 0.0;
+};
+
+}  // namespace glider::sil

@@ -1,0 +1,133 @@
+#include "glider/sil/csv_flight_log.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "glider/sil/units.hpp"
+
+namespace glider::sil {
+namespace {
+
+void append_number(std::string& line, double value) {
+  if (std::isfinite(value)) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+    line.append(buffer, result.ptr);
+  }
+  line.push_back(',');
+}
+
+void append_integer(std::string& line, long long value) {
+  char buffer[24];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  line.append(buffer, result.ptr);
+  line.push_back(',');
+}
+
+// Microseconds as exact decimal seconds ("12.5", "3").
+void append_time(std::string& line, hal::Micros us) {
+  append_integer(line, us / hal::kMicrosPerSecond);
+  line.pop_back();
+  long long fraction = us % hal::kMicrosPerSecond;
+  if (fraction != 0) {
+    char digits[7];
+    for (int i = 5; i >= 0; --i) {
+      digits[i] = static_cast<char>('0' + fraction % 10);
+      fraction /= 10;
+    }
+    int length = 6;
+    while (length > 0 && digits[length - 1] == '0') --length;
+    line.push_back('.');
+    line.append(digits, static_cast<std::size_t>(length));
+  }
+  line.push_back(',');
+}
+
+}  // namespace
+
+const char* CsvFlightLog::header() {
+  return "m_present_time,m_depth,m_depth_rate,m_pitch,m_roll,m_heading,m_ballast_pumped,c_ballast_pumped,"
+         "m_battpos,c_battpos,c_pitch,m_depth_state,x_yo_count,x_abort_cause,x_loop_overruns,"
+         "sim_x_m,sim_depth_m,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,sim_glide_path_rad,"
+         "sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,sim_ballast_pumped_cc,"
+         "sim_battpos_in,sim_u_water_m_s,sim_w_water_m_s";
+}
+
+CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim)
+    : path_(path), out_(path, std::ios::out | std::ios::trunc), sim_(sim) {
+  if (!out_) {
+    ok_ = false;
+    error_ = path + ": cannot open for writing: " + std::strerror(errno);
+    return;
+  }
+  for (const auto& [key, value] : metadata) {
+    out_ << "# " << key << ": " << value << '\n';
+  }
+  out_ << header() << '\n';
+  line_.reserve(512);
+  ok_ = static_cast<bool>(out_);
+  if (!ok_) error_ = path + ": write failed";
+}
+
+bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
+  if (!ok_) return false;
+  const model::Truth t = sim_.truth();
+  const model::Environment& env = sim_.dynamics().environment();
+  line_.clear();
+  append_time(line_, r.time_us);
+  append_number(line_, r.m_depth);
+  append_number(line_, r.m_depth_rate);
+  append_number(line_, r.m_pitch);
+  append_number(line_, r.m_roll);
+  append_number(line_, r.m_heading);
+  append_number(line_, r.m_ballast_pumped);
+  append_number(line_, r.c_ballast_pumped);
+  append_number(line_, r.m_battpos);
+  append_number(line_, r.c_battpos);
+  append_number(line_, r.c_pitch);
+  append_integer(line_, r.m_depth_state);
+  append_integer(line_, r.x_yo_count);
+  append_integer(line_, r.x_abort_cause);
+  append_integer(line_, r.x_loop_overruns);
+  append_number(line_, t.x_m);
+  append_number(line_, t.depth_m);
+  append_number(line_, t.pitch_rad);
+  append_number(line_, t.speed_m_s);
+  append_number(line_, t.alpha_rad);
+  append_number(line_, t.glide_path_rad);
+  append_number(line_, t.horizontal_speed_m_s);
+  append_number(line_, t.depth_rate_m_s);
+  append_number(line_, t.net_buoyancy_kg);
+  append_number(line_, m3_to_cc(t.pumped_volume_m3));
+  append_number(line_, m_to_in(t.battery_pos_m));
+  append_number(line_, env.current_along_track_m_s);
+  append_number(line_, env.vertical_velocity_m_s);
+  line_.back() = '\n';
+  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+  if (!out_) {
+    ok_ = false;
+    error_ = path_ + ": write failed after " + std::to_string(rows_) + " rows: " + std::strerror(errno);
+    return false;
+  }
+  ++rows_;
+  return true;
+}
+
+bool CsvFlightLog::close() {
+  if (out_.is_open()) {
+    out_.flush();
+    if (!out_ && ok_) {
+      ok_ = false;
+      error_ = path_ + ": flush failed: " + std::strerror(errno);
+    }
+    out_.close();
+    if (out_.fail() && ok_) {
+      ok_ = false;
+      error_ = path_ + ": close failed";
+    }
+  }
+  return ok_;
+}
+
+}  // namespace glider::sil

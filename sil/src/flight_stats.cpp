@@ -1,0 +1,40 @@
+#include "glider/sil/flight_stats.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "glider/firmware/yo_mission.hpp"
+
+namespace glider::sil {
+
+bool FlightStats::write(const hal::FlightLogRecord& r) {
+  const std::int32_t dive = static_cast<std::int32_t>(fw::Phase::kDive);
+  const std::int32_t climb = static_cast<std::int32_t>(fw::Phase::kClimb);
+  if (r.m_depth_state != phase_) {
+    if (phase_ == dive || phase_ == climb) {
+      inflections_.push_back(extreme_depth_);
+    }
+    phase_ = r.m_depth_state;
+    phase_start_us_ = r.time_us;
+    extreme_depth_ = std::isfinite(r.m_depth) ? r.m_depth : 0.0;
+  }
+  yos_ = std::max(yos_, r.x_yo_count);
+  if (std::isfinite(r.m_depth)) {
+    max_depth_ = std::max(max_depth_, r.m_depth);
+    extreme_depth_ = phase_ == dive ? std::max(extreme_depth_, r.m_depth) : std::min(extreme_depth_, r.m_depth);
+  }
+  const bool settled = hal::to_seconds(r.time_us - phase_start_us_) >= settle_s_;
+  if (settled && (phase_ == dive || phase_ == climb) && std::isfinite(r.m_pitch) &&
+      std::isfinite(r.m_depth_rate)) {
+    GlideStats& s = phase_ == dive ? dives_ : climbs_;
+    ++s.samples;
+    s.pitch_sum_rad += r.m_pitch;
+    s.depth_rate_sum_m_s += r.m_depth_rate;
+    if (std::isfinite(r.c_pitch)) {
+      s.max_pitch_error_rad = std::max(s.max_pitch_error_rad, std::abs(r.m_pitch - r.c_pitch));
+    }
+  }
+  return true;
+}
+
+}  // namespace glider::sil

@@ -1,0 +1,100 @@
+#include "glider/sil/scenario.hpp"
+
+#include <array>
+#include <numbers>
+#include <optional>
+
+#include "glider/model/simulator.hpp"
+#include "glider/model/vehicle_file.hpp"
+#include "glider/sil/units.hpp"
+
+namespace glider::sil {
+namespace {
+
+// The firmware must not be configured to drive the servos past the vehicle's
+// real travel: refuse such a pairing before launch.
+std::string check_limits(const model::VehicleParams& v, const fw::ActuatorLimits& l) {
+  const double tolerance = 1e-9;
+  if (cc_to_m3(l.ballast_min_cc) < v.ballast.volume_min_m3 - tolerance ||
+      cc_to_m3(l.ballast_max_cc) > v.ballast.volume_max_m3 + tolerance) {
+    return "firmware ballast limits exceed the vehicle's buoyancy engine";
+  }
+  if (in_to_m(l.battery_min_in) < v.battery.travel_min_m - tolerance ||
+      in_to_m(l.battery_max_in) > v.battery.travel_max_m + tolerance) {
+    return "firmware battery limits exceed the vehicle's slide travel";
+  }
+  return "";
+}
+
+class NullLogSink final : public hal::LogSink {
+ public:
+  bool write(const hal::FlightLogRecord&) override { return true; }
+};
+
+}  // namespace
+
+ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::FlightSoftwareConfig& config,
+                            const ScenarioOptions& options) {
+  ScenarioResult result;
+  result.error = check_limits(vehicle, config.limits);
+  if (result.error.empty()) {
+    const char* problem = fw::validate(config);
+    if (problem[0] != '\0') result.error = std::string("mission refused: ") + problem;
+  }
+  if (!result.error.empty()) return result;
+
+  model::GliderSimulator sim(vehicle, options.environment);
+  sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0);
+  SimClock clock;
+  SimHal sim_hal(sim, clock, options.noise, options.seed, options.heading_deg * std::numbers::pi / 180.0);
+
+  Metadata metadata = options.metadata;
+  metadata.emplace_back("seed", std::to_string(options.seed));
+  for (auto& entry : model::vehicle_metadata(vehicle)) metadata.push_back(std::move(entry));
+
+  NullLogSink no_file;
+  std::optional<CsvFlightLog> csv;
+  if (!options.log_path.empty()) {
+    csv.emplace(options.log_path, metadata, sim);
+    if (!csv->ok()) {
+      result.error = csv->error();
+      return result;
+    }
+  }
+  hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
+  TeeLogSink log(file_sink, result.stats);
+
+  const hal::Hal hal{clock, sim_hal.depth(), sim_hal.attitude(), sim_hal, sim_hal, log};
+  fw::FlightSoftware flight(hal, config);
+  const std::array<fw::TaskSlot, 1> tasks{{{"flight", &flight, 1, options.period_us / 2}}};
+  fw::Executive executive(clock, tasks, options.period_us);
+  flight.attach_executive(&executive);
+
+  const double period_s = hal::to_seconds(options.period_us);
+  while (sim.time_s() <= options.max_sim_time_s) {
+    if (options.before_cycle) options.before_cycle(sim.time_s(), sim_hal);
+    executive.step();
+    if (flight.complete()) break;
+    sim.advance(period_s);
+    clock.advance(options.period_us);
+  }
+
+  result.completed = flight.complete();
+  result.final_phase = flight.phase();
+  result.abort_cause = flight.abort_cause();
+  result.yos = flight.yos_completed();
+  result.sim_time_s = sim.time_s();
+  result.final_truth = sim.truth();
+  result.executive = executive.stats();
+  result.log_rows_lost = flight.log_rows_lost();
+  if (csv) {
+    result.log_rows = csv->rows();
+    if (!csv->close()) result.error = csv->error();
+  }
+  if (result.error.empty() && result.log_rows_lost > 0) {
+    result.error = std::to_string(result.log_rows_lost) + " log rows could not be written";
+  }
+  return result;
+}
+
+}  // namespace glider::sil

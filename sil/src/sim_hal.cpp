@@ -1,0 +1,72 @@
+#include "glider/sil/sim_hal.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "glider/sil/units.hpp"
+
+namespace glider::sil {
+
+SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
+               double heading_rad)
+    : sim_(sim), clock_(clock), noise_(noise), rng_(seed), heading_rad_(heading_rad) {}
+
+double SimHal::gaussian() {
+  if (has_spare_) {
+    has_spare_ = false;
+    return spare_;
+  }
+  // Box-Muller on 53-bit uniforms: the same numbers on every platform, which
+  // std::normal_distribution does not promise.
+  constexpr double kScale = 1.0 / 9007199254740992.0;  // 2^-53
+  const double u1 = (static_cast<double>(rng_() >> 11) + 0.5) * kScale;
+  const double u2 = static_cast<double>(rng_() >> 11) * kScale;
+  const double radius = std::sqrt(-2.0 * std::log(u1));
+  const double angle = 2.0 * std::numbers::pi * u2;
+  spare_ = radius * std::sin(angle);
+  has_spare_ = true;
+  return radius * std::cos(angle);
+}
+
+hal::DepthSample SimHal::read() {
+  hal::DepthSample sample;
+  sample.time_us = clock_.now_us();
+  sample.depth_m = sim_.state()[model::kZ] + noise_.depth_m * gaussian();
+  sample.valid = !faults_.depth_invalid;
+  return sample;
+}
+
+hal::AttitudeSample SimHal::read_attitude() {
+  hal::AttitudeSample sample;
+  sample.time_us = clock_.now_us();
+  sample.pitch_rad = sim_.state()[model::kTheta] + noise_.pitch_rad * gaussian();
+  sample.roll_rad = noise_.roll_rad * gaussian();
+  const double two_pi = 2.0 * std::numbers::pi;
+  sample.heading_rad = std::fmod(heading_rad_ + noise_.heading_rad * gaussian() + two_pi, two_pi);
+  sample.valid = !faults_.attitude_invalid;
+  return sample;
+}
+
+void SimHal::command_volume_cc(double volume_cc) { sim_.command_pumped_volume_m3(cc_to_m3(volume_cc)); }
+
+hal::ActuatorReading SimHal::read_volume_cc() {
+  hal::ActuatorReading reading;
+  reading.time_us = clock_.now_us();
+  reading.position = m3_to_cc(sim_.pump().position());
+  reading.valid = true;
+  reading.fault = faults_.pump_fault;
+  return reading;
+}
+
+void SimHal::command_position_in(double position_in) { sim_.command_battery_pos_m(in_to_m(position_in)); }
+
+hal::ActuatorReading SimHal::read_position_in() {
+  hal::ActuatorReading reading;
+  reading.time_us = clock_.now_us();
+  reading.position = m_to_in(sim_.battery().position());
+  reading.valid = true;
+  reading.fault = faults_.battery_fault;
+  return reading;
+}
+
+}  // namespace glider::sil

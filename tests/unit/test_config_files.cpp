@@ -1,0 +1,137 @@
+#include <CppUTest/TestHarness.h>
+
+#include <fstream>
+#include <algorithm>
+#include <sstream>
+#include <string>
+
+#include "glider/config/toml_document.hpp"
+#include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/model/vehicle_file.hpp"
+
+using glider::config::ConfigError;
+using glider::config::TomlDocument;
+
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+const std::string kVehicle = GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml";
+const std::string kMission = GLIDER_SOURCE_DIR "/boards/missions/demo_yo.toml";
+
+// The error message a vehicle text produces (empty if it loads).
+std::string vehicle_error(const std::string& text) {
+  try {
+    glider::model::parse_vehicle_text(text, "bad.toml");
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+std::string mission_error(const std::string& text) {
+  try {
+    const TomlDocument doc = TomlDocument::parse(text, "bad_mission.toml");
+    glider::fw::read_flight_config(doc);
+    doc.reject_unknown_keys();
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+void replace(std::string& text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  CHECK_TRUE(at != std::string::npos);
+  text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_GROUP(ConfigFiles) {
+  std::string vehicle = read_text(kVehicle);
+  std::string mission = read_text(kMission);
+};
+
+TEST(ConfigFiles, ShippedFilesLoad) {
+  const glider::model::VehicleParams v = glider::model::load_vehicle_file(kVehicle);
+  STRCMP_EQUAL("slocum_we01", v.name.c_str());
+  DOUBLES_EQUAL(9.1, v.battery.mass_kg, 0.0);
+  DOUBLES_EQUAL(52.0, glider::model::dry_mass_kg(v), 1e-9);
+  STRCMP_EQUAL("", mission_error(mission).c_str());
+}
+
+TEST(ConfigFiles, MetadataRoundTripsEveryParameter) {
+  const glider::model::VehicleParams v = glider::model::load_vehicle_file(kVehicle);
+  const auto meta = glider::model::vehicle_metadata(v);
+  // Rebuild a vehicle file from the metadata and load it again.
+  std::string rebuilt;
+  std::string table;
+  for (const auto& [key, value] : meta) {
+    const std::size_t dot = key.rfind('.');
+    const std::string section = key.substr(0, dot);
+    if (section != table) {
+      rebuilt += "[" + section + "]\n";
+      table = section;
+    }
+    const bool text = key == "vehicle.name";
+    rebuilt += key.substr(dot + 1) + " = " + (text ? "\"" + value + "\"" : value) + "\n";
+  }
+  const glider::model::VehicleParams back = glider::model::parse_vehicle_text(rebuilt, "rebuilt.toml");
+  DOUBLES_EQUAL(v.hydro.cd0, back.hydro.cd0, 0.0);
+  DOUBLES_EQUAL(v.battery.x_at_zero_m, back.battery.x_at_zero_m, 0.0);
+  DOUBLES_EQUAL(v.buoyancy_offset_kg, back.buoyancy_offset_kg, 0.0);
+}
+
+TEST(ConfigFiles, UnknownKeyNamesFileAndLine) {
+  replace(vehicle, "cd0 = 0.214", "cd_0 = 0.214");
+  const std::string error = vehicle_error(vehicle);
+  // The misspelt key is reported as missing (required) first.
+  CHECK(error.find("hydrodynamics.cd0") != std::string::npos);
+  std::string extra = read_text(kVehicle) + "\n[hydrodynamics.extra]\nfoo = 1\n";
+  const std::string unknown = vehicle_error(extra);
+  CHECK(unknown.find("bad.toml:") == 0);
+  CHECK(unknown.find("unknown key 'hydrodynamics.extra.foo'") != std::string::npos);
+  const std::size_t lines = static_cast<std::size_t>(std::count(extra.begin(), extra.end(), '\n'));
+  CHECK(unknown.find(":" + std::to_string(lines) + ":") != std::string::npos);  // the last line
+}
+
+TEST(ConfigFiles, WrongTypeNamesTheLine) {
+  replace(vehicle, "mass_kg = 9.1", "mass_kg = \"heavy\"");
+  const std::string error = vehicle_error(vehicle);
+  CHECK(error.find("battery.mass_kg: expected a number") != std::string::npos);
+  // Line of the bad value in the file.
+  const std::size_t at = vehicle.find("mass_kg = \"heavy\"");
+  const long line = std::count(vehicle.begin(), vehicle.begin() + static_cast<long>(at), '\n') + 1;
+  CHECK(error.find("bad.toml:" + std::to_string(line) + ":") == 0);
+}
+
+TEST(ConfigFiles, SyntaxErrorNamesTheLine) {
+  const std::string error = vehicle_error("[vehicle]\nname = \"x\"\n\n[mass\nhull_kg = 1\n");
+  CHECK(error.find("bad.toml:4:") == 0);
+}
+
+TEST(ConfigFiles, PhysicallyImpossibleVehicleIsRefused) {
+  replace(vehicle, "hull_kg = 6.9", "hull_kg = -6.9");
+  CHECK(vehicle_error(vehicle).find("mass.hull_kg must be positive") != std::string::npos);
+}
+
+TEST(ConfigFiles, UnflyableMissionIsRefusedBeforeLaunch) {
+  replace(mission, "dive_to_m = 50.0", "dive_to_m = 3.0");
+  const std::string error = mission_error(mission);
+  CHECK(error.find("bad_mission.toml: mission refused: dive_to_m must be deeper than climb_to_m") == 0);
+}
+
+TEST(ConfigFiles, MissingFileIsAClearError) {
+  try {
+    glider::model::load_vehicle_file("/nonexistent/vehicle.toml");
+    FAIL("expected an error");
+  } catch (const ConfigError& error) {
+    STRCMP_EQUAL("/nonexistent/vehicle.toml: no such file", error.what());
+  }
+}
