@@ -1,59 +1,17 @@
 #include <CppUTest/TestHarness.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
+#include "fake_hal.hpp"
 #include "glider/firmware/flight_software.hpp"
 
 using namespace glider;
 using hal::Micros;
 
-namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// A scripted HAL: tests set what the sensors say and read what was commanded.
-struct FakeHal final : hal::Clock, hal::DepthSensor, hal::BuoyancyPump, hal::BatterySlide, hal::LogSink {
-  struct Attitude final : hal::AttitudeSensor {
-    hal::AttitudeSample sample{};
-    hal::AttitudeSample read() override { return sample; }
-  } attitude;
-
-  Micros now = 0;
-  hal::DepthSample depth{};
-  double pump_cc = 250.0;
-  double battery_in = 0.0;
-  bool pump_fault = false;
-  double commanded_cc = kNaN;
-  double commanded_in = kNaN;
-  int pump_commands = 0;
-  bool accept_log = true;
-  hal::FlightLogRecord last_row{};
-  int rows = 0;
-
-  Micros now_us() const override { return now; }
-  hal::DepthSample read() override { return depth; }
-  void command_volume_cc(double cc) override {
-    commanded_cc = cc;
-    ++pump_commands;
-  }
-  hal::ActuatorReading read_volume_cc() override { return {pump_cc, now, true, pump_fault}; }
-  void command_position_in(double in) override { commanded_in = in; }
-  hal::ActuatorReading read_position_in() override { return {battery_in, now, true, false}; }
-  bool write(const hal::FlightLogRecord& row) override {
-    last_row = row;
-    ++rows;
-    return accept_log;
-  }
-
-  void sense(double depth_m, double pitch_rad) {
-    depth = {depth_m, now, true};
-    attitude.sample = {pitch_rad, 0.0, 1.0, now, true};
-  }
-  hal::Hal hal() { return {*this, *this, attitude, *this, *this, *this}; }
-};
-
-}  // namespace
+using test::FakeHal;
+using test::kNaN;
 
 TEST_GROUP(FlightSoftware) {
   FakeHal fake;
