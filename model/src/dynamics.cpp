@@ -1,5 +1,6 @@
 #include "glider/model/dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <Eigen/Dense>
 
@@ -8,14 +9,14 @@
 namespace glider::model {
 
 GliderDynamics::GliderDynamics(const VehicleParams& vehicle, const Environment& environment)
-    : vehicle_(vehicle), environment_(environment), displaced_volume_m3_(displaced_volume_m3(vehicle)) {}
+    : vehicle_(vehicle), environment_(environment), nominal_volume_m3_(model::displaced_volume_m3(vehicle)) {}
 
-GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses) const {
+GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses,
+                                                               double water_density) const {
   const VehicleParams& v = vehicle_;
   // Pumping water out (positive volume) is modelled, as in Leonard-Graver, as
   // a negative point mass at the engine: same force and moment as the volume.
-  const double ballast_kg = -environment_.density_kg_m3 * masses.pumped_volume_m3;
-  const double battery_x = v.battery.x_at_zero_m + masses.battery_pos_m;
+  const double ballast_kg = -water_density * masses.pumped_volume_m3;
 
   struct Point {
     double m, x, z;
@@ -23,7 +24,8 @@ GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs&
   const Point points[] = {
       {v.offset.mass_kg, v.offset.x_m, v.offset.z_m},
       {ballast_kg, v.ballast.x_m, v.ballast.z_m},
-      {v.battery.mass_kg, battery_x, v.battery.z_m},
+      {v.battery.mass_kg, v.battery.x_at_zero_m + masses.battery_pos_m, v.battery.z_m},
+      {v.second_mass.mass_kg, v.second_mass.x_at_zero_m + masses.second_pos_m, v.second_mass.z_m},
   };
   MassProperties p;
   p.total_kg = v.hull_mass_kg;
@@ -39,10 +41,10 @@ GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs&
   p.a << p.total_kg + v.added_mass_x_kg, 0.0, p.first_z,  //
       0.0, p.total_kg + v.added_mass_z_kg, -p.first_x,     //
       p.first_z, -p.first_x, inertia;
-  const double m = v.battery.mass_kg;
-  const double rate = masses.battery_rate_m_s;
-  // Slide moves along x: rdot = (rate, 0); angular part r x rdot = z * rate.
-  p.b << m * rate, 0.0, m * v.battery.z_m * rate;
+  // The moving masses slide along x: rdot = (rate, 0); angular part z * rate.
+  const double m1 = v.battery.mass_kg * masses.battery_rate_m_s;
+  const double m2 = v.second_mass.mass_kg * masses.second_rate_m_s;
+  p.b << m1 + m2, 0.0, m1 * v.battery.z_m + m2 * v.second_mass.z_m;
   return p;
 }
 
@@ -54,12 +56,21 @@ double GliderDynamics::immersed_fraction(double z_m) const {
   return u * u * (3.0 - 2.0 * u);
 }
 
-Evaluation GliderDynamics::evaluate(const State& s, const MassInputs& masses) const {
-  const MassProperties mp = mass_properties(masses);
+double GliderDynamics::displaced_volume_m3(double z_m, const WaterSample& water) const {
+  const VehicleParams& v = vehicle_;
+  const double gauge_pa = water.density_kg_m3 * environment_.gravity_m_s2 * std::max(z_m, 0.0);
+  const double scale = 1.0 - v.hull_compressibility_per_pa * gauge_pa +
+                       v.hull_thermal_expansion_per_k * (water.temperature_c - v.hull_reference_temperature_c);
+  return nominal_volume_m3_ * scale * immersed_fraction(z_m);
+}
+
+Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInputs& masses) const {
+  Evaluation e;
+  e.water = environment_.water.at(s[kZ], time_s);
+  const double rho = e.water.density_kg_m3;
+  const MassProperties mp = mass_properties(masses, rho);
   const Eigen::Vector3d impulse(s[kP1], s[kP3], s[kPi2]);
   const Eigen::Vector3d xi = mp.a.ldlt().solve(impulse - mp.b);
-
-  Evaluation e;
   e.v1 = xi[0];
   e.v3 = xi[1];
   e.q = xi[2];
@@ -67,11 +78,10 @@ Evaluation GliderDynamics::evaluate(const State& s, const MassInputs& masses) co
   const double sin_t = std::sin(theta);
   const double cos_t = std::cos(theta);
   const double g = environment_.gravity_m_s2;
-  const double rho = environment_.density_kg_m3;
 
   // Weight and buoyancy (buoyancy acts at the CB: no moment).
-  const double displaced_kg = rho * displaced_volume_m3_ * immersed_fraction(s[kZ]);
-  e.net_buoyancy_kg = mp.total_kg - displaced_kg;
+  e.displaced_volume_m3 = displaced_volume_m3(s[kZ], e.water);
+  e.net_buoyancy_kg = mp.total_kg - rho * e.displaced_volume_m3;
   double f1 = -e.net_buoyancy_kg * g * sin_t;
   double f3 = e.net_buoyancy_kg * g * cos_t;
   e.gravity_moment_nm = -g * (mp.first_x * cos_t + mp.first_z * sin_t);
@@ -81,8 +91,10 @@ Evaluation GliderDynamics::evaluate(const State& s, const MassInputs& masses) co
   e.speed_m_s = std::hypot(e.v1, e.v3);
   e.alpha_rad = std::atan2(e.v3, e.v1);
   const double half_rho_a = 0.5 * rho * h.reference_area_m2;
+  double lift_coefficient = 0.0;
   if (e.speed_m_s > 0.0) {
     const ForceCoefficients c = force_coefficients(h, e.alpha_rad);
+    lift_coefficient = c.lift;
     const double dyn = half_rho_a * e.speed_m_s * e.speed_m_s;
     e.lift_n = dyn * c.lift;
     e.drag_n = dyn * c.drag;
@@ -97,28 +109,44 @@ Evaluation GliderDynamics::evaluate(const State& s, const MassInputs& masses) co
   // Kirchhoff: the rotating frame's terms. v x P about y is v3 P1 - v1 P3.
   e.munk_moment_nm = -(e.v3 * impulse[0] - e.v1 * impulse[1]);
 
+  // Heading (see the header): yaw rate relaxes toward what fin and roll ask.
+  const HeadingModel& hd = vehicle_.heading;
+  const double alpha_effective = h.cl_alpha != 0.0 ? lift_coefficient / h.cl_alpha : 0.0;
+  const double yaw_rate_target =
+      e.speed_m_s * (hd.fin_yaw_gain_per_m * masses.fin_rad +
+                     hd.roll_yaw_gain_per_m * alpha_effective * std::sin(hd.roll_offset_rad));
+
+  e.horizontal_speed_m_s = e.v1 * cos_t + e.v3 * sin_t;
+  const double psi = s[kPsi];
   State& d = e.state_dot;
-  d[kX] = e.v1 * cos_t + e.v3 * sin_t + environment_.current_along_track_m_s;
-  d[kZ] = -e.v1 * sin_t + e.v3 * cos_t + environment_.vertical_velocity_m_s;
+  d[kEast] = e.horizontal_speed_m_s * std::sin(psi) + e.water.current_east_m_s;
+  d[kNorth] = e.horizontal_speed_m_s * std::cos(psi) + e.water.current_north_m_s;
+  d[kZ] = -e.v1 * sin_t + e.v3 * cos_t + e.water.vertical_velocity_m_s;
   d[kTheta] = e.q;
   d[kP1] = f1 - e.q * impulse[1];
   d[kP3] = f3 + e.q * impulse[0];
   d[kPi2] = e.gravity_moment_nm + e.hydro_moment_nm + e.munk_moment_nm;
+  d[kPsi] = s[kYawRate];
+  d[kYawRate] = (yaw_rate_target - s[kYawRate]) / hd.yaw_time_constant_s;
   return e;
 }
 
-State GliderDynamics::make_state(double x_m, double z_m, double theta_rad, double v1, double v3, double q,
+State GliderDynamics::make_state(double z_m, double theta_rad, double v1, double v3, double q,
                                  const MassInputs& masses) const {
-  const MassProperties mp = mass_properties(masses);
+  const MassProperties mp = mass_properties(masses, environment_.water.at(z_m, 0.0).density_kg_m3);
   const Eigen::Vector3d impulse = mp.a * Eigen::Vector3d(v1, v3, q) + mp.b;
-  State s;
-  s << x_m, z_m, theta_rad, impulse[0], impulse[1], impulse[2];
+  State s = State::Zero();
+  s[kZ] = z_m;
+  s[kTheta] = theta_rad;
+  s[kP1] = impulse[0];
+  s[kP3] = impulse[1];
+  s[kPi2] = impulse[2];
   return s;
 }
 
 double GliderDynamics::static_pitch_rad(const MassInputs& masses) const {
   // Zero moment of the weights about the CB: sum m (x cos t + z sin t) = 0.
-  const MassProperties mp = mass_properties(masses);
+  const MassProperties mp = mass_properties(masses, environment_.water.at(0.0, 0.0).density_kg_m3);
   return std::atan2(-mp.first_x, mp.first_z);
 }
 

@@ -3,6 +3,7 @@
 #include <boost/numeric/odeint/external/eigen/eigen_algebra.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <cmath>
+#include <numbers>
 
 namespace glider::model {
 namespace {
@@ -10,36 +11,52 @@ namespace {
 using Stepper = boost::numeric::odeint::runge_kutta4<State, double, State, double,
                                                      boost::numeric::odeint::vector_space_algebra>;
 
+RateLimitedServo make_slide(const SlidingMass& m, double initial) {
+  // An absent second mass still gets a (motionless) servo.
+  if (!(m.travel_min_m < m.travel_max_m)) return RateLimitedServo(0.0, 0.0, 1.0, 0.0);
+  return RateLimitedServo(m.travel_min_m, m.travel_max_m, m.rate_m_s, initial);
+}
+
 }  // namespace
 
-GliderSimulator::GliderSimulator(const VehicleParams& vehicle, const Environment& environment,
-                                 double step_s)
+GliderSimulator::GliderSimulator(const VehicleParams& vehicle, const Environment& environment, double step_s)
     : dynamics_(vehicle, environment),
       step_s_(step_s),
       pump_(vehicle.ballast.volume_min_m3, vehicle.ballast.volume_max_m3, vehicle.ballast.rate_m3_s, 0.0),
-      battery_(vehicle.battery.travel_min_m, vehicle.battery.travel_max_m, vehicle.battery.rate_m_s, 0.0) {}
+      battery_(make_slide(vehicle.battery, 0.0)),
+      second_(make_slide(vehicle.second_mass, 0.0)),
+      fin_(-vehicle.heading.fin_max_rad, vehicle.heading.fin_max_rad, vehicle.heading.fin_rate_rad_s, 0.0) {}
 
 MassInputs GliderSimulator::masses_after(double t) const {
   MassInputs m;
   m.pumped_volume_m3 = pump_.position_after(t);
   m.battery_pos_m = battery_.position_after(t);
   m.battery_rate_m_s = battery_.velocity_after(t);
+  m.second_pos_m = second_.position_after(t);
+  m.second_rate_m_s = second_.velocity_after(t);
+  m.fin_rad = fin_.position_after(t);
   return m;
 }
 
-void GliderSimulator::reset_at_depth(double depth_m, double pumped_volume_m3, double battery_pos_m) {
+void GliderSimulator::reset_servos(double pumped_volume_m3, double battery_pos_m) {
   const VehicleParams& v = dynamics_.vehicle();
-  pump_ = RateLimitedServo(v.ballast.volume_min_m3, v.ballast.volume_max_m3, v.ballast.rate_m3_s,
-                           pumped_volume_m3);
-  battery_ = RateLimitedServo(v.battery.travel_min_m, v.battery.travel_max_m, v.battery.rate_m_s,
-                              battery_pos_m);
+  pump_ = RateLimitedServo(v.ballast.volume_min_m3, v.ballast.volume_max_m3, v.ballast.rate_m3_s, pumped_volume_m3);
+  battery_ = make_slide(v.battery, battery_pos_m);
+  second_ = make_slide(v.second_mass, 0.0);
+  fin_ = RateLimitedServo(-v.heading.fin_max_rad, v.heading.fin_max_rad, v.heading.fin_rate_rad_s, 0.0);
+}
+
+void GliderSimulator::reset_at_depth(double depth_m, double pumped_volume_m3, double battery_pos_m,
+                                     double heading_rad) {
+  reset_servos(pumped_volume_m3, battery_pos_m);
   const MassInputs m = masses_after(0.0);
-  state_ = dynamics_.make_state(0.0, depth_m, dynamics_.static_pitch_rad(m), 0.0, 0.0, 0.0, m);
+  state_ = dynamics_.make_state(depth_m, dynamics_.static_pitch_rad(m), 0.0, 0.0, 0.0, m);
+  state_[kPsi] = heading_rad;
   time_s_ = 0.0;
 }
 
-void GliderSimulator::reset_at_surface(double pumped_volume_m3, double battery_pos_m) {
-  reset_at_depth(0.0, pumped_volume_m3, battery_pos_m);
+void GliderSimulator::reset_at_surface(double pumped_volume_m3, double battery_pos_m, double heading_rad) {
+  reset_at_depth(0.0, pumped_volume_m3, battery_pos_m, heading_rad);
   // Float level: the depth where weight and (partial) buoyancy balance.
   const MassInputs m = masses_after(0.0);
   double lo = -dynamics_.vehicle().hull_diameter_m;
@@ -48,7 +65,7 @@ void GliderSimulator::reset_at_surface(double pumped_volume_m3, double battery_p
     const double mid = 0.5 * (lo + hi);
     State probe = state_;
     probe[kZ] = mid;
-    (dynamics_.evaluate(probe, m).net_buoyancy_kg > 0.0 ? lo : hi) = mid;
+    (dynamics_.evaluate(0.0, probe, m).net_buoyancy_kg > 0.0 ? lo : hi) = mid;
   }
   state_[kZ] = 0.5 * (lo + hi);
 }
@@ -58,10 +75,12 @@ void GliderSimulator::step(double h) {
   // The servos' paths over [t, t + h] are closed-form: evaluate them at each
   // RK4 stage time instead of holding them constant over the step.
   const double t0 = time_s_;
-  auto rhs = [this, t0](const State& s, State& ds, double t) { ds = dynamics_.derivative(s, masses_after(t - t0)); };
+  auto rhs = [this, t0](const State& s, State& ds, double t) { ds = dynamics_.derivative(t, s, masses_after(t - t0)); };
   stepper.do_step(rhs, state_, t0, h);
   pump_.advance(h);
   battery_.advance(h);
+  second_.advance(h);
+  fin_.advance(h);
   time_s_ += h;
 }
 
@@ -75,21 +94,27 @@ void GliderSimulator::advance(double duration_s) {
 }
 
 Truth GliderSimulator::truth() const {
-  const Evaluation e = dynamics_.evaluate(state_, masses_after(0.0));
+  const Evaluation e = dynamics_.evaluate(time_s_, state_, masses_after(0.0));
   Truth t;
   t.time_s = time_s_;
-  t.x_m = state_[kX];
+  t.east_m = state_[kEast];
+  t.north_m = state_[kNorth];
   t.depth_m = state_[kZ];
+  const double two_pi = 2.0 * std::numbers::pi;
+  t.heading_rad = std::fmod(std::fmod(state_[kPsi], two_pi) + two_pi, two_pi);
+  t.yaw_rate_rad_s = state_[kYawRate];
   t.pitch_rad = state_[kTheta];
   t.pitch_rate_rad_s = e.q;
   t.speed_m_s = e.speed_m_s;
   t.alpha_rad = e.alpha_rad;
   t.glide_path_rad = state_[kTheta] - e.alpha_rad;
-  t.horizontal_speed_m_s = e.state_dot[kX];
+  t.horizontal_speed_m_s = e.horizontal_speed_m_s;
   t.depth_rate_m_s = e.state_dot[kZ];
   t.net_buoyancy_kg = e.net_buoyancy_kg;
   t.pumped_volume_m3 = pump_.position();
   t.battery_pos_m = battery_.position();
+  t.fin_rad = fin_.position();
+  t.water = e.water;
   return t;
 }
 

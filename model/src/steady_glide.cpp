@@ -40,8 +40,8 @@ double min_glide_path_deg(const Hydrodynamics& hydro) {
   return std::atan(drag_over_lift(hydro, alpha_of_best_glide(hydro))) / kDeg;
 }
 
-SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, const Environment& env,
-                                        double glide_path_deg, double net_buoyancy_kg) {
+SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double density_kg_m3,
+                                        double glide_path_deg, double net_buoyancy_kg, double gravity_m_s2) {
   SteadyGlideResult result;
   if (!(glide_path_deg > 0.0 && glide_path_deg < 90.0)) {
     result.error = "glide path must be between 0 and 90 deg (magnitude)";
@@ -67,9 +67,9 @@ SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, const Enviro
   }
   const double alpha = 0.5 * (lo + hi);
   const ForceCoefficients c = force_coefficients(hydro, alpha);
-  const double weight_n = std::abs(net_buoyancy_kg) * env.gravity_m_s2;
+  const double weight_n = std::abs(net_buoyancy_kg) * gravity_m_s2;
   const double speed =
-      std::sqrt(2.0 * weight_n / (env.density_kg_m3 * hydro.reference_area_m2 * std::hypot(c.lift, c.drag)));
+      std::sqrt(2.0 * weight_n / (density_kg_m3 * hydro.reference_area_m2 * std::hypot(c.lift, c.drag)));
 
   // Heavy: descending, xi < 0, alpha > 0. Light: the mirror image.
   const double sign = net_buoyancy_kg > 0.0 ? 1.0 : -1.0;

@@ -1,9 +1,13 @@
 #include "glider/model/vehicle.hpp"
 
+#include <cmath>
+
 namespace glider::model {
 
+bool has_second_mass(const VehicleParams& v) { return v.second_mass.mass_kg > 0.0; }
+
 double dry_mass_kg(const VehicleParams& v) {
-  return v.hull_mass_kg + v.offset.mass_kg + v.battery.mass_kg;
+  return v.hull_mass_kg + v.offset.mass_kg + v.battery.mass_kg + v.second_mass.mass_kg;
 }
 
 double displaced_volume_m3(const VehicleParams& v) {
@@ -17,6 +21,17 @@ std::string validate(const VehicleParams& v) {
   if (!(v.battery.mass_kg > 0.0)) return "battery.mass_kg must be positive";
   if (!(v.battery.travel_min_m < v.battery.travel_max_m)) return "battery travel: min must be below max";
   if (!(v.battery.rate_m_s > 0.0)) return "battery.rate_m_s must be positive";
+  if (has_second_mass(v) && !(v.second_mass.travel_min_m < v.second_mass.travel_max_m && v.second_mass.rate_m_s > 0.0)) {
+    return "second_mass: need travel_min_m < travel_max_m and a positive rate";
+  }
+  if (!(v.hull_compressibility_per_pa >= 0.0 && v.hull_compressibility_per_pa < 1e-8)) {
+    return "hull.compressibility_per_pa must be in [0, 1e-8)";
+  }
+  if (!(std::abs(v.hull_thermal_expansion_per_k) < 1e-3)) return "hull.thermal_expansion_per_k must be below 1e-3";
+  if (!(v.heading.yaw_time_constant_s > 0.0)) return "heading.yaw_time_constant_s must be positive";
+  if (!(v.heading.fin_max_rad > 0.0 && v.heading.fin_rate_rad_s > 0.0)) {
+    return "heading.fin_max_rad and fin_rate_rad_s must be positive";
+  }
   if (!(v.ballast.volume_min_m3 < v.ballast.volume_max_m3)) return "ballast volume: min must be below max";
   if (!(v.ballast.rate_m3_s > 0.0)) return "ballast.rate_m3_s must be positive";
   if (!(v.added_mass_x_kg >= 0.0 && v.added_mass_z_kg >= 0.0 && v.added_inertia_kg_m2 >= 0.0)) {

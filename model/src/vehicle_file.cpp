@@ -1,6 +1,7 @@
 #include "glider/model/vehicle_file.hpp"
 
 #include <charconv>
+#include <string_view>
 
 #include "glider/config/toml_document.hpp"
 
@@ -11,41 +12,63 @@ using config::TomlDocument;
 
 // One table of the key <-> field mapping, shared by the reader and the
 // metadata writer so the two can never disagree.
+enum class Need { kRequired, kOptional };
+
+// One table of the key <-> field mapping, shared by the reader and the
+// metadata writer so the two can never disagree. Optional keys keep the
+// field's default (0 = effect absent) when the file does not set them.
 template <typename Visitor>
 void visit_numbers(VehicleParams& v, Visitor&& visit) {
-  visit("mass.hull_kg", v.hull_mass_kg);
-  visit("mass.hull_inertia_kg_m2", v.hull_inertia_kg_m2);
-  visit("mass.offset_kg", v.offset.mass_kg);
-  visit("mass.offset_x_m", v.offset.x_m);
-  visit("mass.offset_z_m", v.offset.z_m);
-  visit("hull.diameter_m", v.hull_diameter_m);
-  visit("battery.mass_kg", v.battery.mass_kg);
-  visit("battery.x_at_zero_m", v.battery.x_at_zero_m);
-  visit("battery.z_m", v.battery.z_m);
-  visit("battery.travel_min_m", v.battery.travel_min_m);
-  visit("battery.travel_max_m", v.battery.travel_max_m);
-  visit("battery.rate_m_s", v.battery.rate_m_s);
-  visit("ballast.x_m", v.ballast.x_m);
-  visit("ballast.z_m", v.ballast.z_m);
-  visit("ballast.volume_min_m3", v.ballast.volume_min_m3);
-  visit("ballast.volume_max_m3", v.ballast.volume_max_m3);
-  visit("ballast.rate_m3_s", v.ballast.rate_m3_s);
-  visit("added_mass.x_kg", v.added_mass_x_kg);
-  visit("added_mass.z_kg", v.added_mass_z_kg);
-  visit("added_mass.inertia_kg_m2", v.added_inertia_kg_m2);
-  visit("hydrodynamics.reference_area_m2", v.hydro.reference_area_m2);
-  visit("hydrodynamics.cl_alpha", v.hydro.cl_alpha);
-  visit("hydrodynamics.cl_alpha_abs_alpha", v.hydro.cl_alpha_abs_alpha);
-  visit("hydrodynamics.cd0", v.hydro.cd0);
-  visit("hydrodynamics.cd_alpha2", v.hydro.cd_alpha2);
-  visit("hydrodynamics.cm0_m", v.hydro.cm0_m);
-  visit("hydrodynamics.cm_alpha_m", v.hydro.cm_alpha_m);
-  visit("hydrodynamics.cmq_m2", v.hydro.cmq_m2);
-  visit("hydrodynamics.crossflow_cn90", v.hydro.crossflow_cn90);
-  visit("hydrodynamics.fit_valid_to_rad", v.hydro.fit_valid_to_rad);
-  visit("hydrodynamics.crossflow_from_rad", v.hydro.crossflow_from_rad);
-  visit("buoyancy.trim_density_kg_m3", v.trim_density_kg_m3);
-  visit("buoyancy.offset_kg", v.buoyancy_offset_kg);
+  constexpr Need req = Need::kRequired;
+  constexpr Need opt = Need::kOptional;
+  visit("mass.hull_kg", v.hull_mass_kg, req);
+  visit("mass.hull_inertia_kg_m2", v.hull_inertia_kg_m2, req);
+  visit("mass.offset_kg", v.offset.mass_kg, req);
+  visit("mass.offset_x_m", v.offset.x_m, req);
+  visit("mass.offset_z_m", v.offset.z_m, req);
+  visit("hull.diameter_m", v.hull_diameter_m, req);
+  visit("hull.compressibility_per_pa", v.hull_compressibility_per_pa, opt);
+  visit("hull.thermal_expansion_per_k", v.hull_thermal_expansion_per_k, opt);
+  visit("hull.reference_temperature_c", v.hull_reference_temperature_c, opt);
+  visit("battery.mass_kg", v.battery.mass_kg, req);
+  visit("battery.x_at_zero_m", v.battery.x_at_zero_m, req);
+  visit("battery.z_m", v.battery.z_m, req);
+  visit("battery.travel_min_m", v.battery.travel_min_m, req);
+  visit("battery.travel_max_m", v.battery.travel_max_m, req);
+  visit("battery.rate_m_s", v.battery.rate_m_s, req);
+  visit("second_mass.mass_kg", v.second_mass.mass_kg, opt);
+  visit("second_mass.x_at_zero_m", v.second_mass.x_at_zero_m, opt);
+  visit("second_mass.z_m", v.second_mass.z_m, opt);
+  visit("second_mass.travel_min_m", v.second_mass.travel_min_m, opt);
+  visit("second_mass.travel_max_m", v.second_mass.travel_max_m, opt);
+  visit("second_mass.rate_m_s", v.second_mass.rate_m_s, opt);
+  visit("ballast.x_m", v.ballast.x_m, req);
+  visit("ballast.z_m", v.ballast.z_m, req);
+  visit("ballast.volume_min_m3", v.ballast.volume_min_m3, req);
+  visit("ballast.volume_max_m3", v.ballast.volume_max_m3, req);
+  visit("ballast.rate_m3_s", v.ballast.rate_m3_s, req);
+  visit("added_mass.x_kg", v.added_mass_x_kg, req);
+  visit("added_mass.z_kg", v.added_mass_z_kg, req);
+  visit("added_mass.inertia_kg_m2", v.added_inertia_kg_m2, req);
+  visit("hydrodynamics.reference_area_m2", v.hydro.reference_area_m2, req);
+  visit("hydrodynamics.cl_alpha", v.hydro.cl_alpha, req);
+  visit("hydrodynamics.cl_alpha_abs_alpha", v.hydro.cl_alpha_abs_alpha, req);
+  visit("hydrodynamics.cd0", v.hydro.cd0, req);
+  visit("hydrodynamics.cd_alpha2", v.hydro.cd_alpha2, req);
+  visit("hydrodynamics.cm0_m", v.hydro.cm0_m, req);
+  visit("hydrodynamics.cm_alpha_m", v.hydro.cm_alpha_m, req);
+  visit("hydrodynamics.cmq_m2", v.hydro.cmq_m2, req);
+  visit("hydrodynamics.crossflow_cn90", v.hydro.crossflow_cn90, req);
+  visit("hydrodynamics.fit_valid_to_rad", v.hydro.fit_valid_to_rad, req);
+  visit("hydrodynamics.crossflow_from_rad", v.hydro.crossflow_from_rad, req);
+  visit("heading.fin_yaw_gain_per_m", v.heading.fin_yaw_gain_per_m, req);
+  visit("heading.roll_yaw_gain_per_m", v.heading.roll_yaw_gain_per_m, req);
+  visit("heading.yaw_time_constant_s", v.heading.yaw_time_constant_s, req);
+  visit("heading.roll_offset_rad", v.heading.roll_offset_rad, opt);
+  visit("heading.fin_max_rad", v.heading.fin_max_rad, req);
+  visit("heading.fin_rate_rad_s", v.heading.fin_rate_rad_s, req);
+  visit("buoyancy.trim_density_kg_m3", v.trim_density_kg_m3, req);
+  visit("buoyancy.offset_kg", v.buoyancy_offset_kg, req);
 }
 
 VehicleParams read(const TomlDocument& doc) {
@@ -53,7 +76,9 @@ VehicleParams read(const TomlDocument& doc) {
   v.name = doc.string("vehicle.name");
   v.description = doc.string_or("vehicle.description", "");
   doc.string_or("vehicle.source", "");  // provenance note, not a parameter
-  visit_numbers(v, [&doc](const char* key, double& field) { field = doc.number(key); });
+  visit_numbers(v, [&doc](const char* key, double& field, Need need) {
+    field = need == Need::kRequired ? doc.number(key) : doc.number_or(key, field);
+  });
   doc.reject_unknown_keys();
   const std::string problem = validate(v);
   if (!problem.empty()) {
@@ -82,7 +107,11 @@ std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleP
   std::vector<std::pair<std::string, std::string>> out;
   out.emplace_back("vehicle.name", v.name);
   VehicleParams copy = v;
-  visit_numbers(copy, [&out](const char* key, double& field) { out.emplace_back(key, format_number(field)); });
+  const bool second = has_second_mass(v);
+  visit_numbers(copy, [&out, second](const char* key, double& field, Need) {
+    if (!second && std::string_view(key).starts_with("second_mass.")) return;
+    out.emplace_back(key, format_number(field));
+  });
   return out;
 }
 

@@ -49,9 +49,10 @@ void append_time(std::string& line, hal::Micros us) {
 const char* CsvFlightLog::header() {
   return "m_present_time,m_depth,m_depth_rate,m_pitch,m_roll,m_heading,m_ballast_pumped,c_ballast_pumped,"
          "m_battpos,c_battpos,c_pitch,m_depth_state,x_yo_count,x_abort_cause,x_loop_overruns,"
-         "sim_x_m,sim_depth_m,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,sim_glide_path_rad,"
-         "sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,sim_ballast_pumped_cc,"
-         "sim_battpos_in,sim_u_water_m_s,sim_w_water_m_s";
+         "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
+         "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
+         "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_density_kg_m3,sim_u_water_m_s,sim_v_water_m_s,"
+         "sim_w_water_m_s";
 }
 
 CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim)
@@ -73,7 +74,6 @@ CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, co
 bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   if (!ok_) return false;
   const model::Truth t = sim_.truth();
-  const model::Environment& env = sim_.dynamics().environment();
   line_.clear();
   append_time(line_, r.time_us);
   append_number(line_, r.m_depth);
@@ -90,8 +90,10 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   append_integer(line_, r.x_yo_count);
   append_integer(line_, r.x_abort_cause);
   append_integer(line_, r.x_loop_overruns);
-  append_number(line_, t.x_m);
+  append_number(line_, t.east_m);
+  append_number(line_, t.north_m);
   append_number(line_, t.depth_m);
+  append_number(line_, t.heading_rad);
   append_number(line_, t.pitch_rad);
   append_number(line_, t.speed_m_s);
   append_number(line_, t.alpha_rad);
@@ -101,8 +103,11 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   append_number(line_, t.net_buoyancy_kg);
   append_number(line_, m3_to_cc(t.pumped_volume_m3));
   append_number(line_, m_to_in(t.battery_pos_m));
-  append_number(line_, env.current_along_track_m_s);
-  append_number(line_, env.vertical_velocity_m_s);
+  append_number(line_, t.fin_rad);
+  append_number(line_, t.water.density_kg_m3);
+  append_number(line_, t.water.current_east_m_s);
+  append_number(line_, t.water.current_north_m_s);
+  append_number(line_, t.water.vertical_velocity_m_s);
   line_.back() = '\n';
   out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
   if (!out_) {

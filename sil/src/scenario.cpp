@@ -44,9 +44,9 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   if (!result.error.empty()) return result;
 
   model::GliderSimulator sim(vehicle, options.environment);
-  sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0);
+  sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0, options.heading_deg * std::numbers::pi / 180.0);
   SimClock clock;
-  SimHal sim_hal(sim, clock, options.noise, options.seed, options.heading_deg * std::numbers::pi / 180.0);
+  SimHal sim_hal(sim, clock, options.noise, options.seed);
 
   Metadata metadata = options.metadata;
   metadata.emplace_back("seed", std::to_string(options.seed));

@@ -7,9 +7,8 @@
 
 namespace glider::sil {
 
-SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
-               double heading_rad)
-    : sim_(sim), clock_(clock), noise_(noise), rng_(seed), heading_rad_(heading_rad) {}
+SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed)
+    : sim_(sim), clock_(clock), noise_(noise), rng_(seed) {}
 
 double SimHal::gaussian() {
   if (has_spare_) {
@@ -40,9 +39,10 @@ hal::AttitudeSample SimHal::read_attitude() {
   hal::AttitudeSample sample;
   sample.time_us = clock_.now_us();
   sample.pitch_rad = sim_.state()[model::kTheta] + noise_.pitch_rad * gaussian();
-  sample.roll_rad = noise_.roll_rad * gaussian();
+  sample.roll_rad = sim_.dynamics().vehicle().heading.roll_offset_rad + noise_.roll_rad * gaussian();
   const double two_pi = 2.0 * std::numbers::pi;
-  sample.heading_rad = std::fmod(heading_rad_ + noise_.heading_rad * gaussian() + two_pi, two_pi);
+  const double heading = sim_.state()[model::kPsi] + noise_.heading_rad * gaussian();
+  sample.heading_rad = std::fmod(std::fmod(heading, two_pi) + two_pi, two_pi);
   sample.valid = !faults_.attitude_invalid;
   return sample;
 }
@@ -66,6 +66,19 @@ hal::ActuatorReading SimHal::read_position_in() {
   reading.position = m_to_in(sim_.battery().position());
   reading.valid = true;
   reading.fault = faults_.battery_fault;
+  return reading;
+}
+
+}  // namespace glider::sil
+
+namespace glider::sil {
+
+hal::ActuatorReading SimHal::RudderPort::read_angle_rad() {
+  hal::ActuatorReading reading;
+  reading.time_us = owner_.clock_.now_us();
+  reading.position = owner_.sim_.fin().position();
+  reading.valid = true;
+  reading.fault = owner_.faults_.fin_fault;
   return reading;
 }
 

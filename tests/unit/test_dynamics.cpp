@@ -1,6 +1,7 @@
 #include <CppUTest/TestHarness.h>
 
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <cmath>
 
 #include "glider/model/simulator.hpp"
@@ -13,28 +14,37 @@ namespace {
 
 VehicleParams slocum() { return load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml"); }
 
-// Jacobian of the state derivative (finite differences) without x, which
-// nothing depends on.
-Eigen::Matrix<double, 5, 5> jacobian(const GliderDynamics& dyn, const State& s, const MassInputs& m) {
-  Eigen::Matrix<double, 5, 5> j;
-  for (int col = 0; col < 5; ++col) {
-    const double h = 1e-6 * std::max(1.0, std::abs(s[col + 1]));
+// The states that the dynamics depend on (position and heading feed nothing).
+constexpr std::array<int, 6> kDynamicStates{kZ, kTheta, kP1, kP3, kPi2, kYawRate};
+
+// Jacobian of the state derivative (central differences) over those states.
+Eigen::Matrix<double, 6, 6> jacobian(const GliderDynamics& dyn, const State& s, const MassInputs& m) {
+  Eigen::Matrix<double, 6, 6> j;
+  for (int col = 0; col < 6; ++col) {
+    const int k = kDynamicStates[static_cast<std::size_t>(col)];
+    const double h = 1e-6 * std::max(1.0, std::abs(s[k]));
     State plus = s;
     State minus = s;
-    plus[col + 1] += h;
-    minus[col + 1] -= h;
-    const State d = (dyn.derivative(plus, m) - dyn.derivative(minus, m)) / (2.0 * h);
-    j.col(col) = d.tail<5>();
+    plus[k] += h;
+    minus[k] -= h;
+    const State d = (dyn.derivative(0.0, plus, m) - dyn.derivative(0.0, minus, m)) / (2.0 * h);
+    for (int row = 0; row < 6; ++row) j(row, col) = d[kDynamicStates[static_cast<std::size_t>(row)]];
   }
   return j;
 }
 
 // Fly with fixed controls until steady.
-GliderSimulator steady_dive(const VehicleParams& v, double pumped_m3, double battery_m) {
-  GliderSimulator sim(v, Environment{});
+GliderSimulator steady_glide(const VehicleParams& v, double pumped_m3, double battery_m,
+                             const Environment& env = Environment{}) {
+  GliderSimulator sim(v, env);
   sim.reset_at_depth(200.0, pumped_m3, battery_m);
   sim.advance(900.0);
   return sim;
+}
+
+// A state gliding at the given body velocities, 30 m deep.
+Evaluation glide_at(const GliderDynamics& dyn, const MassInputs& m, double v1 = 0.45, double v3 = 0.025) {
+  return dyn.evaluate(0.0, dyn.make_state(30.0, -0.4, v1, v3, 0.0, m), m);
 }
 
 }  // namespace
@@ -47,17 +57,16 @@ TEST(Dynamics, NeutralAndTrimmedStaysAtRest) {
   GliderDynamics dyn(v, Environment{});
   const MassInputs m{};  // zero ballast, battery at zero: level by construction
   DOUBLES_EQUAL(0.0, dyn.static_pitch_rad(m), 1e-4);
-  const State s = dyn.make_state(0.0, 30.0, dyn.static_pitch_rad(m), 0.0, 0.0, 0.0, m);
-  const Evaluation e = dyn.evaluate(s, m);
+  const State s = dyn.make_state(30.0, dyn.static_pitch_rad(m), 0.0, 0.0, 0.0, m);
+  const Evaluation e = dyn.evaluate(0.0, s, m);
   DOUBLES_EQUAL(0.0, e.net_buoyancy_kg, 1e-9);
   CHECK(e.state_dot.cwiseAbs().maxCoeff() < 1e-9);
 }
 
 TEST(Dynamics, ImpulseRoundTrip) {
   GliderDynamics dyn(v, Environment{});
-  const MassInputs m{-200e-6, 0.01, 0.001};
-  const State s = dyn.make_state(1.0, 20.0, -0.4, 0.4, 0.02, -0.01, m);
-  const Evaluation e = dyn.evaluate(s, m);
+  const MassInputs m{-200e-6, 0.01, 0.001, 0.0, 0.0, 0.0};
+  const Evaluation e = dyn.evaluate(0.0, dyn.make_state(20.0, -0.4, 0.4, 0.02, -0.01, m), m);
   DOUBLES_EQUAL(0.4, e.v1, 1e-12);
   DOUBLES_EQUAL(0.02, e.v3, 1e-12);
   DOUBLES_EQUAL(-0.01, e.q, 1e-12);
@@ -65,23 +74,114 @@ TEST(Dynamics, ImpulseRoundTrip) {
 
 TEST(Dynamics, MunkMomentIsAddedMassDifference) {
   GliderDynamics dyn(v, Environment{});
-  const MassInputs m{};
-  const double v1 = 0.45, v3 = 0.03;
-  const State s = dyn.make_state(0.0, 30.0, -0.4, v1, v3, 0.0, m);
-  const Evaluation e = dyn.evaluate(s, m);
+  const Evaluation e = glide_at(dyn, MassInputs{});
   // Paper 000 eq. 3: (m_f3 - m_f1) v1 v3; destabilising (nose up for v3 > 0).
-  DOUBLES_EQUAL((v.added_mass_z_kg - v.added_mass_x_kg) * v1 * v3, e.munk_moment_nm, 1e-12);
+  DOUBLES_EQUAL((v.added_mass_z_kg - v.added_mass_x_kg) * 0.45 * 0.025, e.munk_moment_nm, 1e-12);
+  VehicleParams no_added = v;
+  no_added.added_mass_x_kg = no_added.added_mass_z_kg = 0.0;
+  DOUBLES_EQUAL(0.0, glide_at(GliderDynamics(no_added, Environment{}), MassInputs{}).munk_moment_nm, 1e-12);
 }
 
 TEST(Dynamics, HeavyAtRestSinksAndBallastPitchesNoseDown) {
   GliderDynamics dyn(v, Environment{});
-  const MassInputs m{-250e-6, 0.0, 0.0};  // 250 cc in: heavy, nose heavy
+  const MassInputs m{-250e-6, 0.0, 0.0, 0.0, 0.0, 0.0};  // 250 cc in: heavy, nose heavy
   CHECK(dyn.static_pitch_rad(m) < -0.3);
-  const State s = dyn.make_state(0.0, 30.0, 0.0, 0.0, 0.0, 0.0, m);
-  const Evaluation e = dyn.evaluate(s, m);
+  const Evaluation e = dyn.evaluate(0.0, dyn.make_state(30.0, 0.0, 0.0, 0.0, 0.0, m), m);
   DOUBLES_EQUAL(0.25625, e.net_buoyancy_kg, 1e-9);  // 250 cc of 1025 kg/m^3 water
-  CHECK(e.state_dot[kP3] > 0.0);    // pushed down
-  CHECK(e.state_dot[kPi2] < 0.0);   // nose down
+  CHECK(e.state_dot[kP3] > 0.0);   // pushed down
+  CHECK(e.state_dot[kPi2] < 0.0);  // nose down
+}
+
+TEST(Dynamics, HullCompressibilityMakesItHeavierWithDepthExactly) {
+  VehicleParams soft = v;
+  soft.hull_compressibility_per_pa = 3e-10;
+  const MassInputs m{};
+  const GliderDynamics rigid_dyn(v, Environment{});
+  const GliderDynamics soft_dyn(soft, Environment{});
+  const double depth = 100.0;
+  const State s = rigid_dyn.make_state(depth, 0.0, 0.0, 0.0, 0.0, m);
+  const double pressure_pa = 1025.0 * 9.81 * depth;
+  const double expected = 1025.0 * displaced_volume_m3(v) * 3e-10 * pressure_pa;  // ~ +15 g
+  DOUBLES_EQUAL(expected, soft_dyn.evaluate(0.0, s, m).net_buoyancy_kg - rigid_dyn.evaluate(0.0, s, m).net_buoyancy_kg,
+                1e-12);
+  CHECK(expected > 0.01 && expected < 0.02);  // a realistic ~15 g at 100 m
+}
+
+TEST(Dynamics, ThermalExpansionMakesItLighterInWarmWater) {
+  VehicleParams expanding = v;
+  expanding.hull_thermal_expansion_per_k = 7e-5;
+  const Environment warm{WaterColumn(1025.0, expanding.hull_reference_temperature_c + 5.0)};
+  const MassInputs m{};
+  const GliderDynamics a(v, warm);
+  const GliderDynamics b(expanding, warm);
+  const State s = a.make_state(50.0, 0.0, 0.0, 0.0, 0.0, m);
+  DOUBLES_EQUAL(-1025.0 * displaced_volume_m3(v) * 7e-5 * 5.0,
+                b.evaluate(0.0, s, m).net_buoyancy_kg - a.evaluate(0.0, s, m).net_buoyancy_kg, 1e-12);
+}
+
+TEST(Dynamics, DenserWaterMakesItLighter) {
+  const MassInputs m{};
+  const GliderDynamics nominal(v, still_water(1025.0));
+  const GliderDynamics dense(v, still_water(1027.0));
+  const State s = nominal.make_state(50.0, 0.0, 0.0, 0.0, 0.0, m);
+  DOUBLES_EQUAL(-2.0 * displaced_volume_m3(v),
+                dense.evaluate(0.0, s, m).net_buoyancy_kg - nominal.evaluate(0.0, s, m).net_buoyancy_kg, 1e-9);
+}
+
+TEST(Dynamics, WaterVelocityAddsToPositionRatesOnly) {
+  const std::vector<ProfileNode> nodes{{0.0, {1025.0, 10.0, 0.1, -0.05, 0.02}},
+                                       {100.0, {1025.0, 10.0, 0.3, -0.05, 0.02}}};
+  const Environment moving{WaterColumn(nodes, Oscillation{})};
+  const MassInputs m{-250e-6, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const GliderDynamics still(v, Environment{});
+  const GliderDynamics flowing(v, moving);
+  const State s = still.make_state(50.0, -0.4, 0.45, 0.02, 0.01, m);
+  const Evaluation a = still.evaluate(0.0, s, m);
+  const Evaluation b = flowing.evaluate(0.0, s, m);
+  DOUBLES_EQUAL(0.2, b.state_dot[kEast] - a.state_dot[kEast], 1e-12);  // current at 50 m, interpolated
+  DOUBLES_EQUAL(-0.05, b.state_dot[kNorth] - a.state_dot[kNorth], 1e-12);
+  DOUBLES_EQUAL(0.02, b.state_dot[kZ] - a.state_dot[kZ], 1e-12);
+  for (int k : {kTheta, kP1, kP3, kPi2, kPsi, kYawRate}) DOUBLES_EQUAL(a.state_dot[k], b.state_dot[k], 0.0);
+}
+
+TEST(Dynamics, OscillatingWaterFollowsItsPeriod) {
+  const Environment tidal{WaterColumn({{0.0, {}}}, Oscillation{600.0, 0.0, 0.1, 0.0, 0.01})};
+  DOUBLES_EQUAL(0.1, tidal.water.at(10.0, 150.0).current_east_m_s, 1e-12);
+  DOUBLES_EQUAL(-0.01, tidal.water.at(10.0, 450.0).vertical_velocity_m_s, 1e-12);
+}
+
+TEST(Dynamics, SecondMovingMassCouplesLikeTheBattery) {
+  VehicleParams two = v;
+  two.second_mass = {1.0, 0.0, 0.02, -0.1, 0.1, 0.01};
+  two.hull_mass_kg -= 1.0;  // same total mass, same displacement
+  GliderDynamics dyn(two, Environment{});
+  MassInputs m{};
+  const double level = dyn.static_pitch_rad(m);
+  m.second_pos_m = 0.05;  // forward: nose down
+  CHECK(dyn.static_pitch_rad(m) < level - 0.05);
+  // Its motion carries impulse: velocities at equal impulse change.
+  m.second_rate_m_s = 0.01;
+  const State s = dyn.make_state(30.0, 0.0, 0.3, 0.0, 0.0, MassInputs{});
+  CHECK(std::abs(dyn.evaluate(0.0, s, m).v1 - 0.3) > 1e-5);
+}
+
+TEST(Dynamics, FinAndRollSetTheYawRate) {
+  const MassInputs straight{-250e-6, 0.0, 0.0, 0.0, 0.0, 0.0};
+  MassInputs finned = straight;
+  finned.fin_rad = 0.2;
+  GliderDynamics dyn(v, Environment{});
+  const Evaluation e = glide_at(dyn, finned);
+  // Steady yaw rate (state at zero yaw rate: rate of change = target / tau).
+  DOUBLES_EQUAL(v.heading.fin_yaw_gain_per_m * e.speed_m_s * 0.2,
+                e.state_dot[kYawRate] * v.heading.yaw_time_constant_s, 1e-12);
+  DOUBLES_EQUAL(0.0, glide_at(dyn, straight).state_dot[kYawRate], 0.0);
+  VehicleParams rolled = v;
+  rolled.heading.roll_offset_rad = -0.1745;  // comet-2019: port wing down
+  GliderDynamics rolled_dyn(rolled, Environment{});
+  const double dive = glide_at(rolled_dyn, straight, 0.45, 0.025).state_dot[kYawRate];
+  const double climb = glide_at(rolled_dyn, straight, 0.45, -0.025).state_dot[kYawRate];
+  CHECK(dive > 0.0);  // turns clockwise on dives, as the real data need a negative fin
+  DOUBLES_EQUAL(-dive, climb, 1e-12);
 }
 
 TEST(Dynamics, FloatsAtTheSurface) {
@@ -94,28 +194,29 @@ TEST(Dynamics, FloatsAtTheSurface) {
 }
 
 TEST(Dynamics, SettlesOnTheSteadyGlideSolution) {
-  GliderSimulator sim = steady_dive(v, -250e-6, 0.0);
-  const Truth t = sim.truth();
-  CHECK(t.depth_rate_m_s > 0.1);
-  // The full dynamics at rest in a glide must satisfy the equilibrium
-  // equations (000 eqs. 4-5) that the steady solver solves.
-  const SteadyGlideResult steady = steady_glide_for_path(v.hydro, Environment{},
-                                                         -t.glide_path_rad * 180.0 / M_PI, t.net_buoyancy_kg);
-  CHECK_TRUE(steady.glide.has_value());
-  DOUBLES_EQUAL(steady.glide->alpha_rad, t.alpha_rad, 1e-5);
-  DOUBLES_EQUAL(steady.glide->speed_m_s, t.speed_m_s, 1e-5);
-  DOUBLES_EQUAL(steady.glide->depth_rate_m_s, t.depth_rate_m_s, 1e-5);
-  DOUBLES_EQUAL(0.0, t.pitch_rate_rad_s, 1e-7);
+  for (double pumped : {-250e-6, 250e-6}) {
+    GliderSimulator sim = steady_glide(v, pumped, 0.0);
+    const Truth t = sim.truth();
+    // The full dynamics at rest in a glide satisfy the equilibrium equations
+    // (000 eqs. 4-5) that the steady solver solves.
+    const SteadyGlideResult steady =
+        steady_glide_for_path(v.hydro, 1025.0, std::abs(t.glide_path_rad) * 180.0 / M_PI, t.net_buoyancy_kg);
+    CHECK_TRUE(steady.glide.has_value());
+    DOUBLES_EQUAL(steady.glide->alpha_rad, t.alpha_rad, 1e-5);
+    DOUBLES_EQUAL(steady.glide->speed_m_s, t.speed_m_s, 1e-5);
+    DOUBLES_EQUAL(steady.glide->depth_rate_m_s, t.depth_rate_m_s, 1e-5);
+    DOUBLES_EQUAL(0.0, t.pitch_rate_rad_s, 1e-7);
+  }
 }
 
 TEST(Dynamics, StepSizeIsWellInsideRk4Limits) {
   // The justification of GliderSimulator::kDefaultStepS, checked: the
   // linearized glide is stable and |lambda| h stays small for all modes.
   for (double pumped : {-250e-6, 250e-6}) {
-    GliderSimulator sim = steady_dive(v, pumped, 0.0);
-    const MassInputs m{pumped, 0.0, 0.0};
-    const Eigen::EigenSolver<Eigen::Matrix<double, 5, 5>> solver(jacobian(sim.dynamics(), sim.state(), m));
-    for (int i = 0; i < 5; ++i) {
+    GliderSimulator sim = steady_glide(v, pumped, 0.0);
+    const MassInputs m{pumped, 0.0, 0.0, 0.0, 0.0, 0.0};
+    const Eigen::EigenSolver<Eigen::Matrix<double, 6, 6>> solver(jacobian(sim.dynamics(), sim.state(), m));
+    for (int i = 0; i < 6; ++i) {
       const std::complex<double> lambda = solver.eigenvalues()[i];
       CHECK(lambda.real() < 1e-9);  // a steady glide is (at worst neutrally) stable
       CHECK(std::abs(lambda) * GliderSimulator::kDefaultStepS < 0.35);
@@ -129,6 +230,7 @@ TEST(Dynamics, HalvingTheStepChangesLittle) {
     sim.reset_at_depth(100.0, 0.0, 0.0);
     sim.command_pumped_volume_m3(-250e-6);
     sim.command_battery_pos_m(0.005);
+    sim.command_fin_rad(0.1);
     sim.advance(300.0);
     return sim.state();
   };
@@ -136,10 +238,11 @@ TEST(Dynamics, HalvingTheStepChangesLittle) {
   const State fine = fly(GliderSimulator::kDefaultStepS / 2.0);
   DOUBLES_EQUAL(fine[kZ], coarse[kZ], 1e-4);
   DOUBLES_EQUAL(fine[kTheta], coarse[kTheta], 1e-6);
+  DOUBLES_EQUAL(fine[kPsi], coarse[kPsi], 1e-5);
 }
 
 TEST(Dynamics, BatteryForwardPitchesDown) {
-  GliderSimulator aft = steady_dive(v, -250e-6, -0.0127);
-  GliderSimulator fwd = steady_dive(v, -250e-6, 0.0127);
+  GliderSimulator aft = steady_glide(v, -250e-6, -0.0127);
+  GliderSimulator fwd = steady_glide(v, -250e-6, 0.0127);
   CHECK(fwd.truth().pitch_rad < aft.truth().pitch_rad - 0.2);
 }

@@ -9,13 +9,14 @@ using namespace glider::model;
 
 TEST_GROUP(SteadyGlide) {
   VehicleParams v = load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
-  Environment env;
+  const double rho = 1025.0;
+  const double gravity = 9.81;
 };
 
 // Paper 000, Fig. 13: with the identified parameters and m0 = 250 g, a 25 deg
 // glide path gives ~0.20 m/s depth rate and ~0.42 m/s horizontal speed.
 TEST(SteadyGlide, Paper000Figure13) {
-  const SteadyGlideResult r = steady_glide_for_path(v.hydro, env, 25.0, 0.250);
+  const SteadyGlideResult r = steady_glide_for_path(v.hydro, rho, 25.0, 0.250);
   CHECK_TRUE(r.glide.has_value());
   const SteadyGlide& g = *r.glide;
   CHECK(std::abs(g.depth_rate_m_s - 0.20) <= 0.10 * 0.20);
@@ -25,11 +26,11 @@ TEST(SteadyGlide, Paper000Figure13) {
 }
 
 TEST(SteadyGlide, SatisfiesTheEquilibriumEquations) {
-  const SteadyGlide g = *steady_glide_for_path(v.hydro, env, 30.0, 0.2).glide;
-  const double q = 0.5 * env.density_kg_m3 * v.hydro.reference_area_m2 * g.speed_m_s * g.speed_m_s;
+  const SteadyGlide g = *steady_glide_for_path(v.hydro, rho, 30.0, 0.2).glide;
+  const double q = 0.5 * rho * v.hydro.reference_area_m2 * g.speed_m_s * g.speed_m_s;
   const double cl = 11.76 * g.alpha_rad + 4.6 * g.alpha_rad * std::abs(g.alpha_rad);
   const double cd = 0.214 + 32.3 * g.alpha_rad * g.alpha_rad;
-  const double w = 0.2 * env.gravity_m_s2;
+  const double w = 0.2 * gravity;
   // 000 eqs. 4-5 at theta = xi + alpha.
   DOUBLES_EQUAL(0.0, q * cl * std::sin(g.alpha_rad) - q * cd * std::cos(g.alpha_rad) - w * std::sin(g.pitch_rad),
                 1e-9);
@@ -38,8 +39,8 @@ TEST(SteadyGlide, SatisfiesTheEquilibriumEquations) {
 }
 
 TEST(SteadyGlide, ClimbMirrorsDive) {
-  const SteadyGlide dive = *steady_glide_for_path(v.hydro, env, 25.0, 0.25).glide;
-  const SteadyGlide climb = *steady_glide_for_path(v.hydro, env, 25.0, -0.25).glide;
+  const SteadyGlide dive = *steady_glide_for_path(v.hydro, rho, 25.0, 0.25).glide;
+  const SteadyGlide climb = *steady_glide_for_path(v.hydro, rho, 25.0, -0.25).glide;
   DOUBLES_EQUAL(-dive.alpha_rad, climb.alpha_rad, 1e-12);
   DOUBLES_EQUAL(-dive.pitch_rad, climb.pitch_rad, 1e-12);
   DOUBLES_EQUAL(-dive.depth_rate_m_s, climb.depth_rate_m_s, 1e-12);
@@ -50,8 +51,8 @@ TEST(SteadyGlide, ClimbMirrorsDive) {
 TEST(SteadyGlide, TooShallowIsRefused) {
   const double best = min_glide_path_deg(v.hydro);
   CHECK(best > 10.0 && best < 25.0);
-  const SteadyGlideResult r = steady_glide_for_path(v.hydro, env, best - 0.5, 0.25);
+  const SteadyGlideResult r = steady_glide_for_path(v.hydro, rho, best - 0.5, 0.25);
   CHECK_FALSE(r.glide.has_value());
   CHECK(r.error.find("shallower") != std::string::npos);
-  CHECK_FALSE(steady_glide_for_path(v.hydro, env, 25.0, 0.0).glide.has_value());
+  CHECK_FALSE(steady_glide_for_path(v.hydro, rho, 25.0, 0.0).glide.has_value());
 }

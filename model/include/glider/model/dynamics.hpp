@@ -13,13 +13,21 @@
 // differentiate the servo paths, and a sudden slide start is an impulsive,
 // momentum-conserving event, as it physically is.
 //
-// The water moves uniformly and steadily (Environment); states are relative
-// to the water, positions inertial. Simplifications, stated here once:
+// The water moves (Environment: profiles by depth, oscillation in time); the
+// vertical-plane states are relative to the local water, positions inertial.
+// Simplifications, stated here once:
+// - the water's own acceleration (shear crossed at the glider's depth rate,
+//   tides) is not fed back as a force: ~50 kg x 1e-4 m/s^2, negligible
+//   against the ~2.5 N of net buoyancy;
 // - ballast mass change: the pumped water carries no momentum in (it is at
 //   rest in the water frame), exact in momentum form;
 // - partial immersion at the surface reduces buoyancy only (smoothstep over
 //   one hull diameter), it adds no moment;
-// - no roll/yaw (vertical plane); heading is kept constant by the simulator.
+// - heading is not a rigid-body degree of freedom here (unlike the 6-DOF
+//   model of paper 001): the yaw rate relaxes (first order) toward
+//   fin_gain V fin + roll_gain V a_eff sin(roll offset). Roll, sideslip and
+//   their coupling back into the vertical plane are neglected; a turning
+//   glider keeps the vertical-plane speeds of the straight glide.
 #include <Eigen/Core>
 
 #include "glider/model/environment.hpp"
@@ -27,21 +35,27 @@
 
 namespace glider::model {
 
-using State = Eigen::Matrix<double, 6, 1>;
+using State = Eigen::Matrix<double, 9, 1>;
 enum StateIndex : int {
-  kX = 0,      // horizontal position along track, m
-  kZ = 1,      // depth of the CB, m (+ down)
-  kTheta = 2,  // pitch, rad (+ nose up)
-  kP1 = 3,     // linear impulse along body x, kg m/s
-  kP3 = 4,     // linear impulse along body z
-  kPi2 = 5,    // angular impulse about body y (pitch), kg m^2/s
+  kEast = 0,     // position east of the start, m
+  kNorth = 1,    // position north of the start, m
+  kZ = 2,        // depth of the CB, m (+ down)
+  kTheta = 3,    // pitch, rad (+ nose up)
+  kP1 = 4,       // linear impulse along body x, kg m/s
+  kP3 = 5,       // linear impulse along body z
+  kPi2 = 6,      // angular impulse about body y (pitch), kg m^2/s
+  kPsi = 7,      // heading, rad (0 north, clockwise; not wrapped)
+  kYawRate = 8,  // rad/s
 };
 
-// Where the internal masses are at an instant (set by the servos).
+// Where the internal masses and the fin are at an instant (set by servos).
 struct MassInputs {
   double pumped_volume_m3 = 0.0;  // + = water out = lighter
   double battery_pos_m = 0.0;     // slide position, + forward
   double battery_rate_m_s = 0.0;  // slide speed
+  double second_pos_m = 0.0;      // second moving mass, if the vehicle has one
+  double second_rate_m_s = 0.0;
+  double fin_rad = 0.0;           // rudder angle, + turns clockwise
 };
 
 // Body-frame velocities relative to the water and everything derived.
@@ -50,6 +64,9 @@ struct Evaluation {
   double speed_m_s = 0.0;
   double alpha_rad = 0.0;
   double net_buoyancy_kg = 0.0;  // weight minus buoyancy, in kg (+ = heavy)
+  double displaced_volume_m3 = 0.0;
+  double horizontal_speed_m_s = 0.0;  // through the water, along the heading
+  WaterSample water;
   double lift_n = 0.0, drag_n = 0.0;
   double gravity_moment_nm = 0.0;  // internal masses' weight about the CB
   double hydro_moment_nm = 0.0;    // viscous moment and pitch damping
@@ -61,24 +78,27 @@ class GliderDynamics {
  public:
   GliderDynamics(const VehicleParams& vehicle, const Environment& environment);
 
-  Evaluation evaluate(const State& state, const MassInputs& masses) const;
-  State derivative(const State& state, const MassInputs& masses) const {
-    return evaluate(state, masses).state_dot;
+  Evaluation evaluate(double time_s, const State& state, const MassInputs& masses) const;
+  State derivative(double time_s, const State& state, const MassInputs& masses) const {
+    return evaluate(time_s, state, masses).state_dot;
   }
 
-  // Builds the impulse state for given velocities (relative to the water).
-  State make_state(double x_m, double z_m, double theta_rad, double v1, double v3, double q,
-                   const MassInputs& masses) const;
+  // Builds the state for given velocities (relative to the water), at the
+  // origin, heading north, not turning.
+  State make_state(double z_m, double theta_rad, double v1, double v3, double q, const MassInputs& masses) const;
 
   // Fraction of the hull volume under water when the CB is at depth z_m.
   double immersed_fraction(double z_m) const;
+
+  // Displaced volume at a depth in the given water (compressibility,
+  // thermal expansion, partial immersion).
+  double displaced_volume_m3(double z_m, const WaterSample& water) const;
 
   // Pitch at which the vehicle hangs at rest (no flow), for initial states.
   double static_pitch_rad(const MassInputs& masses) const;
 
   const VehicleParams& vehicle() const { return vehicle_; }
   const Environment& environment() const { return environment_; }
-  Environment& environment() { return environment_; }
 
  private:
   struct MassProperties {
@@ -88,11 +108,11 @@ class GliderDynamics {
     double first_x = 0.0;     // sum m x
     double first_z = 0.0;     // sum m z
   };
-  MassProperties mass_properties(const MassInputs& masses) const;
+  MassProperties mass_properties(const MassInputs& masses, double water_density) const;
 
   VehicleParams vehicle_;
   Environment environment_;
-  double displaced_volume_m3_;
+  double nominal_volume_m3_;
 };
 
 }  // namespace glider::model

@@ -7,18 +7,23 @@ namespace glider::model {
 // What the simulation knows that a real glider does not (the sim_ columns).
 struct Truth {
   double time_s = 0.0;
-  double x_m = 0.0;      // along-track distance from the start
+  double east_m = 0.0;   // position relative to the start
+  double north_m = 0.0;
   double depth_m = 0.0;
+  double heading_rad = 0.0;  // wrapped to [0, 2 pi)
+  double yaw_rate_rad_s = 0.0;
   double pitch_rad = 0.0;
   double pitch_rate_rad_s = 0.0;
   double speed_m_s = 0.0;  // through the water
   double alpha_rad = 0.0;
   double glide_path_rad = 0.0;       // pitch - alpha
-  double horizontal_speed_m_s = 0.0; // over ground
-  double depth_rate_m_s = 0.0;       // + descending
+  double horizontal_speed_m_s = 0.0; // through the water, along the heading
+  double depth_rate_m_s = 0.0;       // + descending, over ground (includes water w)
   double net_buoyancy_kg = 0.0;
   double pumped_volume_m3 = 0.0;
   double battery_pos_m = 0.0;
+  double fin_rad = 0.0;
+  WaterSample water;
 };
 
 // The plant for SIL: vehicle dynamics plus its two servos, advanced with a
@@ -37,12 +42,14 @@ class GliderSimulator {
                   double step_s = kDefaultStepS);
 
   // Floating at rest at the surface, servos at the given positions.
-  void reset_at_surface(double pumped_volume_m3, double battery_pos_m);
+  void reset_at_surface(double pumped_volume_m3, double battery_pos_m, double heading_rad = 0.0);
   // At rest at depth (pitch at its static value).
-  void reset_at_depth(double depth_m, double pumped_volume_m3, double battery_pos_m);
+  void reset_at_depth(double depth_m, double pumped_volume_m3, double battery_pos_m, double heading_rad = 0.0);
 
   void command_pumped_volume_m3(double volume) { pump_.set_target(volume); }
   void command_battery_pos_m(double position) { battery_.set_target(position); }
+  void command_second_pos_m(double position) { second_.set_target(position); }
+  void command_fin_rad(double angle) { fin_.set_target(angle); }
 
   // Advance by `duration_s` (a whole number of integration steps; the last
   // one is shortened if needed).
@@ -54,15 +61,20 @@ class GliderSimulator {
   const GliderDynamics& dynamics() const { return dynamics_; }
   const RateLimitedServo& pump() const { return pump_; }
   const RateLimitedServo& battery() const { return battery_; }
+  const RateLimitedServo& second_mass() const { return second_; }
+  const RateLimitedServo& fin() const { return fin_; }
 
  private:
   void step(double h);
+  void reset_servos(double pumped_volume_m3, double battery_pos_m);
   MassInputs masses_after(double t) const;
 
   GliderDynamics dynamics_;
   double step_s_;
   RateLimitedServo pump_;
   RateLimitedServo battery_;
+  RateLimitedServo second_;
+  RateLimitedServo fin_;
   State state_ = State::Zero();
   double time_s_ = 0.0;
 };

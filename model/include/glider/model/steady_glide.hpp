@@ -7,7 +7,6 @@
 #include <optional>
 #include <string>
 
-#include "glider/model/environment.hpp"
 #include "glider/model/vehicle.hpp"
 
 namespace glider::model {
@@ -30,8 +29,8 @@ struct SteadyGlideResult {
 // buoyancy (kg: + heavy = descending, - light = climbing). Of the two angles
 // of attack that give the same path, the one with less drag (the flight
 // branch of paper 000 Fig. 12).
-SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, const Environment& env,
-                                        double glide_path_deg, double net_buoyancy_kg);
+SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double density_kg_m3,
+                                        double glide_path_deg, double net_buoyancy_kg, double gravity_m_s2 = 9.81);
 
 // Shallowest possible glide path (deg): at the angle of attack of maximum
 // lift-to-drag ratio.

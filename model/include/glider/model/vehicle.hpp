@@ -49,14 +49,35 @@ struct Hydrodynamics {
   double crossflow_from_rad = 0.0;  // ... and crossflow alone beyond this
 };
 
+// Heading in the spirit of the vertical-plane model (see dynamics.hpp): the
+// yaw rate relaxes with a time constant toward what the rudder (fin) and the
+// static roll offset ask for, both proportional to the speed.
+struct HeadingModel {
+  double fin_yaw_gain_per_m = 0.0;   // yaw rate = gain * V * fin (+ fin turns clockwise)
+  double roll_yaw_gain_per_m = 0.0;  // yaw rate = gain * V * a_eff * sin(roll) (a_eff = C_L / cl_alpha)
+  double yaw_time_constant_s = 0.0;
+  double roll_offset_rad = 0.0;      // static roll (+ starboard wing down)
+  double fin_max_rad = 0.0;          // fin servo travel (+-)
+  double fin_rate_rad_s = 0.0;       // fin servo speed
+};
+
 struct VehicleParams {
   std::string name;
   std::string description;
   double hull_mass_kg = 0.0;         // uniformly distributed: at the CB
   double hull_inertia_kg_m2 = 0.0;   // pitch inertia of the hull mass about the CB
   double hull_diameter_m = 0.0;      // for the surface (partial immersion) model
+  // Displaced volume V = V0 (1 - compressibility p + thermal_expansion (T - T0)),
+  // p gauge pressure in Pa. Nominal 0 (rigid hull) unless the file says otherwise.
+  double hull_compressibility_per_pa = 0.0;
+  double hull_thermal_expansion_per_k = 0.0;
+  double hull_reference_temperature_c = 10.0;
   PointMass offset;                  // fixed trim mass m_w at r_w
   SlidingMass battery;
+  // A second moving mass (the IIT Madras lab glider of paper 002 has two);
+  // mass 0 = absent.
+  SlidingMass second_mass;
+  HeadingModel heading;
   BuoyancyEngine ballast;
   double added_mass_x_kg = 0.0;      // m_f1
   double added_mass_z_kg = 0.0;      // m_f3
@@ -66,7 +87,9 @@ struct VehicleParams {
   double buoyancy_offset_kg = 0.0;   // net weight at zero ballast and that density (- = light)
 };
 
-// Mass of the vehicle at zero pumped volume (hull + offset + battery).
+bool has_second_mass(const VehicleParams& v);
+
+// Mass of the vehicle at zero pumped volume (hull + offset + moving masses).
 double dry_mass_kg(const VehicleParams& v);
 
 // Displaced volume that makes the vehicle weigh buoyancy_offset_kg in water

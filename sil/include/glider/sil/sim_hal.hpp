@@ -6,6 +6,7 @@
 #include "glider/hal/battery_slide.hpp"
 #include "glider/hal/buoyancy_pump.hpp"
 #include "glider/hal/depth_sensor.hpp"
+#include "glider/hal/rudder.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/sil/sim_clock.hpp"
 
@@ -26,6 +27,7 @@ struct FaultInjection {
   bool attitude_invalid = false;
   bool pump_fault = false;
   bool battery_fault = false;
+  bool fin_fault = false;
 };
 
 // The HAL implemented on the vehicle model. Deterministic: the noise comes
@@ -35,8 +37,7 @@ class SimHal final : public hal::DepthSensor,
                      public hal::BuoyancyPump,
                      public hal::BatterySlide {
  public:
-  SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
-         double heading_rad);
+  SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed);
 
   hal::DepthSample read() override;
   hal::AttitudeSample read_attitude();
@@ -52,6 +53,7 @@ class SimHal final : public hal::DepthSensor,
   // sensor is a small port object.
   hal::DepthSensor& depth() { return *this; }
   hal::AttitudeSensor& attitude() { return attitude_port_; }
+  hal::Rudder& rudder() { return rudder_port_; }
 
  private:
   class AttitudePort final : public hal::AttitudeSensor {
@@ -63,15 +65,25 @@ class SimHal final : public hal::DepthSensor,
     SimHal& owner_;
   };
 
+  class RudderPort final : public hal::Rudder {
+   public:
+    explicit RudderPort(SimHal& owner) : owner_(owner) {}
+    void command_angle_rad(double angle_rad) override { owner_.sim_.command_fin_rad(angle_rad); }
+    hal::ActuatorReading read_angle_rad() override;
+
+   private:
+    SimHal& owner_;
+  };
+
   double gaussian();
 
   model::GliderSimulator& sim_;
   const SimClock& clock_;
   SensorNoise noise_;
   std::mt19937_64 rng_;
-  double heading_rad_;
   FaultInjection faults_{};
   AttitudePort attitude_port_{*this};
+  RudderPort rudder_port_{*this};
   bool has_spare_ = false;
   double spare_ = 0.0;
 };

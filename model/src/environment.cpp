@@ -1,0 +1,52 @@
+#include "glider/model/environment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace glider::model {
+
+WaterColumn::WaterColumn(double density_kg_m3, double temperature_c)
+    : nodes_{ProfileNode{0.0, WaterSample{density_kg_m3, temperature_c, 0.0, 0.0, 0.0}}} {}
+
+WaterColumn::WaterColumn(std::vector<ProfileNode> nodes, Oscillation oscillation)
+    : nodes_(std::move(nodes)), oscillation_(oscillation) {
+  if (nodes_.empty()) throw std::invalid_argument("water profile has no nodes");
+  for (std::size_t i = 1; i < nodes_.size(); ++i) {
+    if (!(nodes_[i].depth_m > nodes_[i - 1].depth_m)) {
+      throw std::invalid_argument("water profile depths must increase strictly");
+    }
+  }
+  if (oscillation_.period_s < 0.0) throw std::invalid_argument("oscillation period must not be negative");
+}
+
+WaterSample WaterColumn::at(double depth_m, double time_s) const {
+  WaterSample w;
+  if (depth_m <= nodes_.front().depth_m) {
+    w = nodes_.front().water;
+  } else if (depth_m >= nodes_.back().depth_m) {
+    w = nodes_.back().water;
+  } else {
+    const auto upper = std::upper_bound(nodes_.begin(), nodes_.end(), depth_m,
+                                        [](double d, const ProfileNode& n) { return d < n.depth_m; });
+    const ProfileNode& b = *upper;
+    const ProfileNode& a = *(upper - 1);
+    const double f = (depth_m - a.depth_m) / (b.depth_m - a.depth_m);
+    auto mix = [f](double x, double y) { return x + f * (y - x); };
+    w.density_kg_m3 = mix(a.water.density_kg_m3, b.water.density_kg_m3);
+    w.temperature_c = mix(a.water.temperature_c, b.water.temperature_c);
+    w.current_east_m_s = mix(a.water.current_east_m_s, b.water.current_east_m_s);
+    w.current_north_m_s = mix(a.water.current_north_m_s, b.water.current_north_m_s);
+    w.vertical_velocity_m_s = mix(a.water.vertical_velocity_m_s, b.water.vertical_velocity_m_s);
+  }
+  if (oscillation_.period_s > 0.0) {
+    const double s = std::sin(2.0 * std::numbers::pi * time_s / oscillation_.period_s + oscillation_.phase_rad);
+    w.current_east_m_s += oscillation_.east_m_s * s;
+    w.current_north_m_s += oscillation_.north_m_s * s;
+    w.vertical_velocity_m_s += oscillation_.vertical_m_s * s;
+  }
+  return w;
+}
+
+}  // namespace glider::model
