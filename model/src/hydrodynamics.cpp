@@ -24,7 +24,7 @@ ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad) {
     // Beyond its range the polynomial is evaluated at the range's edge (it is
     // then only a fading part of the blend).
     const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
-    fit.lift = h.cl_alpha * a + h.cl_alpha_abs_alpha * a * std::abs(a);
+    fit.lift = h.cl0 + h.cl_alpha * a + h.cl_alpha_abs_alpha * a * std::abs(a);
     fit.drag = h.cd0 + h.cd_alpha2 * a * a;
   }
   if (w >= 1.0) return fit;

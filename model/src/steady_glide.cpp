@@ -10,38 +10,88 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// Drag/lift ratio at positive angle of attack.
-double drag_over_lift(const Hydrodynamics& h, double alpha) {
-  const ForceCoefficients c = force_coefficients(h, alpha);
-  return c.drag / c.lift;
-}
-
-// Angle of attack of minimum D/L within the fitted range (golden section:
-// D/L is unimodal there).
-double alpha_of_best_glide(const Hydrodynamics& h) {
-  double lo = 1e-6;
+// Angle of zero lift (C_L is increasing through it inside the fit range).
+double zero_lift_alpha(const Hydrodynamics& h) {
+  double lo = -h.fit_valid_to_rad;
   double hi = h.fit_valid_to_rad;
-  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
-  for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
-    const double a = hi - ratio * (hi - lo);
-    const double b = lo + ratio * (hi - lo);
-    if (drag_over_lift(h, a) < drag_over_lift(h, b)) {
-      hi = b;
-    } else {
-      lo = a;
-    }
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (force_coefficients(h, mid).lift < 0.0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }
 
-}  // namespace
+// Along the flight branch of one direction (+1 descending: lift must point
+// up, C_L > 0; -1 climbing: C_L < 0), parametrised by the distance t from
+// the zero-lift angle.
+struct Branch {
+  const Hydrodynamics& h;
+  int direction;
+  double alpha0;
+  double alpha(double t) const { return alpha0 + direction * t; }
+  // tan(gamma) = D / |L|: +inf at t = 0, falling to the best glide.
+  double tan_gamma(double t) const {
+    const ForceCoefficients c = force_coefficients(h, alpha(t));
+    return c.drag / (direction * c.lift);
+  }
+  // t of the best glide ratio (golden section: unimodal on the fit range).
+  double t_best() const {
+    double lo = 1e-9;
+    double hi = h.fit_valid_to_rad;
+    const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+    for (int i = 0; i < 200 && hi - lo > 1e-13; ++i) {
+      const double a = hi - ratio * (hi - lo);
+      const double b = lo + ratio * (hi - lo);
+      if (tan_gamma(a) < tan_gamma(b)) {
+        hi = b;
+      } else {
+        lo = a;
+      }
+    }
+    return 0.5 * (lo + hi);
+  }
+};
 
-double min_glide_path_deg(const Hydrodynamics& hydro) {
-  return std::atan(drag_over_lift(hydro, alpha_of_best_glide(hydro))) / kDeg;
+Branch make_branch(const Hydrodynamics& h, int direction) { return Branch{h, direction, zero_lift_alpha(h)}; }
+
+// The glide with angle of attack `alpha` on `branch` and net buoyancy m0.
+SteadyGlide glide_at(const Branch& branch, double t, double density, double gravity, double m0) {
+  const double alpha = branch.alpha(t);
+  const ForceCoefficients c = force_coefficients(branch.h, alpha);
+  const double gamma = std::atan(branch.tan_gamma(t));
+  const double speed = std::sqrt(2.0 * std::abs(m0) * gravity /
+                                 (density * branch.h.reference_area_m2 * std::hypot(c.lift, c.drag)));
+  SteadyGlide g;
+  g.glide_path_rad = -branch.direction * gamma;
+  g.alpha_rad = alpha;
+  g.pitch_rad = g.glide_path_rad + alpha;
+  g.speed_m_s = speed;
+  g.depth_rate_m_s = -speed * std::sin(g.glide_path_rad);
+  g.horizontal_speed_m_s = speed * std::cos(g.glide_path_rad);
+  g.net_buoyancy_kg = m0;
+  return g;
 }
 
-SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double density_kg_m3,
-                                        double glide_path_deg, double net_buoyancy_kg, double gravity_m_s2) {
+// Net pitching moment of the full model in a given steady glide.
+double pitch_moment(const GliderDynamics& dyn, const MassInputs& masses, double depth_m, const SteadyGlide& g) {
+  const State s = dyn.make_state(depth_m, g.pitch_rad, g.speed_m_s * std::cos(g.alpha_rad),
+                                 g.speed_m_s * std::sin(g.alpha_rad), 0.0, masses);
+  return dyn.derivative(0.0, s, masses)[kPi2];
+}
+
+double net_buoyancy_at_rest(const GliderDynamics& dyn, const MassInputs& masses, double depth_m) {
+  return dyn.evaluate(0.0, dyn.make_state(depth_m, 0.0, 0.0, 0.0, 0.0, masses), masses).net_buoyancy_kg;
+}
+
+}  // namespace
+
+double min_glide_path_deg(const Hydrodynamics& hydro, int direction) {
+  const Branch branch = make_branch(hydro, direction > 0 ? 1 : -1);
+  return std::atan(branch.tan_gamma(branch.t_best())) / kDeg;
+}
+
+SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double density_kg_m3, double glide_path_deg,
+                                        double net_buoyancy_kg, double gravity_m_s2) {
   SteadyGlideResult result;
   if (!(glide_path_deg > 0.0 && glide_path_deg < 90.0)) {
     result.error = "glide path must be between 0 and 90 deg (magnitude)";
@@ -51,36 +101,102 @@ SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double densi
     result.error = "a steady glide needs a non-zero net buoyancy";
     return result;
   }
-  const double a_best = alpha_of_best_glide(hydro);
-  const double gamma_min = min_glide_path_deg(hydro);
+  const Branch branch = make_branch(hydro, net_buoyancy_kg > 0.0 ? 1 : -1);
+  const double t_best = branch.t_best();
+  const double gamma_min = std::atan(branch.tan_gamma(t_best)) / kDeg;
   if (glide_path_deg < gamma_min) {
     result.error = "glide path shallower than the vehicle's best glide (" + std::to_string(gamma_min) + " deg)";
     return result;
   }
-  // On (0, a_best] D/L falls monotonically from +inf to its minimum: bisect.
+  // On (0, t_best] tan(gamma) falls monotonically from +inf: bisect.
   const double target = std::tan(glide_path_deg * kDeg);
-  double lo = 1e-9;
-  double hi = a_best;
-  for (int i = 0; i < 200 && hi - lo > 1e-14; ++i) {
+  double lo = 1e-12;
+  double hi = t_best;
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (drag_over_lift(hydro, mid) > target ? lo : hi) = mid;
+    (branch.tan_gamma(mid) > target ? lo : hi) = mid;
   }
-  const double alpha = 0.5 * (lo + hi);
-  const ForceCoefficients c = force_coefficients(hydro, alpha);
-  const double weight_n = std::abs(net_buoyancy_kg) * gravity_m_s2;
-  const double speed =
-      std::sqrt(2.0 * weight_n / (density_kg_m3 * hydro.reference_area_m2 * std::hypot(c.lift, c.drag)));
+  result.glide = glide_at(branch, 0.5 * (lo + hi), density_kg_m3, gravity_m_s2, net_buoyancy_kg);
+  return result;
+}
 
-  // Heavy: descending, xi < 0, alpha > 0. Light: the mirror image.
-  const double sign = net_buoyancy_kg > 0.0 ? 1.0 : -1.0;
-  SteadyGlide g;
-  g.glide_path_rad = -sign * glide_path_deg * kDeg;
-  g.alpha_rad = sign * alpha;
-  g.pitch_rad = g.glide_path_rad + g.alpha_rad;
-  g.speed_m_s = speed;
-  g.depth_rate_m_s = -speed * std::sin(g.glide_path_rad);
-  g.horizontal_speed_m_s = speed * std::cos(g.glide_path_rad);
-  result.glide = g;
+SteadyGlideResult solve_equilibrium(const GliderDynamics& dyn, const MassInputs& masses, double depth_m) {
+  SteadyGlideResult result;
+  const double m0 = net_buoyancy_at_rest(dyn, masses, depth_m);
+  if (std::abs(m0) < 1e-6) {
+    result.error = "neutrally buoyant: no steady glide (it hovers)";
+    return result;
+  }
+  const Hydrodynamics& h = dyn.vehicle().hydro;
+  const double density = dyn.environment().water.at(depth_m, 0.0).density_kg_m3;
+  const double gravity = dyn.environment().gravity_m_s2;
+  const Branch branch = make_branch(h, m0 > 0.0 ? 1 : -1);
+  auto residual = [&](double t) { return pitch_moment(dyn, masses, depth_m, glide_at(branch, t, density, gravity, m0)); };
+  // Walk along the branch from the zero-lift angle to the best glide ratio;
+  // a moment balance there is the glide the vehicle flies. Beyond the best
+  // glide (the back side of the polar) the SIL dynamics do not settle: the
+  // vehicle stalls, and this solver says so instead of offering that root.
+  const int steps = 400;
+  const double t_max = branch.t_best();
+  double t_prev = 1e-9;
+  double r_prev = residual(t_prev);
+  for (int i = 1; i <= steps; ++i) {
+    const double t = t_max * i / steps;
+    const double r = residual(t);
+    if ((r_prev < 0.0) != (r < 0.0)) {
+      double lo = t_prev;
+      double hi = t;
+      const bool lo_negative = r_prev < 0.0;
+      for (int k = 0; k < 200 && hi - lo > 1e-15; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        ((residual(mid) < 0.0) == lo_negative ? lo : hi) = mid;
+      }
+      result.glide = glide_at(branch, 0.5 * (lo + hi), density, gravity, m0);
+      return result;
+    }
+    t_prev = t;
+    r_prev = r;
+  }
+  result.error = "no steady glide: the pitch trim is " +
+                 std::string(residual(t_max) > 0.0 ? "too nose-up" : "too nose-down") +
+                 " for this ballast (shallower than the best glide of " +
+                 std::to_string(std::atan(branch.tan_gamma(t_max)) / kDeg) + " deg: it stalls)";
+  return result;
+}
+
+TrimResult solve_trim(const GliderDynamics& dyn, double glide_path_deg, double net_buoyancy_kg, double depth_m) {
+  TrimResult result;
+  const double density = dyn.environment().water.at(depth_m, 0.0).density_kg_m3;
+  const SteadyGlideResult steady = steady_glide_for_path(dyn.vehicle().hydro, density, glide_path_deg,
+                                                         net_buoyancy_kg, dyn.environment().gravity_m_s2);
+  if (!steady.glide) {
+    result.error = steady.error;
+    return result;
+  }
+  Trim trim;
+  trim.glide = *steady.glide;
+  // Net buoyancy is affine in the pumped volume (ballast mass = -rho V).
+  const double m0_zero = net_buoyancy_at_rest(dyn, MassInputs{}, depth_m);
+  trim.pumped_volume_m3 = (m0_zero - net_buoyancy_kg) / density;
+  // The pitching moment is affine in the battery position: two evaluations.
+  MassInputs masses{};
+  masses.pumped_volume_m3 = trim.pumped_volume_m3;
+  const double probe = 0.01;
+  const double r0 = pitch_moment(dyn, masses, depth_m, trim.glide);
+  masses.battery_pos_m = probe;
+  const double r1 = pitch_moment(dyn, masses, depth_m, trim.glide);
+  trim.battery_pos_m = -r0 * probe / (r1 - r0);
+
+  const VehicleParams& v = dyn.vehicle();
+  trim.within_limits = true;
+  if (trim.pumped_volume_m3 < v.ballast.volume_min_m3 || trim.pumped_volume_m3 > v.ballast.volume_max_m3) {
+    trim.within_limits = false;
+    trim.note = "ballast outside the pump's range";
+  } else if (trim.battery_pos_m < v.battery.travel_min_m || trim.battery_pos_m > v.battery.travel_max_m) {
+    trim.within_limits = false;
+    trim.note = "battery outside the slide's travel";
+  }
+  result.trim = trim;
   return result;
 }
 

@@ -51,6 +51,7 @@ void visit_numbers(VehicleParams& v, Visitor&& visit) {
   visit("added_mass.z_kg", v.added_mass_z_kg, req);
   visit("added_mass.inertia_kg_m2", v.added_inertia_kg_m2, req);
   visit("hydrodynamics.reference_area_m2", v.hydro.reference_area_m2, req);
+  visit("hydrodynamics.cl0", v.hydro.cl0, opt);
   visit("hydrodynamics.cl_alpha", v.hydro.cl_alpha, req);
   visit("hydrodynamics.cl_alpha_abs_alpha", v.hydro.cl_alpha_abs_alpha, req);
   visit("hydrodynamics.cd0", v.hydro.cd0, req);

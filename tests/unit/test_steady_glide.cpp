@@ -1,7 +1,9 @@
 #include <CppUTest/TestHarness.h>
 
+#include <array>
 #include <cmath>
 
+#include "glider/model/simulator.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 
@@ -55,4 +57,72 @@ TEST(SteadyGlide, TooShallowIsRefused) {
   CHECK_FALSE(r.glide.has_value());
   CHECK(r.error.find("shallower") != std::string::npos);
   CHECK_FALSE(steady_glide_for_path(v.hydro, rho, 25.0, 0.0).glide.has_value());
+}
+
+TEST(SteadyGlide, EquilibriumMatchesTheDynamicsAtRest) {
+  // Flyable trims: pitch steeper than the best glide (~19 deg for WE01).
+  const std::array<std::array<double, 2>, 5> cases{{{-250e-6, 0.0}, {-250e-6, 0.008}, {-150e-6, 0.004},
+                                                    {200e-6, -0.005}, {250e-6, -0.01}}};
+  for (const auto& [pumped, battery] : cases) {
+    {
+      GliderSimulator sim(v, Environment{});
+      sim.reset_at_depth(600.0, pumped, battery);  // deep enough not to surface while settling
+      sim.advance(900.0);
+      const Truth t = sim.truth();
+      const MassInputs masses{pumped, battery, 0.0, 0.0, 0.0, 0.0};
+      const SteadyGlideResult eq = solve_equilibrium(sim.dynamics(), masses, 100.0);
+      CHECK_TRUE(eq.glide.has_value());
+      DOUBLES_EQUAL(t.pitch_rad, eq.glide->pitch_rad, 1e-6);
+      DOUBLES_EQUAL(t.alpha_rad, eq.glide->alpha_rad, 1e-6);
+      DOUBLES_EQUAL(t.speed_m_s, eq.glide->speed_m_s, 1e-6);
+      DOUBLES_EQUAL(t.depth_rate_m_s, eq.glide->depth_rate_m_s, 1e-6);
+    }
+  }
+}
+
+TEST(SteadyGlide, TrimAndEquilibriumAreInverses) {
+  const GliderDynamics dyn(v, Environment{});
+  for (double m0 : {0.2, -0.15}) {
+    const TrimResult trim = solve_trim(dyn, 30.0, m0, 50.0);
+    CHECK_TRUE(trim.trim.has_value());
+    CHECK_TRUE(trim.trim->within_limits);
+    DOUBLES_EQUAL(-m0 / 1025.0, trim.trim->pumped_volume_m3, 1e-12);  // neutral at zero by construction
+    const MassInputs masses{trim.trim->pumped_volume_m3, trim.trim->battery_pos_m, 0.0, 0.0, 0.0, 0.0};
+    const SteadyGlideResult eq = solve_equilibrium(dyn, masses, 50.0);
+    CHECK_TRUE(eq.glide.has_value());
+    DOUBLES_EQUAL(30.0, std::abs(eq.glide->glide_path_rad) * 180.0 / M_PI, 1e-6);
+    DOUBLES_EQUAL(trim.trim->glide.speed_m_s, eq.glide->speed_m_s, 1e-9);
+  }
+}
+
+TEST(SteadyGlide, TrimOutsideTheActuatorsIsFlagged) {
+  const GliderDynamics dyn(v, Environment{});
+  const TrimResult heavy = solve_trim(dyn, 30.0, 0.5, 50.0);  // needs 488 cc
+  CHECK_TRUE(heavy.trim.has_value());
+  CHECK_FALSE(heavy.trim->within_limits);
+  STRCMP_EQUAL("ballast outside the pump's range", heavy.trim->note.c_str());
+  const TrimResult steep = solve_trim(dyn, 80.0, 0.2, 50.0);  // nose far down: battery off its travel
+  CHECK_TRUE(steep.trim.has_value());
+  CHECK_FALSE(steep.trim->within_limits);
+}
+
+TEST(SteadyGlide, ZeroLiftOffsetBreaksTheMirror) {
+  Hydrodynamics h = v.hydro;
+  h.cl0 = 0.05;
+  const SteadyGlide dive = *steady_glide_for_path(h, rho, 30.0, 0.25).glide;
+  const SteadyGlide climb = *steady_glide_for_path(h, rho, 30.0, -0.25).glide;
+  CHECK(std::abs(dive.alpha_rad + climb.alpha_rad) > 1e-3);  // no longer symmetric
+  CHECK(min_glide_path_deg(h, 1) != min_glide_path_deg(h, -1));
+}
+
+TEST(SteadyGlide, TooShallowATrimStallsAndSaysSo) {
+  const GliderDynamics dyn(v, Environment{});
+  const SteadyGlideResult r = solve_equilibrium(dyn, MassInputs{-250e-6, -0.005, 0.0, 0.0, 0.0, 0.0}, 50.0);
+  CHECK_FALSE(r.glide.has_value());
+  CHECK(r.error.find("stalls") != std::string::npos);
+  // ... and the dynamics agree: it ends up at a high angle of attack.
+  GliderSimulator sim(v, Environment{});
+  sim.reset_at_depth(200.0, -250e-6, -0.005);
+  sim.advance(900.0);
+  CHECK(sim.truth().alpha_rad > 0.25);
 }

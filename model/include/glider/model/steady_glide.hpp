@@ -1,12 +1,16 @@
 #pragma once
 // Steady (equilibrium) glides of the vertical-plane model, paper 000 eqs.
-// (4)-(6): in a steady straight glide lift and drag balance the net weight,
-//   D = m0 g sin(gamma), L = m0 g cos(gamma),  gamma = glide path below horizontal,
-// so tan(gamma) = C_D(a) / C_L(a) fixes the angle of attack and
-//   V^2 = 2 m0 g / (rho A sqrt(C_L^2 + C_D^2)) the speed.
+// (1)-(6): in a steady straight glide lift and drag balance the net weight,
+//   D = m0 g sin(gamma), L = m0 g cos(gamma),  gamma = glide path below/above horizontal,
+// so tan(gamma) = C_D(a) / |C_L(a)| fixes the angle of attack and
+//   V^2 = 2 |m0| g / (rho A sqrt(C_L^2 + C_D^2)) the speed; the pitching
+// moment (internal masses, viscous moment, Munk) must vanish too, which
+// fixes where the battery has to be. Glides shallower than the best glide
+// ratio do not exist (paper 002 eq. 9, here for any C_L, C_D).
 #include <optional>
 #include <string>
 
+#include "glider/model/dynamics.hpp"
 #include "glider/model/vehicle.hpp"
 
 namespace glider::model {
@@ -18,6 +22,7 @@ struct SteadyGlide {
   double speed_m_s = 0.0;
   double depth_rate_m_s = 0.0;        // + descending
   double horizontal_speed_m_s = 0.0;
+  double net_buoyancy_kg = 0.0;       // + heavy
 };
 
 struct SteadyGlideResult {
@@ -25,15 +30,35 @@ struct SteadyGlideResult {
   std::string error;  // why there is no glide (e.g. steeper than possible)
 };
 
-// Steady glide with the given glide path angle magnitude (deg, > 0) and net
-// buoyancy (kg: + heavy = descending, - light = climbing). Of the two angles
-// of attack that give the same path, the one with less drag (the flight
-// branch of paper 000 Fig. 12).
-SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double density_kg_m3,
-                                        double glide_path_deg, double net_buoyancy_kg, double gravity_m_s2 = 9.81);
+// Steady glide with the given glide path magnitude (deg, > 0) and net
+// buoyancy (kg: + heavy = descending, - light = climbing), from the force
+// balance alone. Of the two angles of attack that give the same path, the
+// one with less drag (the flight branch of paper 000 Fig. 12).
+SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double density_kg_m3, double glide_path_deg,
+                                        double net_buoyancy_kg, double gravity_m_s2 = 9.81);
 
-// Shallowest possible glide path (deg): at the angle of attack of maximum
-// lift-to-drag ratio.
-double min_glide_path_deg(const Hydrodynamics& hydro);
+// Shallowest possible glide path (deg) descending (+1) or climbing (-1): at
+// the angle of attack of the best lift-to-drag ratio.
+double min_glide_path_deg(const Hydrodynamics& hydro, int direction = 1);
+
+// Forward problem: where does the vehicle settle with this ballast and these
+// moving-mass positions (fin centred, still water at `depth_m`)? Solves force
+// and moment balance with the full model's terms (GliderDynamics::evaluate).
+SteadyGlideResult solve_equilibrium(const GliderDynamics& dynamics, const MassInputs& masses, double depth_m);
+
+// Inverse problem: the ballast and battery position that fly the given glide
+// path (deg, magnitude) with the given net buoyancy (kg, sign = direction).
+struct Trim {
+  SteadyGlide glide;
+  double pumped_volume_m3 = 0.0;
+  double battery_pos_m = 0.0;
+  bool within_limits = false;  // inside the pump range and the slide travel
+  std::string note;            // which limit is exceeded
+};
+struct TrimResult {
+  std::optional<Trim> trim;
+  std::string error;
+};
+TrimResult solve_trim(const GliderDynamics& dynamics, double glide_path_deg, double net_buoyancy_kg, double depth_m);
 
 }  // namespace glider::model

@@ -37,7 +37,8 @@ struct BuoyancyEngine {
 // L = q A C_L(a), D = q A C_D(a), M = q A C_M(a) + damping, q = rho V^2 / 2.
 struct Hydrodynamics {
   double reference_area_m2 = 0.0;
-  double cl_alpha = 0.0;            // C_L = cl_alpha a + cl_alpha_abs_alpha a|a|
+  double cl0 = 0.0;                 // C_L = cl0 + cl_alpha a + cl_alpha_abs_alpha a|a|
+  double cl_alpha = 0.0;
   double cl_alpha_abs_alpha = 0.0;
   double cd0 = 0.0;                 // C_D = cd0 + cd_alpha2 a^2
   double cd_alpha2 = 0.0;
