@@ -1,0 +1,152 @@
+// glider-steady: steady glides of a vehicle file, forward (ballast and
+// battery -> glide) and inverse (glide path and net buoyancy -> ballast and
+// battery).
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+
+#include "glider/config/toml_document.hpp"
+#include "glider/model/steady_glide.hpp"
+#include "glider/model/vehicle_file.hpp"
+
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kMetresPerInch = 0.0254;
+constexpr double kCubicMetresPerCc = 1e-6;
+
+struct Report {
+  std::string vehicle;
+  std::string mode;
+  double depth_m = 0.0;
+  double density = 0.0;
+  glider::model::SteadyGlide glide;
+  double ballast_cc = 0.0;
+  double battpos_in = 0.0;
+  bool within_limits = true;
+  std::string note;
+};
+
+nlohmann::ordered_json to_json(const Report& r) {
+  nlohmann::ordered_json j;
+  j["vehicle"] = r.vehicle;
+  j["mode"] = r.mode;
+  j["pitch_deg"] = r.glide.pitch_rad * kDeg;
+  j["angle_of_attack_deg"] = r.glide.alpha_rad * kDeg;
+  j["glide_path_deg"] = r.glide.glide_path_rad * kDeg;
+  j["speed_m_s"] = r.glide.speed_m_s;
+  j["depth_rate_m_s"] = r.glide.depth_rate_m_s;
+  j["horizontal_speed_m_s"] = r.glide.horizontal_speed_m_s;
+  j["net_buoyancy_g"] = r.glide.net_buoyancy_kg * 1000.0;
+  j["ballast_cc"] = r.ballast_cc;
+  j["battpos_in"] = r.battpos_in;
+  j["within_limits"] = r.within_limits;
+  j["depth_m"] = r.depth_m;
+  j["density_kg_m3"] = r.density;
+  if (!r.note.empty()) j["note"] = r.note;
+  return j;
+}
+
+void print_text(const Report& r) {
+  std::printf("Steady glide of %s (%s; %.0f m, water %.1f kg/m^3)\n", r.vehicle.c_str(), r.mode.c_str(), r.depth_m,
+              r.density);
+  std::printf("  ballast            %+8.1f cc   (m_ballast_pumped)\n", r.ballast_cc);
+  std::printf("  battery            %+8.3f in   (m_battpos)\n", r.battpos_in);
+  std::printf("  net buoyancy       %+8.1f g    (+ heavy)\n", r.glide.net_buoyancy_kg * 1000.0);
+  std::printf("  pitch              %+8.2f deg\n", r.glide.pitch_rad * kDeg);
+  std::printf("  angle of attack    %+8.2f deg\n", r.glide.alpha_rad * kDeg);
+  std::printf("  glide path         %+8.2f deg\n", r.glide.glide_path_rad * kDeg);
+  std::printf("  speed              %8.3f m/s\n", r.glide.speed_m_s);
+  std::printf("  depth rate         %+8.3f m/s  (+ descending)\n", r.glide.depth_rate_m_s);
+  std::printf("  horizontal speed   %8.3f m/s\n", r.glide.horizontal_speed_m_s);
+  if (!r.within_limits) std::printf("  WARNING: %s\n", r.note.c_str());
+}
+
+int fail(bool json, const std::string& message) {
+  if (json) {
+    std::printf("%s\n", nlohmann::json{{"error", message}}.dump().c_str());
+  } else {
+    std::fprintf(stderr, "glider-steady: %s\n", message.c_str());
+  }
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Steady glides of a glider vehicle model (forward and inverse)"};
+  std::string vehicle_path;
+  double ballast_cc = NAN, battpos_in = NAN, glide_path_deg = NAN, net_buoyancy_g = NAN;
+  double depth_m = 100.0;
+  double density = NAN;
+  bool json = false;
+  app.add_option("--vehicle", vehicle_path, "vehicle parameter file (TOML)")->required()->check(CLI::ExistingFile);
+  auto* ballast = app.add_option("--ballast-cc", ballast_cc, "pumped volume, cc (+ = more buoyant)");
+  auto* battery = app.add_option("--battpos-in", battpos_in, "battery position, in (+ = forward)");
+  auto* path = app.add_option("--glide-path-deg", glide_path_deg, "glide path angle magnitude, deg");
+  auto* buoyancy = app.add_option("--net-buoyancy-g", net_buoyancy_g, "net buoyancy, g (+ heavy: descending)");
+  app.add_option("--depth-m", depth_m, "depth of the glide (compressibility)")->capture_default_str();
+  app.add_option("--density", density, "water density, kg/m^3 (default: the vehicle's trim density)");
+  app.add_flag("--json", json, "one JSON object on stdout");
+  ballast->needs(battery);
+  battery->needs(ballast);
+  path->needs(buoyancy);
+  buoyancy->needs(path);
+  ballast->excludes(path);
+  path->excludes(ballast);
+  CLI11_PARSE(app, argc, argv);
+  const bool forward = !std::isnan(ballast_cc);
+  if (!forward && std::isnan(glide_path_deg)) {
+    return fail(json, "give either --ballast-cc and --battpos-in, or --glide-path-deg and --net-buoyancy-g");
+  }
+
+  glider::model::VehicleParams vehicle;
+  try {
+    vehicle = glider::model::load_vehicle_file(vehicle_path);
+  } catch (const glider::config::ConfigError& error) {
+    return fail(json, error.what());
+  }
+  if (std::isnan(density)) density = vehicle.trim_density_kg_m3;
+  const glider::model::GliderDynamics dynamics(vehicle, glider::model::still_water(density));
+
+  Report report;
+  report.vehicle = vehicle.name;
+  report.depth_m = depth_m;
+  report.density = density;
+  if (forward) {
+    report.mode = "forward: ballast and battery given";
+    glider::model::MassInputs masses;
+    masses.pumped_volume_m3 = ballast_cc * kCubicMetresPerCc;
+    masses.battery_pos_m = battpos_in * kMetresPerInch;
+    const auto result = glider::model::solve_equilibrium(dynamics, masses, depth_m);
+    if (!result.glide) return fail(json, result.error);
+    report.glide = *result.glide;
+    report.ballast_cc = ballast_cc;
+    report.battpos_in = battpos_in;
+    const auto& v = vehicle;
+    if (masses.pumped_volume_m3 < v.ballast.volume_min_m3 || masses.pumped_volume_m3 > v.ballast.volume_max_m3 ||
+        masses.battery_pos_m < v.battery.travel_min_m || masses.battery_pos_m > v.battery.travel_max_m) {
+      report.within_limits = false;
+      report.note = "inputs outside the vehicle's pump range or slide travel";
+    }
+  } else {
+    report.mode = "inverse: glide path and net buoyancy given";
+    const auto result =
+        glider::model::solve_trim(dynamics, std::abs(glide_path_deg), net_buoyancy_g / 1000.0, depth_m);
+    if (!result.trim) return fail(json, result.error);
+    report.glide = result.trim->glide;
+    report.ballast_cc = result.trim->pumped_volume_m3 / kCubicMetresPerCc;
+    report.battpos_in = result.trim->battery_pos_m / kMetresPerInch;
+    report.within_limits = result.trim->within_limits;
+    report.note = result.trim->note;
+  }
+  if (json) {
+    std::printf("%s\n", to_json(report).dump().c_str());
+  } else {
+    print_text(report);
+  }
+  return 0;
+}
