@@ -1,6 +1,9 @@
 // glider-sil: fly a mission in SIL and print a summary.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <vector>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
@@ -19,6 +22,24 @@ void print_glides(const char* name, const glider::sil::GlideStats& s) {
   std::printf("  %-7s settled: pitch %6.1f deg, depth rate %+6.3f m/s  (%llu samples, max pitch error %.1f deg)\n",
               name, s.mean_pitch_rad() * kDegPerRad, s.mean_depth_rate_m_s(),
               static_cast<unsigned long long>(s.samples), s.max_pitch_error_rad * kDegPerRad);
+}
+
+// All inflection depths for a short mission, their ranges for a long one.
+void print_inflections(int yos, const std::vector<double>& depths) {
+  std::printf("  yos     : %d flown (inflections at", yos);
+  if (depths.size() <= 12) {
+    for (double depth : depths) std::printf(" %.1f", depth);
+    std::printf(" m)\n");
+    return;
+  }
+  double bottom_min = 1e9, bottom_max = -1e9, top_min = 1e9, top_max = -1e9;
+  for (std::size_t i = 0; i < depths.size(); ++i) {
+    double& lo = i % 2 == 0 ? bottom_min : top_min;
+    double& hi = i % 2 == 0 ? bottom_max : top_max;
+    lo = std::min(lo, depths[i]);
+    hi = std::max(hi, depths[i]);
+  }
+  std::printf(" %.1f-%.1f m at the bottoms, %.1f-%.1f m at the tops)\n", bottom_min, bottom_max, top_min, top_max);
 }
 
 }  // namespace
@@ -79,12 +100,16 @@ int main(int argc, char** argv) {
     } else {
       std::printf("  result  : %s\n", result.completed ? "mission complete, surfaced" : "NOT complete (time limit)");
     }
-    std::printf("  yos     : %d flown (inflections at", result.yos);
-    for (double depth : result.stats.inflection_depths_m()) std::printf(" %.1f", depth);
-    std::printf(" m)\n");
+    print_inflections(result.yos, result.stats.inflection_depths_m());
     print_glides("dives", result.stats.dives());
     print_glides("climbs", result.stats.climbs());
-    std::printf("  simulated time : %.0f s (%.1f min)\n", result.sim_time_s, result.sim_time_s / 60.0);
+    std::printf("  distance       : %.2f km over ground\n",
+                std::hypot(result.final_truth.east_m, result.final_truth.north_m) / 1000.0);
+    if (result.sim_time_s < 86400.0) {
+      std::printf("  simulated time : %.0f s (%.1f min)\n", result.sim_time_s, result.sim_time_s / 60.0);
+    } else {
+      std::printf("  simulated time : %.0f s (%.1f days)\n", result.sim_time_s, result.sim_time_s / 86400.0);
+    }
     std::printf("  wall time      : %.4f s\n", wall_s);
     std::printf("  real-time factor: %.0fx\n", wall_s > 0.0 ? result.sim_time_s / wall_s : 0.0);
     std::printf("  loop overruns  : %u (cycles %llu)\n", result.executive.overruns,
