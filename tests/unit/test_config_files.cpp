@@ -2,11 +2,13 @@
 
 #include <fstream>
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 #include <string>
 
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 
 using glider::config::ConfigError;
@@ -134,4 +136,18 @@ TEST(ConfigFiles, MissingFileIsAClearError) {
   } catch (const ConfigError& error) {
     STRCMP_EQUAL("/nonexistent/vehicle.toml: no such file", error.what());
   }
+}
+
+TEST(ConfigFiles, EveryShippedVehicleLoadsAndGlides) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(GLIDER_SOURCE_DIR "/boards/vehicles")) {
+    if (entry.path().extension() != ".toml") continue;
+    const glider::model::VehicleParams v = glider::model::load_vehicle_file(entry.path());
+    const glider::model::GliderDynamics dyn(v, glider::model::still_water(v.trim_density_kg_m3));
+    const glider::model::TrimResult trim = glider::model::solve_trim(dyn, 30.0, 0.1, 10.0);
+    CHECK_TRUE_TEXT(trim.trim.has_value(), entry.path().c_str());
+    CHECK_TRUE_TEXT(trim.trim->within_limits, entry.path().c_str());
+    ++count;
+  }
+  LONGS_EQUAL(4, count);  // WE01, Stante's SLOCUM, IIT Madras, USM
 }
