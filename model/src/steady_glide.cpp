@@ -120,6 +120,33 @@ SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double densi
   return result;
 }
 
+SteadyGlideResult steady_glide_for_pitch(const Hydrodynamics& hydro, double density_kg_m3, double pitch_rad,
+                                         double net_buoyancy_kg, double gravity_m_s2) {
+  SteadyGlideResult result;
+  if (net_buoyancy_kg == 0.0 || !std::isfinite(net_buoyancy_kg) || !std::isfinite(pitch_rad)) {
+    result.error = "a steady glide needs a finite pitch and a non-zero net buoyancy";
+    return result;
+  }
+  const Branch branch = make_branch(hydro, net_buoyancy_kg > 0.0 ? 1 : -1);
+  // Along the branch, |pitch| = gamma - direction * alpha falls from 90 deg
+  // at zero lift to its smallest value at the best glide: bisect.
+  const double target = -branch.direction * pitch_rad;  // pitch magnitude in the glide's direction
+  auto pitch_magnitude = [&](double t) { return std::atan(branch.tan_gamma(t)) - branch.direction * branch.alpha(t); };
+  const double t_best = branch.t_best();
+  if (!(target < pitch_magnitude(1e-12)) || !(target > pitch_magnitude(t_best))) {
+    result.error = "pitch outside the steady glides of this buoyancy";
+    return result;
+  }
+  double lo = 1e-12;
+  double hi = t_best;
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (pitch_magnitude(mid) > target ? lo : hi) = mid;
+  }
+  result.glide = glide_at(branch, 0.5 * (lo + hi), density_kg_m3, gravity_m_s2, net_buoyancy_kg);
+  return result;
+}
+
 SteadyGlideResult solve_equilibrium(const GliderDynamics& dyn, const MassInputs& masses, double depth_m) {
   SteadyGlideResult result;
   const double m0 = net_buoyancy_at_rest(dyn, masses, depth_m);

@@ -126,3 +126,16 @@ TEST(SteadyGlide, TooShallowATrimStallsAndSaysSo) {
   sim.advance(900.0);
   CHECK(sim.truth().alpha_rad > 0.25);
 }
+
+TEST(SteadyGlide, ForPitchInvertsForPath) {
+  for (double m0 : {0.25, -0.2}) {
+    const SteadyGlide g = *steady_glide_for_path(v.hydro, rho, 28.0, m0).glide;
+    const SteadyGlideResult back = steady_glide_for_pitch(v.hydro, rho, g.pitch_rad, m0);
+    CHECK_TRUE(back.glide.has_value());
+    DOUBLES_EQUAL(g.alpha_rad, back.glide->alpha_rad, 1e-9);
+    DOUBLES_EQUAL(g.depth_rate_m_s, back.glide->depth_rate_m_s, 1e-9);
+  }
+  // Nose up while heavy, or flatter than the best glide: no steady glide.
+  CHECK_FALSE(steady_glide_for_pitch(v.hydro, rho, 0.3, 0.25).glide.has_value());
+  CHECK_FALSE(steady_glide_for_pitch(v.hydro, rho, -0.1, 0.25).glide.has_value());
+}

@@ -37,6 +37,13 @@ struct SteadyGlideResult {
 SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double density_kg_m3, double glide_path_deg,
                                         double net_buoyancy_kg, double gravity_m_s2 = 9.81);
 
+// Steady glide at a given pitch (rad) and net buoyancy (kg), from the force
+// balance alone (the pitch is taken as measured, as flight-model fits to real
+// data do). No glide if the pitch is shallower than the best glide allows or
+// points the wrong way for the sign of the buoyancy.
+SteadyGlideResult steady_glide_for_pitch(const Hydrodynamics& hydro, double density_kg_m3, double pitch_rad,
+                                         double net_buoyancy_kg, double gravity_m_s2 = 9.81);
+
 // Shallowest possible glide path (deg) descending (+1) or climbing (-1): at
 // the angle of attack of the best lift-to-drag ratio.
 double min_glide_path_deg(const Hydrodynamics& hydro, int direction = 1);
