@@ -1,0 +1,35 @@
+#pragma once
+// A validation report: Markdown text, data files and gnuplot scripts in one
+// directory; the plots are rendered by gnuplot (PNG).
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace glider::validate {
+
+class Report {
+ public:
+  explicit Report(std::filesystem::path directory);
+
+  std::ostringstream& text() { return text_; }
+  void table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
+  // Whitespace-separated columns, one row per line, for gnuplot.
+  void data(const std::string& name, const std::vector<std::string>& column_names,
+            const std::vector<std::vector<double>>& columns);
+  // A gnuplot script that writes `name`.png; linked into the text.
+  void plot(const std::string& name, const std::string& caption, const std::string& script);
+
+  // Writes README.md and renders the plots; false (with a message on
+  // stderr) if gnuplot fails.
+  bool finish();
+
+ private:
+  std::filesystem::path directory_;
+  std::ostringstream text_;
+  std::vector<std::string> plots_;
+};
+
+std::string fixed(double value, int decimals);
+
+}  // namespace glider::validate
