@@ -70,7 +70,9 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
   const double rho = e.water.density_kg_m3;
   const MassProperties mp = mass_properties(masses, rho);
   const Eigen::Vector3d impulse(s[kP1], s[kP3], s[kPi2]);
-  const Eigen::Vector3d xi = mp.a.ldlt().solve(impulse - mp.b);
+  // A is symmetric positive definite and 3x3: the closed-form inverse is
+  // exact enough (condition ~1e3) and several times faster than a factorisation.
+  const Eigen::Vector3d xi = mp.a.inverse() * (impulse - mp.b);
   e.v1 = xi[0];
   e.v3 = xi[1];
   e.q = xi[2];
