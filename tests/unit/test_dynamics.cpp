@@ -246,3 +246,35 @@ TEST(Dynamics, BatteryForwardPitchesDown) {
   GliderSimulator fwd = steady_glide(v, -250e-6, 0.0127);
   CHECK(fwd.truth().pitch_rad < aft.truth().pitch_rad - 0.2);
 }
+
+TEST(Dynamics, PitchDampingIsExactlyItsRateTerm) {
+  const MassInputs m{-250e-6, 0.0, 0.0, 0.0, 0.0, 0.0};
+  VehicleParams undamped = v;
+  undamped.hydro.cmq_m2 = 0.0;
+  const GliderDynamics with(v, Environment{});
+  const GliderDynamics without(undamped, Environment{});
+  const State s = with.make_state(30.0, -0.4, 0.45, 0.02, 0.03, m);
+  const Evaluation a = with.evaluate(0.0, s, m);
+  const Evaluation b = without.evaluate(0.0, s, m);
+  DOUBLES_EQUAL(0.5 * 1025.0 * v.hydro.reference_area_m2 * a.speed_m_s * v.hydro.cmq_m2 * a.q,
+                a.hydro_moment_nm - b.hydro_moment_nm, 1e-12);
+  CHECK(a.hydro_moment_nm - b.hydro_moment_nm < 0.0);  // opposes the nose-up rate
+  for (int k : {kEast, kNorth, kZ, kTheta, kP1, kP3}) DOUBLES_EQUAL(a.state_dot[k], b.state_dot[k], 0.0);
+}
+
+TEST(Dynamics, LiftAndDragAreTheOnlyForcesOfTheFlow) {
+  VehicleParams no_flow = v;
+  no_flow.hydro.cl_alpha = no_flow.hydro.cl_alpha_abs_alpha = 0.0;
+  no_flow.hydro.cd0 = 1e-300;  // validate() wants it positive; numerically zero
+  no_flow.hydro.cd_alpha2 = no_flow.hydro.crossflow_cn90 = 0.0;
+  const MassInputs m{-250e-6, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const GliderDynamics flow(v, Environment{});
+  const GliderDynamics none(no_flow, Environment{});
+  const State s = flow.make_state(30.0, -0.4, 0.45, 0.02, 0.0, m);
+  const Evaluation a = flow.evaluate(0.0, s, m);
+  const Evaluation b = none.evaluate(0.0, s, m);
+  const double ca = std::cos(a.alpha_rad), sa = std::sin(a.alpha_rad);
+  DOUBLES_EQUAL(a.lift_n * sa - a.drag_n * ca, a.state_dot[kP1] - b.state_dot[kP1], 1e-12);
+  DOUBLES_EQUAL(-a.lift_n * ca - a.drag_n * sa, a.state_dot[kP3] - b.state_dot[kP3], 1e-12);
+  DOUBLES_EQUAL(0.0, b.lift_n, 1e-300);
+}

@@ -1,0 +1,19 @@
+#pragma once
+#include <filesystem>
+
+#include "report.hpp"
+
+namespace glider::validate {
+
+struct Inputs {
+  std::filesystem::path boards;      // boards/vehicles
+  std::filesystem::path papers;      // tests/data/papers
+  std::filesystem::path real_data;   // tests/data/real
+};
+
+void paper000(Report& report, const Inputs& in);
+void paper001(Report& report, const Inputs& in);
+void paper002(Report& report, const Inputs& in);
+void real_data(Report& report, const Inputs& in);
+
+}  // namespace glider::validate
