@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "glider/model/ctd_profile.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -277,4 +278,20 @@ TEST(Dynamics, LiftAndDragAreTheOnlyForcesOfTheFlow) {
   DOUBLES_EQUAL(a.lift_n * sa - a.drag_n * ca, a.state_dot[kP1] - b.state_dot[kP1], 1e-12);
   DOUBLES_EQUAL(-a.lift_n * ca - a.drag_n * sa, a.state_dot[kP3] - b.state_dot[kP3], 1e-12);
   DOUBLES_EQUAL(0.0, b.lift_n, 1e-300);
+}
+
+TEST(Dynamics, WaterColumnFromCtdFollowsTeos10) {
+  // A Baltic-like stratification: warm fresh water over cold saltier water.
+  std::vector<CtdSample> casts;
+  for (int i = 0; i <= 400; ++i) {
+    const double depth = 0.1 * i;
+    const bool deep = depth > 20.0;
+    casts.push_back({depth, deep ? 5.5 : 17.0, deep ? 0.95 : 1.1, depth});
+  }
+  const WaterColumn column = water_column_from_ctd(casts, 1.0);
+  const double top = column.at(5.0, 0.0).density_kg_m3;
+  const double bottom = column.at(35.0, 0.0).density_kg_m3;
+  CHECK(top > 1003.0 && top < 1006.0);  // comet-2016's Baltic: 1004.5 ...
+  CHECK(bottom > top + 1.0);            // ... to 1007 kg/m^3 in the cold deep layer
+  DOUBLES_EQUAL(17.0, column.at(5.0, 0.0).temperature_c, 1e-12);
 }
