@@ -111,6 +111,24 @@ std::int64_t TomlDocument::integer_or(std::string_view dotted_key, std::int64_t 
   return has(dotted_key) ? integer(dotted_key) : fallback;
 }
 
+std::vector<double> TomlDocument::numbers_or_empty(std::string_view dotted_key) const {
+  std::vector<double> out;
+  const auto node = impl_->table.at_path(dotted_key);
+  if (!node) return out;
+  used_.emplace(dotted_key);
+  const toml::array* array = node.as_array();
+  if (array == nullptr) fail(dotted_key, "expected an array of numbers");
+  for (const toml::node& element : *array) {
+    const std::optional<double> value = element.value<double>();
+    if (!value || !element.is_number() || !std::isfinite(*value)) {
+      throw ConfigError(location(source_, element.source()) + ": " + std::string(dotted_key) +
+                        ": expected a finite number");
+    }
+    out.push_back(*value);
+  }
+  return out;
+}
+
 std::string TomlDocument::string(std::string_view dotted_key) const {
   const auto node = impl_->table.at_path(dotted_key);
   if (!node) {

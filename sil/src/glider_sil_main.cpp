@@ -11,6 +11,7 @@
 
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
 
@@ -49,12 +50,14 @@ int main(int argc, char** argv) {
   std::string vehicle_path;
   std::string mission_path;
   std::string out_path;
+  std::string env_path;
   std::uint64_t seed = 1;
   double heading_deg = 90.0;
   bool quiet = false;
   app.add_option("--vehicle", vehicle_path, "vehicle parameter file (TOML)")->required()->check(CLI::ExistingFile);
   app.add_option("--mission", mission_path, "mission file (TOML)")->required()->check(CLI::ExistingFile);
   app.add_option("--out", out_path, "flight log to write (CSV, docs/flight-log.md)");
+  app.add_option("--env", env_path, "environment file: water profile, currents, tide (TOML)")->check(CLI::ExistingFile);
   app.add_option("--seed", seed, "seed of the sensor noise")->capture_default_str();
   app.add_option("--heading-deg", heading_deg, "heading to fly")->capture_default_str();
   app.add_flag("--quiet", quiet, "print nothing but errors");
@@ -65,6 +68,8 @@ int main(int argc, char** argv) {
   glider::sil::ScenarioOptions options;
   try {
     vehicle = glider::model::load_vehicle_file(vehicle_path);
+    options.environment = env_path.empty() ? glider::model::still_water(vehicle.trim_density_kg_m3)
+                                           : glider::model::load_environment_file(env_path);
     const auto mission = glider::config::TomlDocument::load(mission_path);
     config = glider::fw::read_flight_config(mission);
     options.max_sim_time_s = mission.number_or("sil.max_sim_time_s", options.max_sim_time_s);
@@ -79,6 +84,8 @@ int main(int argc, char** argv) {
   options.metadata = {{"source", "glider SIL (firmware + vehicle model in lockstep)"},
                       {"mission_file", std::filesystem::path(mission_path).filename().string()},
                       {"vehicle_file", std::filesystem::path(vehicle_path).filename().string()},
+                      {"environment_file", env_path.empty() ? std::string("none (still water at the vehicle's trim density)")
+                                                            : std::filesystem::path(env_path).filename().string()},
                       {"time", "m_present_time is seconds since the start of the mission"},
                       {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
 

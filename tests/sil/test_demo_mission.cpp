@@ -7,6 +7,7 @@
 
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
 
@@ -130,4 +131,22 @@ TEST(DemoMission, LimitsBeyondTheVehicleAreRefused) {
   config.limits.battery_max_in = 1.5;  // the slide only travels 1 in
   const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
   STRCMP_EQUAL("firmware battery limits exceed the vehicle's slide travel", r.error.c_str());
+}
+
+TEST(DemoMission, FliesInATidalShelfSeaAndDriftsWithTheWater) {
+  const sil::ScenarioResult still = sil::run_scenario(vehicle, config, options);
+  options.environment = model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/tidal_shelf.toml");
+  const sil::ScenarioResult tidal = sil::run_scenario(vehicle, config, options);
+  CHECK_TRUE(tidal.completed);
+  LONGS_EQUAL(3, tidal.yos);
+  // Heading east (90 deg): the water carries the glider by its current
+  // integrated along the path, so the extra eastward distance lies between
+  // the weakest and the strongest eastward current of the file (0.02 m/s at
+  // depth; 0.15 + 0.2 sin(2 pi t / M2) <= 0.19 m/s at the surface over this
+  // run) times the time; likewise northward (0 ... 0.05 + 0.1 sin <= 0.07 m/s).
+  const double t = tidal.sim_time_s;
+  const double extra_east = tidal.final_truth.east_m - still.final_truth.east_m;
+  CHECK(extra_east > 0.02 * t && extra_east < 0.19 * t);
+  CHECK(tidal.final_truth.north_m > 0.0 && tidal.final_truth.north_m < 0.07 * t);
+  DOUBLES_EQUAL(0.0, still.final_truth.north_m, 1e-6);
 }

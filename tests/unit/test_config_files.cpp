@@ -8,6 +8,7 @@
 
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/model/environment_file.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 
@@ -150,4 +151,23 @@ TEST(ConfigFiles, EveryShippedVehicleLoadsAndGlides) {
     ++count;
   }
   LONGS_EQUAL(4, count);  // WE01, Stante's SLOCUM, IIT Madras, USM
+}
+
+TEST(ConfigFiles, EnvironmentFileErrorsNameTheLine) {
+  const auto env = glider::model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/tidal_shelf.toml");
+  DOUBLES_EQUAL(1026.2, env.water.at(30.0, 0.0).density_kg_m3, 1e-12);
+  auto error_of = [](const std::string& text) {
+    try {
+      glider::model::parse_environment_text(text, "env.toml");
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(error_of("[profile]\ndepth_m = [0, 10]\ndensity_kg_m3 = [1025]\n")
+            .find("env.toml:3:") == 0);  // one value for two depths
+  CHECK(error_of("[profile]\ndepth_m = [10, 0]\n").find("strictly") != std::string::npos);
+  CHECK(error_of("[profile]\ndepth_m = [0, \"x\"]\n").find("env.toml:2:") == 0);
+  CHECK(error_of("[profile]\ndepth_m = [0]\ncurent_east_m_s = [0.1]\n").find("unknown key 'profile.curent_east_m_s'") !=
+        std::string::npos);
 }

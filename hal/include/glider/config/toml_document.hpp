@@ -35,6 +35,8 @@ class TomlDocument {
   double number_or(std::string_view dotted_key, double fallback) const;
   std::int64_t integer(std::string_view dotted_key) const;
   std::int64_t integer_or(std::string_view dotted_key, std::int64_t fallback) const;
+  // An array of numbers (integers accepted); empty if the key is absent.
+  std::vector<double> numbers_or_empty(std::string_view dotted_key) const;
   std::string string(std::string_view dotted_key) const;
   std::string string_or(std::string_view dotted_key, std::string fallback) const;
 
