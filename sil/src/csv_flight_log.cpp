@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "glider/sil/units.hpp"
+#include "glider/units.hpp"
 
 namespace glider::sil {
 namespace {

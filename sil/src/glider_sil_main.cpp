@@ -14,15 +14,14 @@
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
+#include "glider/units.hpp"
 
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-
 void print_glides(const char* name, const glider::sil::GlideStats& s) {
   std::printf("  %-7s settled: pitch %6.1f deg, depth rate %+6.3f m/s  (%llu samples, max pitch error %.1f deg)\n",
-              name, s.mean_pitch_rad() * kDegPerRad, s.mean_depth_rate_m_s(),
-              static_cast<unsigned long long>(s.samples), s.max_pitch_error_rad * kDegPerRad);
+              name, glider::rad_to_deg(s.mean_pitch_rad()), s.mean_depth_rate_m_s(),
+              static_cast<unsigned long long>(s.samples), glider::rad_to_deg(s.max_pitch_error_rad));
 }
 
 // All inflection depths for a short mission, their ranges for a long one.

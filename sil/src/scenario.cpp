@@ -6,7 +6,7 @@
 
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
-#include "glider/sil/units.hpp"
+#include "glider/units.hpp"
 
 namespace glider::sil {
 namespace {
@@ -44,7 +44,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   if (!result.error.empty()) return result;
 
   model::GliderSimulator sim(vehicle, options.environment);
-  sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0, options.heading_deg * std::numbers::pi / 180.0);
+  sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0, deg_to_rad(options.heading_deg));
   SimClock clock;
   SimHal sim_hal(sim, clock, options.noise, options.seed);
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "glider/sil/units.hpp"
+#include "glider/units.hpp"
 
 namespace glider::sil {
 

@@ -11,12 +11,11 @@
 #include "glider/config/toml_document.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/units.hpp"
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
-constexpr double kMetresPerInch = 0.0254;
-constexpr double kCubicMetresPerCc = 1e-6;
+using glider::rad_to_deg;
 
 struct Report {
   std::string vehicle;
@@ -34,9 +33,9 @@ nlohmann::ordered_json to_json(const Report& r) {
   nlohmann::ordered_json j;
   j["vehicle"] = r.vehicle;
   j["mode"] = r.mode;
-  j["pitch_deg"] = r.glide.pitch_rad * kDeg;
-  j["angle_of_attack_deg"] = r.glide.alpha_rad * kDeg;
-  j["glide_path_deg"] = r.glide.glide_path_rad * kDeg;
+  j["pitch_deg"] = rad_to_deg(r.glide.pitch_rad);
+  j["angle_of_attack_deg"] = rad_to_deg(r.glide.alpha_rad);
+  j["glide_path_deg"] = rad_to_deg(r.glide.glide_path_rad);
   j["speed_m_s"] = r.glide.speed_m_s;
   j["depth_rate_m_s"] = r.glide.depth_rate_m_s;
   j["horizontal_speed_m_s"] = r.glide.horizontal_speed_m_s;
@@ -56,9 +55,9 @@ void print_text(const Report& r) {
   std::printf("  ballast            %+8.1f cc   (m_ballast_pumped)\n", r.ballast_cc);
   std::printf("  battery            %+8.3f in   (m_battpos)\n", r.battpos_in);
   std::printf("  net buoyancy       %+8.1f g    (+ heavy)\n", r.glide.net_buoyancy_kg * 1000.0);
-  std::printf("  pitch              %+8.2f deg\n", r.glide.pitch_rad * kDeg);
-  std::printf("  angle of attack    %+8.2f deg\n", r.glide.alpha_rad * kDeg);
-  std::printf("  glide path         %+8.2f deg\n", r.glide.glide_path_rad * kDeg);
+  std::printf("  pitch              %+8.2f deg\n", rad_to_deg(r.glide.pitch_rad));
+  std::printf("  angle of attack    %+8.2f deg\n", rad_to_deg(r.glide.alpha_rad));
+  std::printf("  glide path         %+8.2f deg\n", rad_to_deg(r.glide.glide_path_rad));
   std::printf("  speed              %8.3f m/s\n", r.glide.speed_m_s);
   std::printf("  depth rate         %+8.3f m/s  (+ descending)\n", r.glide.depth_rate_m_s);
   std::printf("  horizontal speed   %8.3f m/s\n", r.glide.horizontal_speed_m_s);
@@ -119,8 +118,8 @@ int main(int argc, char** argv) {
   if (forward) {
     report.mode = "forward: ballast and battery given";
     glider::model::MassInputs masses;
-    masses.pumped_volume_m3 = ballast_cc * kCubicMetresPerCc;
-    masses.battery_pos_m = battpos_in * kMetresPerInch;
+    masses.pumped_volume_m3 = glider::cc_to_m3(ballast_cc);
+    masses.battery_pos_m = glider::in_to_m(battpos_in);
     const auto result = glider::model::solve_equilibrium(dynamics, masses, depth_m);
     if (!result.glide) return fail(json, result.error);
     report.glide = *result.glide;
@@ -138,8 +137,8 @@ int main(int argc, char** argv) {
         glider::model::solve_trim(dynamics, std::abs(glide_path_deg), net_buoyancy_g / 1000.0, depth_m);
     if (!result.trim) return fail(json, result.error);
     report.glide = result.trim->glide;
-    report.ballast_cc = result.trim->pumped_volume_m3 / kCubicMetresPerCc;
-    report.battpos_in = result.trim->battery_pos_m / kMetresPerInch;
+    report.ballast_cc = glider::m3_to_cc(result.trim->pumped_volume_m3);
+    report.battpos_in = glider::m_to_in(result.trim->battery_pos_m);
     report.within_limits = result.trim->within_limits;
     report.note = result.trim->note;
   }

@@ -1,16 +1,12 @@
 #include "glider/firmware/config/flight_config_file.hpp"
 
+#include "glider/units.hpp"
+
 #include <limits>
 #include <numbers>
 #include <string>
 
 namespace glider::fw {
-namespace {
-
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
-
-}  // namespace
-
 FlightSoftwareConfig read_flight_config(const config::TomlDocument& doc) {
   FlightSoftwareConfig c;
   YoMissionConfig& m = c.mission;
@@ -24,8 +20,8 @@ FlightSoftwareConfig read_flight_config(const config::TomlDocument& doc) {
   m.surfaced_depth_m = doc.number_or("mission.surfaced_depth_m", m.surfaced_depth_m);
   m.dive_ballast_cc = doc.number("mission.dive_ballast_cc");
   m.climb_ballast_cc = doc.number("mission.climb_ballast_cc");
-  m.dive_pitch_rad = doc.number("mission.dive_pitch_deg") * kRadPerDeg;
-  m.climb_pitch_rad = doc.number("mission.climb_pitch_deg") * kRadPerDeg;
+  m.dive_pitch_rad = deg_to_rad(doc.number("mission.dive_pitch_deg"));
+  m.climb_pitch_rad = deg_to_rad(doc.number("mission.climb_pitch_deg"));
   m.max_depth_m = doc.number("mission.max_depth_m");
   m.max_duration_s = doc.number("mission.max_duration_s");
   doc.string_or("mission.name", "");
