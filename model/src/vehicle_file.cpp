@@ -105,13 +105,15 @@ VehicleParams parse_vehicle_text(const std::string& text, const std::string& sou
 }
 
 std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleParams& v) {
+  // `vehicle.` + the file's dotted key; the [vehicle] table's own keys are
+  // not doubled ("vehicle.name", not "vehicle.vehicle.name").
   std::vector<std::pair<std::string, std::string>> out;
   out.emplace_back("vehicle.name", v.name);
   VehicleParams copy = v;
   const bool second = has_second_mass(v);
   visit_numbers(copy, [&out, second](const char* key, double& field, Need) {
     if (!second && std::string_view(key).starts_with("second_mass.")) return;
-    out.emplace_back(key, format_number(field));
+    out.emplace_back(std::string("vehicle.") + key, format_number(field));
   });
   return out;
 }

@@ -75,7 +75,10 @@ TEST(ConfigFiles, MetadataRoundTripsEveryParameter) {
   // Rebuild a vehicle file from the metadata and load it again.
   std::string rebuilt;
   std::string table;
-  for (const auto& [key, value] : meta) {
+  for (const auto& [meta_key, value] : meta) {
+    CHECK_TRUE(meta_key.rfind("vehicle.", 0) == 0);
+    std::string key = meta_key.substr(8);
+    if (key == "name") key = "vehicle.name";
     const std::size_t dot = key.rfind('.');
     const std::string section = key.substr(0, dot);
     if (section != table) {

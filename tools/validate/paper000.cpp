@@ -1,5 +1,6 @@
 // Paper 000 (Graver et al. 2003): Fig. 13 and Table 1.
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "glider/model/hydrodynamics.hpp"
@@ -27,7 +28,7 @@ double alpha_from_glide(const model::Hydrodynamics& h, double rho, double pitch,
   const double sign = depth_rate > 0.0 ? 1.0 : -1.0;
   double lo = sign * 1e-6;
   double hi = sign * 0.25;
-  if ((residual(lo) < 0.0) == (residual(hi) < 0.0)) return NAN;
+  if ((residual(lo) < 0.0) == (residual(hi) < 0.0)) return std::numeric_limits<double>::quiet_NaN();
   for (int i = 0; i < 200; ++i) {
     const double mid = 0.5 * (lo + hi);
     ((residual(mid) < 0.0) == (residual(lo) < 0.0) ? lo : hi) = mid;
@@ -85,7 +86,7 @@ void paper000(Report& r, const Inputs& in) {
     const double pitch = row.number("pitch_deg") * kDeg;
     const double rate = row.number("depth_rate_m_s");
     const double mb = row.number("ballast_cc") * 1e-3;
-    double v_plain = NAN, v_offset = NAN;
+    double v_plain = std::numeric_limits<double>::quiet_NaN(), v_offset = std::numeric_limits<double>::quiet_NaN();
     const double a_plain = alpha_from_glide(v.hydro, rho, pitch, rate, mb, v_plain);
     const double a_offset = alpha_from_glide(v.hydro, rho, pitch, rate, mb - 0.073, v_offset);
     rows.push_back({row.text("glide"), row.text("pitch_deg"), row.text("depth_rate_m_s"), row.text("ballast_cc"),

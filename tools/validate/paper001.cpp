@@ -1,5 +1,6 @@
 // Paper 001 (Stante et al. 2008): steady climbs and dives, Tables 2-3.
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "glider/model/steady_glide.hpp"
@@ -14,8 +15,8 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kNeutralXcgMm = 77.0;  // 001: CG with the battery at neutral
 
 struct Prediction {
-  double pitch_deg = NAN;
-  double rate_m_s = NAN;
+  double pitch_deg = std::numeric_limits<double>::quiet_NaN();
+  double rate_m_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The paper gives the CG position (from the battery position through its

@@ -1,5 +1,6 @@
 // Paper 002 (Singh et al. 2017): the IIT Madras lab glider's steady results.
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "glider/model/simulator.hpp"
@@ -13,8 +14,8 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Descent {
-  double time_s = NAN;
-  double distance_m = NAN;
+  double time_s = std::numeric_limits<double>::quiet_NaN();
+  double distance_m = std::numeric_limits<double>::quiet_NaN();
 };
 
 // From rest just under the surface with the dive trim of the pool trials

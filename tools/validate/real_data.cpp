@@ -4,6 +4,7 @@
 // fits to real data use, e.g. Merckelbach's gliderflight), in water of the
 // vehicle's trim density.
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "glider/flightlog/flight_log.hpp"
@@ -25,14 +26,14 @@ struct Score {
     sum_model += model;
     ++n;
   }
-  double rms() const { return n ? std::sqrt(sum_sq / static_cast<double>(n)) : NAN; }
-  double mean_measured() const { return n ? sum_measured / static_cast<double>(n) : NAN; }
-  double mean_model() const { return n ? sum_model / static_cast<double>(n) : NAN; }
+  double rms() const { return n ? std::sqrt(sum_sq / static_cast<double>(n)) : std::numeric_limits<double>::quiet_NaN(); }
+  double mean_measured() const { return n ? sum_measured / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN(); }
+  double mean_model() const { return n ? sum_model / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN(); }
 };
 
 // Depth rate from depth by a centred difference over +-half_window samples.
 std::vector<double> centred_rate(const std::vector<double>& t, const std::vector<double>& z, std::size_t half_window) {
-  std::vector<double> rate(t.size(), NAN);
+  std::vector<double> rate(t.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = half_window; i + half_window < t.size(); ++i) {
     const double dt = t[i + half_window] - t[i - half_window];
     if (dt > 0.0 && dt < 10.0 * static_cast<double>(half_window)) {
@@ -127,10 +128,13 @@ void real_data(Report& r, const Inputs& in) {
             fixed(speed.mean_model(), 3), fixed(speed.rms(), 3)},
            {"vertical velocity vs d(10 P)/dt", std::to_string(vertical.n), fixed(vertical.mean_measured(), 3),
             fixed(vertical.mean_model(), 3), fixed(vertical.rms(), 3)}});
-  t << "The nominal WE01 model flies these shallow Slocums far too fast (its drag and the logs' vehicles "
-       "differ, and they fly light or heavy): this is the error `./glider diagnose` explains. Merckelbach's "
-       "gliderflight, fitted on this data set, reaches 3.92 cm/s RMS vertical-velocity misfit (the issue's "
-       "anchor measurement).\n";
+  t << "The nominal model is WE01 (a 200 m SLOCUM as identified in 2003) flown at these 100 m Slocums' logged "
+       "pitch and ballast: it flies all of them 40-70 % too fast in both directions (more drag on the real "
+       "vehicles: sensors, age, the tilt of a rolled glider), and the dive/climb asymmetry differs per log - "
+       "comet-2019 dives faster than it climbs (heavy), amadeus climbs twice as fast as it dives (light). "
+       "These are the errors `./glider diagnose` is to name and size. For scale: Merckelbach's gliderflight, "
+       "with drag and mass fitted on gliderflight-adcp.csv, reaches 3.92 cm/s RMS vertical-velocity misfit "
+       "(the anchor measured for the diagnose issue).\n";
   r.data("real_depth_rate.dat", {"minutes", "measured", "model"}, {plot_t, plot_measured, plot_model});
   r.plot("real_depth_rate", "comet-2019-222-02-154: measured depth rate and the nominal model's (steady glide at the logged pitch and ballast)",
          "set xlabel 'minutes into the log'\nset ylabel 'depth rate (m/s, + down)'\n"

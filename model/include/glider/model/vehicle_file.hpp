@@ -14,8 +14,9 @@ namespace glider::model {
 VehicleParams load_vehicle_file(const std::filesystem::path& path);
 VehicleParams parse_vehicle_text(const std::string& text, const std::string& source_name);
 
-// Every parameter as (dotted key of the file, value), in file order: the
-// `# vehicle.KEY: value` metadata of flight logs, readable back by the tools.
+// Every parameter as ("vehicle." + dotted key of the file, value), in file
+// order: the `# vehicle.KEY: value` metadata of flight logs (docs/flight-log.md),
+// readable back by the tools. The name is "vehicle.name".
 std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleParams& v);
 
 }  // namespace glider::model
