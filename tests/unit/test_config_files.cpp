@@ -104,7 +104,8 @@ TEST(ConfigFiles, UnknownKeyNamesFileAndLine) {
   CHECK(unknown.find("bad.toml:") == 0);
   CHECK(unknown.find("unknown key 'hydrodynamics.extra.foo'") != std::string::npos);
   const std::size_t lines = static_cast<std::size_t>(std::count(extra.begin(), extra.end(), '\n'));
-  CHECK(unknown.find(":" + std::to_string(lines) + ":") != std::string::npos);  // the last line
+  const std::string last_line = std::string(":").append(std::to_string(lines)).append(":");
+  CHECK(unknown.find(last_line) != std::string::npos);  // the last line
 }
 
 TEST(ConfigFiles, WrongTypeNamesTheLine) {
