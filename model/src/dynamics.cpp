@@ -64,6 +64,10 @@ double GliderDynamics::displaced_volume_m3(double z_m, const WaterSample& water)
   return nominal_volume_m3_ * scale * immersed_fraction(z_m);
 }
 
+double GliderDynamics::net_buoyancy_kg(double z_m, const WaterSample& water, const MassInputs& masses) const {
+  return mass_properties(masses, water.density_kg_m3).total_kg - water.density_kg_m3 * displaced_volume_m3(z_m, water);
+}
+
 Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInputs& masses) const {
   Evaluation e;
   e.water = environment_.water.at(s[kZ], time_s);
@@ -83,7 +87,7 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
 
   // Weight and buoyancy (buoyancy acts at the CB: no moment).
   e.displaced_volume_m3 = displaced_volume_m3(s[kZ], e.water);
-  e.net_buoyancy_kg = mp.total_kg - rho * e.displaced_volume_m3;
+  e.net_buoyancy_kg = mp.total_kg - rho * e.displaced_volume_m3;  // as net_buoyancy_kg(), sharing mass_properties
   double f1 = -e.net_buoyancy_kg * g * sin_t;
   double f3 = e.net_buoyancy_kg * g * cos_t;
   e.gravity_moment_nm = -g * (mp.first_x * cos_t + mp.first_z * sin_t);

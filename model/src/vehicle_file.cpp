@@ -118,4 +118,54 @@ std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleP
   return out;
 }
 
+namespace {
+
+// TOML text from (dotted key, value) pairs whose tables are contiguous.
+std::string toml_text(const std::vector<std::pair<std::string, std::string>>& entries) {
+  std::string text;
+  std::string table;
+  for (const auto& [key, value] : entries) {
+    const std::size_t dot = key.rfind('.');
+    if (dot == std::string::npos) continue;
+    const std::string section = key.substr(0, dot);
+    if (section != table) {
+      text += (text.empty() ? "[" : "\n[") + section + "]\n";
+      table = section;
+    }
+    const bool is_text = key == "vehicle.name" || key == "vehicle.description" || key == "vehicle.source";
+    std::string quoted;
+    if (!is_text) {
+      quoted = value;
+    } else {
+      quoted.push_back('"');
+      for (char c : value) {
+        if (c == '"' || c == '\\') quoted.push_back('\\');
+        quoted.push_back(c);
+      }
+      quoted.push_back('"');
+    }
+    text += key.substr(dot + 1) + " = " + quoted + "\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+VehicleParams vehicle_from_metadata(const std::vector<std::pair<std::string, std::string>>& entries,
+                                    const std::string& source_name) {
+  // Through the one reader, so that the same checks apply.
+  std::vector<std::pair<std::string, std::string>> keyed;
+  for (const auto& [key, value] : entries) keyed.emplace_back(key == "name" ? "vehicle.name" : key, value);
+  return parse_vehicle_text(toml_text(keyed), source_name + " (vehicle.* metadata)");
+}
+
+std::string vehicle_file_text(const VehicleParams& v) {
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (auto& [key, value] : vehicle_metadata(v)) {
+    entries.emplace_back(key == "vehicle.name" ? key : key.substr(8), value);  // drop the "vehicle." prefix
+  }
+  if (!v.description.empty()) entries.insert(entries.begin() + 1, {"vehicle.description", v.description});
+  return toml_text(entries);
+}
+
 }  // namespace glider::model

@@ -175,3 +175,15 @@ TEST(ConfigFiles, EnvironmentFileErrorsNameTheLine) {
   CHECK(error_of("[profile]\ndepth_m = [0]\ncurent_east_m_s = [0.1]\n").find("unknown key 'profile.curent_east_m_s'") !=
         std::string::npos);
 }
+
+TEST(ConfigFiles, VehicleFileTextAndLogMetadataRoundTrip) {
+  const auto v = glider::model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/iitm_lab_glider.toml");
+  const auto back = glider::model::parse_vehicle_text(glider::model::vehicle_file_text(v), "written.toml");
+  DOUBLES_EQUAL(v.second_mass.mass_kg, back.second_mass.mass_kg, 0.0);
+  DOUBLES_EQUAL(v.hydro.cl0, back.hydro.cl0, 0.0);
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (const auto& [key, value] : glider::model::vehicle_metadata(v)) entries.emplace_back(key.substr(8), value);
+  const auto from_log = glider::model::vehicle_from_metadata(entries, "log.csv");
+  STRCMP_EQUAL("iitm_lab_glider", from_log.name.c_str());
+  DOUBLES_EQUAL(v.ballast.x_m, from_log.ballast.x_m, 0.0);
+}

@@ -94,6 +94,10 @@ class GliderDynamics {
   // thermal expansion, partial immersion).
   double displaced_volume_m3(double z_m, const WaterSample& water) const;
 
+  // Net weight in water (kg, + heavy) at rest at depth z_m in the given
+  // water, with the internal masses where `masses` says.
+  double net_buoyancy_kg(double z_m, const WaterSample& water, const MassInputs& masses) const;
+
   // Pitch at which the vehicle hangs at rest (no flow), for initial states.
   double static_pitch_rad(const MassInputs& masses) const;
 

@@ -19,4 +19,13 @@ VehicleParams parse_vehicle_text(const std::string& text, const std::string& sou
 // readable back by the tools. The name is "vehicle.name".
 std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleParams& v);
 
+// The inverse: a vehicle from a log's `vehicle.*` metadata (keys with the
+// "vehicle." prefix removed, as FlightLog::vehicle_metadata() gives them).
+// Throws config::ConfigError naming `source_name` if a key is missing or bad.
+VehicleParams vehicle_from_metadata(const std::vector<std::pair<std::string, std::string>>& entries,
+                                    const std::string& source_name);
+
+// A vehicle file (TOML) holding every parameter of `v`: what load_vehicle_file reads back.
+std::string vehicle_file_text(const VehicleParams& v);
+
 }  // namespace glider::model
