@@ -50,7 +50,9 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
 
   Metadata metadata = options.metadata;
   metadata.emplace_back("seed", std::to_string(options.seed));
-  for (auto& entry : model::vehicle_metadata(vehicle)) metadata.push_back(std::move(entry));
+  for (auto& entry : model::vehicle_metadata(options.logged_vehicle.value_or(vehicle))) {
+    metadata.push_back(std::move(entry));
+  }
 
   NullLogSink no_file;
   std::optional<CsvFlightLog> csv;

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "glider/firmware/executive.hpp"
@@ -23,6 +24,9 @@ struct ScenarioOptions {
   hal::Micros period_us = fw::Executive::kDefaultPeriodUs;
   std::string log_path;  // empty: no CSV file
   Metadata metadata;     // extra `# key: value` lines (vehicle.* are added)
+  // The vehicle the log's vehicle.* metadata states; default: the one flown.
+  // Tests that hide an effect fly a modified vehicle and log the nominal one.
+  std::optional<model::VehicleParams> logged_vehicle;
   // Called before every firmware cycle with the simulated time: tests inject
   // faults through it.
   std::function<void(double sim_time_s, SimHal& hal)> before_cycle;

@@ -1,0 +1,63 @@
+#pragma once
+// The science loop on one log: the nominal model's error (baseline), each
+// candidate effect fitted on half of the yos and scored on the other half,
+// forward selection of the effects that really help (held-out error and the
+// Bayesian information criterion), the named cause and the gain.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glider/diagnose/flight_model.hpp"
+#include "glider/diagnose/observations.hpp"
+
+namespace glider::diagnose {
+
+struct Rms {
+  double depth_rate_m_s = 0.0;  // NaN if no samples
+  std::size_t samples = 0;
+};
+
+struct DepthBin {
+  double from_m = 0.0, to_m = 0.0;
+  Rms rms;
+};
+
+struct Baseline {
+  Rms all, dives, climbs;
+  std::optional<double> rms_pitch_deg;  // forward equilibrium vs logged pitch (needs m_battpos)
+  std::size_t inflection_samples = 0;   // not scored: the steady model does not fly turns
+  std::vector<DepthBin> by_depth;
+  double heldout_rms_m_s = 0.0;         // on the held-out yos: the reference of the gain
+};
+
+struct Finding {
+  Effect effect = Effect::kBuoyancyOffset;
+  double value = 0.0;
+  double ci95_low = 0.0, ci95_high = 0.0;
+  double heldout_rms_m_s = 0.0;  // of the model with this and the stronger findings
+  double gain = 0.0;             // fraction of the baseline held-out error removed so far
+  bool fitted = true;            // false: a measured input (CTD density), not a fitted number
+};
+
+struct Diagnosis {
+  std::string vehicle;
+  std::size_t samples_used = 0;
+  std::size_t train_samples = 0, heldout_samples = 0;
+  Baseline baseline;
+  std::vector<Finding> findings;  // strongest first, significant only
+  std::string cause = "none";
+  EffectValues extended = nominal_values();
+  Rms extended_all;                // the extended model over all samples
+  double extended_heldout_rms_m_s = 0.0;
+  double gain = 0.0;
+  std::vector<std::string> candidates_tried;
+};
+
+struct DiagnoseOptions {
+  double min_heldout_improvement = 0.03;  // a finding must cut the held-out RMS by 3 %
+};
+
+Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& observations,
+                   const DiagnoseOptions& options = {});
+
+}  // namespace glider::diagnose

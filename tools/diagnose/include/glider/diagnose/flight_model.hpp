@@ -1,0 +1,65 @@
+#pragma once
+// The nominal flight model extended by the effects of the vocabulary
+// (docs/model-discrepancy.md): for each steady-glide sample, the steady glide
+// at the logged pitch with the net buoyancy of the logged ballast (the
+// approach of Merckelbach's gliderflight), through the project's model.
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "glider/diagnose/observations.hpp"
+#include "glider/model/vehicle.hpp"
+
+namespace glider::diagnose {
+
+enum class Effect : int {
+  kBuoyancyOffset = 0,
+  kDragChange,
+  kHullCompressibility,
+  kThermalExpansion,
+  kVerticalWaterVelocity,
+  kWaterDensity,
+  kCount
+};
+constexpr std::size_t kEffectCount = static_cast<std::size_t>(Effect::kCount);
+
+struct EffectInfo {
+  const char* id;     // the vocabulary's id
+  const char* unit;   // of the reported value
+  double nominal;     // the value that means "no effect"
+  double scale;       // typical size, for the optimiser's conditioning
+};
+const EffectInfo& info(Effect effect);
+Effect effect_from_index(std::size_t index);
+
+// Values in the reported units (g, ratio, 1/Pa, 1/K, m/s, kg/m^3).
+using EffectValues = std::array<double, kEffectCount>;
+EffectValues nominal_values();
+
+class FlightModel {
+ public:
+  FlightModel(const model::VehicleParams& nominal, const Observations& observations);
+
+  // Predicted depth rate (m/s, + down) of the samples; NaN where the model has
+  // no steady glide. `use_ctd_density`: water density from the CTD (the
+  // water_density effect on a log with CTD data), else nominal + the value.
+  void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+               std::vector<double>& out) const;
+
+  // Pitch of the nominal model's forward equilibrium (logged ballast and
+  // battery) for a sample; NaN without battery data or a steady glide.
+  double nominal_pitch_rad(std::size_t sample) const;
+
+  // Density at the deepest CTD sample minus the nominal (the water_density value).
+  double ctd_density_anomaly() const;
+
+  const model::VehicleParams& vehicle() const { return nominal_; }
+
+ private:
+  model::VehicleParams nominal_;
+  const Observations& obs_;
+};
+
+}  // namespace glider::diagnose

@@ -1,0 +1,276 @@
+#include "glider/diagnose/diagnose.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <Eigen/Dense>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
+
+#include "glider/units.hpp"
+
+namespace glider::diagnose {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// A sample the model cannot fly (no steady glide) counts as this error: an
+// effect must not "improve" the fit by making samples unflyable.
+constexpr double kUnflyablePenalty_m_s = 0.3;
+
+struct Candidate {
+  std::vector<Effect> fitted;  // effects with a fitted parameter
+  bool ctd_density = false;    // water_density from the CTD (no parameter)
+};
+
+// Residuals (model - measured) of a set of samples.
+void residuals(const FlightModel& model, const Observations& obs, const EffectValues& x, bool ctd,
+               std::span<const std::size_t> samples, std::vector<double>& out) {
+  std::vector<double> predicted;
+  model.predict(x, ctd, samples, predicted);
+  out.resize(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const double p = predicted[k];
+    out[k] = std::isfinite(p) ? p - obs.depth_rate_m_s[samples[k]] : kUnflyablePenalty_m_s;
+  }
+}
+
+double rms_of(const std::vector<double>& r) {
+  if (r.empty()) return kNaN;
+  double s = 0.0;
+  for (double v : r) s += v * v;
+  return std::sqrt(s / static_cast<double>(r.size()));
+}
+
+// Eigen's Levenberg-Marquardt functor over the scaled parameters of the
+// fitted effects (value = nominal + scale * p).
+struct FitFunctor {
+  using Scalar = double;
+  using InputType = Eigen::VectorXd;
+  using ValueType = Eigen::VectorXd;
+  using JacobianType = Eigen::MatrixXd;
+  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+
+  const FlightModel& model;
+  const Observations& obs;
+  const Candidate& candidate;
+  std::span<const std::size_t> samples;
+  mutable std::vector<double> buffer;
+
+  int inputs() const { return static_cast<int>(candidate.fitted.size()); }
+  int values() const { return static_cast<int>(samples.size()); }
+
+  EffectValues values_of(const Eigen::VectorXd& p) const {
+    EffectValues x = nominal_values();
+    for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
+      const EffectInfo& e = info(candidate.fitted[j]);
+      x[static_cast<std::size_t>(candidate.fitted[j])] = e.nominal + e.scale * p[static_cast<Eigen::Index>(j)];
+    }
+    return x;
+  }
+  int operator()(const Eigen::VectorXd& p, Eigen::VectorXd& f) const {
+    residuals(model, obs, values_of(p), candidate.ctd_density, samples, buffer);
+    for (std::size_t k = 0; k < buffer.size(); ++k) f[static_cast<Eigen::Index>(k)] = buffer[k];
+    return 0;
+  }
+};
+
+struct FitResult {
+  EffectValues values = nominal_values();
+  std::vector<double> sigma;  // per fitted effect, reported units
+  double train_rss = 0.0;
+  double heldout_rms = 0.0;
+  double bic = 0.0;
+};
+
+FitResult fit(const FlightModel& model, const Observations& obs, const Candidate& candidate,
+              std::span<const std::size_t> train, std::span<const std::size_t> heldout) {
+  FitResult result;
+  const std::size_t k = candidate.fitted.size();
+  FitFunctor functor{model, obs, candidate, train, {}};
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+  if (k > 0) {
+    Eigen::NumericalDiff<FitFunctor> numeric(functor);
+    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<FitFunctor>> lm(numeric);
+    lm.parameters.maxfev = 400;
+    lm.minimize(p);
+  }
+  result.values = functor.values_of(p);
+  std::vector<double> r;
+  residuals(model, obs, result.values, candidate.ctd_density, train, r);
+  const double n = static_cast<double>(r.size());
+  for (double v : r) result.train_rss += v * v;
+  result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
+
+  // Parameter uncertainty from the Jacobian at the solution. Samples of a log
+  // are serially correlated (1-4 s apart on minute-long glides): the noise
+  // variance is inflated by the lag-1 autocorrelation of the residuals, i.e.
+  // counted over the effective number of independent samples.
+  if (k > 0) {
+    Eigen::NumericalDiff<FitFunctor> numeric(functor);
+    Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
+    numeric.df(p, jac);
+    double lag1 = 0.0, var = 0.0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      var += r[i] * r[i];
+      if (i > 0) lag1 += r[i] * r[i - 1];
+    }
+    const double rho1 = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
+    const double n_eff = std::max(n * (1.0 - rho1) / (1.0 + rho1), static_cast<double>(k) + 2.0);
+    // RSS / (n_eff - k) = s^2 n / n_eff: the noise variance, inflated for correlation.
+    const double variance = result.train_rss / (n_eff - static_cast<double>(k));
+    const Eigen::MatrixXd normal = jac.transpose() * jac;
+    const Eigen::MatrixXd cov = normal.inverse() * variance;
+    for (std::size_t j = 0; j < k; ++j) {
+      result.sigma.push_back(std::sqrt(std::max(cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)), 0.0)) *
+                             info(candidate.fitted[j]).scale);
+    }
+  }
+  std::vector<double> h;
+  residuals(model, obs, result.values, candidate.ctd_density, heldout, h);
+  result.heldout_rms = rms_of(h);
+  return result;
+}
+
+Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx) {
+  Rms out;
+  double s = 0.0;
+  for (std::size_t i : idx) {
+    if (!std::isfinite(r[i])) continue;
+    s += r[i] * r[i];
+    ++out.samples;
+  }
+  out.depth_rate_m_s = out.samples ? std::sqrt(s / static_cast<double>(out.samples)) : kNaN;
+  return out;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs, const DiagnoseOptions& options) {
+  Diagnosis d;
+  d.vehicle = nominal.name;
+  d.samples_used = obs.size();
+  const FlightModel model(nominal, obs);
+
+  std::vector<std::size_t> all(obs.size()), train, heldout, dives, climbs;
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  for (std::size_t i : all) {
+    (obs.yo[i] % 2 == 0 ? train : heldout).push_back(i);
+    (obs.diving[i] ? dives : climbs).push_back(i);
+  }
+  if (train.empty() || heldout.empty()) {  // a single yo: split its glides in halves by time instead
+    train.assign(all.begin(), all.begin() + static_cast<long>(all.size() / 2));
+    heldout.assign(all.begin() + static_cast<long>(all.size() / 2), all.end());
+  }
+  d.train_samples = train.size();
+  d.heldout_samples = heldout.size();
+
+  // Baseline.
+  std::vector<double> r;
+  residuals(model, obs, nominal_values(), false, all, r);
+  d.baseline.all = rms_where(r, all);
+  d.baseline.dives = rms_where(r, dives);
+  d.baseline.climbs = rms_where(r, climbs);
+  d.baseline.inflection_samples = obs.inflection_samples;
+  double max_depth = 0.0;
+  for (double z : obs.depth_m) max_depth = std::max(max_depth, z);
+  const double bin = max_depth > 100.0 ? 25.0 : 10.0;
+  for (double from = 0.0; from < max_depth; from += bin) {
+    std::vector<std::size_t> in_bin;
+    for (std::size_t i : all) {
+      if (obs.depth_m[i] >= from && obs.depth_m[i] < from + bin) in_bin.push_back(i);
+    }
+    if (!in_bin.empty()) d.baseline.by_depth.push_back({from, from + bin, rms_where(r, in_bin)});
+  }
+  d.baseline.heldout_rms_m_s = rms_of([&] {
+    std::vector<double> h;
+    residuals(model, obs, nominal_values(), false, heldout, h);
+    return h;
+  }());
+  if (obs.has_battpos) {
+    double s = 0.0;
+    std::size_t n = 0;
+    const std::size_t stride = std::max<std::size_t>(1, obs.size() / 400);
+    for (std::size_t i = 0; i < obs.size(); i += stride) {
+      const double pitch = model.nominal_pitch_rad(i);
+      if (!std::isfinite(pitch)) continue;
+      s += (pitch - obs.pitch_rad[i]) * (pitch - obs.pitch_rad[i]);
+      ++n;
+    }
+    if (n > 0) d.baseline.rms_pitch_deg = rad_to_deg(std::sqrt(s / static_cast<double>(n)));
+  }
+
+  // Candidates available in this log.
+  std::vector<Effect> pool{Effect::kBuoyancyOffset, Effect::kDragChange, Effect::kHullCompressibility,
+                           Effect::kVerticalWaterVelocity};
+  if (obs.has_temperature) pool.push_back(Effect::kThermalExpansion);
+  if (obs.has_ctd) pool.push_back(Effect::kWaterDensity);
+  for (Effect e : pool) d.candidates_tried.emplace_back(info(e).id);
+
+  // Forward selection.
+  Candidate current;
+  FitResult current_fit = fit(model, obs, current, train, heldout);
+  std::vector<Effect> remaining = pool;
+  while (!remaining.empty()) {
+    std::optional<std::pair<std::size_t, FitResult>> best;
+    Candidate best_candidate;
+    for (std::size_t c = 0; c < remaining.size(); ++c) {
+      Candidate trial = current;
+      if (remaining[c] == Effect::kWaterDensity) {
+        trial.ctd_density = true;
+      } else {
+        trial.fitted.push_back(remaining[c]);
+      }
+      FitResult f = fit(model, obs, trial, train, heldout);
+      if (!best || f.heldout_rms < best->second.heldout_rms) {
+        best = std::make_pair(c, f);
+        best_candidate = trial;
+      }
+    }
+    const Effect effect = remaining[best->first];
+    const FitResult& f = best->second;
+    const bool helps = f.heldout_rms < current_fit.heldout_rms * (1.0 - options.min_heldout_improvement);
+    const bool bic_better = f.bic < current_fit.bic;
+    bool significant = true;
+    if (effect != Effect::kWaterDensity) {
+      const std::size_t j = best_candidate.fitted.size() - 1;
+      const double value = f.values[static_cast<std::size_t>(effect)];
+      significant = std::abs(value - info(effect).nominal) > 1.96 * f.sigma[j];
+    }
+    if (!(helps && bic_better && significant)) break;
+    current = best_candidate;
+    current_fit = f;
+    Finding finding;
+    finding.effect = effect;
+    finding.fitted = effect != Effect::kWaterDensity;
+    finding.heldout_rms_m_s = f.heldout_rms;
+    finding.gain = 1.0 - f.heldout_rms / d.baseline.heldout_rms_m_s;
+    d.findings.push_back(finding);
+    remaining.erase(remaining.begin() + static_cast<long>(best->first));
+  }
+
+  // Report every finding's value from the final joint fit.
+  for (Finding& finding : d.findings) {
+    if (!finding.fitted) {
+      finding.value = model.ctd_density_anomaly();
+      finding.ci95_low = finding.ci95_high = finding.value;
+      continue;
+    }
+    const auto it = std::find(current.fitted.begin(), current.fitted.end(), finding.effect);
+    const std::size_t j = static_cast<std::size_t>(it - current.fitted.begin());
+    finding.value = current_fit.values[static_cast<std::size_t>(finding.effect)];
+    finding.ci95_low = finding.value - 1.96 * current_fit.sigma[j];
+    finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
+  }
+  d.extended = current_fit.values;
+  if (current.ctd_density) d.extended[static_cast<std::size_t>(Effect::kWaterDensity)] = model.ctd_density_anomaly();
+  d.cause = d.findings.empty() ? "none" : info(d.findings.front().effect).id;
+  std::vector<double> re;
+  residuals(model, obs, current_fit.values, current.ctd_density, all, re);
+  d.extended_all = rms_where(re, all);
+  d.extended_heldout_rms_m_s = current_fit.heldout_rms;
+  d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
+  return d;
+}
+
+}  // namespace glider::diagnose

@@ -1,0 +1,91 @@
+#include "glider/diagnose/flight_model.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "glider/model/dynamics.hpp"
+#include "glider/model/steady_glide.hpp"
+#include "glider/units.hpp"
+
+namespace glider::diagnose {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const std::array<EffectInfo, kEffectCount> kInfo{{
+    {"buoyancy_offset", "g", 0.0, 20.0},
+    {"drag_change", "ratio", 1.0, 0.1},
+    {"hull_compressibility", "1/Pa", 0.0, 1e-10},
+    {"thermal_expansion", "1/K", 0.0, 1e-5},
+    {"vertical_water_velocity", "m/s", 0.0, 0.01},
+    {"water_density", "kg/m^3", 0.0, 1.0},
+}};
+
+// The nominal vehicle with the effects applied, as the model knows them.
+model::VehicleParams apply(model::VehicleParams v, const EffectValues& x) {
+  v.buoyancy_offset_kg += x[0] * 1e-3;
+  v.hydro.cd0 *= x[1];
+  v.hull_compressibility_per_pa += x[2];
+  v.hull_thermal_expansion_per_k += x[3];
+  return v;
+}
+
+}  // namespace
+
+const EffectInfo& info(Effect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
+Effect effect_from_index(std::size_t index) { return static_cast<Effect>(index); }
+
+EffectValues nominal_values() {
+  EffectValues x{};
+  for (std::size_t i = 0; i < kEffectCount; ++i) x[i] = kInfo[i].nominal;
+  return x;
+}
+
+FlightModel::FlightModel(const model::VehicleParams& nominal, const Observations& observations)
+    : nominal_(nominal), obs_(observations) {}
+
+void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span<const std::size_t> samples,
+                          std::vector<double>& out) const {
+  out.assign(samples.size(), kNaN);
+  if (!(x[1] > 0.0)) return;  // no negative drag
+  // A negative compressibility relative to nominal is allowed: the model's
+  // water is incompressible, so "lighter with depth" is a real possibility.
+  const model::VehicleParams v = apply(nominal_, x);
+  const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const std::size_t i = samples[k];
+    model::WaterSample water;
+    water.density_kg_m3 = use_ctd_density && std::isfinite(obs_.density_kg_m3[i]) ? obs_.density_kg_m3[i]
+                                                                                  : v.trim_density_kg_m3 + x[5];
+    water.temperature_c =
+        std::isfinite(obs_.temperature_c[i]) ? obs_.temperature_c[i] : v.hull_reference_temperature_c;
+    model::MassInputs masses;
+    masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
+    const double m0 = dynamics.net_buoyancy_kg(obs_.depth_m[i], water, masses);
+    const auto glide = model::steady_glide_for_pitch(v.hydro, water.density_kg_m3, obs_.pitch_rad[i], m0);
+    if (glide.glide) out[k] = glide.glide->depth_rate_m_s + x[4];
+  }
+}
+
+double FlightModel::nominal_pitch_rad(std::size_t i) const {
+  if (!std::isfinite(obs_.battpos_in[i])) return kNaN;
+  const model::GliderDynamics dynamics(nominal_, model::still_water(nominal_.trim_density_kg_m3));
+  model::MassInputs masses;
+  masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
+  masses.battery_pos_m = in_to_m(obs_.battpos_in[i]);
+  const auto eq = model::solve_equilibrium(dynamics, masses, obs_.depth_m[i]);
+  return eq.glide ? eq.glide->pitch_rad : kNaN;
+}
+
+double FlightModel::ctd_density_anomaly() const {
+  double deepest = -1.0, rho = kNaN;
+  for (std::size_t i = 0; i < obs_.size(); ++i) {
+    if (std::isfinite(obs_.density_kg_m3[i]) && obs_.depth_m[i] > deepest) {
+      deepest = obs_.depth_m[i];
+      rho = obs_.density_kg_m3[i];
+    }
+  }
+  return rho - nominal_.trim_density_kg_m3;
+}
+
+}  // namespace glider::diagnose

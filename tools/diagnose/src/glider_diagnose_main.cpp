@@ -1,0 +1,158 @@
+// glider-diagnose: what the simulation gets wrong in a flight log, the named
+// cause, the fitted effect and the gain on held-out yos.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "glider/config/toml_document.hpp"
+#include "glider/diagnose/diagnose.hpp"
+#include "glider/flightlog/flight_log.hpp"
+#include "glider/model/vehicle_file.hpp"
+
+namespace {
+
+using glider::diagnose::Diagnosis;
+using glider::diagnose::Effect;
+using glider::diagnose::info;
+using nlohmann::ordered_json;
+
+ordered_json number_or_null(double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr); }
+
+ordered_json rms_json(const glider::diagnose::Rms& r) {
+  return {{"rms_depth_rate_m_s", number_or_null(r.depth_rate_m_s)}, {"samples", r.samples}};
+}
+
+ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
+  ordered_json j;
+  j["vehicle"] = d.vehicle;
+  j["vehicle_source"] = vehicle_source;
+  j["samples_used"] = d.samples_used;
+  j["train_samples"] = d.train_samples;
+  j["heldout_samples"] = d.heldout_samples;
+  ordered_json base;
+  base["rms_depth_rate_m_s"] = number_or_null(d.baseline.all.depth_rate_m_s);
+  base["rms_pitch_deg"] = d.baseline.rms_pitch_deg ? ordered_json(*d.baseline.rms_pitch_deg) : ordered_json(nullptr);
+  base["heldout_rms_depth_rate_m_s"] = number_or_null(d.baseline.heldout_rms_m_s);
+  base["by_phase"] = {{"dive", rms_json(d.baseline.dives)},
+                      {"climb", rms_json(d.baseline.climbs)},
+                      {"inflection",
+                       {{"rms_depth_rate_m_s", nullptr},
+                        {"samples", d.baseline.inflection_samples},
+                        {"note", "turns are not scored: the model is the steady glide at the logged pitch"}}}};
+  ordered_json depth = ordered_json::array();
+  for (const auto& bin : d.baseline.by_depth) {
+    depth.push_back({{"from_m", bin.from_m}, {"to_m", bin.to_m}, {"rms_depth_rate_m_s", number_or_null(bin.rms.depth_rate_m_s)},
+                     {"samples", bin.rms.samples}});
+  }
+  base["by_depth"] = depth;
+  j["baseline"] = base;
+  ordered_json findings = ordered_json::array();
+  for (const auto& f : d.findings) {
+    findings.push_back({{"effect", info(f.effect).id},
+                        {"value", f.value},
+                        {"unit", info(f.effect).unit},
+                        {"ci95", {f.ci95_low, f.ci95_high}},
+                        {"heldout_rms_depth_rate_m_s", f.heldout_rms_m_s},
+                        {"gain", f.gain},
+                        {"fitted", f.fitted}});
+  }
+  j["findings"] = findings;
+  j["cause"] = d.cause;
+  j["extended"] = {{"rms_depth_rate_m_s", number_or_null(d.extended_all.depth_rate_m_s)},
+                   {"heldout_rms_depth_rate_m_s", number_or_null(d.extended_heldout_rms_m_s)}};
+  j["gain"] = d.gain;
+  ordered_json parameters;
+  for (std::size_t i = 0; i < glider::diagnose::kEffectCount; ++i) {
+    parameters[info(static_cast<Effect>(i)).id] = d.extended[i];
+  }
+  j["parameters"] = parameters;
+  j["candidates"] = d.candidates_tried;
+  return j;
+}
+
+void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source) {
+  std::printf("Diagnosis of %s\n  vehicle: %s (%s)\n", log.c_str(), d.vehicle.c_str(), vehicle_source.c_str());
+  std::printf("  samples: %zu in steady glides (%zu to fit, %zu held out: alternate yos)\n", d.samples_used,
+              d.train_samples, d.heldout_samples);
+  std::printf("  baseline (nominal model): depth rate RMS %.4f m/s (dives %.4f, climbs %.4f)", d.baseline.all.depth_rate_m_s,
+              d.baseline.dives.depth_rate_m_s, d.baseline.climbs.depth_rate_m_s);
+  if (d.baseline.rms_pitch_deg) std::printf(", pitch RMS %.2f deg", *d.baseline.rms_pitch_deg);
+  std::printf("\n  by depth:");
+  for (const auto& bin : d.baseline.by_depth) std::printf(" %.0f-%.0f m %.4f;", bin.from_m, bin.to_m, bin.rms.depth_rate_m_s);
+  std::printf("\n  findings (strongest first):\n");
+  if (d.findings.empty()) std::printf("    none: the nominal model explains the data within noise\n");
+  for (const auto& f : d.findings) {
+    std::printf("    %-24s %+.4g %s  (95%% CI %.4g .. %.4g)  held-out RMS %.4f m/s, gain %.0f %%\n", info(f.effect).id,
+                f.value, info(f.effect).unit, f.ci95_low, f.ci95_high, f.heldout_rms_m_s, 100.0 * f.gain);
+  }
+  std::printf("  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f %%\n",
+              d.cause.c_str(), d.extended_all.depth_rate_m_s, d.extended_heldout_rms_m_s, d.baseline.heldout_rms_m_s,
+              100.0 * d.gain);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Show what the simulation gets wrong in a flight log, name the cause, fit it, measure the gain"};
+  std::string log_path, vehicle_path, default_vehicle, report_dir;
+  bool json = false;
+  app.add_option("LOG", log_path, "flight log (CSV, docs/flight-log.md)")->required();
+  app.add_option("--vehicle", vehicle_path, "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--default-vehicle", default_vehicle, "vehicle used when neither --vehicle nor metadata give one")
+      ->check(CLI::ExistingFile);
+  app.add_option("--report", report_dir, "write the summary and the extended vehicle file here");
+  app.add_flag("--json", json, "one JSON object on stdout");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const glider::flightlog::FlightLog log = glider::flightlog::read_flight_log(log_path);
+    glider::model::VehicleParams vehicle;
+    std::string vehicle_source;
+    const auto metadata = log.vehicle_metadata();
+    if (!vehicle_path.empty()) {
+      vehicle = glider::model::load_vehicle_file(vehicle_path);
+      vehicle_source = "file " + vehicle_path + (metadata.empty() ? "" : "; the log's vehicle metadata is not used");
+    } else if (!metadata.empty()) {
+      std::vector<std::pair<std::string, std::string>> entries;
+      for (const auto& m : metadata) entries.emplace_back(m.key, m.value);
+      vehicle = glider::model::vehicle_from_metadata(entries, log_path);
+      vehicle_source = "the log's vehicle.* metadata";
+    } else if (!default_vehicle.empty()) {
+      vehicle = glider::model::load_vehicle_file(default_vehicle);
+      vehicle_source = "default vehicle " + std::filesystem::path(default_vehicle).filename().string() +
+                       " (the log states none)";
+    } else {
+      throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
+    }
+    const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log);
+    const Diagnosis d = glider::diagnose::diagnose(vehicle, obs);
+    if (json) {
+      std::printf("%s\n", to_json(d, vehicle_source).dump().c_str());
+    } else {
+      print_text(d, log_path, vehicle_source);
+    }
+    if (!report_dir.empty()) {
+      std::filesystem::create_directories(report_dir);
+      std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << to_json(d, vehicle_source).dump(2) << '\n';
+      glider::model::VehicleParams extended = vehicle;
+      extended.name = vehicle.name + "_extended";
+      extended.description = "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();
+      extended.buoyancy_offset_kg += d.extended[0] * 1e-3;
+      extended.hydro.cd0 *= d.extended[1];
+      extended.hull_compressibility_per_pa += d.extended[2];
+      extended.hull_thermal_expansion_per_k += d.extended[3];
+      std::ofstream(std::filesystem::path(report_dir) / "extended_vehicle.toml")
+          << "# Written by glider-diagnose. Water effects (vertical velocity, density) belong to the\n"
+          << "# environment, not the vehicle: see diagnosis.json.\n"
+          << glider::model::vehicle_file_text(extended);
+    }
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "glider-diagnose: %s\n", error.what());
+    return 2;
+  }
+  return 0;
+}
