@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <Eigen/Dense>
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
@@ -19,15 +20,76 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kUnflyablePenalty_m_s = 0.3;
 
 struct Candidate {
-  std::vector<Effect> fitted;  // effects with a fitted parameter
+  std::vector<Effect> fitted;  // effects with fitted parameters
   bool ctd_density = false;    // water_density from the CTD (no parameter)
 };
 
+// How the optimiser's parameter vector maps onto effects: one scaled number
+// per effect (value = nominal + scale * p), except the vertical water
+// velocity, which has one per depth bin.
+struct Layout {
+  std::vector<std::size_t> offset;  // into p, per fitted effect
+  std::size_t size = 0;
+  VerticalVelocityProfile bins;     // the bin geometry (values filled per evaluation)
+  std::vector<double> bin_weight;   // fraction of the fitted samples in each bin
+};
+
+Layout make_layout(const Candidate& c, const Observations& obs, std::span<const std::size_t> train) {
+  Layout layout;
+  double top = 1e9, bottom = -1e9;
+  for (std::size_t i : train) {
+    top = std::min(top, obs.depth_m[i]);
+    bottom = std::max(bottom, obs.depth_m[i]);
+  }
+  layout.bins.first_m = std::floor(top / layout.bins.bin_m) * layout.bins.bin_m;
+  const std::size_t bins =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((bottom - layout.bins.first_m) / layout.bins.bin_m)));
+  layout.bins.w_m_s.assign(bins, 0.0);
+  layout.bin_weight.assign(bins, 0.0);
+  for (std::size_t i : train) {
+    const double position = (obs.depth_m[i] - layout.bins.first_m) / layout.bins.bin_m;
+    const std::size_t b = std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, std::floor(position))));
+    layout.bin_weight[b] += 1.0 / static_cast<double>(train.size());
+  }
+  for (Effect e : c.fitted) {
+    layout.offset.push_back(layout.size);
+    layout.size += e == Effect::kVerticalWaterVelocity ? bins : 1;
+  }
+  return layout;
+}
+
+struct Parameters {
+  EffectValues values = nominal_values();
+  std::optional<VerticalVelocityProfile> profile;
+};
+
+Parameters unpack(const Candidate& c, const Layout& layout, const Eigen::VectorXd& p) {
+  Parameters out;
+  for (std::size_t j = 0; j < c.fitted.size(); ++j) {
+    const Effect e = c.fitted[j];
+    const EffectInfo& ei = info(e);
+    const auto o = static_cast<Eigen::Index>(layout.offset[j]);
+    if (e == Effect::kVerticalWaterVelocity) {
+      VerticalVelocityProfile profile = layout.bins;
+      double mean = 0.0;
+      for (std::size_t b = 0; b < profile.w_m_s.size(); ++b) {
+        profile.w_m_s[b] = ei.scale * p[o + static_cast<Eigen::Index>(b)];
+        mean += layout.bin_weight[b] * profile.w_m_s[b];
+      }
+      out.values[static_cast<std::size_t>(e)] = mean;  // the reported value: the mean over the log
+      out.profile = profile;
+    } else {
+      out.values[static_cast<std::size_t>(e)] = ei.nominal + ei.scale * p[o];
+    }
+  }
+  return out;
+}
+
 // Residuals (model - measured) of a set of samples.
-void residuals(const FlightModel& model, const Observations& obs, const EffectValues& x, bool ctd,
+void residuals(const FlightModel& model, const Observations& obs, const Parameters& x, bool ctd,
                std::span<const std::size_t> samples, std::vector<double>& out) {
   std::vector<double> predicted;
-  model.predict(x, ctd, samples, predicted);
+  model.predict(x.values, ctd, samples, predicted, x.profile ? &*x.profile : nullptr);
   out.resize(samples.size());
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const double p = predicted[k];
@@ -42,8 +104,7 @@ double rms_of(const std::vector<double>& r) {
   return std::sqrt(s / static_cast<double>(r.size()));
 }
 
-// Eigen's Levenberg-Marquardt functor over the scaled parameters of the
-// fitted effects (value = nominal + scale * p).
+// Eigen's Levenberg-Marquardt functor over the scaled parameters.
 struct FitFunctor {
   using Scalar = double;
   using InputType = Eigen::VectorXd;
@@ -54,30 +115,22 @@ struct FitFunctor {
   const FlightModel& model;
   const Observations& obs;
   const Candidate& candidate;
+  const Layout& layout;
   std::span<const std::size_t> samples;
   mutable std::vector<double> buffer;
 
-  int inputs() const { return static_cast<int>(candidate.fitted.size()); }
+  int inputs() const { return static_cast<int>(layout.size); }
   int values() const { return static_cast<int>(samples.size()); }
-
-  EffectValues values_of(const Eigen::VectorXd& p) const {
-    EffectValues x = nominal_values();
-    for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
-      const EffectInfo& e = info(candidate.fitted[j]);
-      x[static_cast<std::size_t>(candidate.fitted[j])] = e.nominal + e.scale * p[static_cast<Eigen::Index>(j)];
-    }
-    return x;
-  }
   int operator()(const Eigen::VectorXd& p, Eigen::VectorXd& f) const {
-    residuals(model, obs, values_of(p), candidate.ctd_density, samples, buffer);
+    residuals(model, obs, unpack(candidate, layout, p), candidate.ctd_density, samples, buffer);
     for (std::size_t k = 0; k < buffer.size(); ++k) f[static_cast<Eigen::Index>(k)] = buffer[k];
     return 0;
   }
 };
 
 struct FitResult {
-  EffectValues values = nominal_values();
-  std::vector<double> sigma;  // per fitted effect, reported units
+  Parameters parameters;
+  std::vector<double> sigma;  // per fitted effect, reported units (the mean's, for a profile)
   double train_rss = 0.0;
   double heldout_rms = 0.0;
   double bic = 0.0;
@@ -86,8 +139,9 @@ struct FitResult {
 FitResult fit(const FlightModel& model, const Observations& obs, const Candidate& candidate,
               std::span<const std::size_t> train, std::span<const std::size_t> heldout) {
   FitResult result;
-  const std::size_t k = candidate.fitted.size();
-  FitFunctor functor{model, obs, candidate, train, {}};
+  const Layout layout = make_layout(candidate, obs, train);
+  const std::size_t k = layout.size;
+  FitFunctor functor{model, obs, candidate, layout, train, {}};
   Eigen::VectorXd p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
   if (k > 0) {
     Eigen::NumericalDiff<FitFunctor> numeric(functor);
@@ -95,17 +149,17 @@ FitResult fit(const FlightModel& model, const Observations& obs, const Candidate
     lm.parameters.maxfev = 400;
     lm.minimize(p);
   }
-  result.values = functor.values_of(p);
+  result.parameters = unpack(candidate, layout, p);
   std::vector<double> r;
-  residuals(model, obs, result.values, candidate.ctd_density, train, r);
+  residuals(model, obs, result.parameters, candidate.ctd_density, train, r);
   const double n = static_cast<double>(r.size());
   for (double v : r) result.train_rss += v * v;
   result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
 
   // Parameter uncertainty from the Jacobian at the solution. Samples of a log
   // are serially correlated (1-4 s apart on minute-long glides): the noise
-  // variance is inflated by the lag-1 autocorrelation of the residuals, i.e.
-  // counted over the effective number of independent samples.
+  // variance is counted over the effective number of independent samples
+  // (from the lag-1 autocorrelation of the residuals).
   if (k > 0) {
     Eigen::NumericalDiff<FitFunctor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
@@ -120,14 +174,27 @@ FitResult fit(const FlightModel& model, const Observations& obs, const Candidate
     // RSS / (n_eff - k) = s^2 n / n_eff: the noise variance, inflated for correlation.
     const double variance = result.train_rss / (n_eff - static_cast<double>(k));
     const Eigen::MatrixXd normal = jac.transpose() * jac;
-    const Eigen::MatrixXd cov = normal.inverse() * variance;
-    for (std::size_t j = 0; j < k; ++j) {
-      result.sigma.push_back(std::sqrt(std::max(cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)), 0.0)) *
-                             info(candidate.fitted[j]).scale);
+    const Eigen::MatrixXd cov = normal.completeOrthogonalDecomposition().pseudoInverse() * variance;
+    for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
+      const Effect e = candidate.fitted[j];
+      const auto o = static_cast<Eigen::Index>(layout.offset[j]);
+      double var_value = 0.0;
+      if (e == Effect::kVerticalWaterVelocity) {  // variance of the weighted mean of the bins
+        const auto bins = static_cast<Eigen::Index>(layout.bin_weight.size());
+        for (Eigen::Index a = 0; a < bins; ++a) {
+          for (Eigen::Index b = 0; b < bins; ++b) {
+            var_value += layout.bin_weight[static_cast<std::size_t>(a)] * layout.bin_weight[static_cast<std::size_t>(b)] *
+                         cov(o + a, o + b);
+          }
+        }
+      } else {
+        var_value = cov(o, o);
+      }
+      result.sigma.push_back(std::sqrt(std::max(var_value, 0.0)) * info(e).scale);
     }
   }
   std::vector<double> h;
-  residuals(model, obs, result.values, candidate.ctd_density, heldout, h);
+  residuals(model, obs, result.parameters, candidate.ctd_density, heldout, h);
   result.heldout_rms = rms_of(h);
   return result;
 }
@@ -167,7 +234,7 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
 
   // Baseline.
   std::vector<double> r;
-  residuals(model, obs, nominal_values(), false, all, r);
+  residuals(model, obs, Parameters{}, false, all, r);
   d.baseline.all = rms_where(r, all);
   d.baseline.dives = rms_where(r, dives);
   d.baseline.climbs = rms_where(r, climbs);
@@ -184,7 +251,7 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   }
   d.baseline.heldout_rms_m_s = rms_of([&] {
     std::vector<double> h;
-    residuals(model, obs, nominal_values(), false, heldout, h);
+    residuals(model, obs, Parameters{}, false, heldout, h);
     return h;
   }());
   if (obs.has_battpos) {
@@ -234,7 +301,7 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     bool significant = true;
     if (effect != Effect::kWaterDensity) {
       const std::size_t j = best_candidate.fitted.size() - 1;
-      const double value = f.values[static_cast<std::size_t>(effect)];
+      const double value = f.parameters.values[static_cast<std::size_t>(effect)];
       significant = std::abs(value - info(effect).nominal) > 1.96 * f.sigma[j];
     }
     if (!(helps && bic_better && significant)) break;
@@ -258,15 +325,15 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     }
     const auto it = std::find(current.fitted.begin(), current.fitted.end(), finding.effect);
     const std::size_t j = static_cast<std::size_t>(it - current.fitted.begin());
-    finding.value = current_fit.values[static_cast<std::size_t>(finding.effect)];
+    finding.value = current_fit.parameters.values[static_cast<std::size_t>(finding.effect)];
     finding.ci95_low = finding.value - 1.96 * current_fit.sigma[j];
     finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
   }
-  d.extended = current_fit.values;
+  d.extended = current_fit.parameters.values;
   if (current.ctd_density) d.extended[static_cast<std::size_t>(Effect::kWaterDensity)] = model.ctd_density_anomaly();
   d.cause = d.findings.empty() ? "none" : info(d.findings.front().effect).id;
   std::vector<double> re;
-  residuals(model, obs, current_fit.values, current.ctd_density, all, re);
+  residuals(model, obs, current_fit.parameters, current.ctd_density, all, re);
   d.extended_all = rms_where(re, all);
   d.extended_heldout_rms_m_s = current_fit.heldout_rms;
   d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;

@@ -1,5 +1,6 @@
 #include "glider/diagnose/flight_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -44,8 +45,15 @@ EffectValues nominal_values() {
 FlightModel::FlightModel(const model::VehicleParams& nominal, const Observations& observations)
     : nominal_(nominal), obs_(observations) {}
 
+double VerticalVelocityProfile::at(double depth_m) const {
+  if (w_m_s.empty()) return 0.0;
+  const double position = (depth_m - first_m) / bin_m;
+  const long index = std::clamp(static_cast<long>(std::floor(position)), 0L, static_cast<long>(w_m_s.size()) - 1);
+  return w_m_s[static_cast<std::size_t>(index)];
+}
+
 void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span<const std::size_t> samples,
-                          std::vector<double>& out) const {
+                          std::vector<double>& out, const VerticalVelocityProfile* profile) const {
   out.assign(samples.size(), kNaN);
   if (!(x[1] > 0.0)) return;  // no negative drag
   // A negative compressibility relative to nominal is allowed: the model's
@@ -63,7 +71,8 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
     masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
     const double m0 = dynamics.net_buoyancy_kg(obs_.depth_m[i], water, masses);
     const auto glide = model::steady_glide_for_pitch(v.hydro, water.density_kg_m3, obs_.pitch_rad[i], m0);
-    if (glide.glide) out[k] = glide.glide->depth_rate_m_s + x[4];
+    const double w = profile != nullptr ? profile->at(obs_.depth_m[i]) : x[4];
+    if (glide.glide) out[k] = glide.glide->depth_rate_m_s + w;
   }
 }
 

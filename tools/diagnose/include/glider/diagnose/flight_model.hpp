@@ -38,6 +38,16 @@ Effect effect_from_index(std::size_t index);
 using EffectValues = std::array<double, kEffectCount>;
 EffectValues nominal_values();
 
+// Vertical water velocity by depth: the water moves in layers (internal
+// waves, convection), which a constant cannot tell from a buoyancy offset in
+// a symmetric yo (both shift dives and climbs alike); a profile can.
+struct VerticalVelocityProfile {
+  double bin_m = 10.0;
+  double first_m = 0.0;          // top of the first bin
+  std::vector<double> w_m_s;     // per bin, + down
+  double at(double depth_m) const;
+};
+
 class FlightModel {
  public:
   FlightModel(const model::VehicleParams& nominal, const Observations& observations);
@@ -45,8 +55,9 @@ class FlightModel {
   // Predicted depth rate (m/s, + down) of the samples; NaN where the model has
   // no steady glide. `use_ctd_density`: water density from the CTD (the
   // water_density effect on a log with CTD data), else nominal + the value.
+  // A `profile` replaces the constant vertical velocity value when given.
   void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-               std::vector<double>& out) const;
+               std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const;
 
   // Pitch of the nominal model's forward equilibrium (logged ballast and
   // battery) for a sample; NaN without battery data or a steady glide.
