@@ -71,8 +71,9 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
   for (bool d : obs.diving) dives += d ? 1 : 0;
   if (dives == 0) {
     throw flightlog::FlightLogError(log.source(), 0, "", 0,
-                                    "no steady dives found (the log needs dives deeper than " +
-                                        std::to_string(options.min_depth_m) + " m with pitch and ballast)");
+                                    "no steady dives found (a dive must go 3 m or more down, below " +
+                                        std::to_string(static_cast<int>(options.min_depth_m)) +
+                                        " m, with pitch and ballast logged)");
   }
   return obs;
 }
