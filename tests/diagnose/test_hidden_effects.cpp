@@ -25,14 +25,15 @@ struct Outcome {
 
 // Flies 6 yos between 5 and 80 m with the flown vehicle and the water given,
 // logging the nominal vehicle; diagnoses the CSV alone.
-Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water, const std::string& name) {
+Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water, const std::string& name,
+                         double dive_to_m = 80.0) {
   const model::VehicleParams nominal =
       model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
   fw::FlightSoftwareConfig config =
       fw::read_flight_config(config::TomlDocument::load(GLIDER_SOURCE_DIR "/boards/missions/demo_yo.toml"));
   config.mission.yos = 6;
-  config.mission.dive_to_m = 80.0;
-  config.mission.max_depth_m = 95.0;
+  config.mission.dive_to_m = dive_to_m;
+  config.mission.max_depth_m = dive_to_m + 15.0;
   sil::ScenarioOptions options;
   options.environment = water;
   options.logged_vehicle = nominal;
@@ -113,4 +114,42 @@ TEST(DiagnoseHiddenEffects, VerticalWaterVelocityInALayer) {
   }
   DOUBLES_EQUAL(sum / n, o.diagnosis.findings.front().value, 0.003);
   CHECK(o.diagnosis.gain > 0.5);
+}
+
+TEST(DiagnoseHiddenEffects, HullCompressibility) {
+  // A hull a few 1e-10 /Pa softer than nominal gains ~10-30 g over 180 m:
+  // dives speed up and climbs slow down with depth.
+  const double eps = uniform(rng, 1.5e-10, 3e-10);
+  model::VehicleParams flown = we01();
+  flown.hull_compressibility_per_pa = eps;
+  const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "hull_compressibility", 180.0);
+  STRCMP_EQUAL("hull_compressibility", o.diagnosis.cause.c_str());
+  // Stated tolerance 30 %: the fit is biased high by ~20 % on these flights
+  // (measured: 3.54e-10 for 2.90e-10), outside its own confidence interval;
+  // the cause is not found yet (see the issue notes) - the bound records it.
+  DOUBLES_EQUAL(eps, o.diagnosis.findings.front().value, 0.3 * eps);
+  CHECK(o.diagnosis.gain > 0.5);
+}
+
+TEST(DiagnoseHiddenEffects, TwoEffectsAtOnce) {
+  const double grams = -uniform(rng, 30.0, 60.0);
+  const double ratio = uniform(rng, 1.2, 1.4);
+  model::VehicleParams flown = we01();
+  flown.buoyancy_offset_kg = grams * 1e-3;
+  flown.hydro.cd0 *= ratio;
+  const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "two_effects");
+  LONGS_EQUAL(2, o.diagnosis.findings.size());
+  bool found_offset = false, found_drag = false;
+  for (const auto& f : o.diagnosis.findings) {
+    if (f.effect == diagnose::Effect::kBuoyancyOffset) {
+      found_offset = true;
+      DOUBLES_EQUAL(grams, f.value, 6.0);
+    }
+    if (f.effect == diagnose::Effect::kDragChange) {
+      found_drag = true;
+      DOUBLES_EQUAL(ratio, f.value, 0.04);
+    }
+  }
+  CHECK_TRUE(found_offset && found_drag);
+  CHECK(o.diagnosis.gain > 0.6);
 }
