@@ -191,6 +191,15 @@ SteadyGlideResult solve_equilibrium(const GliderDynamics& dyn, const MassInputs&
   return result;
 }
 
+double battery_for_glide(const GliderDynamics& dyn, const SteadyGlide& glide, MassInputs masses, double depth_m) {
+  const double probe = 0.01;
+  masses.battery_pos_m = 0.0;
+  const double r0 = pitch_moment(dyn, masses, depth_m, glide);
+  masses.battery_pos_m = probe;
+  const double r1 = pitch_moment(dyn, masses, depth_m, glide);
+  return -r0 * probe / (r1 - r0);
+}
+
 TrimResult solve_trim(const GliderDynamics& dyn, double glide_path_deg, double net_buoyancy_kg, double depth_m) {
   TrimResult result;
   const double density = dyn.environment().water.at(depth_m, 0.0).density_kg_m3;
@@ -205,14 +214,9 @@ TrimResult solve_trim(const GliderDynamics& dyn, double glide_path_deg, double n
   // Net buoyancy is affine in the pumped volume (ballast mass = -rho V).
   const double m0_zero = net_buoyancy_at_rest(dyn, MassInputs{}, depth_m);
   trim.pumped_volume_m3 = (m0_zero - net_buoyancy_kg) / density;
-  // The pitching moment is affine in the battery position: two evaluations.
   MassInputs masses{};
   masses.pumped_volume_m3 = trim.pumped_volume_m3;
-  const double probe = 0.01;
-  const double r0 = pitch_moment(dyn, masses, depth_m, trim.glide);
-  masses.battery_pos_m = probe;
-  const double r1 = pitch_moment(dyn, masses, depth_m, trim.glide);
-  trim.battery_pos_m = -r0 * probe / (r1 - r0);
+  trim.battery_pos_m = battery_for_glide(dyn, trim.glide, masses, depth_m);
 
   const VehicleParams& v = dyn.vehicle();
   trim.within_limits = true;

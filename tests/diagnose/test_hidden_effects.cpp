@@ -13,6 +13,7 @@
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
+#include "glider/units.hpp"
 
 using namespace glider;
 
@@ -152,4 +153,16 @@ TEST(DiagnoseHiddenEffects, TwoEffectsAtOnce) {
   }
   CHECK_TRUE(found_offset && found_drag);
   CHECK(o.diagnosis.gain > 0.6);
+}
+
+TEST(DiagnoseHiddenEffects, PitchTrimOffset) {
+  // A CG error equivalent to the battery sitting 0.05-0.15 in further forward
+  // than its reading (a mis-placed trim weight): the pitch servo holds the
+  // commanded pitch with the battery that much further aft on every glide.
+  const double inches = uniform(rng, 0.05, 0.15) * (rng() % 2 ? 1.0 : -1.0);
+  model::VehicleParams flown = we01();
+  flown.battery.x_at_zero_m += in_to_m(inches);
+  const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "pitch_trim_offset");
+  STRCMP_EQUAL("pitch_trim_offset", o.diagnosis.cause.c_str());
+  DOUBLES_EQUAL(inches, o.diagnosis.findings.front().value, 0.02);
 }

@@ -211,6 +211,58 @@ Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx)
   return out;
 }
 
+// Pitch trim: the battery the servo needed to hold the logged pitch against
+// the one the nominal model needs. A CG error shows as the same offset on
+// dives and climbs (the vocabulary's pitch_trim_offset, + = nose-heavy, as if
+// the battery were further forward: the servo then sits further aft).
+void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std::span<const std::size_t> train,
+                         std::span<const std::size_t> heldout, const DiagnoseOptions& options, Diagnosis& d) {
+  if (!obs.has_battpos) return;
+  auto differences = [&](std::span<const std::size_t> samples) {
+    std::vector<double> out;
+    for (std::size_t i : samples) {
+      const double required = model.required_battpos_in(i, d.extended);
+      if (std::isfinite(required) && std::isfinite(obs.battpos_in[i])) out.push_back(obs.battpos_in[i] - required);
+    }
+    return out;
+  };
+  const std::vector<double> fit_part = differences(train);
+  const std::vector<double> held = differences(heldout);
+  if (fit_part.size() < 10 || held.empty()) return;
+  double mean = 0.0;
+  for (double x : fit_part) mean += x;
+  mean /= static_cast<double>(fit_part.size());
+  double var = 0.0, lag1 = 0.0;
+  for (std::size_t i = 0; i < fit_part.size(); ++i) {
+    var += (fit_part[i] - mean) * (fit_part[i] - mean);
+    if (i > 0) lag1 += (fit_part[i] - mean) * (fit_part[i - 1] - mean);
+  }
+  const double n = static_cast<double>(fit_part.size());
+  const double rho1 = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
+  const double n_eff = std::max(2.0, n * (1.0 - rho1) / (1.0 + rho1));
+  const double sigma = std::sqrt(var / (n - 1.0) / n_eff);
+  std::vector<double> after(held);
+  for (double& x : after) x -= mean;
+  const double before_rms = rms_of(held);
+  const double after_rms = rms_of(after);
+  std::vector<double> all_differences(fit_part);
+  all_differences.insert(all_differences.end(), held.begin(), held.end());
+  d.baseline.rms_battpos_in = rms_of(all_differences);
+  const double value = -mean;  // nose-heavy = the servo holds the battery aft of the model's
+  if (std::abs(value) > 1.96 * sigma && after_rms < before_rms * (1.0 - options.min_heldout_improvement)) {
+    Finding f;
+    f.effect = Effect::kPitchTrimOffset;
+    f.value = value;
+    f.ci95_low = value - 1.96 * sigma;
+    f.ci95_high = value + 1.96 * sigma;
+    f.heldout_rms_m_s = d.findings.empty() ? d.baseline.heldout_rms_m_s : d.findings.back().heldout_rms_m_s;
+    f.gain = d.findings.empty() ? 0.0 : d.findings.back().gain;
+    f.heldout_rms_battpos_in = after_rms;
+    d.findings.push_back(f);
+    d.extended[static_cast<std::size_t>(Effect::kPitchTrimOffset)] = value;
+  }
+}
+
 }  // namespace
 
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs, const DiagnoseOptions& options) {
@@ -337,6 +389,9 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   d.extended_all = rms_where(re, all);
   d.extended_heldout_rms_m_s = current_fit.heldout_rms;
   d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
+  // Pitch trim last: it is judged with the depth-rate effects already found.
+  diagnose_pitch_trim(model, obs, train, heldout, options, d);
+  if (d.cause == "none" && !d.findings.empty()) d.cause = info(d.findings.front().effect).id;
   return d;
 }
 

@@ -20,6 +20,7 @@ const std::array<EffectInfo, kEffectCount> kInfo{{
     {"thermal_expansion", "1/K", 0.0, 1e-5},
     {"vertical_water_velocity", "m/s", 0.0, 0.01},
     {"water_density", "kg/m^3", 0.0, 1.0},
+    {"pitch_trim_offset", "in", 0.0, 0.01},
 }};
 
 // The nominal vehicle with the effects applied, as the model knows them.
@@ -84,6 +85,20 @@ double FlightModel::nominal_pitch_rad(std::size_t i) const {
   masses.battery_pos_m = in_to_m(obs_.battpos_in[i]);
   const auto eq = model::solve_equilibrium(dynamics, masses, obs_.depth_m[i]);
   return eq.glide ? eq.glide->pitch_rad : kNaN;
+}
+
+double FlightModel::required_battpos_in(std::size_t i, const EffectValues& values) const {
+  const model::VehicleParams v = apply(nominal_, values);
+  const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
+  model::MassInputs masses;
+  masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
+  model::WaterSample water;
+  water.density_kg_m3 = v.trim_density_kg_m3 + values[5];
+  water.temperature_c = std::isfinite(obs_.temperature_c[i]) ? obs_.temperature_c[i] : v.hull_reference_temperature_c;
+  const double m0 = dynamics.net_buoyancy_kg(obs_.depth_m[i], water, masses);
+  const auto glide = model::steady_glide_for_pitch(v.hydro, water.density_kg_m3, obs_.pitch_rad[i], m0);
+  if (!glide.glide) return kNaN;
+  return m_to_in(model::battery_for_glide(dynamics, *glide.glide, masses, obs_.depth_m[i]));
 }
 
 double FlightModel::ctd_density_anomaly() const {

@@ -11,6 +11,7 @@
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/units.hpp"
 
 namespace {
 
@@ -36,6 +37,7 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
   base["rms_depth_rate_m_s"] = number_or_null(d.baseline.all.depth_rate_m_s);
   base["rms_pitch_deg"] = d.baseline.rms_pitch_deg ? ordered_json(*d.baseline.rms_pitch_deg) : ordered_json(nullptr);
   base["heldout_rms_depth_rate_m_s"] = number_or_null(d.baseline.heldout_rms_m_s);
+  base["rms_battpos_in"] = d.baseline.rms_battpos_in ? ordered_json(*d.baseline.rms_battpos_in) : ordered_json(nullptr);
   base["by_phase"] = {{"dive", rms_json(d.baseline.dives)},
                       {"climb", rms_json(d.baseline.climbs)},
                       {"inflection",
@@ -58,6 +60,7 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
                         {"heldout_rms_depth_rate_m_s", f.heldout_rms_m_s},
                         {"gain", f.gain},
                         {"fitted", f.fitted}});
+    if (f.heldout_rms_battpos_in) findings.back()["heldout_rms_battpos_in"] = *f.heldout_rms_battpos_in;
   }
   j["findings"] = findings;
   j["cause"] = d.cause;
@@ -80,6 +83,7 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
   std::printf("  baseline (nominal model): depth rate RMS %.4f m/s (dives %.4f, climbs %.4f)", d.baseline.all.depth_rate_m_s,
               d.baseline.dives.depth_rate_m_s, d.baseline.climbs.depth_rate_m_s);
   if (d.baseline.rms_pitch_deg) std::printf(", pitch RMS %.2f deg", *d.baseline.rms_pitch_deg);
+  if (d.baseline.rms_battpos_in) std::printf(", battery RMS %.3f in", *d.baseline.rms_battpos_in);
   std::printf("\n  by depth:");
   for (const auto& bin : d.baseline.by_depth) std::printf(" %.0f-%.0f m %.4f;", bin.from_m, bin.to_m, bin.rms.depth_rate_m_s);
   std::printf("\n  findings (strongest first):\n");
@@ -145,6 +149,7 @@ int main(int argc, char** argv) {
       extended.hydro.cd0 *= d.extended[1];
       extended.hull_compressibility_per_pa += d.extended[2];
       extended.hull_thermal_expansion_per_k += d.extended[3];
+      extended.battery.x_at_zero_m += glider::in_to_m(d.extended[6]);  // pitch trim: the battery's zero moves
       std::ofstream(std::filesystem::path(report_dir) / "extended_vehicle.toml")
           << "# Written by glider-diagnose. Water effects (vertical velocity, density) belong to the\n"
           << "# environment, not the vehicle: see diagnosis.json.\n"

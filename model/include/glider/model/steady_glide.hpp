@@ -53,6 +53,10 @@ double min_glide_path_deg(const Hydrodynamics& hydro, int direction = 1);
 // and moment balance with the full model's terms (GliderDynamics::evaluate).
 SteadyGlideResult solve_equilibrium(const GliderDynamics& dynamics, const MassInputs& masses, double depth_m);
 
+// The battery position that balances the pitching moment of a given steady
+// glide, the other masses as in `masses` (the moment is affine in it).
+double battery_for_glide(const GliderDynamics& dynamics, const SteadyGlide& glide, MassInputs masses, double depth_m);
+
 // Inverse problem: the ballast and battery position that fly the given glide
 // path (deg, magnitude) with the given net buoyancy (kg, sign = direction).
 struct Trim {

@@ -25,6 +25,7 @@ struct DepthBin {
 struct Baseline {
   Rms all, dives, climbs;
   std::optional<double> rms_pitch_deg;  // forward equilibrium vs logged pitch (needs m_battpos)
+  std::optional<double> rms_battpos_in; // logged battery vs the one the model needs for the logged pitch
   std::size_t inflection_samples = 0;   // not scored: the steady model does not fly turns
   std::vector<DepthBin> by_depth;
   double heldout_rms_m_s = 0.0;         // on the held-out yos: the reference of the gain
@@ -37,6 +38,7 @@ struct Finding {
   double heldout_rms_m_s = 0.0;  // of the model with this and the stronger findings
   double gain = 0.0;             // fraction of the baseline held-out error removed so far
   bool fitted = true;            // false: a measured input (CTD density), not a fitted number
+  std::optional<double> heldout_rms_battpos_in;  // pitch_trim_offset: what it explains
 };
 
 struct Diagnosis {

@@ -21,6 +21,7 @@ enum class Effect : int {
   kThermalExpansion,
   kVerticalWaterVelocity,
   kWaterDensity,
+  kPitchTrimOffset,  // explains the battery position, not the depth rate
   kCount
 };
 constexpr std::size_t kEffectCount = static_cast<std::size_t>(Effect::kCount);
@@ -62,6 +63,11 @@ class FlightModel {
   // Pitch of the nominal model's forward equilibrium (logged ballast and
   // battery) for a sample; NaN without battery data or a steady glide.
   double nominal_pitch_rad(std::size_t sample) const;
+
+  // The battery position (in) that holds the logged pitch with the logged
+  // ballast in a steady glide (moment balance of the model); NaN if none.
+  // The vehicle is the nominal one with `values` applied (the effects found).
+  double required_battpos_in(std::size_t sample, const EffectValues& values) const;
 
   // Density at the deepest CTD sample minus the nominal (the water_density value).
   double ctd_density_anomaly() const;
