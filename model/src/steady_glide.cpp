@@ -120,31 +120,43 @@ SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double densi
   return result;
 }
 
-SteadyGlideResult steady_glide_for_pitch(const Hydrodynamics& hydro, double density_kg_m3, double pitch_rad,
-                                         double net_buoyancy_kg, double gravity_m_s2) {
+PitchGlideSolver::PitchGlideSolver(const Hydrodynamics& hydro)
+    : hydro_(hydro), alpha0_(zero_lift_alpha(hydro)), t_best_{} {
+  t_best_[0] = Branch{hydro_, 1, alpha0_}.t_best();
+  t_best_[1] = Branch{hydro_, -1, alpha0_}.t_best();
+}
+
+SteadyGlideResult PitchGlideSolver::solve(double density_kg_m3, double pitch_rad, double net_buoyancy_kg,
+                                          double gravity_m_s2) const {
   SteadyGlideResult result;
   if (net_buoyancy_kg == 0.0 || !std::isfinite(net_buoyancy_kg) || !std::isfinite(pitch_rad)) {
     result.error = "a steady glide needs a finite pitch and a non-zero net buoyancy";
     return result;
   }
-  const Branch branch = make_branch(hydro, net_buoyancy_kg > 0.0 ? 1 : -1);
+  const int direction = net_buoyancy_kg > 0.0 ? 1 : -1;
+  const Branch branch{hydro_, direction, alpha0_};
   // Along the branch, |pitch| = gamma - direction * alpha falls from 90 deg
   // at zero lift to its smallest value at the best glide: bisect.
-  const double target = -branch.direction * pitch_rad;  // pitch magnitude in the glide's direction
-  auto pitch_magnitude = [&](double t) { return std::atan(branch.tan_gamma(t)) - branch.direction * branch.alpha(t); };
-  const double t_best = branch.t_best();
+  const double target = -direction * pitch_rad;  // pitch magnitude in the glide's direction
+  auto pitch_magnitude = [&](double t) { return std::atan(branch.tan_gamma(t)) - direction * branch.alpha(t); };
+  const double t_best = t_best_[direction > 0 ? 0 : 1];
   if (!(target < pitch_magnitude(1e-12)) || !(target > pitch_magnitude(t_best))) {
     result.error = "pitch outside the steady glides of this buoyancy";
     return result;
   }
   double lo = 1e-12;
   double hi = t_best;
-  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+  while (hi - lo > 1e-10) {  // ~33 halvings: alpha to 1e-10 rad
     const double mid = 0.5 * (lo + hi);
     (pitch_magnitude(mid) > target ? lo : hi) = mid;
   }
   result.glide = glide_at(branch, 0.5 * (lo + hi), density_kg_m3, gravity_m_s2, net_buoyancy_kg);
   return result;
+}
+
+SteadyGlideResult steady_glide_for_pitch(const Hydrodynamics& hydro, double density_kg_m3, double pitch_rad,
+                                         double net_buoyancy_kg, double gravity_m_s2) {
+  return PitchGlideSolver(hydro).solve(density_kg_m3, pitch_rad, net_buoyancy_kg, gravity_m_s2);
 }
 
 SteadyGlideResult solve_equilibrium(const GliderDynamics& dyn, const MassInputs& masses, double depth_m) {

@@ -249,7 +249,9 @@ void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std:
   all_differences.insert(all_differences.end(), held.begin(), held.end());
   d.baseline.rms_battpos_in = rms_of(all_differences);
   const double value = -mean;  // nose-heavy = the servo holds the battery aft of the model's
-  if (std::abs(value) > 1.96 * sigma && after_rms < before_rms * (1.0 - options.min_heldout_improvement)) {
+  // As for the depth rate: relative and absolute (0.01 in: the slide's resolution) improvements.
+  if (std::abs(value) > 1.96 * sigma && after_rms < before_rms * (1.0 - options.min_heldout_improvement) &&
+      after_rms < before_rms - 0.01) {
     Finding f;
     f.effect = Effect::kPitchTrimOffset;
     f.value = value;
@@ -281,6 +283,15 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     train.assign(all.begin(), all.begin() + static_cast<long>(all.size() / 2));
     heldout.assign(all.begin() + static_cast<long>(all.size() / 2), all.end());
   }
+  auto thin = [&options](std::vector<std::size_t>& samples) {
+    if (samples.size() <= options.max_fit_samples) return;
+    const std::size_t stride = (samples.size() + options.max_fit_samples - 1) / options.max_fit_samples;
+    std::vector<std::size_t> kept;
+    for (std::size_t k = 0; k < samples.size(); k += stride) kept.push_back(samples[k]);
+    samples = std::move(kept);
+  };
+  thin(train);
+  thin(heldout);
   d.train_samples = train.size();
   d.heldout_samples = heldout.size();
 
@@ -348,7 +359,8 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     }
     const Effect effect = remaining[best->first];
     const FitResult& f = best->second;
-    const bool helps = f.heldout_rms < current_fit.heldout_rms * (1.0 - options.min_heldout_improvement);
+    const bool helps = f.heldout_rms < current_fit.heldout_rms * (1.0 - options.min_heldout_improvement) &&
+                       f.heldout_rms < current_fit.heldout_rms - options.min_heldout_improvement_m_s;
     const bool bic_better = f.bic < current_fit.bic;
     bool significant = true;
     if (effect != Effect::kWaterDensity) {

@@ -61,6 +61,7 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
   // water is incompressible, so "lighter with depth" is a real possibility.
   const model::VehicleParams v = apply(nominal_, x);
   const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
+  const model::PitchGlideSolver solver(v.hydro);
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const std::size_t i = samples[k];
     model::WaterSample water;
@@ -71,7 +72,7 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
     model::MassInputs masses;
     masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
     const double m0 = dynamics.net_buoyancy_kg(obs_.depth_m[i], water, masses);
-    const auto glide = model::steady_glide_for_pitch(v.hydro, water.density_kg_m3, obs_.pitch_rad[i], m0);
+    const auto glide = solver.solve(water.density_kg_m3, obs_.pitch_rad[i], m0);
     const double w = profile != nullptr ? profile->at(obs_.depth_m[i]) : x[4];
     if (glide.glide) out[k] = glide.glide->depth_rate_m_s + w;
   }

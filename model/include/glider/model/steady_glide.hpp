@@ -44,6 +44,20 @@ SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double densi
 SteadyGlideResult steady_glide_for_pitch(const Hydrodynamics& hydro, double density_kg_m3, double pitch_rad,
                                          double net_buoyancy_kg, double gravity_m_s2 = 9.81);
 
+// The same for many samples of one vehicle: the flight branches (zero-lift
+// angle, best glide) are found once, so one solve costs ~1 us.
+class PitchGlideSolver {
+ public:
+  explicit PitchGlideSolver(const Hydrodynamics& hydro);
+  SteadyGlideResult solve(double density_kg_m3, double pitch_rad, double net_buoyancy_kg,
+                          double gravity_m_s2 = 9.81) const;
+
+ private:
+  Hydrodynamics hydro_;
+  double alpha0_;
+  double t_best_[2];  // descending, climbing
+};
+
 // Shallowest possible glide path (deg) descending (+1) or climbing (-1): at
 // the angle of attack of the best lift-to-drag ratio.
 double min_glide_path_deg(const Hydrodynamics& hydro, int direction = 1);
