@@ -23,16 +23,16 @@ const std::array<EffectInfo, kEffectCount> kInfo{{
     {"pitch_trim_offset", "in", 0.0, 0.01},
 }};
 
-// The nominal vehicle with the effects applied, as the model knows them.
+}  // namespace
+
 model::VehicleParams apply(model::VehicleParams v, const EffectValues& x) {
   v.buoyancy_offset_kg += x[0] * 1e-3;
   v.hydro.cd0 *= x[1];
   v.hull_compressibility_per_pa += x[2];
   v.hull_thermal_expansion_per_k += x[3];
+  v.battery.x_at_zero_m += in_to_m(x[6]);  // pitch trim: the battery's zero moves forward
   return v;
 }
-
-}  // namespace
 
 const EffectInfo& info(Effect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
 Effect effect_from_index(std::size_t index) { return static_cast<Effect>(index); }

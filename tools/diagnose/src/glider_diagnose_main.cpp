@@ -11,7 +11,6 @@
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
-#include "glider/units.hpp"
 
 namespace {
 
@@ -142,14 +141,9 @@ int main(int argc, char** argv) {
     if (!report_dir.empty()) {
       std::filesystem::create_directories(report_dir);
       std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << to_json(d, vehicle_source).dump(2) << '\n';
-      glider::model::VehicleParams extended = vehicle;
+      glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
       extended.name = vehicle.name + "_extended";
       extended.description = "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();
-      extended.buoyancy_offset_kg += d.extended[0] * 1e-3;
-      extended.hydro.cd0 *= d.extended[1];
-      extended.hull_compressibility_per_pa += d.extended[2];
-      extended.hull_thermal_expansion_per_k += d.extended[3];
-      extended.battery.x_at_zero_m += glider::in_to_m(d.extended[6]);  // pitch trim: the battery's zero moves
       std::ofstream(std::filesystem::path(report_dir) / "extended_vehicle.toml")
           << "# Written by glider-diagnose. Water effects (vertical velocity, density) belong to the\n"
           << "# environment, not the vehicle: see diagnosis.json.\n"

@@ -49,6 +49,11 @@ struct VerticalVelocityProfile {
   double at(double depth_m) const;
 };
 
+// The nominal vehicle with the vehicle effects applied (buoyancy offset,
+// drag, hull compressibility and thermal expansion, pitch trim); the water
+// effects (vertical velocity, density) belong to the environment.
+model::VehicleParams apply(model::VehicleParams nominal, const EffectValues& values);
+
 class FlightModel {
  public:
   FlightModel(const model::VehicleParams& nominal, const Observations& observations);
