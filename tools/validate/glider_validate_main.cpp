@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "report.hpp"
+#include "glider/report/report.hpp"
 #include "sections.hpp"
 
 int main(int argc, char** argv) {

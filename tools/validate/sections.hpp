@@ -1,9 +1,11 @@
 #pragma once
 #include <filesystem>
 
-#include "report.hpp"
+#include "glider/report/report.hpp"
 
 namespace glider::validate {
+using report::Report;
+using report::fixed;
 
 struct Inputs {
   std::filesystem::path boards;      // boards/vehicles

@@ -394,6 +394,8 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
   }
   d.extended = current_fit.parameters.values;
+  d.extended_profile = current_fit.parameters.profile;
+  d.extended_uses_ctd_density = current.ctd_density;
   if (current.ctd_density) d.extended[static_cast<std::size_t>(Effect::kWaterDensity)] = model.ctd_density_anomaly();
   d.cause = d.findings.empty() ? "none" : info(d.findings.front().effect).id;
   std::vector<double> re;
@@ -405,6 +407,21 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   diagnose_pitch_trim(model, obs, train, heldout, options, d);
   if (d.cause == "none" && !d.findings.empty()) d.cause = info(d.findings.front().effect).id;
   return d;
+}
+
+}  // namespace glider::diagnose
+
+namespace glider::diagnose {
+
+Predictions predict_all(const model::VehicleParams& nominal, const Observations& obs, const Diagnosis& d) {
+  const FlightModel model(nominal, obs);
+  std::vector<std::size_t> all(obs.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  Predictions p;
+  model.predict(nominal_values(), false, all, p.nominal_m_s);
+  model.predict(d.extended, d.extended_uses_ctd_density, all, p.extended_m_s,
+                d.extended_profile ? &*d.extended_profile : nullptr);
+  return p;
 }
 
 }  // namespace glider::diagnose

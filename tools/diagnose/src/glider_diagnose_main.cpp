@@ -11,6 +11,7 @@
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/report/report.hpp"
 
 namespace {
 
@@ -96,6 +97,37 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
               100.0 * d.gain);
 }
 
+// Plots a person would look at: measured and modelled depth rate over time
+// and against depth, and the residuals before and after.
+void write_plots(const std::string& dir, const glider::model::VehicleParams& vehicle,
+                 const glider::diagnose::Observations& obs, const Diagnosis& d, const std::string& log_path) {
+  const glider::diagnose::Predictions p = glider::diagnose::predict_all(vehicle, obs, d);
+  std::vector<double> minutes(obs.size()), before(obs.size()), after(obs.size());
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    minutes[i] = (obs.time_s[i] - obs.time_s[0]) / 60.0;
+    before[i] = p.nominal_m_s[i] - obs.depth_rate_m_s[i];
+    after[i] = p.extended_m_s[i] - obs.depth_rate_m_s[i];
+  }
+  glider::report::Report report(dir);
+  report.text() << "# Diagnosis of " << std::filesystem::path(log_path).filename().string() << "\n\nCause: **" << d.cause
+                << "**, held-out gain " << glider::report::fixed(100.0 * d.gain, 0)
+                << " %. Numbers: diagnosis.json; extended vehicle: extended_vehicle.toml.\n";
+  report.data("samples.dat", {"minutes", "depth_m", "measured", "nominal", "extended", "residual_before", "residual_after"},
+              {minutes, obs.depth_m, obs.depth_rate_m_s, p.nominal_m_s, p.extended_m_s, before, after});
+  report.plot("depth_rate_time", "Depth rate over time: measured, nominal model, extended model",
+              "set xlabel 'minutes'\nset ylabel 'depth rate (m/s, + down)'\n"
+              "plot 'samples.dat' u 1:3 w p pt 7 ps 0.3 t 'measured', '' u 1:4 w p pt 7 ps 0.3 t 'nominal', "
+              "'' u 1:5 w p pt 7 ps 0.3 t 'extended'");
+  report.plot("depth_rate_depth", "Depth rate against depth: measured, nominal, extended",
+              "set xlabel 'depth rate (m/s, + down)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
+              "plot 'samples.dat' u 3:2 w p pt 7 ps 0.3 t 'measured', '' u 4:2 w p pt 7 ps 0.3 t 'nominal', "
+              "'' u 5:2 w p pt 7 ps 0.3 t 'extended'");
+  report.plot("residuals", "Depth-rate residual (model - measured) against depth, before and after",
+              "set xlabel 'residual (m/s)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
+              "plot 'samples.dat' u 6:2 w p pt 7 ps 0.3 t 'nominal model', '' u 7:2 w p pt 7 ps 0.3 t 'extended model'");
+  if (!report.finish()) throw std::runtime_error("the plots could not be rendered (gnuplot)");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -140,6 +172,7 @@ int main(int argc, char** argv) {
     }
     if (!report_dir.empty()) {
       std::filesystem::create_directories(report_dir);
+      write_plots(report_dir, vehicle, obs, d, log_path);
       std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << to_json(d, vehicle_source).dump(2) << '\n';
       glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
       extended.name = vehicle.name + "_extended";

@@ -49,6 +49,8 @@ struct Diagnosis {
   std::vector<Finding> findings;  // strongest first, significant only
   std::string cause = "none";
   EffectValues extended = nominal_values();
+  std::optional<VerticalVelocityProfile> extended_profile;  // when the vertical velocity was fitted
+  bool extended_uses_ctd_density = false;
   Rms extended_all;                // the extended model over all samples
   double extended_heldout_rms_m_s = 0.0;
   double gain = 0.0;
@@ -70,5 +72,12 @@ struct DiagnoseOptions {
 
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& observations,
                    const DiagnoseOptions& options = {});
+
+// Depth rate of every sample by the nominal model and by the extended one
+// (NaN where a model has no steady glide): what the report plots.
+struct Predictions {
+  std::vector<double> nominal_m_s, extended_m_s;
+};
+Predictions predict_all(const model::VehicleParams& nominal, const Observations& observations, const Diagnosis& d);
 
 }  // namespace glider::diagnose

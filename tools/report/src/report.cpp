@@ -1,11 +1,11 @@
-#include "report.hpp"
+#include "glider/report/report.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
-namespace glider::validate {
+namespace glider::report {
 
 std::string fixed(double value, int decimals) {
   if (!std::isfinite(value)) return "-";
@@ -77,4 +77,4 @@ bool Report::finish() {
   return ok;
 }
 
-}  // namespace glider::validate
+}  // namespace glider::report

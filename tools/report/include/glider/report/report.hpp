@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace glider::validate {
+namespace glider::report {
 
 class Report {
  public:
@@ -32,4 +32,4 @@ class Report {
 
 std::string fixed(double value, int decimals);
 
-}  // namespace glider::validate
+}  // namespace glider::report
