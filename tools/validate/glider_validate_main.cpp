@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
     glider::validate::paper000(report, in);
     glider::validate::paper001(report, in);
     glider::validate::paper002(report, in);
+    glider::validate::steady_identification_section(report, in);
     glider::validate::real_data(report, in);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "glider-validate: %s\n", error.what());

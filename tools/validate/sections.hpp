@@ -17,5 +17,7 @@ void paper000(Report& report, const Inputs& in);
 void paper001(Report& report, const Inputs& in);
 void paper002(Report& report, const Inputs& in);
 void real_data(Report& report, const Inputs& in);
+// Paper 000 sec. 3 (glider_identification) on the tables of papers 000 and 001.
+void steady_identification_section(Report& report, const Inputs& in);
 
 }  // namespace glider::validate
