@@ -213,7 +213,7 @@ TEST(FlightLogReader, OptionsChooseTimeRequiredAndKeptColumns) {
   options.required = {{"p"}};
   const FlightLog log = parse_flight_log("t,p,q\n1,2,3\n2,3,4\n", "opt.csv", options);
   DOUBLES_EQUAL(2.0, log.time()[1], 0.0);
-  STRCMP_EQUAL("bad.csv:1:r: required column missing", error_of("t,p,q\n1,2,3\n", {"t", {{"r"}}, {}}).c_str());
+  STRCMP_EQUAL("bad.csv:1:r: required column missing", error_of("t,p,q\n1,2,3\n", {"t", {{"r"}}, {}, {}}).c_str());
   // Only the listed columns are kept; the others are not even parsed.
   options.columns = {"q"};
   const FlightLog some = parse_flight_log("t,p,q,notes\n1,2,3,free text\n", "opt.csv", options);
@@ -280,4 +280,20 @@ TEST(FlightLogReader, ReadsTheGliderflightAdcpLogWithItsOwnColumns) {
                  return std::string();
                }()
                    .c_str());
+}
+
+TEST(FlightLogReader, RenamedColumnsAreCheckedUnderTheirNewNames) {
+  ReadOptions options;
+  options.rename = {{"time", "m_present_time"}, {"pitch_rad", "m_pitch"}};
+  options.required = {{"m_pitch"}};
+  const FlightLog log = parse_flight_log("time,pitch_rad\n1,-0.4\n2,-0.41\n", "renamed.csv", options);
+  CHECK_TRUE(log.has("m_pitch"));
+  CHECK_FALSE(log.has("pitch_rad"));
+  DOUBLES_EQUAL(2.0, log.time()[1], 0.0);
+  try {
+    parse_flight_log("time,pitch_rad\n2,-0.4\n1,-0.41\n", "renamed.csv", options);
+    FAIL("expected an error");
+  } catch (const FlightLogError& error) {
+    STRCMP_CONTAINS("renamed.csv:3:m_present_time: time goes backwards", error.what());
+  }
 }

@@ -114,7 +114,7 @@ TEST(FlightLogGaps, DepthFromPressureMatchesMDepth) {
     options.columns = {"m_depth", "sci_water_pressure"};
     const FlightLog log = read_flight_log(kRealDir + file, options);
     CHECK_TRUE(depth_series(log)->source == "m_depth");
-    const FlightLog ctd_only = read_flight_log(kRealDir + file, {"m_present_time", {}, {"sci_water_pressure"}});
+    const FlightLog ctd_only = read_flight_log(kRealDir + file, {"m_present_time", {}, {"sci_water_pressure"}, {}});
     const auto from_pressure = depth_series(ctd_only);
     STRCMP_EQUAL("sci_water_pressure", from_pressure->source.c_str());
     const Column& depth = log.column("m_depth");
@@ -124,7 +124,7 @@ TEST(FlightLogGaps, DepthFromPressureMatchesMDepth) {
     }
     CHECK(std::abs(median(differences)) < 0.4);
   }
-  CHECK_FALSE(depth_series(parse_flight_log("t,x\n1,2\n", "none.csv", {"t", {}, {}})).has_value());
+  CHECK_FALSE(depth_series(parse_flight_log("t,x\n1,2\n", "none.csv", {"t", {}, {}, {}})).has_value());
   STRCMP_EQUAL("bar", std::string(unit_of("sci_water_pressure")).c_str());
   STRCMP_EQUAL("", std::string(unit_of("sim_speed_m_s")).c_str());
 }

@@ -134,6 +134,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Show what the simulation gets wrong in a flight log, name the cause, fit it, measure the gain"};
   std::string log_path, vehicle_path, default_vehicle, report_dir;
   bool json = false;
+  std::vector<std::string> renames;
   app.add_option("LOG", log_path, "flight log (CSV, docs/flight-log.md)")->required();
   app.add_option("--vehicle", vehicle_path, "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
       ->check(CLI::ExistingFile);
@@ -141,10 +142,19 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--report", report_dir, "write the summary and the extended vehicle file here");
   app.add_flag("--json", json, "one JSON object on stdout");
+  app.add_option("--rename", renames, "read column FROM as TO (FROM=TO), for logs not in the contract's names");
   CLI11_PARSE(app, argc, argv);
 
   try {
-    const glider::flightlog::FlightLog log = glider::flightlog::read_flight_log(log_path);
+    glider::flightlog::ReadOptions read_options;
+    for (const std::string& r : renames) {
+      const std::size_t eq = r.find('=');
+      if (eq == std::string::npos || eq == 0 || eq + 1 == r.size()) {
+        throw std::runtime_error("--rename wants FROM=TO, got '" + r + "'");
+      }
+      read_options.rename.emplace_back(r.substr(0, eq), r.substr(eq + 1));
+    }
+    const glider::flightlog::FlightLog log = glider::flightlog::read_flight_log(log_path, read_options);
     glider::model::VehicleParams vehicle;
     std::string vehicle_source;
     const auto metadata = log.vehicle_metadata();

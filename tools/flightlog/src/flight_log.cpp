@@ -95,8 +95,14 @@ class Parser {
   void read_header(std::string_view line) {
     header_line_ = lines_.number();
     for_each_field(line, [this](std::size_t col, std::string_view field) {
-      const std::string name(trim(field));
+      std::string name(trim(field));
       if (name.empty()) fail(header_line_, "", col + 1, "empty column name");
+      for (const auto& [from, to] : options_.rename) {
+        if (name == from) {
+          name = to;
+          break;
+        }
+      }
       const auto previous = std::find(header_.begin(), header_.end(), name);
       if (previous != header_.end()) {
         fail(header_line_, name, col + 1,

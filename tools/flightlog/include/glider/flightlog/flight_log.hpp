@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace glider::flightlog {
@@ -52,6 +53,10 @@ struct ReadOptions {
   // Keep only these columns (plus the time and the required ones); the other
   // columns are skipped without being parsed. Empty: keep every column.
   std::vector<std::string> columns;
+  // Header names read as other names, {from, to}: a log that is not in the
+  // contract's names (e.g. gliderflight's "time", "pitch_rad") can still be
+  // read, with every check applied under the contract's names.
+  std::vector<std::pair<std::string, std::string>> rename;
 };
 
 struct MetadataEntry {
