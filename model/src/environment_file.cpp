@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "glider/config/toml_document.hpp"
+#include "glider/units.hpp"
 
 namespace glider::model {
 namespace {
@@ -38,7 +39,7 @@ Environment read(const TomlDocument& doc) {
   }
   Oscillation o;
   o.period_s = doc.number_or("oscillation.period_s", 0.0);
-  o.phase_rad = doc.number_or("oscillation.phase_deg", 0.0) * std::numbers::pi / 180.0;
+  o.phase_rad = deg_to_rad(doc.number_or("oscillation.phase_deg", 0.0));
   o.east_m_s = doc.number_or("oscillation.east_m_s", 0.0);
   o.north_m_s = doc.number_or("oscillation.north_m_s", 0.0);
   o.vertical_m_s = doc.number_or("oscillation.vertical_m_s", 0.0);

@@ -4,11 +4,12 @@
 #include <numbers>
 
 #include "glider/model/hydrodynamics.hpp"
+#include "glider/units.hpp"
 
 namespace glider::model {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
 
 // Angle of zero lift (C_L is increasing through it inside the fit range).
 double zero_lift_alpha(const Hydrodynamics& h) {

@@ -13,15 +13,15 @@
 #include "glider/model/vehicle_file.hpp"
 #include "sections.hpp"
 #include "table_file.hpp"
+#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
 
 namespace id = glider::identification;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
 constexpr double kInch = 0.0254;
-constexpr double kNeutralXcgMm = 77.0;  // paper 001: CG with the battery at neutral
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 // Half the last printed digit, as a uniform error's standard deviation.
@@ -187,14 +187,13 @@ void stante(Report& r, const Inputs& in, const model::VehicleParams& we01, const
   const auto rows = read_table(in.papers / "stante2008_steady_climbs_dives.csv");
   std::vector<id::SteadyGlideSample> samples;
   std::vector<const TableRow*> used;
-  const double dry_mass = model::dry_mass_kg(vehicle);
   for (const TableRow& row : rows) {
     // The four measured segments: not their averages, not the authors' simulation.
     if (row.text("kind") != "measured" || row.text("case").find("avg") != std::string::npos) continue;
     // dBu_kg is + buoyant, rate_m_s + descending; the battery from the CG
     // shift as in paper 001's section.
     samples.push_back({row.number("pitch_deg") * kDeg, row.number("rate_m_s"), -row.number("dBu_kg"),
-                       (row.number("xcg_mm") - kNeutralXcgMm) * 1e-3 * dry_mass / vehicle.battery.mass_kg, 0.0});
+                       stante_battery_pos_m(vehicle, row.number("xcg_mm")), 0.0});
     used.push_back(&row);
   }
   // Each direction was flown at one pitch: the pitch correction takes the

@@ -8,11 +8,12 @@
 #include "glider/model/vehicle_file.hpp"
 #include "sections.hpp"
 #include "table_file.hpp"
+#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace

@@ -7,12 +7,12 @@
 #include "glider/model/vehicle_file.hpp"
 #include "sections.hpp"
 #include "table_file.hpp"
+#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kNeutralXcgMm = 77.0;  // 001: CG with the battery at neutral
+constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
 
 struct Prediction {
   double pitch_deg = std::numeric_limits<double>::quiet_NaN();
@@ -25,13 +25,18 @@ Prediction predict(const model::VehicleParams& v, double xcg_mm, double ballast_
   const model::GliderDynamics dyn(v, model::still_water(v.trim_density_kg_m3));
   model::MassInputs m;
   m.pumped_volume_m3 = ballast_kg / v.trim_density_kg_m3;  // + more buoyant
-  m.battery_pos_m = (xcg_mm - kNeutralXcgMm) * 1e-3 * model::dry_mass_kg(v) / v.battery.mass_kg;
+  m.battery_pos_m = stante_battery_pos_m(v, xcg_mm);
   const auto eq = model::solve_equilibrium(dyn, m, 50.0);
   if (!eq.glide) return {};
   return {eq.glide->pitch_rad / kDeg, eq.glide->depth_rate_m_s};
 }
 
 }  // namespace
+
+double stante_battery_pos_m(const model::VehicleParams& vehicle, double xcg_mm) {
+  constexpr double kNeutralXcgMm = 77.0;  // 001: CG with the battery at neutral
+  return (xcg_mm - kNeutralXcgMm) * 1e-3 * model::dry_mass_kg(vehicle) / vehicle.battery.mass_kg;
+}
 
 void paper001(Report& r, const Inputs& in) {
   const model::VehicleParams we01 = model::load_vehicle_file(in.boards / "slocum_we01.toml");

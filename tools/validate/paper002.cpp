@@ -7,11 +7,12 @@
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "sections.hpp"
+#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
 
 struct Descent {
   double time_s = std::numeric_limits<double>::quiet_NaN();

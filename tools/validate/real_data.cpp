@@ -11,11 +11,12 @@
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "sections.hpp"
+#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
 
 struct Score {
   double sum_sq = 0.0, sum_measured = 0.0, sum_model = 0.0;
@@ -74,7 +75,7 @@ void real_data(Report& r, const Inputs& in) {
           !std::isfinite(ballast[i]) || !std::isfinite(rate[i]) || std::abs(pitch[i]) < 10.0 * kDeg) {
         continue;
       }
-      const double m0 = -rho * ballast[i] * 1e-6;
+      const double m0 = -rho * cc_to_m3(ballast[i]);
       const auto glide = model::steady_glide_for_pitch(v.hydro, rho, pitch[i], m0);
       if (!glide.glide) {
         ++no_solution;
@@ -116,7 +117,7 @@ void real_data(Report& r, const Inputs& in) {
     if (!std::isfinite(pitch[i]) || !std::isfinite(ballast[i]) || std::abs(pitch[i]) < 10.0 * kDeg || depth[i] < 3.0) {
       continue;
     }
-    const auto glide = model::steady_glide_for_pitch(v.hydro, rho, pitch[i], -rho * ballast[i] * 1e-6);
+    const auto glide = model::steady_glide_for_pitch(v.hydro, rho, pitch[i], -rho * cc_to_m3(ballast[i]));
     if (!glide.glide) continue;
     if (std::isfinite(rate[i])) vertical.add(rate[i], glide.glide->depth_rate_m_s);
     if (std::isfinite(u_adcp[i])) speed.add(u_adcp[i], glide.glide->speed_m_s);

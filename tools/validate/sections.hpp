@@ -1,6 +1,7 @@
 #pragma once
 #include <filesystem>
 
+#include "glider/model/vehicle.hpp"
 #include "glider/report/report.hpp"
 
 namespace glider::validate {
@@ -12,6 +13,11 @@ struct Inputs {
   std::filesystem::path papers;      // tests/data/papers
   std::filesystem::path real_data;   // tests/data/real
 };
+
+// Paper 001 gives the CG position (from the battery through its CAD model),
+// not the battery: the battery shift that moves the CG that far from its
+// neutral 77 mm, dx_batt = dx_CG M / m_batt.
+double stante_battery_pos_m(const model::VehicleParams& vehicle, double xcg_mm);
 
 void paper000(Report& report, const Inputs& in);
 void paper001(Report& report, const Inputs& in);
