@@ -21,18 +21,11 @@ except ImportError as e:  # pragma: no cover - depends on the machine
     print(f"check_seawater_vs_gsw: skipped, {e} (apt-get install python3-gsw)")
     sys.exit(77)
 
+from make_seawater_reference import in_funnel  # the one statement of seawater.hpp's density range
+
 # Same algorithms and coefficients as GSW-C: differences are rounding.
 TOLERANCES = {"SP": 1e-10, "SA": 1e-10, "CT": 1e-10, "rho": 1e-6}
 UNITS = {"SP": "", "SA": " g/kg", "CT": " degC", "rho": " kg/m^3"}
-
-
-def in_funnel(sa, ct, p):
-    """Density range documented in seawater.hpp (gsw_infunnel, -3 degC floor)."""
-    inside = (sa >= 0) & (sa <= 42) & (ct >= -3) & (ct <= 40) & (p >= 0) & (p <= 8000)
-    mid = (p > 500) & (p < 6500)
-    inside &= ~(mid & ((sa < p * 5e-3 - 2.5) | (ct > 31.66666666666667 - p * 3.333333333333334e-3)))
-    inside &= ~((p >= 6500) & ((sa < 30) | (ct > 10)))
-    return inside
 
 
 def draw(rng, n):

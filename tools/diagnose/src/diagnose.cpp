@@ -85,6 +85,19 @@ Parameters unpack(const Candidate& c, const Layout& layout, const Eigen::VectorX
   return out;
 }
 
+// Samples of a log are serially correlated (1-4 s apart on minute-long
+// glides): the number of independent ones, n (1 - r1) / (1 + r1), from the
+// lag-1 autocorrelation r1 of the deviations from `mean` (clamped to 0..0.99).
+double effective_sample_count(std::span<const double> x, double mean) {
+  double var = 0.0, lag1 = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    var += (x[i] - mean) * (x[i] - mean);
+    if (i > 0) lag1 += (x[i] - mean) * (x[i - 1] - mean);
+  }
+  const double rho1 = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
+  return static_cast<double>(x.size()) * (1.0 - rho1) / (1.0 + rho1);
+}
+
 // Residuals (model - measured) of a set of samples.
 void residuals(const FlightModel& model, const Observations& obs, const Parameters& x, bool ctd,
                std::span<const std::size_t> samples, std::vector<double>& out) {
@@ -164,13 +177,7 @@ FitResult fit(const FlightModel& model, const Observations& obs, const Candidate
     Eigen::NumericalDiff<FitFunctor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
     numeric.df(p, jac);
-    double lag1 = 0.0, var = 0.0;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      var += r[i] * r[i];
-      if (i > 0) lag1 += r[i] * r[i - 1];
-    }
-    const double rho1 = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
-    const double n_eff = std::max(n * (1.0 - rho1) / (1.0 + rho1), static_cast<double>(k) + 2.0);
+    const double n_eff = std::max(effective_sample_count(r, 0.0), static_cast<double>(k) + 2.0);
     // RSS / (n_eff - k) = s^2 n / n_eff: the noise variance, inflated for correlation.
     const double variance = result.train_rss / (n_eff - static_cast<double>(k));
     const Eigen::MatrixXd normal = jac.transpose() * jac;
@@ -232,14 +239,10 @@ void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std:
   double mean = 0.0;
   for (double x : fit_part) mean += x;
   mean /= static_cast<double>(fit_part.size());
-  double var = 0.0, lag1 = 0.0;
-  for (std::size_t i = 0; i < fit_part.size(); ++i) {
-    var += (fit_part[i] - mean) * (fit_part[i] - mean);
-    if (i > 0) lag1 += (fit_part[i] - mean) * (fit_part[i - 1] - mean);
-  }
+  double var = 0.0;
+  for (double x : fit_part) var += (x - mean) * (x - mean);
   const double n = static_cast<double>(fit_part.size());
-  const double rho1 = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
-  const double n_eff = std::max(2.0, n * (1.0 - rho1) / (1.0 + rho1));
+  const double n_eff = std::max(2.0, effective_sample_count(fit_part, mean));
   const double sigma = std::sqrt(var / (n - 1.0) / n_eff);
   std::vector<double> after(held);
   for (double& x : after) x -= mean;
