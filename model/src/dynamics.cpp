@@ -8,6 +8,24 @@
 
 namespace glider::model {
 
+FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3) {
+  FlowForces out;
+  out.speed_m_s = std::hypot(v1, v3);
+  out.alpha_rad = std::atan2(v3, v1);
+  if (!(out.speed_m_s > 0.0)) return out;
+  const ForceCoefficients c = force_coefficients(h, out.alpha_rad);
+  const double dyn = 0.5 * water_density * h.reference_area_m2 * out.speed_m_s * out.speed_m_s;
+  out.lift_coefficient = c.lift;
+  out.lift_n = dyn * c.lift;
+  out.drag_n = dyn * c.drag;
+  const double cos_a = v1 / out.speed_m_s;
+  const double sin_a = v3 / out.speed_m_s;
+  out.f1 = out.lift_n * sin_a - out.drag_n * cos_a;
+  out.f3 = -out.lift_n * cos_a - out.drag_n * sin_a;
+  out.moment_nm = dyn * moment_coefficient(h, out.alpha_rad);
+  return out;
+}
+
 GliderDynamics::GliderDynamics(const VehicleParams& vehicle, const Environment& environment)
     : vehicle_(vehicle), environment_(environment), nominal_volume_m3_(model::displaced_volume_m3(vehicle)) {}
 
@@ -94,22 +112,16 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
 
   // Lift, drag and viscous moment from the flow relative to the water.
   const Hydrodynamics& h = vehicle_.hydro;
-  e.speed_m_s = std::hypot(e.v1, e.v3);
-  e.alpha_rad = std::atan2(e.v3, e.v1);
+  const FlowForces flow = flow_forces(h, rho, e.v1, e.v3);
+  e.speed_m_s = flow.speed_m_s;
+  e.alpha_rad = flow.alpha_rad;
+  e.lift_n = flow.lift_n;
+  e.drag_n = flow.drag_n;
+  f1 += flow.f1;
+  f3 += flow.f3;
+  e.hydro_moment_nm = flow.moment_nm;
+  const double lift_coefficient = flow.lift_coefficient;
   const double half_rho_a = 0.5 * rho * h.reference_area_m2;
-  double lift_coefficient = 0.0;
-  if (e.speed_m_s > 0.0) {
-    const ForceCoefficients c = force_coefficients(h, e.alpha_rad);
-    lift_coefficient = c.lift;
-    const double dyn = half_rho_a * e.speed_m_s * e.speed_m_s;
-    e.lift_n = dyn * c.lift;
-    e.drag_n = dyn * c.drag;
-    const double cos_a = e.v1 / e.speed_m_s;
-    const double sin_a = e.v3 / e.speed_m_s;
-    f1 += e.lift_n * sin_a - e.drag_n * cos_a;
-    f3 += -e.lift_n * cos_a - e.drag_n * sin_a;
-    e.hydro_moment_nm = dyn * moment_coefficient(h, e.alpha_rad);
-  }
   e.hydro_moment_nm += half_rho_a * e.speed_m_s * h.cmq_m2 * e.q;
 
   // Kirchhoff: the rotating frame's terms. v x P about y is v3 P1 - v1 P3.

@@ -3,6 +3,8 @@
 #include <boost/numeric/odeint/external/eigen/eigen_algebra.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <cmath>
+
+#include "glider/model/first_order_lag.hpp"
 #include <numbers>
 
 namespace glider::model {
@@ -27,9 +29,17 @@ GliderSimulator::GliderSimulator(const VehicleParams& vehicle, const Environment
       second_(make_slide(vehicle.second_mass, 0.0)),
       fin_(-vehicle.heading.fin_max_rad, vehicle.heading.fin_max_rad, vehicle.heading.fin_rate_rad_s, 0.0) {}
 
+double GliderSimulator::displaced_pump_volume_after(double t) const {
+  const double lag = dynamics_.vehicle().ballast.lag_s;
+  if (!(lag > 0.0)) return pump_.position_after(t);
+  // The servo's path over the step is close to linear (it can stop inside
+  // one 0.1 s step at most once): lag its mean slope exactly.
+  return first_order_lag_after(displaced_pump_volume_m3_, pump_.position(), pump_.position_after(t), t, lag);
+}
+
 MassInputs GliderSimulator::masses_after(double t) const {
   MassInputs m;
-  m.pumped_volume_m3 = pump_.position_after(t);
+  m.pumped_volume_m3 = displaced_pump_volume_after(t);
   m.battery_pos_m = battery_.position_after(t);
   m.battery_rate_m_s = battery_.velocity_after(t);
   m.second_pos_m = second_.position_after(t);
@@ -41,6 +51,7 @@ MassInputs GliderSimulator::masses_after(double t) const {
 void GliderSimulator::reset_servos(double pumped_volume_m3, double battery_pos_m) {
   const VehicleParams& v = dynamics_.vehicle();
   pump_ = RateLimitedServo(v.ballast.volume_min_m3, v.ballast.volume_max_m3, v.ballast.rate_m3_s, pumped_volume_m3);
+  displaced_pump_volume_m3_ = pumped_volume_m3;
   battery_ = make_slide(v.battery, battery_pos_m);
   second_ = make_slide(v.second_mass, 0.0);
   fin_ = RateLimitedServo(-v.heading.fin_max_rad, v.heading.fin_max_rad, v.heading.fin_rate_rad_s, 0.0);
@@ -77,6 +88,7 @@ void GliderSimulator::step(double h) {
   const double t0 = time_s_;
   auto rhs = [this, t0](const State& s, State& ds, double t) { ds = dynamics_.derivative(t, s, masses_after(t - t0)); };
   stepper.do_step(rhs, state_, t0, h);
+  displaced_pump_volume_m3_ = displaced_pump_volume_after(h);
   pump_.advance(h);
   battery_.advance(h);
   second_.advance(h);

@@ -34,6 +34,7 @@ std::string validate(const VehicleParams& v) {
   }
   if (!(v.ballast.volume_min_m3 < v.ballast.volume_max_m3)) return "ballast volume: min must be below max";
   if (!(v.ballast.rate_m3_s > 0.0)) return "ballast.rate_m3_s must be positive";
+  if (!(v.ballast.lag_s >= 0.0 && v.ballast.lag_s < 600.0)) return "ballast.lag_s must be in [0, 600)";
   if (!(v.added_mass_x_kg >= 0.0 && v.added_mass_z_kg >= 0.0 && v.added_inertia_kg_m2 >= 0.0)) {
     return "added masses and inertia must not be negative";
   }

@@ -47,6 +47,7 @@ void visit_numbers(VehicleParams& v, Visitor&& visit) {
   visit("ballast.volume_min_m3", v.ballast.volume_min_m3, req);
   visit("ballast.volume_max_m3", v.ballast.volume_max_m3, req);
   visit("ballast.rate_m3_s", v.ballast.rate_m3_s, req);
+  visit("ballast.lag_s", v.ballast.lag_s, opt);
   visit("added_mass.x_kg", v.added_mass_x_kg, req);
   visit("added_mass.z_kg", v.added_mass_z_kg, req);
   visit("added_mass.inertia_kg_m2", v.added_inertia_kg_m2, req);

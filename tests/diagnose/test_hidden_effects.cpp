@@ -125,10 +125,12 @@ TEST(DiagnoseHiddenEffects, HullCompressibility) {
   flown.hull_compressibility_per_pa = eps;
   const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "hull_compressibility", 180.0);
   STRCMP_EQUAL("hull_compressibility", o.diagnosis.cause.c_str());
-  // Stated tolerance 30 %: the fit is biased high by ~20 % on these flights
-  // (measured: 3.54e-10 for 2.90e-10), outside its own confidence interval;
-  // the cause is not found yet (see the issue notes) - the bound records it.
-  DOUBLES_EQUAL(eps, o.diagnosis.findings.front().value, 0.3 * eps);
+  // Within 10 % and inside its own 95 % interval. (The steady model read this
+  // flight 20 % high - 3.54e-10 for 2.90e-10: its glides at the measured
+  // pitch ignore the pitch and speed transients that the dynamic model flies.)
+  const diagnose::Finding& f = o.diagnosis.findings.front();
+  DOUBLES_EQUAL(eps, f.value, 0.1 * eps);
+  CHECK(f.ci95_low < eps && eps < f.ci95_high);
   CHECK(o.diagnosis.gain > 0.5);
 }
 
@@ -165,4 +167,28 @@ TEST(DiagnoseHiddenEffects, PitchTrimOffset) {
   const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "pitch_trim_offset");
   STRCMP_EQUAL("pitch_trim_offset", o.diagnosis.cause.c_str());
   DOUBLES_EQUAL(inches, o.diagnosis.findings.front().value, 0.02);
+}
+
+TEST(DiagnoseHiddenEffects, PumpLag) {
+  // The displaced volume trails the pump's reported position by a first-order
+  // lag (paper 003's ballast-to-buoyancy dynamics): only the turns show it,
+  // where the glider turns later than a model fed the logged ballast.
+  const double lag_s = uniform(rng, 5.0, 15.0);
+  model::VehicleParams flown = we01();
+  flown.ballast.lag_s = lag_s;
+  const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "pump_lag");
+  STRCMP_EQUAL("pump_lag", o.diagnosis.cause.c_str());
+  const diagnose::Finding& f = o.diagnosis.findings.front();
+  DOUBLES_EQUAL(lag_s, f.value, 0.15 * lag_s);
+  CHECK(f.ci95_low < lag_s && lag_s < f.ci95_high);
+  CHECK(o.diagnosis.gain > 0.2);
+  // The steady model, which does not fly turns, must not see it at all.
+  diagnose::DiagnoseOptions steady;
+  steady.model = diagnose::FlightModelKind::kSteady;
+  const flightlog::FlightLog log = flightlog::read_flight_log(o.log_path);
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (const auto& m : log.vehicle_metadata()) entries.emplace_back(m.key, m.value);
+  const diagnose::Diagnosis d =
+      diagnose::diagnose(model::vehicle_from_metadata(entries, o.log_path), diagnose::prepare_observations(log), steady);
+  for (const auto& finding : d.findings) CHECK(finding.effect != diagnose::Effect::kPumpLag);
 }

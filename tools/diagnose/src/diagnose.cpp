@@ -9,6 +9,7 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include "glider/diagnose/dynamic_flight_model.hpp"
 #include "glider/units.hpp"
 
 namespace glider::diagnose {
@@ -24,6 +25,17 @@ struct Candidate {
   bool ctd_density = false;    // water_density from the CTD (no parameter)
 };
 
+// The samples a model is scored on: the steady model's steady-glide samples
+// (observations), or every settled sample of the log for the dynamic model
+// (track, turns included).
+struct SampleSet {
+  const DepthRateModel& model;
+  std::span<const double> depth_m, measured_m_s, time_s;
+  std::span<const int> yo;
+  std::vector<flightlog::Phase> phase;
+  std::vector<std::size_t> usable;  // sorted indices of the samples scored
+};
+
 // How the optimiser's parameter vector maps onto effects: one scaled number
 // per effect (value = nominal + scale * p), except the vertical water
 // velocity, which has one per depth bin.
@@ -34,7 +46,7 @@ struct Layout {
   std::vector<double> bin_weight;   // fraction of the fitted samples in each bin
 };
 
-Layout make_layout(const Candidate& c, const Observations& obs, std::span<const std::size_t> train) {
+Layout make_layout(const Candidate& c, const SampleSet& obs, std::span<const std::size_t> train) {
   Layout layout;
   double top = 1e9, bottom = -1e9;
   for (std::size_t i : train) {
@@ -99,14 +111,14 @@ double effective_sample_count(std::span<const double> x, double mean) {
 }
 
 // Residuals (model - measured) of a set of samples.
-void residuals(const FlightModel& model, const Observations& obs, const Parameters& x, bool ctd,
-               std::span<const std::size_t> samples, std::vector<double>& out) {
+void residuals(const SampleSet& set, const Parameters& x, bool ctd, std::span<const std::size_t> samples,
+               std::vector<double>& out) {
   std::vector<double> predicted;
-  model.predict(x.values, ctd, samples, predicted, x.profile ? &*x.profile : nullptr);
+  set.model.predict(x.values, ctd, samples, predicted, x.profile ? &*x.profile : nullptr);
   out.resize(samples.size());
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const double p = predicted[k];
-    out[k] = std::isfinite(p) ? p - obs.depth_rate_m_s[samples[k]] : kUnflyablePenalty_m_s;
+    out[k] = std::isfinite(p) ? p - set.measured_m_s[samples[k]] : kUnflyablePenalty_m_s;
   }
 }
 
@@ -125,8 +137,7 @@ struct FitFunctor {
   using JacobianType = Eigen::MatrixXd;
   enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
 
-  const FlightModel& model;
-  const Observations& obs;
+  const SampleSet& set;
   const Candidate& candidate;
   const Layout& layout;
   std::span<const std::size_t> samples;
@@ -135,7 +146,7 @@ struct FitFunctor {
   int inputs() const { return static_cast<int>(layout.size); }
   int values() const { return static_cast<int>(samples.size()); }
   int operator()(const Eigen::VectorXd& p, Eigen::VectorXd& f) const {
-    residuals(model, obs, unpack(candidate, layout, p), candidate.ctd_density, samples, buffer);
+    residuals(set, unpack(candidate, layout, p), candidate.ctd_density, samples, buffer);
     for (std::size_t k = 0; k < buffer.size(); ++k) f[static_cast<Eigen::Index>(k)] = buffer[k];
     return 0;
   }
@@ -149,13 +160,18 @@ struct FitResult {
   double bic = 0.0;
 };
 
-FitResult fit(const FlightModel& model, const Observations& obs, const Candidate& candidate,
-              std::span<const std::size_t> train, std::span<const std::size_t> heldout) {
+FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
+              std::span<const std::size_t> heldout) {
   FitResult result;
-  const Layout layout = make_layout(candidate, obs, train);
+  const Layout layout = make_layout(candidate, set, train);
   const std::size_t k = layout.size;
-  FitFunctor functor{model, obs, candidate, layout, train, {}};
+  FitFunctor functor{set, candidate, layout, train, {}};
   Eigen::VectorXd p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+  // The pump lag is fitted as |value| (no sign): at 0 its gradient vanishes,
+  // so it starts one scale (5 s) away.
+  for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
+    if (candidate.fitted[j] == Effect::kPumpLag) p[static_cast<Eigen::Index>(layout.offset[j])] = 1.0;
+  }
   if (k > 0) {
     Eigen::NumericalDiff<FitFunctor> numeric(functor);
     Eigen::LevenbergMarquardt<Eigen::NumericalDiff<FitFunctor>> lm(numeric);
@@ -164,7 +180,7 @@ FitResult fit(const FlightModel& model, const Observations& obs, const Candidate
   }
   result.parameters = unpack(candidate, layout, p);
   std::vector<double> r;
-  residuals(model, obs, result.parameters, candidate.ctd_density, train, r);
+  residuals(set, result.parameters, candidate.ctd_density, train, r);
   const double n = static_cast<double>(r.size());
   for (double v : r) result.train_rss += v * v;
   result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
@@ -201,7 +217,7 @@ FitResult fit(const FlightModel& model, const Observations& obs, const Candidate
     }
   }
   std::vector<double> h;
-  residuals(model, obs, result.parameters, candidate.ctd_density, heldout, h);
+  residuals(set, result.parameters, candidate.ctd_density, heldout, h);
   result.heldout_rms = rms_of(h);
   return result;
 }
@@ -268,24 +284,60 @@ void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std:
   }
 }
 
+// Alternate yos: even ones fit, odd ones are held out (a log of one yo is
+// split in halves by time instead).
+void split_by_yo(std::span<const std::size_t> samples, std::span<const int> yo, std::vector<std::size_t>& train,
+                 std::vector<std::size_t>& heldout) {
+  for (std::size_t i : samples) (yo[i] % 2 == 0 ? train : heldout).push_back(i);
+  if (train.empty() || heldout.empty()) {
+    train.assign(samples.begin(), samples.begin() + static_cast<long>(samples.size() / 2));
+    heldout.assign(samples.begin() + static_cast<long>(samples.size() / 2), samples.end());
+  }
+}
+
+SampleSet steady_set(const DepthRateModel& model, const Observations& obs) {
+  SampleSet set{model, obs.depth_m, obs.depth_rate_m_s, obs.time_s, obs.yo, {}, {}};
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    set.phase.push_back(obs.diving[i] ? flightlog::Phase::kDive : flightlog::Phase::kClimb);
+    set.usable.push_back(i);
+  }
+  return set;
+}
+
+SampleSet dynamic_set(const DepthRateModel& model, const Track& track) {
+  return {model, track.depth_m, track.depth_rate_m_s, track.time_s, track.yo, track.phase, track.scored};
+}
+
+std::vector<std::size_t> where_phase(const SampleSet& set, flightlog::Phase phase) {
+  std::vector<std::size_t> out;
+  for (std::size_t i : set.usable) {
+    if (set.phase[i] == phase) out.push_back(i);
+  }
+  return out;
+}
+
 }  // namespace
+
+const char* to_string(FlightModelKind kind) { return kind == FlightModelKind::kDynamic ? "dynamic" : "steady"; }
 
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs, const DiagnoseOptions& options) {
   Diagnosis d;
   d.vehicle = nominal.name;
-  d.samples_used = obs.size();
-  const FlightModel model(nominal, obs);
+  d.model = options.model;
+  const FlightModel steady_model(nominal, obs);
+  const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
+  const bool dynamic = options.model == FlightModelKind::kDynamic && !obs.track.scored.empty();
+  d.model = dynamic ? FlightModelKind::kDynamic : FlightModelKind::kSteady;
+  const SampleSet set = dynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
+  const DepthRateModel& model = set.model;
+  d.samples_used = set.usable.size();
 
-  std::vector<std::size_t> all(obs.size()), train, heldout, dives, climbs;
-  std::iota(all.begin(), all.end(), std::size_t{0});
-  for (std::size_t i : all) {
-    (obs.yo[i] % 2 == 0 ? train : heldout).push_back(i);
-    (obs.diving[i] ? dives : climbs).push_back(i);
-  }
-  if (train.empty() || heldout.empty()) {  // a single yo: split its glides in halves by time instead
-    train.assign(all.begin(), all.begin() + static_cast<long>(all.size() / 2));
-    heldout.assign(all.begin() + static_cast<long>(all.size() / 2), all.end());
-  }
+  const std::vector<std::size_t>& all = set.usable;
+  std::vector<std::size_t> train, heldout;
+  split_by_yo(all, set.yo, train, heldout);
+  const std::vector<std::size_t> dives = where_phase(set, flightlog::Phase::kDive);
+  const std::vector<std::size_t> climbs = where_phase(set, flightlog::Phase::kClimb);
+  const std::vector<std::size_t> turns = where_phase(set, flightlog::Phase::kInflection);
   auto thin = [&options](std::vector<std::size_t>& samples) {
     if (samples.size() <= options.max_fit_samples) return;
     const std::size_t stride = (samples.size() + options.max_fit_samples - 1) / options.max_fit_samples;
@@ -299,25 +351,28 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   d.heldout_samples = heldout.size();
 
   // Baseline.
-  std::vector<double> r;
-  residuals(model, obs, Parameters{}, false, all, r);
+  std::vector<double> r_all;
+  residuals(set, Parameters{}, false, all, r_all);
+  std::vector<double> r(set.measured_m_s.size(), kNaN);  // by sample index
+  for (std::size_t k = 0; k < all.size(); ++k) r[all[k]] = r_all[k];
   d.baseline.all = rms_where(r, all);
   d.baseline.dives = rms_where(r, dives);
   d.baseline.climbs = rms_where(r, climbs);
-  d.baseline.inflection_samples = obs.inflection_samples;
+  if (dynamic) d.baseline.inflections = rms_where(r, turns);
+  d.baseline.inflection_samples = dynamic ? turns.size() : obs.inflection_samples;
   double max_depth = 0.0;
-  for (double z : obs.depth_m) max_depth = std::max(max_depth, z);
+  for (std::size_t i : all) max_depth = std::max(max_depth, set.depth_m[i]);
   const double bin = max_depth > 100.0 ? 25.0 : 10.0;
   for (double from = 0.0; from < max_depth; from += bin) {
     std::vector<std::size_t> in_bin;
     for (std::size_t i : all) {
-      if (obs.depth_m[i] >= from && obs.depth_m[i] < from + bin) in_bin.push_back(i);
+      if (set.depth_m[i] >= from && set.depth_m[i] < from + bin) in_bin.push_back(i);
     }
     if (!in_bin.empty()) d.baseline.by_depth.push_back({from, from + bin, rms_where(r, in_bin)});
   }
   d.baseline.heldout_rms_m_s = rms_of([&] {
     std::vector<double> h;
-    residuals(model, obs, Parameters{}, false, heldout, h);
+    residuals(set, Parameters{}, false, heldout, h);
     return h;
   }());
   if (obs.has_battpos) {
@@ -325,7 +380,7 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     std::size_t n = 0;
     const std::size_t stride = std::max<std::size_t>(1, obs.size() / 400);
     for (std::size_t i = 0; i < obs.size(); i += stride) {
-      const double pitch = model.nominal_pitch_rad(i);
+      const double pitch = steady_model.nominal_pitch_rad(i);
       if (!std::isfinite(pitch)) continue;
       s += (pitch - obs.pitch_rad[i]) * (pitch - obs.pitch_rad[i]);
       ++n;
@@ -333,16 +388,17 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     if (n > 0) d.baseline.rms_pitch_deg = rad_to_deg(std::sqrt(s / static_cast<double>(n)));
   }
 
-  // Candidates available in this log.
+  // Candidates available in this log and model.
   std::vector<Effect> pool{Effect::kBuoyancyOffset, Effect::kDragChange, Effect::kHullCompressibility,
                            Effect::kVerticalWaterVelocity};
   if (obs.has_temperature) pool.push_back(Effect::kThermalExpansion);
   if (obs.has_ctd) pool.push_back(Effect::kWaterDensity);
+  if (dynamic) pool.push_back(Effect::kPumpLag);
   for (Effect e : pool) d.candidates_tried.emplace_back(info(e).id);
 
   // Forward selection.
   Candidate current;
-  FitResult current_fit = fit(model, obs, current, train, heldout);
+  FitResult current_fit = fit(set, current, train, heldout);
   std::vector<Effect> remaining = pool;
   while (!remaining.empty()) {
     std::optional<std::pair<std::size_t, FitResult>> best;
@@ -354,7 +410,7 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
       } else {
         trial.fitted.push_back(remaining[c]);
       }
-      FitResult f = fit(model, obs, trial, train, heldout);
+      FitResult f = fit(set, trial, train, heldout);
       if (!best || f.heldout_rms < best->second.heldout_rms) {
         best = std::make_pair(c, f);
         best_candidate = trial;
@@ -392,9 +448,16 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     }
     const auto it = std::find(current.fitted.begin(), current.fitted.end(), finding.effect);
     const std::size_t j = static_cast<std::size_t>(it - current.fitted.begin());
-    finding.value = current_fit.parameters.values[static_cast<std::size_t>(finding.effect)];
+    const std::size_t e = static_cast<std::size_t>(finding.effect);
+    finding.value = current_fit.parameters.values[e];
     finding.ci95_low = finding.value - 1.96 * current_fit.sigma[j];
     finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
+    if (finding.effect == Effect::kPumpLag) {  // fitted as |value|: report the lag and its interval as such
+      finding.value = std::abs(finding.value);
+      finding.ci95_low = std::max(0.0, finding.value - 1.96 * current_fit.sigma[j]);
+      finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
+      current_fit.parameters.values[e] = finding.value;
+    }
   }
   d.extended = current_fit.parameters.values;
   d.extended_profile = current_fit.parameters.profile;
@@ -402,28 +465,39 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   if (current.ctd_density) d.extended[static_cast<std::size_t>(Effect::kWaterDensity)] = model.ctd_density_anomaly();
   d.cause = d.findings.empty() ? "none" : info(d.findings.front().effect).id;
   std::vector<double> re;
-  residuals(model, obs, current_fit.parameters, current.ctd_density, all, re);
-  d.extended_all = rms_where(re, all);
+  residuals(set, current_fit.parameters, current.ctd_density, all, re);
+  std::vector<double> r_ext(set.measured_m_s.size(), kNaN);
+  for (std::size_t k = 0; k < all.size(); ++k) r_ext[all[k]] = re[k];
+  d.extended_all = rms_where(r_ext, all);
   d.extended_heldout_rms_m_s = current_fit.heldout_rms;
   d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
-  // Pitch trim last: it is judged with the depth-rate effects already found.
-  diagnose_pitch_trim(model, obs, train, heldout, options, d);
+  // Pitch trim last, on the steady glides: it is judged with the depth-rate
+  // effects already found.
+  std::vector<std::size_t> steady_samples(obs.size()), steady_train, steady_heldout;
+  std::iota(steady_samples.begin(), steady_samples.end(), std::size_t{0});
+  split_by_yo(steady_samples, obs.yo, steady_train, steady_heldout);
+  thin(steady_train);
+  thin(steady_heldout);
+  diagnose_pitch_trim(steady_model, obs, steady_train, steady_heldout, options, d);
   if (d.cause == "none" && !d.findings.empty()) d.cause = info(d.findings.front().effect).id;
   return d;
 }
 
-}  // namespace glider::diagnose
-
-namespace glider::diagnose {
-
-Predictions predict_all(const model::VehicleParams& nominal, const Observations& obs, const Diagnosis& d) {
-  const FlightModel model(nominal, obs);
-  std::vector<std::size_t> all(obs.size());
-  std::iota(all.begin(), all.end(), std::size_t{0});
+Predictions predict_all(const model::VehicleParams& nominal, const Observations& obs, const Diagnosis& d,
+                        const DiagnoseOptions& options) {
+  const FlightModel steady_model(nominal, obs);
+  const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
+  const SampleSet set = d.model == FlightModelKind::kDynamic ? dynamic_set(dynamic_model, obs.track)
+                                                             : steady_set(steady_model, obs);
   Predictions p;
-  model.predict(nominal_values(), false, all, p.nominal_m_s);
-  model.predict(d.extended, d.extended_uses_ctd_density, all, p.extended_m_s,
-                d.extended_profile ? &*d.extended_profile : nullptr);
+  for (std::size_t i : set.usable) {
+    p.time_s.push_back(set.time_s[i]);
+    p.depth_m.push_back(set.depth_m[i]);
+    p.measured_m_s.push_back(set.measured_m_s[i]);
+  }
+  set.model.predict(nominal_values(), false, set.usable, p.nominal_m_s);
+  set.model.predict(d.extended, d.extended_uses_ctd_density, set.usable, p.extended_m_s,
+                    d.extended_profile ? &*d.extended_profile : nullptr);
   return p;
 }
 

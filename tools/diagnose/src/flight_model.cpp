@@ -21,6 +21,7 @@ const std::array<EffectInfo, kEffectCount> kInfo{{
     {"vertical_water_velocity", "m/s", 0.0, 0.01},
     {"water_density", "kg/m^3", 0.0, 1.0},
     {"pitch_trim_offset", "in", 0.0, 0.01},
+    {"pump_lag", "s", 0.0, 5.0},
 }};
 
 }  // namespace
@@ -31,6 +32,7 @@ model::VehicleParams apply(model::VehicleParams v, const EffectValues& x) {
   v.hull_compressibility_per_pa += x[2];
   v.hull_thermal_expansion_per_k += x[3];
   v.battery.x_at_zero_m += in_to_m(x[6]);  // pitch trim: the battery's zero moves forward
+  v.ballast.lag_s += std::abs(x[7]);       // a lag has no sign: |value| keeps the fit smooth through 0
   return v;
 }
 
@@ -102,15 +104,20 @@ double FlightModel::required_battpos_in(std::size_t i, const EffectValues& value
   return m_to_in(model::battery_for_glide(dynamics, *glide.glide, masses, obs_.depth_m[i]));
 }
 
-double FlightModel::ctd_density_anomaly() const {
+double deepest_density_anomaly(std::span<const double> depth_m, std::span<const double> density_kg_m3,
+                               double nominal_kg_m3) {
   double deepest = -1.0, rho = kNaN;
-  for (std::size_t i = 0; i < obs_.size(); ++i) {
-    if (std::isfinite(obs_.density_kg_m3[i]) && obs_.depth_m[i] > deepest) {
-      deepest = obs_.depth_m[i];
-      rho = obs_.density_kg_m3[i];
+  for (std::size_t i = 0; i < depth_m.size(); ++i) {
+    if (std::isfinite(density_kg_m3[i]) && depth_m[i] > deepest) {
+      deepest = depth_m[i];
+      rho = density_kg_m3[i];
     }
   }
-  return rho - nominal_.trim_density_kg_m3;
+  return rho - nominal_kg_m3;
+}
+
+double FlightModel::ctd_density_anomaly() const {
+  return deepest_density_anomaly(obs_.depth_m, obs_.density_kg_m3, nominal_.trim_density_kg_m3);
 }
 
 }  // namespace glider::diagnose

@@ -30,6 +30,7 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
   ordered_json j;
   j["vehicle"] = d.vehicle;
   j["vehicle_source"] = vehicle_source;
+  j["flight_model"] = to_string(d.model);
   j["samples_used"] = d.samples_used;
   j["train_samples"] = d.train_samples;
   j["heldout_samples"] = d.heldout_samples;
@@ -40,10 +41,11 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
   base["rms_battpos_in"] = d.baseline.rms_battpos_in ? ordered_json(*d.baseline.rms_battpos_in) : ordered_json(nullptr);
   base["by_phase"] = {{"dive", rms_json(d.baseline.dives)},
                       {"climb", rms_json(d.baseline.climbs)},
-                      {"inflection",
-                       {{"rms_depth_rate_m_s", nullptr},
-                        {"samples", d.baseline.inflection_samples},
-                        {"note", "turns are not scored: the model is the steady glide at the logged pitch"}}}};
+                      {"inflection", d.model == glider::diagnose::FlightModelKind::kDynamic
+                                         ? rms_json(d.baseline.inflections)
+                                         : ordered_json{{"rms_depth_rate_m_s", nullptr},
+                                                        {"samples", d.baseline.inflection_samples},
+                                                        {"note", "turns are not scored by the steady model"}}}};
   ordered_json depth = ordered_json::array();
   for (const auto& bin : d.baseline.by_depth) {
     depth.push_back({{"from_m", bin.from_m}, {"to_m", bin.to_m}, {"rms_depth_rate_m_s", number_or_null(bin.rms.depth_rate_m_s)},
@@ -78,10 +80,15 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
 
 void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source) {
   std::printf("Diagnosis of %s\n  vehicle: %s (%s)\n", log.c_str(), d.vehicle.c_str(), vehicle_source.c_str());
-  std::printf("  samples: %zu in steady glides (%zu to fit, %zu held out: alternate yos)\n", d.samples_used,
-              d.train_samples, d.heldout_samples);
-  std::printf("  baseline (nominal model): depth rate RMS %.4f m/s (dives %.4f, climbs %.4f)", d.baseline.all.depth_rate_m_s,
+  const bool dynamic = d.model == glider::diagnose::FlightModelKind::kDynamic;
+  std::printf("  flight model: %s\n", dynamic ? "dynamic (the project's dynamics driven by the measured pitch, turns included)"
+                                             : "steady (steady glides at the measured pitch)");
+  std::printf("  samples: %zu %s (%zu to fit, %zu held out: alternate yos)\n", d.samples_used,
+              dynamic ? "scored" : "in steady glides", d.train_samples, d.heldout_samples);
+  std::printf("  baseline (nominal model): depth rate RMS %.4f m/s (dives %.4f, climbs %.4f", d.baseline.all.depth_rate_m_s,
               d.baseline.dives.depth_rate_m_s, d.baseline.climbs.depth_rate_m_s);
+  if (dynamic) std::printf(", turns %.4f", d.baseline.inflections.depth_rate_m_s);
+  std::printf(")");
   if (d.baseline.rms_pitch_deg) std::printf(", pitch RMS %.2f deg", *d.baseline.rms_pitch_deg);
   if (d.baseline.rms_battpos_in) std::printf(", battery RMS %.3f in", *d.baseline.rms_battpos_in);
   std::printf("\n  by depth:");
@@ -100,20 +107,22 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
 // Plots a person would look at: measured and modelled depth rate over time
 // and against depth, and the residuals before and after.
 void write_plots(const std::string& dir, const glider::model::VehicleParams& vehicle,
-                 const glider::diagnose::Observations& obs, const Diagnosis& d, const std::string& log_path) {
-  const glider::diagnose::Predictions p = glider::diagnose::predict_all(vehicle, obs, d);
-  std::vector<double> minutes(obs.size()), before(obs.size()), after(obs.size());
-  for (std::size_t i = 0; i < obs.size(); ++i) {
-    minutes[i] = (obs.time_s[i] - obs.time_s[0]) / 60.0;
-    before[i] = p.nominal_m_s[i] - obs.depth_rate_m_s[i];
-    after[i] = p.extended_m_s[i] - obs.depth_rate_m_s[i];
+                 const glider::diagnose::Observations& obs, const Diagnosis& d, const std::string& log_path,
+                 const glider::diagnose::DiagnoseOptions& options) {
+  const glider::diagnose::Predictions p = glider::diagnose::predict_all(vehicle, obs, d, options);
+  const std::size_t n = p.time_s.size();
+  std::vector<double> minutes(n), before(n), after(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    minutes[i] = (p.time_s[i] - p.time_s[0]) / 60.0;
+    before[i] = p.nominal_m_s[i] - p.measured_m_s[i];
+    after[i] = p.extended_m_s[i] - p.measured_m_s[i];
   }
   glider::report::Report report(dir);
   report.text() << "# Diagnosis of " << std::filesystem::path(log_path).filename().string() << "\n\nCause: **" << d.cause
                 << "**, held-out gain " << glider::report::fixed(100.0 * d.gain, 0)
                 << " %. Numbers: diagnosis.json; extended vehicle: extended_vehicle.toml.\n";
   report.data("samples.dat", {"minutes", "depth_m", "measured", "nominal", "extended", "residual_before", "residual_after"},
-              {minutes, obs.depth_m, obs.depth_rate_m_s, p.nominal_m_s, p.extended_m_s, before, after});
+              {minutes, p.depth_m, p.measured_m_s, p.nominal_m_s, p.extended_m_s, before, after});
   report.plot("depth_rate_time", "Depth rate over time: measured, nominal model, extended model",
               "set xlabel 'minutes'\nset ylabel 'depth rate (m/s, + down)'\n"
               "plot 'samples.dat' u 1:3 w p pt 7 ps 0.3 t 'measured', '' u 1:4 w p pt 7 ps 0.3 t 'nominal', "
@@ -135,6 +144,7 @@ int main(int argc, char** argv) {
   std::string log_path, vehicle_path, default_vehicle, report_dir;
   bool json = false;
   std::vector<std::string> renames;
+  std::string flight_model = "dynamic";
   app.add_option("LOG", log_path, "flight log (CSV, docs/flight-log.md)")->required();
   app.add_option("--vehicle", vehicle_path, "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
       ->check(CLI::ExistingFile);
@@ -143,7 +153,14 @@ int main(int argc, char** argv) {
   app.add_option("--report", report_dir, "write the summary and the extended vehicle file here");
   app.add_flag("--json", json, "one JSON object on stdout");
   app.add_option("--rename", renames, "read column FROM as TO (FROM=TO), for logs not in the contract's names");
+  app.add_option("--model", flight_model,
+                 "flight model fitted: dynamic (the project's dynamics driven by the measured pitch, turns "
+                 "included) or steady (steady glides at the measured pitch; faster, blind to turns)")
+      ->check(CLI::IsMember({"dynamic", "steady"}));
   CLI11_PARSE(app, argc, argv);
+  glider::diagnose::DiagnoseOptions options;
+  options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
+                                           : glider::diagnose::FlightModelKind::kDynamic;
 
   try {
     glider::flightlog::ReadOptions read_options;
@@ -174,7 +191,7 @@ int main(int argc, char** argv) {
       throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
     }
     const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log);
-    const Diagnosis d = glider::diagnose::diagnose(vehicle, obs);
+    const Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
     if (json) {
       std::printf("%s\n", to_json(d, vehicle_source).dump().c_str());
     } else {
@@ -182,7 +199,7 @@ int main(int argc, char** argv) {
     }
     if (!report_dir.empty()) {
       std::filesystem::create_directories(report_dir);
-      write_plots(report_dir, vehicle, obs, d, log_path);
+      write_plots(report_dir, vehicle, obs, d, log_path, options);
       std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << to_json(d, vehicle_source).dump(2) << '\n';
       glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
       extended.name = vehicle.name + "_extended";

@@ -33,6 +33,7 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
   const flightlog::Column temperature = filled_or_empty(log, "sci_water_temp", options.max_fill_age_s);
   const flightlog::Column conductivity = filled_or_empty(log, "sci_water_cond", options.max_fill_age_s);
   const flightlog::Column pressure = filled_or_empty(log, "sci_water_pressure", options.max_fill_age_s);
+  const flightlog::Column logged_density = filled_or_empty(log, "sci_water_density", options.max_fill_age_s);
   const std::vector<flightlog::Phase> phases = flightlog::classify_phases(log);
   const auto segments = flightlog::find_segments(time, depth, phases);
 
@@ -59,7 +60,9 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
       obs.ballast_cc.push_back(ballast[i]);
       obs.battpos_in.push_back(battpos[i]);
       obs.temperature_c.push_back(temperature[i]);
-      const double rho = model::seawater::density_from_ctd(conductivity[i], temperature[i], 10.0 * pressure[i]);
+      const double rho = std::isfinite(logged_density[i])
+                             ? logged_density[i]
+                             : model::seawater::density_from_ctd(conductivity[i], temperature[i], 10.0 * pressure[i]);
       obs.density_kg_m3.push_back(rho);
       obs.has_temperature |= std::isfinite(temperature[i]);
       obs.has_ctd |= std::isfinite(rho);
@@ -75,6 +78,7 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
                                         std::to_string(static_cast<int>(options.min_depth_m)) +
                                         " m, with pitch and ballast logged)");
   }
+  obs.track = prepare_track(log, options.track);
   return obs;
 }
 

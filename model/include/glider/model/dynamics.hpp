@@ -74,8 +74,28 @@ struct Evaluation {
   State state_dot = State::Zero();
 };
 
+// Lift, drag and viscous moment of the flow relative to the water, and their
+// body-frame force components (shared by the full dynamics and the
+// prescribed-pitch model of prescribed_pitch.hpp).
+struct FlowForces {
+  double speed_m_s = 0.0, alpha_rad = 0.0;
+  double lift_coefficient = 0.0;
+  double lift_n = 0.0, drag_n = 0.0;
+  double f1 = 0.0, f3 = 0.0;      // body x and z components of lift + drag
+  double moment_nm = 0.0;         // viscous moment (no damping, no Munk)
+};
+FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3);
+
 class GliderDynamics {
  public:
+  struct MassProperties {
+    Eigen::Matrix3d a;        // generalized mass matrix
+    Eigen::Vector3d b;        // impulse of the moving battery relative to the hull
+    double total_kg = 0.0;    // all rigid masses (no added mass)
+    double first_x = 0.0;     // sum m x
+    double first_z = 0.0;     // sum m z
+  };
+
   GliderDynamics(const VehicleParams& vehicle, const Environment& environment);
 
   Evaluation evaluate(double time_s, const State& state, const MassInputs& masses) const;
@@ -101,18 +121,14 @@ class GliderDynamics {
   // Pitch at which the vehicle hangs at rest (no flow), for initial states.
   double static_pitch_rad(const MassInputs& masses) const;
 
+  // Masses, first moments and the generalized mass matrix where the internal
+  // masses are (the pumped volume weighs -water_density * volume).
+  MassProperties mass_properties(const MassInputs& masses, double water_density) const;
+
   const VehicleParams& vehicle() const { return vehicle_; }
   const Environment& environment() const { return environment_; }
 
  private:
-  struct MassProperties {
-    Eigen::Matrix3d a;        // generalized mass matrix
-    Eigen::Vector3d b;        // impulse of the moving battery relative to the hull
-    double total_kg = 0.0;    // all rigid masses (no added mass)
-    double first_x = 0.0;     // sum m x
-    double first_z = 0.0;     // sum m z
-  };
-  MassProperties mass_properties(const MassInputs& masses, double water_density) const;
 
   VehicleParams vehicle_;
   Environment environment_;

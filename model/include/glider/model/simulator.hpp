@@ -68,6 +68,7 @@ class GliderSimulator {
   void step(double h);
   void reset_servos(double pumped_volume_m3, double battery_pos_m);
   MassInputs masses_after(double t) const;
+  double displaced_pump_volume_after(double t) const;
 
   GliderDynamics dynamics_;
   double step_s_;
@@ -75,6 +76,7 @@ class GliderSimulator {
   RateLimitedServo battery_;
   RateLimitedServo second_;
   RateLimitedServo fin_;
+  double displaced_pump_volume_m3_ = 0.0;  // lags pump_ by ballast.lag_s (0: equal)
   State state_ = State::Zero();
   double time_s_ = 0.0;
 };

@@ -31,6 +31,10 @@ struct BuoyancyEngine {
   double volume_min_m3 = 0.0;
   double volume_max_m3 = 0.0;
   double rate_m3_s = 0.0;
+  // The displaced volume follows the pump's reported position (m_ballast_pumped)
+  // with this first-order time constant (paper 003's ballast-to-buoyancy
+  // dynamics; the diagnosis's pump_lag). 0 = no lag.
+  double lag_s = 0.0;
 };
 
 // Quasi-steady hydrodynamics, coefficients by the reference (frontal) area:

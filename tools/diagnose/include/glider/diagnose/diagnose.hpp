@@ -24,9 +24,10 @@ struct DepthBin {
 
 struct Baseline {
   Rms all, dives, climbs;
+  Rms inflections;                      // the dynamic model only (the steady one does not fly turns)
   std::optional<double> rms_pitch_deg;  // forward equilibrium vs logged pitch (needs m_battpos)
   std::optional<double> rms_battpos_in; // logged battery vs the one the model needs for the logged pitch
-  std::size_t inflection_samples = 0;   // not scored: the steady model does not fly turns
+  std::size_t inflection_samples = 0;   // scored by the dynamic model, not by the steady one
   std::vector<DepthBin> by_depth;
   double heldout_rms_m_s = 0.0;         // on the held-out yos: the reference of the gain
 };
@@ -41,8 +42,16 @@ struct Finding {
   std::optional<double> heldout_rms_battpos_in;  // pitch_trim_offset: what it explains
 };
 
+// Which flight model the diagnosis fits: the dynamic one (the project's
+// dynamics driven by the measured pitch, through every sample, turns
+// included; the default) or the steady one (steady glides at the measured
+// pitch, gliderflight's steady-state model; faster, blind to turns).
+enum class FlightModelKind { kDynamic, kSteady };
+const char* to_string(FlightModelKind kind);
+
 struct Diagnosis {
   std::string vehicle;
+  FlightModelKind model = FlightModelKind::kDynamic;
   std::size_t samples_used = 0;
   std::size_t train_samples = 0, heldout_samples = 0;
   Baseline baseline;
@@ -68,16 +77,20 @@ struct DiagnoseOptions {
   // response: fits use an even stride that keeps at most this many samples
   // per half (the baseline and the reported RMS use every sample).
   std::size_t max_fit_samples = 8000;
+  FlightModelKind model = FlightModelKind::kDynamic;
+  double max_step_s = 1.0;  // the dynamic model's integration step (RK4), at most
 };
 
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& observations,
                    const DiagnoseOptions& options = {});
 
-// Depth rate of every sample by the nominal model and by the extended one
-// (NaN where a model has no steady glide): what the report plots.
+// Depth rate of every scored sample by the nominal model and by the extended
+// one (NaN where a model cannot fly it), with the measurement: what the
+// report plots.
 struct Predictions {
-  std::vector<double> nominal_m_s, extended_m_s;
+  std::vector<double> time_s, depth_m, measured_m_s, nominal_m_s, extended_m_s;
 };
-Predictions predict_all(const model::VehicleParams& nominal, const Observations& observations, const Diagnosis& d);
+Predictions predict_all(const model::VehicleParams& nominal, const Observations& observations, const Diagnosis& d,
+                        const DiagnoseOptions& options = {});
 
 }  // namespace glider::diagnose

@@ -22,6 +22,7 @@ enum class Effect : int {
   kVerticalWaterVelocity,
   kWaterDensity,
   kPitchTrimOffset,  // explains the battery position, not the depth rate
+  kPumpLag,          // only the dynamic model (turns) can see it
   kCount
 };
 constexpr std::size_t kEffectCount = static_cast<std::size_t>(Effect::kCount);
@@ -35,7 +36,7 @@ struct EffectInfo {
 const EffectInfo& info(Effect effect);
 Effect effect_from_index(std::size_t index);
 
-// Values in the reported units (g, ratio, 1/Pa, 1/K, m/s, kg/m^3).
+// Values in the reported units (g, ratio, 1/Pa, 1/K, m/s, kg/m^3, in, s).
 using EffectValues = std::array<double, kEffectCount>;
 EffectValues nominal_values();
 
@@ -54,16 +55,34 @@ struct VerticalVelocityProfile {
 // effects (vertical velocity, density) belong to the environment.
 model::VehicleParams apply(model::VehicleParams nominal, const EffectValues& values);
 
-class FlightModel {
+// Density at the deepest sample with a finite density, minus `nominal`
+// (the water_density value); NaN if there is none.
+double deepest_density_anomaly(std::span<const double> depth_m, std::span<const double> density_kg_m3,
+                               double nominal_kg_m3);
+
+// What the diagnosis fits: a model of the depth rate of a log's samples.
+class DepthRateModel {
+ public:
+  virtual ~DepthRateModel() = default;
+  // Predicted depth rate (m/s, + down) of the samples; NaN where the model
+  // cannot fly one. `use_ctd_density`: water density from the CTD (the
+  // water_density effect on a log with CTD data), else nominal + the value.
+  // A `profile` replaces the constant vertical velocity value when given.
+  virtual void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                       std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const = 0;
+  // Density at the deepest CTD sample minus the nominal (the water_density value).
+  virtual double ctd_density_anomaly() const = 0;
+};
+
+// The steady model: each steady-glide sample is the steady glide at its
+// logged pitch (fast; blind to turns and to the pump lag).
+class FlightModel final : public DepthRateModel {
  public:
   FlightModel(const model::VehicleParams& nominal, const Observations& observations);
 
-  // Predicted depth rate (m/s, + down) of the samples; NaN where the model has
-  // no steady glide. `use_ctd_density`: water density from the CTD (the
-  // water_density effect on a log with CTD data), else nominal + the value.
-  // A `profile` replaces the constant vertical velocity value when given.
+  // NaN where the model has no steady glide (stall).
   void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-               std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const;
+               std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
 
   // Pitch of the nominal model's forward equilibrium (logged ballast and
   // battery) for a sample; NaN without battery data or a steady glide.
@@ -74,8 +93,7 @@ class FlightModel {
   // The vehicle is the nominal one with `values` applied (the effects found).
   double required_battpos_in(std::size_t sample, const EffectValues& values) const;
 
-  // Density at the deepest CTD sample minus the nominal (the water_density value).
-  double ctd_density_anomaly() const;
+  double ctd_density_anomaly() const override;
 
   const model::VehicleParams& vehicle() const { return nominal_; }
 

@@ -1,0 +1,57 @@
+#pragma once
+// The translational half of the vertical-plane dynamics (dynamics.hpp) with
+// the pitch PRESCRIBED, for flight-model identification from logs: the
+// measured pitch is an input, the depth rate the output (as Merckelbach's
+// gliderflight dynamic model does). The two impulse equations are the full
+// model's own,
+//
+//   dP1/dt = F1 - q P3,   dP3/dt = F3 + q P1,
+//   P1 = A11 v1 + A13 q,  P3 = A22 v3 + A23 q   (A: dynamics' mass matrix),
+//
+// with the same mass properties, hydrostatics (compressibility, thermal
+// expansion, partial immersion) and flow forces; only the pitch equation is
+// replaced by the measurement. The slide's own impulse (b) is neglected: the
+// battery moves at ~1 mm/s.
+#include <Eigen/Core>
+
+#include "glider/model/dynamics.hpp"
+
+namespace glider::model {
+
+struct PrescribedPitchInputs {
+  double theta_rad = 0.0;         // measured pitch
+  double q_rad_s = 0.0;           // its rate
+  double pumped_volume_m3 = 0.0;  // the volume really displaced (after any pump lag)
+  double battery_pos_m = 0.0;
+  double depth_m = 0.0;           // measured depth (hydrostatics)
+  double density_kg_m3 = 1025.0;
+  double temperature_c = 10.0;
+};
+
+class PrescribedPitchDynamics {
+ public:
+  using Impulse = Eigen::Vector2d;  // P1, P3 (kg m/s)
+
+  PrescribedPitchDynamics(const VehicleParams& vehicle, double gravity_m_s2 = 9.81);
+
+  // dP/dt.
+  Impulse rate(const Impulse& p, const PrescribedPitchInputs& in) const;
+
+  // Body-frame velocities relative to the water (v1, v3) from the impulses.
+  Eigen::Vector2d velocities(const Impulse& p, const PrescribedPitchInputs& in) const;
+  Impulse impulse(double v1, double v3, const PrescribedPitchInputs& in) const;
+
+  // Depth rate relative to the water (+ down) for the impulses.
+  double depth_rate_m_s(const Impulse& p, const PrescribedPitchInputs& in) const;
+
+  // Net weight in water (kg, + heavy) for the inputs.
+  double net_buoyancy_kg(const PrescribedPitchInputs& in) const;
+
+  const GliderDynamics& dynamics() const { return dynamics_; }
+
+ private:
+  GliderDynamics dynamics_;
+  double gravity_;
+};
+
+}  // namespace glider::model

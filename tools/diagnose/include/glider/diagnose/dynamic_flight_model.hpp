@@ -1,0 +1,44 @@
+#pragma once
+// The dynamic flight model of the diagnosis: the project's vertical-plane
+// dynamics with the measured pitch prescribed (model/prescribed_pitch.hpp),
+// flown through every run of the log with the logged ballast (through the
+// pump lag) and battery, from rest at the start of each run. It predicts the
+// depth rate of every sample, turns included, which the steady model cannot:
+// that is where a pump lag shows ("the model turns earlier than the glider").
+#include <span>
+#include <vector>
+
+#include "glider/diagnose/flight_model.hpp"
+#include "glider/diagnose/track.hpp"
+
+namespace glider::diagnose {
+
+class DynamicFlightModel final : public DepthRateModel {
+ public:
+  // Integration step: at most max_step_s (RK4); the log's cycles are split
+  // into equal sub-steps.
+  DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s = 1.0);
+
+  // Depth rate (m/s, + down) at `samples` (indices into the track, sorted);
+  // only the runs that hold them are flown.
+  void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+               std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
+
+  // Speed through the water (m/s) at `samples`, as predict() flies them: to
+  // score against a measured one (a DVL's), which the fit never sees.
+  void predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                     std::vector<double>& out) const;
+
+  // Density at the deepest CTD sample of the track minus the nominal.
+  double ctd_density_anomaly() const override;
+
+ private:
+  void fly(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+           std::vector<double>* depth_rate, std::vector<double>* speed, const VerticalVelocityProfile* profile) const;
+
+  model::VehicleParams nominal_;
+  const Track& track_;
+  double max_step_s_;
+};
+
+}  // namespace glider::diagnose

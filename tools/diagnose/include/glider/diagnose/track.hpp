@@ -1,0 +1,46 @@
+#pragma once
+// The whole log for the dynamic flight model: every sample, turns and all,
+// grouped in continuous runs, with the inputs interpolated between the
+// glider's (irregular, 1-5 s) cycles. The steady-glide samples of
+// observations.hpp are a subset; this is what the dynamic fit flies through.
+#include <cstddef>
+#include <vector>
+
+#include "glider/flightlog/flight_log.hpp"
+#include "glider/flightlog/phases.hpp"
+
+namespace glider::diagnose {
+
+struct Track {
+  // One entry per sample of a run (samples outside runs are dropped).
+  std::vector<double> time_s, depth_m, depth_rate_m_s, pitch_rad, ballast_cc, battpos_in;
+  std::vector<double> temperature_c, density_kg_m3;  // NaN where the log has none
+  std::vector<double> speed_through_water_m_s;       // measured (a DVL's), NaN where none
+  std::vector<flightlog::Phase> phase;
+  std::vector<int> yo;                  // a dive and what follows it up to the next dive; -1 before the first
+  std::vector<std::size_t> run_first;   // first sample of each run; a run ends where the next begins
+  std::vector<std::size_t> scored;      // samples whose depth rate the fit compares (sorted)
+  std::size_t size() const { return time_s.size(); }
+  std::size_t run_end(std::size_t run) const { return run + 1 < run_first.size() ? run_first[run + 1] : size(); }
+};
+
+struct TrackOptions {
+  double max_gap_s = 30.0;   // a longer gap (surface dialog, lost data) ends a run
+  // Runs stay below this depth: at the surface the measured depth (waves,
+  // partial immersion of the 0.2 m hull) says nothing about the buoyancy.
+  double run_min_depth_m = 1.0;
+  double min_depth_m = 2.0;  // shallower samples are not scored (waves, partial immersion)
+  // The measured depth rate is the slope of the depth over +-this (0: a
+  // centred difference, as gliderflight's np.gradient).
+  double rate_half_window_s = 5.0;
+  double spin_up_s = 30.0;   // the model starts in a steady glide: not scored until it has settled
+};
+
+// Runs need pitch, ballast and depth; battery, temperature and CTD density
+// are used where the log has them. Two optional columns beyond Slocum's:
+// sci_water_density (in-situ density, kg/m^3, used instead of computing it
+// from the CTD) and sci_speed_through_water (m/s, e.g. a DVL's: never
+// fitted, only scored).
+Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options = {});
+
+}  // namespace glider::diagnose

@@ -1,0 +1,131 @@
+#include "glider/diagnose/track.hpp"
+
+#include <cmath>
+#include <span>
+
+#include "glider/flightlog/columns.hpp"
+#include "glider/flightlog/gaps.hpp"
+#include "glider/model/seawater.hpp"
+
+namespace glider::diagnose {
+namespace {
+
+// Between the glider's cycles the pitch, the pump and the slide move
+// continuously: interpolating (not holding) them keeps a 4 s cycle from
+// looking like a 2 s actuator lag.
+flightlog::Column interpolated_or_empty(const flightlog::FlightLog& log, const char* name, double max_gap_s) {
+  const flightlog::Column* column = log.find(name);
+  if (column == nullptr) return flightlog::Column(log.rows(), NAN);
+  return flightlog::interpolate_linear(log.time(), *column, max_gap_s);
+}
+
+// d(depth)/dt as the slope of a straight line fitted to the depth samples
+// within +-half_window_s (and no gap longer than max_gap_s): for a smooth
+// depth the slope is the derivative at the centre (exact for a parabola), and
+// the sensor's noise is averaged down (1 Hz, +-5 s: ~10x less than a centred
+// difference). Where the window holds no sample on one side, the plain
+// centred / one-sided difference of derive_depth_rate() is kept.
+flightlog::Column windowed_depth_rate(std::span<const double> time, std::span<const double> depth,
+                                      double half_window_s, double max_gap_s) {
+  flightlog::Column rate = flightlog::derive_depth_rate(time, depth, max_gap_s);
+  if (!(half_window_s > 0.0)) return rate;
+  const std::size_t n = time.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(depth[i])) continue;
+    std::size_t lo = i, hi = i;
+    while (lo > 0 && time[i] - time[lo - 1] <= half_window_s && time[lo] - time[lo - 1] <= max_gap_s &&
+           std::isfinite(depth[lo - 1])) {
+      --lo;
+    }
+    while (hi + 1 < n && time[hi + 1] - time[i] <= half_window_s && time[hi + 1] - time[hi] <= max_gap_s &&
+           std::isfinite(depth[hi + 1])) {
+      ++hi;
+    }
+    if (lo == i || hi == i) continue;
+    double st = 0.0, sz = 0.0;
+    for (std::size_t j = lo; j <= hi; ++j) {
+      st += time[j] - time[i];
+      sz += depth[j];
+    }
+    const double count = static_cast<double>(hi - lo + 1);
+    const double mean_t = st / count, mean_z = sz / count;
+    double stt = 0.0, stz = 0.0;
+    for (std::size_t j = lo; j <= hi; ++j) {
+      const double dt = time[j] - time[i] - mean_t;
+      stt += dt * dt;
+      stz += dt * (depth[j] - mean_z);
+    }
+    if (stt > 0.0) rate[i] = stz / stt;
+  }
+  return rate;
+}
+
+}  // namespace
+
+Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options) {
+  Track track;
+  const auto depth_source = flightlog::depth_series(log);
+  if (!depth_source) return track;
+  const auto& time = log.time();
+  const double gap = options.max_gap_s;
+  const flightlog::Column depth = flightlog::interpolate_linear(time, depth_source->depth_m, gap);
+  // The measured depth rate: a centred slope of the depth, not Slocum's
+  // m_depth_rate, which differences backwards (it trails by half a cycle,
+  // ~2 s, which the fit would read as a pump lag).
+  const flightlog::Column rate = windowed_depth_rate(time, depth, options.rate_half_window_s, gap);
+  const flightlog::Column pitch = interpolated_or_empty(log, "m_pitch", gap);
+  const flightlog::Column ballast = interpolated_or_empty(log, "m_ballast_pumped", gap);
+  const flightlog::Column battpos = interpolated_or_empty(log, "m_battpos", gap);
+  const flightlog::Column temperature = interpolated_or_empty(log, "sci_water_temp", gap);
+  const flightlog::Column conductivity = interpolated_or_empty(log, "sci_water_cond", gap);
+  const flightlog::Column pressure = interpolated_or_empty(log, "sci_water_pressure", gap);
+  const flightlog::Column logged_density = interpolated_or_empty(log, "sci_water_density", gap);
+  const flightlog::Column speed = interpolated_or_empty(log, "sci_speed_through_water", 5.0);
+  const std::vector<flightlog::Phase> phases = flightlog::classify_phases(log);
+
+  // Yo numbers: a new yo at the start of every dive of 3 m or more.
+  std::vector<int> yo(time.size(), -1);
+  int current = -1;
+  for (const flightlog::Segment& seg : flightlog::find_segments(time, depth, phases)) {
+    if (seg.phase == flightlog::Phase::kDive && std::abs(seg.end_depth_m - seg.start_depth_m) >= 3.0) ++current;
+    for (std::size_t i = seg.first; i <= seg.last; ++i) yo[i] = current;
+  }
+
+  double run_start_s = 0.0;
+  bool in_run = false;
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    const bool usable = depth[i] >= options.run_min_depth_m && std::isfinite(pitch[i]) && std::isfinite(ballast[i]);
+    if (!usable) {
+      in_run = false;
+      continue;
+    }
+    if (!in_run || time[i] - track.time_s.back() > gap) {
+      track.run_first.push_back(track.size());
+      run_start_s = time[i];
+      in_run = true;
+    }
+    const std::size_t k = track.size();
+    track.time_s.push_back(time[i]);
+    track.depth_m.push_back(depth[i]);
+    track.depth_rate_m_s.push_back(rate[i]);
+    track.pitch_rad.push_back(pitch[i]);
+    track.ballast_cc.push_back(ballast[i]);
+    track.battpos_in.push_back(battpos[i]);
+    track.temperature_c.push_back(temperature[i]);
+    track.density_kg_m3.push_back(std::isfinite(logged_density[i]) ? logged_density[i]
+                                                                   : model::seawater::density_from_ctd(
+                                                                         conductivity[i], temperature[i], 10.0 * pressure[i]));
+    track.speed_through_water_m_s.push_back(speed[i]);
+    track.phase.push_back(phases[i]);
+    track.yo.push_back(yo[i]);
+    const bool moving = phases[i] == flightlog::Phase::kDive || phases[i] == flightlog::Phase::kClimb ||
+                        phases[i] == flightlog::Phase::kInflection;
+    if (moving && yo[i] >= 0 && depth[i] >= options.min_depth_m && std::isfinite(rate[i]) &&
+        time[i] - run_start_s >= options.spin_up_s) {
+      track.scored.push_back(k);
+    }
+  }
+  return track;
+}
+
+}  // namespace glider::diagnose
