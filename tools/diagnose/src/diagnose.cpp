@@ -5,6 +5,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <Eigen/Dense>
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
@@ -316,6 +317,55 @@ std::vector<std::size_t> where_phase(const SampleSet& set, flightlog::Phase phas
   return out;
 }
 
+double rms_difference(const std::vector<double>& a, std::span<const double> b, std::span<const std::size_t> idx,
+                      std::size_t& count) {
+  double s = 0.0;
+  count = 0;
+  for (std::size_t k = 0; k < idx.size(); ++k) {
+    const double m = b[idx[k]];
+    if (!std::isfinite(m) || !std::isfinite(a[k])) continue;
+    s += (a[k] - m) * (a[k] - m);
+    ++count;
+  }
+  return count ? std::sqrt(s / static_cast<double>(count)) : kNaN;
+}
+
+std::optional<SpeedScore> score_speed(const DynamicFlightModel& model, const Track& track,
+                                      std::span<const std::size_t> all, std::span<const std::size_t> heldout,
+                                      const Parameters& extended, bool ctd) {
+  std::vector<std::size_t> measured, measured_heldout;
+  for (std::size_t i : all) {
+    if (std::isfinite(track.speed_through_water_m_s[i])) measured.push_back(i);
+  }
+  for (std::size_t i : heldout) {
+    if (std::isfinite(track.speed_through_water_m_s[i])) measured_heldout.push_back(i);
+  }
+  if (measured.empty()) return std::nullopt;
+  SpeedScore score;
+  std::vector<double> u;
+  const std::span<const double> truth = track.speed_through_water_m_s;
+  for (std::size_t i : measured) score.measured_mean_m_s += truth[i] / static_cast<double>(measured.size());
+  model.predict_speed(nominal_values(), false, measured, u);
+  score.nominal_rms_m_s = rms_difference(u, truth, measured, score.samples);
+  model.predict_speed(extended.values, ctd, measured, u);
+  score.extended_rms_m_s = rms_difference(u, truth, measured, score.samples);
+  model.predict_speed(nominal_values(), false, measured_heldout, u);
+  score.heldout_nominal_rms_m_s = rms_difference(u, truth, measured_heldout, score.heldout_samples);
+  model.predict_speed(extended.values, ctd, measured_heldout, u);
+  score.heldout_extended_rms_m_s = rms_difference(u, truth, measured_heldout, score.heldout_samples);
+  return score;
+}
+
+// A finding before its value is known (that comes from the final joint fit).
+Finding new_finding(Effect effect, double heldout_rms_m_s, const Diagnosis& d) {
+  Finding finding;
+  finding.effect = effect;
+  finding.fitted = effect != Effect::kWaterDensity;
+  finding.heldout_rms_m_s = heldout_rms_m_s;
+  finding.gain = 1.0 - heldout_rms_m_s / d.baseline.heldout_rms_m_s;
+  return finding;
+}
+
 }  // namespace
 
 const char* to_string(FlightModelKind kind) { return kind == FlightModelKind::kDynamic ? "dynamic" : "steady"; }
@@ -328,8 +378,12 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
   const bool dynamic = options.model == FlightModelKind::kDynamic && !obs.track.scored.empty();
   d.model = dynamic ? FlightModelKind::kDynamic : FlightModelKind::kSteady;
-  const SampleSet set = dynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
+  SampleSet set = dynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
   const DepthRateModel& model = set.model;
+  std::erase_if(set.usable, [&](std::size_t i) {
+    return !(set.depth_m[i] >= options.window_min_m && set.depth_m[i] <= options.window_max_m);
+  });
+  if (set.usable.empty()) throw std::invalid_argument("no samples in the depth window");
   d.samples_used = set.usable.size();
 
   const std::vector<std::size_t>& all = set.usable;
@@ -396,10 +450,22 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   if (dynamic) pool.push_back(Effect::kPumpLag);
   for (Effect e : pool) d.candidates_tried.emplace_back(info(e).id);
 
-  // Forward selection.
+  // Forward selection (or the effects asked for).
   Candidate current;
   FitResult current_fit = fit(set, current, train, heldout);
   std::vector<Effect> remaining = pool;
+  if (!options.fit_only.empty()) {
+    remaining.clear();
+    for (Effect e : options.fit_only) {
+      if (e == Effect::kWaterDensity) {
+        current.ctd_density = true;
+      } else {
+        current.fitted.push_back(e);
+      }
+    }
+    current_fit = fit(set, current, train, heldout);
+    for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
+  }
   while (!remaining.empty()) {
     std::optional<std::pair<std::size_t, FitResult>> best;
     Candidate best_candidate;
@@ -430,12 +496,7 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
     if (!(helps && bic_better && significant)) break;
     current = best_candidate;
     current_fit = f;
-    Finding finding;
-    finding.effect = effect;
-    finding.fitted = effect != Effect::kWaterDensity;
-    finding.heldout_rms_m_s = f.heldout_rms;
-    finding.gain = 1.0 - f.heldout_rms / d.baseline.heldout_rms_m_s;
-    d.findings.push_back(finding);
+    d.findings.push_back(new_finding(effect, f.heldout_rms, d));
     remaining.erase(remaining.begin() + static_cast<long>(best->first));
   }
 
@@ -471,6 +532,7 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs,
   d.extended_all = rms_where(r_ext, all);
   d.extended_heldout_rms_m_s = current_fit.heldout_rms;
   d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
+  if (dynamic) d.speed_through_water = score_speed(dynamic_model, obs.track, all, heldout, current_fit.parameters, current.ctd_density);
   // Pitch trim last, on the steady glides: it is judged with the depth-rate
   // effects already found.
   std::vector<std::size_t> steady_samples(obs.size()), steady_train, steady_heldout;

@@ -1,6 +1,7 @@
 // glider-diagnose: what the simulation gets wrong in a flight log, the named
 // cause, the fitted effect and the gain on held-out yos.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,7 +27,7 @@ ordered_json rms_json(const glider::diagnose::Rms& r) {
   return {{"rms_depth_rate_m_s", number_or_null(r.depth_rate_m_s)}, {"samples", r.samples}};
 }
 
-ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
+ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source, double wall_s) {
   ordered_json j;
   j["vehicle"] = d.vehicle;
   j["vehicle_source"] = vehicle_source;
@@ -75,10 +76,21 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source) {
   }
   j["parameters"] = parameters;
   j["candidates"] = d.candidates_tried;
+  if (d.speed_through_water) {
+    const auto& u = *d.speed_through_water;
+    j["speed_through_water"] = {{"samples", u.samples},
+                                {"measured_mean_m_s", u.measured_mean_m_s},
+                                {"rms_nominal_m_s", number_or_null(u.nominal_rms_m_s)},
+                                {"rms_extended_m_s", number_or_null(u.extended_rms_m_s)},
+                                {"heldout_samples", u.heldout_samples},
+                                {"heldout_rms_nominal_m_s", number_or_null(u.heldout_nominal_rms_m_s)},
+                                {"heldout_rms_extended_m_s", number_or_null(u.heldout_extended_rms_m_s)}};
+  }
+  j["wall_s"] = wall_s;
   return j;
 }
 
-void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source) {
+void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source, double wall_s) {
   std::printf("Diagnosis of %s\n  vehicle: %s (%s)\n", log.c_str(), d.vehicle.c_str(), vehicle_source.c_str());
   const bool dynamic = d.model == glider::diagnose::FlightModelKind::kDynamic;
   std::printf("  flight model: %s\n", dynamic ? "dynamic (the project's dynamics driven by the measured pitch, turns included)"
@@ -102,6 +114,14 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
   std::printf("  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f %%\n",
               d.cause.c_str(), d.extended_all.depth_rate_m_s, d.extended_heldout_rms_m_s, d.baseline.heldout_rms_m_s,
               100.0 * d.gain);
+  if (d.speed_through_water) {
+    const auto& u = *d.speed_through_water;
+    std::printf("  speed through water vs measured (%zu samples, mean %.3f m/s; never fitted): RMS nominal %.4f, "
+                "extended %.4f m/s; held-out yos (%zu): nominal %.4f, extended %.4f m/s\n",
+                u.samples, u.measured_mean_m_s, u.nominal_rms_m_s, u.extended_rms_m_s, u.heldout_samples,
+                u.heldout_nominal_rms_m_s, u.heldout_extended_rms_m_s);
+  }
+  std::printf("  wall time: %.2f s (reading the log excluded)\n", wall_s);
 }
 
 // Plots a person would look at: measured and modelled depth rate over time
@@ -145,6 +165,9 @@ int main(int argc, char** argv) {
   bool json = false;
   std::vector<std::string> renames;
   std::string flight_model = "dynamic";
+  std::vector<std::string> fit_only;
+  std::vector<double> window;
+  double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   app.add_option("LOG", log_path, "flight log (CSV, docs/flight-log.md)")->required();
   app.add_option("--vehicle", vehicle_path, "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
       ->check(CLI::ExistingFile);
@@ -157,10 +180,37 @@ int main(int argc, char** argv) {
                  "flight model fitted: dynamic (the project's dynamics driven by the measured pitch, turns "
                  "included) or steady (steady glides at the measured pitch; faster, blind to turns)")
       ->check(CLI::IsMember({"dynamic", "steady"}));
+  app.add_option("--fit", fit_only, "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
+      ->delimiter(',');
+  app.add_option("--window-m", window, "score and fit only samples between these depths (m): --window-m 10,35")
+      ->delimiter(',')
+      ->expected(2);
+  app.add_option("--rate-window", rate_window_s,
+                 "the measured depth rate is the slope of the depth over +-this many seconds (0: centred difference)")
+      ->check(CLI::Range(0.0, 60.0));
   CLI11_PARSE(app, argc, argv);
   glider::diagnose::DiagnoseOptions options;
   options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
                                            : glider::diagnose::FlightModelKind::kDynamic;
+  for (const std::string& id : fit_only) {
+    bool known = false;
+    for (std::size_t i = 0; i < glider::diagnose::kEffectCount; ++i) {
+      if (id == info(static_cast<Effect>(i)).id && static_cast<Effect>(i) != Effect::kPitchTrimOffset) {
+        options.fit_only.push_back(static_cast<Effect>(i));
+        known = true;
+      }
+    }
+    if (!known) {
+      std::fprintf(stderr, "glider-diagnose: --fit: '%s' is not a depth-rate effect id\n", id.c_str());
+      return 2;
+    }
+  }
+  if (window.size() == 2) {
+    options.window_min_m = window[0];
+    options.window_max_m = window[1];
+  }
+  glider::diagnose::ObservationOptions observation_options;
+  observation_options.track.rate_half_window_s = rate_window_s;
 
   try {
     glider::flightlog::ReadOptions read_options;
@@ -190,17 +240,20 @@ int main(int argc, char** argv) {
     } else {
       throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
     }
-    const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log);
+    const auto start = std::chrono::steady_clock::now();
+    const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log, observation_options);
     const Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (json) {
-      std::printf("%s\n", to_json(d, vehicle_source).dump().c_str());
+      std::printf("%s\n", to_json(d, vehicle_source, wall_s).dump().c_str());
     } else {
-      print_text(d, log_path, vehicle_source);
+      print_text(d, log_path, vehicle_source, wall_s);
     }
     if (!report_dir.empty()) {
       std::filesystem::create_directories(report_dir);
       write_plots(report_dir, vehicle, obs, d, log_path, options);
-      std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << to_json(d, vehicle_source).dump(2) << '\n';
+      std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << to_json(d, vehicle_source, wall_s).dump(2)
+                                                                          << '\n';
       glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
       extended.name = vehicle.name + "_extended";
       extended.description = "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();

@@ -49,6 +49,15 @@ struct Finding {
 enum class FlightModelKind { kDynamic, kSteady };
 const char* to_string(FlightModelKind kind);
 
+// The modelled speed through the water against a measured one (a DVL's
+// sci_speed_through_water), which the fit never sees: an independent check.
+struct SpeedScore {
+  std::size_t samples = 0, heldout_samples = 0;
+  double measured_mean_m_s = 0.0;
+  double nominal_rms_m_s = 0.0, extended_rms_m_s = 0.0;                  // all samples with a measurement
+  double heldout_nominal_rms_m_s = 0.0, heldout_extended_rms_m_s = 0.0;  // on the held-out yos
+};
+
 struct Diagnosis {
   std::string vehicle;
   FlightModelKind model = FlightModelKind::kDynamic;
@@ -64,6 +73,7 @@ struct Diagnosis {
   double extended_heldout_rms_m_s = 0.0;
   double gain = 0.0;
   std::vector<std::string> candidates_tried;
+  std::optional<SpeedScore> speed_through_water;  // dynamic model, when the log measures it
 };
 
 struct DiagnoseOptions {
@@ -79,6 +89,12 @@ struct DiagnoseOptions {
   std::size_t max_fit_samples = 8000;
   FlightModelKind model = FlightModelKind::kDynamic;
   double max_step_s = 1.0;  // the dynamic model's integration step (RK4), at most
+  // Fit exactly these effects (no selection, no significance test), e.g. to
+  // compare with another tool's fit of the same parameters. Empty: select.
+  std::vector<Effect> fit_only;
+  // Score and fit only samples in this depth window (m), e.g. gliderflight's
+  // 10-35 dbar; the model still flies the whole log.
+  double window_min_m = -1e9, window_max_m = 1e9;
 };
 
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& observations,
