@@ -366,13 +366,37 @@ Finding new_finding(Effect effect, double heldout_rms_m_s, const Diagnosis& d) {
   return finding;
 }
 
+// A glider is ballasted for the water it will fly in: a nominal vehicle
+// trimmed for 1025 kg/m^3 would sink like a stone in the Baltic's 1005 (1.2 kg
+// heavy). When the log's measured density is that far from the vehicle's trim
+// density, the vehicle is taken as trimmed for the log's median density, and
+// the diagnosis says so.
+std::optional<double> retrim_density(const model::VehicleParams& nominal, const Observations& obs,
+                                     double tolerance_kg_m3) {
+  std::vector<double> rho;
+  for (double x : obs.track.density_kg_m3) {
+    if (std::isfinite(x)) rho.push_back(x);
+  }
+  if (rho.empty()) return std::nullopt;
+  std::nth_element(rho.begin(), rho.begin() + static_cast<long>(rho.size() / 2), rho.end());
+  const double median = rho[rho.size() / 2];
+  if (std::abs(median - nominal.trim_density_kg_m3) <= tolerance_kg_m3) return std::nullopt;
+  return median;
+}
+
 }  // namespace
 
 const char* to_string(FlightModelKind kind) { return kind == FlightModelKind::kDynamic ? "dynamic" : "steady"; }
 
-Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obs, const DiagnoseOptions& options) {
+Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, const DiagnoseOptions& options) {
   Diagnosis d;
-  d.vehicle = nominal.name;
+  d.vehicle = given.name;
+  model::VehicleParams nominal = given;
+  if (const auto rho = retrim_density(given, obs, options.retrim_tolerance_kg_m3)) {
+    d.retrimmed_from_kg_m3 = given.trim_density_kg_m3;
+    nominal.trim_density_kg_m3 = *rho;
+    d.retrimmed_to_kg_m3 = *rho;
+  }
   d.model = options.model;
   const FlightModel steady_model(nominal, obs);
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
@@ -556,6 +580,15 @@ Predictions predict_all(const model::VehicleParams& nominal, const Observations&
     p.time_s.push_back(set.time_s[i]);
     p.depth_m.push_back(set.depth_m[i]);
     p.measured_m_s.push_back(set.measured_m_s[i]);
+  }
+  if (obs.has_battpos) {
+    for (std::size_t i = 0; i < obs.size(); ++i) {
+      p.pitch_time_s.push_back(obs.time_s[i]);
+      p.pitch_depth_m.push_back(obs.depth_m[i]);
+      p.pitch_measured_rad.push_back(obs.pitch_rad[i]);
+      p.pitch_nominal_rad.push_back(steady_model.nominal_pitch_rad(i));
+      p.pitch_extended_rad.push_back(steady_model.equilibrium_pitch_rad(i, d.extended));
+    }
   }
   set.model.predict(nominal_values(), false, set.usable, p.nominal_m_s);
   set.model.predict(d.extended, d.extended_uses_ctd_density, set.usable, p.extended_m_s,

@@ -80,9 +80,10 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
   }
 }
 
-double FlightModel::nominal_pitch_rad(std::size_t i) const {
+double FlightModel::equilibrium_pitch_rad(std::size_t i, const EffectValues& values) const {
   if (!std::isfinite(obs_.battpos_in[i])) return kNaN;
-  const model::GliderDynamics dynamics(nominal_, model::still_water(nominal_.trim_density_kg_m3));
+  const model::VehicleParams v = apply(nominal_, values);
+  const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
   model::MassInputs masses;
   masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
   masses.battery_pos_m = in_to_m(obs_.battpos_in[i]);

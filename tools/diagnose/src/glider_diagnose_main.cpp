@@ -13,6 +13,7 @@
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/report/report.hpp"
+#include "glider/units.hpp"
 
 namespace {
 
@@ -32,6 +33,12 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source, doub
   j["vehicle"] = d.vehicle;
   j["vehicle_source"] = vehicle_source;
   j["flight_model"] = to_string(d.model);
+  if (d.retrimmed_to_kg_m3) {
+    j["trim_density_kg_m3"] = {{"vehicle", *d.retrimmed_from_kg_m3},
+                               {"used", *d.retrimmed_to_kg_m3},
+                               {"note", "the log's water is far from the vehicle's trim density: the vehicle is taken "
+                                        "as ballasted for the log's median measured density"}};
+  }
   j["samples_used"] = d.samples_used;
   j["train_samples"] = d.train_samples;
   j["heldout_samples"] = d.heldout_samples;
@@ -93,13 +100,18 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source, doub
 void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source, double wall_s) {
   std::printf("Diagnosis of %s\n  vehicle: %s (%s)\n", log.c_str(), d.vehicle.c_str(), vehicle_source.c_str());
   const bool dynamic = d.model == glider::diagnose::FlightModelKind::kDynamic;
+  if (d.retrimmed_to_kg_m3) {
+    std::printf("  trim density: the vehicle's %.1f kg/m^3 is far from this log's water: taken as ballasted for the "
+                "log's median measured density, %.2f kg/m^3\n",
+                *d.retrimmed_from_kg_m3, *d.retrimmed_to_kg_m3);
+  }
   std::printf("  flight model: %s\n", dynamic ? "dynamic (the project's dynamics driven by the measured pitch, turns included)"
                                              : "steady (steady glides at the measured pitch)");
   std::printf("  samples: %zu %s (%zu to fit, %zu held out: alternate yos)\n", d.samples_used,
               dynamic ? "scored" : "in steady glides", d.train_samples, d.heldout_samples);
   std::printf("  baseline (nominal model): depth rate RMS %.4f m/s (dives %.4f, climbs %.4f", d.baseline.all.depth_rate_m_s,
               d.baseline.dives.depth_rate_m_s, d.baseline.climbs.depth_rate_m_s);
-  if (dynamic) std::printf(", turns %.4f", d.baseline.inflections.depth_rate_m_s);
+  if (dynamic && d.baseline.inflections.samples > 0) std::printf(", turns %.4f", d.baseline.inflections.depth_rate_m_s);
   std::printf(")");
   if (d.baseline.rms_pitch_deg) std::printf(", pitch RMS %.2f deg", *d.baseline.rms_pitch_deg);
   if (d.baseline.rms_battpos_in) std::printf(", battery RMS %.3f in", *d.baseline.rms_battpos_in);
@@ -154,6 +166,27 @@ void write_plots(const std::string& dir, const glider::model::VehicleParams& veh
   report.plot("residuals", "Depth-rate residual (model - measured) against depth, before and after",
               "set xlabel 'residual (m/s)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
               "plot 'samples.dat' u 6:2 w p pt 7 ps 0.3 t 'nominal model', '' u 7:2 w p pt 7 ps 0.3 t 'extended model'");
+  if (!p.pitch_time_s.empty()) {
+    std::vector<double> pitch_minutes, measured, nominal, extended;
+    for (std::size_t i = 0; i < p.pitch_time_s.size(); ++i) {
+      pitch_minutes.push_back((p.pitch_time_s[i] - p.time_s[0]) / 60.0);
+      measured.push_back(glider::rad_to_deg(p.pitch_measured_rad[i]));
+      nominal.push_back(glider::rad_to_deg(p.pitch_nominal_rad[i]));
+      extended.push_back(glider::rad_to_deg(p.pitch_extended_rad[i]));
+    }
+    report.data("pitch.dat", {"minutes", "depth_m", "measured_deg", "nominal_deg", "extended_deg"},
+                {pitch_minutes, p.pitch_depth_m, measured, nominal, extended});
+    report.plot("pitch_time",
+                "Pitch on the steady glides: measured, and the equilibrium pitch of the nominal and extended "
+                "vehicles for the logged ballast and battery",
+                "set xlabel 'minutes'\nset ylabel 'pitch (deg, + nose up)'\n"
+                "plot 'pitch.dat' u 1:3 w p pt 7 ps 0.3 t 'measured', '' u 1:4 w p pt 7 ps 0.3 t 'nominal', "
+                "'' u 1:5 w p pt 7 ps 0.3 t 'extended'");
+    report.plot("pitch_depth", "Pitch against depth: measured, nominal, extended",
+                "set xlabel 'pitch (deg)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
+                "plot 'pitch.dat' u 3:2 w p pt 7 ps 0.3 t 'measured', '' u 4:2 w p pt 7 ps 0.3 t 'nominal', "
+                "'' u 5:2 w p pt 7 ps 0.3 t 'extended'");
+  }
   if (!report.finish()) throw std::runtime_error("the plots could not be rendered (gnuplot)");
 }
 

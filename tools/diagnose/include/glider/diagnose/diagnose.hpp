@@ -74,6 +74,9 @@ struct Diagnosis {
   double gain = 0.0;
   std::vector<std::string> candidates_tried;
   std::optional<SpeedScore> speed_through_water;  // dynamic model, when the log measures it
+  // Set when the log's water was far from the vehicle's trim density: the
+  // vehicle was taken as ballasted for the log's median density.
+  std::optional<double> retrimmed_from_kg_m3, retrimmed_to_kg_m3;
 };
 
 struct DiagnoseOptions {
@@ -92,6 +95,9 @@ struct DiagnoseOptions {
   // Fit exactly these effects (no selection, no significance test), e.g. to
   // compare with another tool's fit of the same parameters. Empty: select.
   std::vector<Effect> fit_only;
+  // See Diagnosis::retrimmed_to_kg_m3: how far the log's median density may be
+  // from the vehicle's trim density before the vehicle is re-trimmed for it.
+  double retrim_tolerance_kg_m3 = 5.0;
   // Score and fit only samples in this depth window (m), e.g. gliderflight's
   // 10-35 dbar; the model still flies the whole log.
   double window_min_m = -1e9, window_max_m = 1e9;
@@ -105,6 +111,10 @@ Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& obse
 // report plots.
 struct Predictions {
   std::vector<double> time_s, depth_m, measured_m_s, nominal_m_s, extended_m_s;
+  // Pitch on the steady glides: measured, and the equilibrium pitch of the
+  // nominal and extended vehicles for the logged ballast and battery (empty
+  // without m_battpos).
+  std::vector<double> pitch_time_s, pitch_depth_m, pitch_measured_rad, pitch_nominal_rad, pitch_extended_rad;
 };
 Predictions predict_all(const model::VehicleParams& nominal, const Observations& observations, const Diagnosis& d,
                         const DiagnoseOptions& options = {});

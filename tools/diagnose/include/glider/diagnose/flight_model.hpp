@@ -84,9 +84,11 @@ class FlightModel final : public DepthRateModel {
   void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
                std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
 
-  // Pitch of the nominal model's forward equilibrium (logged ballast and
-  // battery) for a sample; NaN without battery data or a steady glide.
-  double nominal_pitch_rad(std::size_t sample) const;
+  // Pitch of the model's forward equilibrium (logged ballast and battery)
+  // for a sample, with the vehicle effects `values` applied; NaN without
+  // battery data or a steady glide.
+  double equilibrium_pitch_rad(std::size_t sample, const EffectValues& values) const;
+  double nominal_pitch_rad(std::size_t sample) const { return equilibrium_pitch_rad(sample, nominal_values()); }
 
   // The battery position (in) that holds the logged pitch with the logged
   // ballast in a steady glide (moment balance of the model); NaN if none.
