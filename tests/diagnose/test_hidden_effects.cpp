@@ -7,54 +7,14 @@
 #include <random>
 #include <string>
 
-#include "glider/config/toml_document.hpp"
-#include "glider/diagnose/diagnose.hpp"
-#include "glider/firmware/config/flight_config_file.hpp"
-#include "glider/flightlog/flight_log.hpp"
-#include "glider/model/vehicle_file.hpp"
-#include "glider/sil/scenario.hpp"
 #include "glider/units.hpp"
+#include "hidden_effect_flight.hpp"
 
 using namespace glider;
-
-namespace {
-
-struct Outcome {
-  diagnose::Diagnosis diagnosis;
-  std::string log_path;
-};
-
-// Flies 6 yos between 5 and 80 m with the flown vehicle and the water given,
-// logging the nominal vehicle; diagnoses the CSV alone.
-Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water, const std::string& name,
-                         double dive_to_m = 80.0) {
-  const model::VehicleParams nominal =
-      model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
-  fw::FlightSoftwareConfig config =
-      fw::read_flight_config(config::TomlDocument::load(GLIDER_SOURCE_DIR "/boards/missions/demo_yo.toml"));
-  config.mission.yos = 6;
-  config.mission.dive_to_m = dive_to_m;
-  config.mission.max_depth_m = dive_to_m + 15.0;
-  sil::ScenarioOptions options;
-  options.environment = water;
-  options.logged_vehicle = nominal;
-  options.log_path = std::string(GLIDER_TEST_OUTPUT_DIR) + "/hidden_" + name + ".csv";
-  const sil::ScenarioResult flight = sil::run_scenario(flown, config, options);
-  CHECK_TRUE_TEXT(flight.completed, name.c_str());
-  const flightlog::FlightLog log = flightlog::read_flight_log(options.log_path);
-  std::vector<std::pair<std::string, std::string>> entries;
-  for (const auto& m : log.vehicle_metadata()) entries.emplace_back(m.key, m.value);
-  const model::VehicleParams from_log = model::vehicle_from_metadata(entries, options.log_path);
-  return {diagnose::diagnose(from_log, diagnose::prepare_observations(log)), options.log_path};
-}
-
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(rng() >> 11) / 9007199254740992.0;
-}
-
-model::VehicleParams we01() { return model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml"); }
-
-}  // namespace
+using hidden::fly_and_diagnose;
+using hidden::Outcome;
+using hidden::uniform;
+using hidden::we01;
 
 TEST_GROUP(DiagnoseHiddenEffects) {
   std::mt19937_64 rng{20261122};

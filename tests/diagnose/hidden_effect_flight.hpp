@@ -1,0 +1,62 @@
+#pragma once
+// What every hidden-effect test does: fly the project's model in SIL with an
+// effect the logged (nominal) vehicle does not know about, write the CSV, and
+// hand only the CSV to the diagnosis. Shared by the hidden-effect test files
+// so they fly the same mission and read the log the same way.
+#include <CppUTest/TestHarness.h>
+
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "glider/config/toml_document.hpp"
+#include "glider/diagnose/diagnose.hpp"
+#include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/flightlog/flight_log.hpp"
+#include "glider/model/environment.hpp"
+#include "glider/model/vehicle_file.hpp"
+#include "glider/sil/scenario.hpp"
+
+namespace glider::hidden {
+
+struct Outcome {
+  diagnose::Diagnosis diagnosis;
+  std::string log_path;
+};
+
+// Flies 6 yos between 5 and dive_to_m (default 80 m) with the flown vehicle
+// and the water given, logging the nominal vehicle; diagnoses the CSV alone.
+inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water,
+                                const std::string& name, double dive_to_m = 80.0) {
+  const model::VehicleParams nominal =
+      model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
+  fw::FlightSoftwareConfig config =
+      fw::read_flight_config(config::TomlDocument::load(GLIDER_SOURCE_DIR "/boards/missions/demo_yo.toml"));
+  config.mission.yos = 6;
+  config.mission.dive_to_m = dive_to_m;
+  config.mission.max_depth_m = dive_to_m + 15.0;
+  sil::ScenarioOptions options;
+  options.environment = water;
+  options.logged_vehicle = nominal;
+  options.log_path = std::string(GLIDER_TEST_OUTPUT_DIR) + "/hidden_" + name + ".csv";
+  const sil::ScenarioResult flight = sil::run_scenario(flown, config, options);
+  CHECK_TRUE_TEXT(flight.completed, name.c_str());
+  const flightlog::FlightLog log = flightlog::read_flight_log(options.log_path);
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (const auto& m : log.vehicle_metadata()) entries.emplace_back(m.key, m.value);
+  const model::VehicleParams from_log = model::vehicle_from_metadata(entries, options.log_path);
+  return {diagnose::diagnose(from_log, diagnose::prepare_observations(log)), options.log_path};
+}
+
+// Uniform in [lo, hi) from the top 53 bits: the same draw on every platform
+// (std::uniform_real_distribution does not promise that).
+inline double uniform(std::mt19937_64& rng, double lo, double hi) {
+  return lo + (hi - lo) * static_cast<double>(rng() >> 11) / 9007199254740992.0;
+}
+
+inline model::VehicleParams we01() {
+  return model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
+}
+
+}  // namespace glider::hidden
