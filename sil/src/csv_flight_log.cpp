@@ -57,8 +57,9 @@ const char* CsvFlightLog::header() {
 }
 
 CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
-                           const SimCtd& ctd)
-    : path_(path), out_(path, std::ios::out | std::ios::trunc), sim_(sim), ctd_(ctd) {
+                           const SimCtd& ctd, const LogGaps& gaps, std::uint64_t gap_seed)
+    : path_(path), out_(path, std::ios::out | std::ios::trunc), sim_(sim), ctd_(ctd), gaps_(gaps),
+      gap_random_(gap_seed) {
   if (!out_) {
     ok_ = false;
     error_ = path + ": cannot open for writing: " + std::strerror(errno);
@@ -73,8 +74,26 @@ CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, co
   if (!ok_) error_ = path + ": write failed";
 }
 
+hal::Micros CsvFlightLog::draw_us(double min_s, double max_s) {
+  return static_cast<hal::Micros>(std::llround((min_s + (max_s - min_s) * gap_random_.uniform()) * 1e6));
+}
+
+bool CsvFlightLog::thinned_out(const hal::FlightLogRecord& r) {
+  if (!gaps_.enabled) return false;
+  const bool surface = r.m_depth_state == 0;
+  if (surface && !at_surface_) {
+    surface_gap_end_us_ = r.time_us + draw_us(gaps_.surface_gap_min_s, gaps_.surface_gap_max_s);
+  }
+  at_surface_ = surface;
+  if (surface && r.time_us < surface_gap_end_us_) return true;
+  if (r.time_us < next_row_us_) return true;
+  next_row_us_ = r.time_us + draw_us(gaps_.min_interval_s, gaps_.max_interval_s);
+  return false;
+}
+
 bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   if (!ok_) return false;
+  if (thinned_out(r)) return true;  // not logged by design: not a lost row
   const model::Truth t = sim_.truth();
   line_.clear();
   append_time(line_, r.time_us);
@@ -93,7 +112,8 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   append_integer(line_, r.x_abort_cause);
   append_integer(line_, r.x_loop_overruns);
   // The science bay is off at the surface (m_depth_state 0), as in real logs.
-  const CtdReading ctd = ctd_.sample(t, r.m_depth_state != 0);
+  const bool science_missed = gaps_.enabled && gap_random_.uniform() < gaps_.sci_blank_fraction;
+  const CtdReading ctd = science_missed ? CtdReading{} : ctd_.sample(t, r.m_depth_state != 0);
   append_number(line_, ctd.temperature_c);
   append_number(line_, ctd.conductivity_s_m);
   append_number(line_, ctd.pressure_bar);

@@ -27,8 +27,9 @@ struct Outcome {
 
 // Flies 6 yos between 5 and dive_to_m (default 80 m) with the flown vehicle
 // and the water given, logging the nominal vehicle; diagnoses the CSV alone.
+// `gaps`: thin the log like a real Slocum log (sil::LogGaps; off by default).
 inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water,
-                                const std::string& name, double dive_to_m = 80.0) {
+                                const std::string& name, double dive_to_m = 80.0, const sil::LogGaps& gaps = {}) {
   const model::VehicleParams nominal =
       model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
   fw::FlightSoftwareConfig config =
@@ -39,6 +40,7 @@ inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::
   sil::ScenarioOptions options;
   options.environment = water;
   options.logged_vehicle = nominal;
+  options.log_gaps = gaps;
   options.log_path = std::string(GLIDER_TEST_OUTPUT_DIR) + "/hidden_" + name + ".csv";
   const sil::ScenarioResult flight = sil::run_scenario(flown, config, options);
   CHECK_TRUE_TEXT(flight.completed, name.c_str());
@@ -53,6 +55,14 @@ inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::
 // (std::uniform_real_distribution does not promise that).
 inline double uniform(std::mt19937_64& rng, double lo, double hi) {
   return lo + (hi - lo) * static_cast<double>(rng() >> 11) / 9007199254740992.0;
+}
+
+// Thinning like the real logs: rows every 2-5 s, sci_* missing in 5 % of
+// them, 20-200 s without rows at each surfacing.
+inline sil::LogGaps real_log_gaps() {
+  sil::LogGaps gaps;
+  gaps.enabled = true;
+  return gaps;
 }
 
 inline model::VehicleParams we01() {
