@@ -5,6 +5,7 @@
 // so they fly the same mission and read the log the same way.
 #include <CppUTest/TestHarness.h>
 
+#include <optional>
 #include <random>
 #include <string>
 #include <utility>
@@ -25,22 +26,29 @@ struct Outcome {
   std::string log_path;
 };
 
-// Flies 6 yos between 5 and dive_to_m (default 80 m) with the flown vehicle
-// and the water given, logging the nominal vehicle; diagnoses the CSV alone.
-// `gaps`: thin the log like a real Slocum log (sil::LogGaps; off by default).
+// How a hidden-effect flight is flown and logged.
+struct FlightSetup {
+  double dive_to_m = 80.0;  // 6 yos between 5 m and this depth
+  sil::LogGaps gaps{};      // thin the log like a real Slocum log (off by default)
+  // The vehicle the log states (the diagnosis's nominal): default WE01.
+  std::optional<model::VehicleParams> logged;
+};
+
+// Flies the flown vehicle in the water given, logging the nominal vehicle;
+// diagnoses the CSV alone.
 inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water,
-                                const std::string& name, double dive_to_m = 80.0, const sil::LogGaps& gaps = {}) {
-  const model::VehicleParams nominal =
-      model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
+                                const std::string& name, const FlightSetup& setup) {
+  const model::VehicleParams nominal = setup.logged.value_or(
+      model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml"));
   fw::FlightSoftwareConfig config =
       fw::read_flight_config(config::TomlDocument::load(GLIDER_SOURCE_DIR "/boards/missions/demo_yo.toml"));
   config.mission.yos = 6;
-  config.mission.dive_to_m = dive_to_m;
-  config.mission.max_depth_m = dive_to_m + 15.0;
+  config.mission.dive_to_m = setup.dive_to_m;
+  config.mission.max_depth_m = setup.dive_to_m + 15.0;
   sil::ScenarioOptions options;
   options.environment = water;
   options.logged_vehicle = nominal;
-  options.log_gaps = gaps;
+  options.log_gaps = setup.gaps;
   options.log_path = std::string(GLIDER_TEST_OUTPUT_DIR) + "/hidden_" + name + ".csv";
   const sil::ScenarioResult flight = sil::run_scenario(flown, config, options);
   CHECK_TRUE_TEXT(flight.completed, name.c_str());
@@ -49,6 +57,11 @@ inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::
   for (const auto& m : log.vehicle_metadata()) entries.emplace_back(m.key, m.value);
   const model::VehicleParams from_log = model::vehicle_from_metadata(entries, options.log_path);
   return {diagnose::diagnose(from_log, diagnose::prepare_observations(log)), options.log_path};
+}
+
+inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water,
+                                const std::string& name, double dive_to_m = 80.0, const sil::LogGaps& gaps = {}) {
+  return fly_and_diagnose(flown, water, name, FlightSetup{dive_to_m, gaps, std::nullopt});
 }
 
 // Uniform in [lo, hi) from the top 53 bits: the same draw on every platform

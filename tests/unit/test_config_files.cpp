@@ -180,8 +180,8 @@ TEST(ConfigFiles, EnvironmentFileErrorsNameTheLine) {
             .find("env.toml:3:") == 0);  // one value for two depths
   CHECK(environment_error_of("[profile]\ndepth_m = [10, 0]\n").find("strictly") != std::string::npos);
   CHECK(environment_error_of("[profile]\ndepth_m = [0, \"x\"]\n").find("env.toml:2:") == 0);
-  CHECK(environment_error_of("[profile]\ndepth_m = [0]\ncurent_east_m_s = [0.1]\n").find("unknown key 'profile.curent_east_m_s'") !=
-        std::string::npos);
+  CHECK(environment_error_of("[profile]\ndepth_m = [0]\ncurent_east_m_s = [0.1]\n")
+            .find("unknown key 'profile.curent_east_m_s'") != std::string::npos);
 }
 
 TEST(ConfigFiles, EnvironmentWithSalinityIsTeos10Water) {
@@ -213,8 +213,8 @@ TEST(ConfigFiles, EnvironmentWithSalinityIsTeos10Water) {
             .find("not both") != std::string::npos);
   CHECK(environment_error_of("[profile]\ndepth_m = [0]\npractical_salinity = [35]\n").find("needs temperature_c") !=
         std::string::npos);
-  CHECK(environment_error_of("[profile]\ndepth_m = [0]\ntemperature_c = [10]\npractical_salinity = [45]\n").find("0..42") !=
-        std::string::npos);
+  CHECK(environment_error_of("[profile]\ndepth_m = [0]\ntemperature_c = [10]\npractical_salinity = [45]\n")
+            .find("0..42") != std::string::npos);
 }
 
 TEST(ConfigFiles, VehicleFileTextAndLogMetadataRoundTrip) {
