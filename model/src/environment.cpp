@@ -5,10 +5,24 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "glider/model/seawater.hpp"
+
 namespace glider::model {
 
+namespace {
+
+// In-situ density of water of this temperature and salinity at the depth
+// (TEOS-10 with Reference Salinity, as the diagnosis reads a CTD).
+double teos10_density(double temperature_c, double practical_salinity, double depth_m) {
+  const double p = sea_pressure_dbar(std::max(depth_m, 0.0));
+  const double sa = seawater::absolute_salinity(practical_salinity);
+  return seawater::density(sa, seawater::conservative_temperature(sa, temperature_c, p), p);
+}
+
+}  // namespace
+
 WaterColumn::WaterColumn(double density_kg_m3, double temperature_c)
-    : nodes_{ProfileNode{0.0, WaterSample{density_kg_m3, temperature_c, 0.0, 0.0, 0.0}}} {}
+    : nodes_{ProfileNode{0.0, WaterSample{density_kg_m3, temperature_c, 0.0, 0.0, 0.0, NAN}}} {}
 
 WaterColumn::WaterColumn(std::vector<ProfileNode> nodes, Oscillation oscillation)
     : nodes_(std::move(nodes)), oscillation_(oscillation) {
@@ -19,6 +33,20 @@ WaterColumn::WaterColumn(std::vector<ProfileNode> nodes, Oscillation oscillation
     }
   }
   if (oscillation_.period_s < 0.0) throw std::invalid_argument("oscillation period must not be negative");
+  std::size_t with_salinity = 0;
+  for (const ProfileNode& node : nodes_) with_salinity += std::isfinite(node.water.practical_salinity) ? 1 : 0;
+  if (with_salinity != 0 && with_salinity != nodes_.size()) {
+    throw std::invalid_argument("water profile: salinity must be given at every node or at none");
+  }
+  teos10_ = with_salinity != 0;
+  if (!teos10_) return;
+  for (ProfileNode& node : nodes_) {
+    node.water.density_kg_m3 = teos10_density(node.water.temperature_c, node.water.practical_salinity, node.depth_m);
+    if (!std::isfinite(node.water.density_kg_m3)) {
+      throw std::invalid_argument("water profile: temperature, salinity and depth outside TEOS-10's range at " +
+                                  std::to_string(node.depth_m) + " m");
+    }
+  }
 }
 
 WaterSample WaterColumn::at(double depth_m, double time_s) const {
@@ -39,7 +67,11 @@ WaterSample WaterColumn::at(double depth_m, double time_s) const {
     w.current_east_m_s = mix(a.water.current_east_m_s, b.water.current_east_m_s);
     w.current_north_m_s = mix(a.water.current_north_m_s, b.water.current_north_m_s);
     w.vertical_velocity_m_s = mix(a.water.vertical_velocity_m_s, b.water.vertical_velocity_m_s);
+    w.practical_salinity = mix(a.water.practical_salinity, b.water.practical_salinity);
   }
+  // Between and beyond the nodes (where pressure still grows), the density
+  // of the water actually there, not a straight line between node densities.
+  if (teos10_) w.density_kg_m3 = teos10_density(w.temperature_c, w.practical_salinity, depth_m);
   if (oscillation_.period_s > 0.0) {
     const double s = std::sin(2.0 * std::numbers::pi * time_s / oscillation_.period_s + oscillation_.phase_rad);
     w.current_east_m_s += oscillation_.east_m_s * s;

@@ -1,5 +1,6 @@
 #include "glider/model/environment_file.hpp"
 
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -27,6 +28,17 @@ Environment read(const TomlDocument& doc) {
     }
     return values;
   };
+  // Salinity makes a TEOS-10 column (environment.hpp): its density follows
+  // from T, S and depth, so stating a density as well could only contradict it.
+  const bool has_salinity = !doc.numbers_or_empty("profile.practical_salinity").empty();
+  if (has_salinity && !doc.numbers_or_empty("profile.density_kg_m3").empty()) {
+    doc.fail("profile.density_kg_m3", "give density_kg_m3 or practical_salinity, not both (TEOS-10 computes the "
+                                      "density from temperature and salinity)");
+  }
+  if (has_salinity && doc.numbers_or_empty("profile.temperature_c").empty()) {
+    doc.fail("profile.practical_salinity", "needs temperature_c at the same depths");
+  }
+  const auto salinity = column("profile.practical_salinity", NAN);
   const auto density = column("profile.density_kg_m3", 1025.0);
   const auto temperature = column("profile.temperature_c", 10.0);
   const auto east = column("profile.current_east_m_s", 0.0);
@@ -35,7 +47,10 @@ Environment read(const TomlDocument& doc) {
   std::vector<ProfileNode> nodes;
   for (std::size_t i = 0; i < depth.size(); ++i) {
     if (!(density[i] > 900.0 && density[i] < 1100.0)) doc.fail("profile.density_kg_m3", "must be 900..1100");
-    nodes.push_back({depth[i], {density[i], temperature[i], east[i], north[i], vertical[i]}});
+    if (has_salinity && !(salinity[i] >= 0.0 && salinity[i] <= 42.0)) {
+      doc.fail("profile.practical_salinity", "must be 0..42 (PSS-78)");
+    }
+    nodes.push_back({depth[i], {density[i], temperature[i], east[i], north[i], vertical[i], salinity[i]}});
   }
   Oscillation o;
   o.period_s = doc.number_or("oscillation.period_s", 0.0);

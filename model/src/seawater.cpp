@@ -1,5 +1,6 @@
 #include "glider/model/seawater.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -289,11 +290,12 @@ bool in_density_funnel(double sa, double ct, double p) {
 
 }  // namespace
 
-double practical_salinity(double conductivity_s_m, double temperature_c, double pressure_dbar) noexcept {
-  if (!finite(conductivity_s_m, temperature_c, pressure_dbar) || conductivity_s_m < 0.0 ||
-      !in(temperature_c, kMinTemperatureC, kMaxTemperatureC) || !in(pressure_dbar, 0.0, kMaxPressureDbar)) {
-    return kNaN;
-  }
+namespace {
+
+// PSS-78 (with the Hill extension) without the range checks: the forward
+// function that conductivity_from_practical_salinity() inverts. NaN for a
+// negative conductivity ratio.
+double practical_salinity_unchecked(double conductivity_s_m, double temperature_c, double pressure_dbar) {
   const double c_ms_cm = conductivity_s_m * 10.0;
   const double t68 = t68_from_t90(temperature_c);
   const double ft68 = ft68_of(t68);
@@ -309,8 +311,56 @@ double practical_salinity(double conductivity_s_m, double temperature_c, double 
   // PSS-78 is defined for SP >= 2; below, GSW's scaled Hill et al. (1986)
   // form, which meets PSS-78 exactly at SP = 2 and goes to 0 with C.
   if (sp < 2.0) sp = hill_ratio_at_sp2(temperature_c) * hill_raw_salinity(sp, rt, rtx, ft68);
+  return sp;
+}
+
+bool in_sp_input_range(double temperature_c, double pressure_dbar) {
+  return in(temperature_c, kMinTemperatureC, kMaxTemperatureC) && in(pressure_dbar, 0.0, kMaxPressureDbar);
+}
+
+}  // namespace
+
+double practical_salinity(double conductivity_s_m, double temperature_c, double pressure_dbar) noexcept {
+  if (!finite(conductivity_s_m, temperature_c, pressure_dbar) || conductivity_s_m < 0.0 ||
+      !in_sp_input_range(temperature_c, pressure_dbar)) {
+    return kNaN;
+  }
+  const double sp = practical_salinity_unchecked(conductivity_s_m, temperature_c, pressure_dbar);
   if (!in(sp, 0.0, kMaxPracticalSalinity)) return kNaN;
   return sp;
+}
+
+double conductivity_from_practical_salinity(double practical_salinity, double temperature_c,
+                                            double pressure_dbar) noexcept {
+  if (!finite(practical_salinity, temperature_c, pressure_dbar) ||
+      !in(practical_salinity, 0.0, kMaxPracticalSalinity) || !in_sp_input_range(temperature_c, pressure_dbar)) {
+    return kNaN;
+  }
+  if (practical_salinity == 0.0) return 0.0;  // PSS-78 and Hill give SP = 0 exactly at C = 0
+  const auto sp_of = [&](double c) {
+    return practical_salinity_unchecked(c, temperature_c, pressure_dbar) - practical_salinity;
+  };
+  // SP grows strictly with C, so a bracket [lo, hi] always holds the root:
+  // Newton steps (secant slope from a small step), kept inside the bracket
+  // by bisection when a step would leave it. First guess: C in proportion
+  // to SP (R = SP/35); Newton converges from it in ~4 steps at sea salinities.
+  double lo = 0.0, hi = 1.0;
+  while (sp_of(hi) < 0.0) hi *= 2.0;  // 42 at 40 degC is ~9 S/m: a few doublings at most
+  double c = std::min(hi, 0.1 * kC3515_mS_cm * practical_salinity / 35.0);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double f = sp_of(c);
+    if (f == 0.0) return c;
+    (f < 0.0 ? lo : hi) = c;
+    const double h = 1e-7 * std::max(c, 1e-6);
+    const double slope = (sp_of(c + h) - f) / h;
+    double next = c - f / slope;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    // Converged when the step is at the last bits of c: the forward function's
+    // own rounding then decides, not the iteration.
+    if (std::abs(next - c) <= 4.0 * std::numeric_limits<double>::epsilon() * c) return next;
+    c = next;
+  }
+  return c;
 }
 
 double absolute_salinity(double practical_salinity) noexcept {

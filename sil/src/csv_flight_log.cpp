@@ -49,14 +49,17 @@ void append_time(std::string& line, hal::Micros us) {
 const char* CsvFlightLog::header() {
   return "m_present_time,m_depth,m_depth_rate,m_pitch,m_roll,m_heading,m_ballast_pumped,c_ballast_pumped,"
          "m_battpos,c_battpos,c_pitch,m_depth_state,x_yo_count,x_abort_cause,x_loop_overruns,"
+         "sci_water_temp,sci_water_cond,sci_water_pressure,"
          "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
          "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
          "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_density_kg_m3,sim_u_water_m_s,sim_v_water_m_s,"
-         "sim_w_water_m_s";
+         "sim_w_water_m_s,sim_temperature_c,sim_practical_salinity";
 }
 
-CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim)
-    : path_(path), out_(path, std::ios::out | std::ios::trunc), sim_(sim) {
+CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
+                           const SimCtd& ctd, const LogGaps& gaps, std::uint64_t gap_seed)
+    : path_(path), out_(path, std::ios::out | std::ios::trunc), sim_(sim), ctd_(ctd), gaps_(gaps),
+      gap_random_(gap_seed) {
   if (!out_) {
     ok_ = false;
     error_ = path + ": cannot open for writing: " + std::strerror(errno);
@@ -71,8 +74,26 @@ CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, co
   if (!ok_) error_ = path + ": write failed";
 }
 
+hal::Micros CsvFlightLog::draw_us(double min_s, double max_s) {
+  return static_cast<hal::Micros>(std::llround((min_s + (max_s - min_s) * gap_random_.uniform()) * 1e6));
+}
+
+bool CsvFlightLog::thinned_out(const hal::FlightLogRecord& r) {
+  if (!gaps_.enabled) return false;
+  const bool surface = r.m_depth_state == 0;
+  if (surface && !at_surface_) {
+    surface_gap_end_us_ = r.time_us + draw_us(gaps_.surface_gap_min_s, gaps_.surface_gap_max_s);
+  }
+  at_surface_ = surface;
+  if (surface && r.time_us < surface_gap_end_us_) return true;
+  if (r.time_us < next_row_us_) return true;
+  next_row_us_ = r.time_us + draw_us(gaps_.min_interval_s, gaps_.max_interval_s);
+  return false;
+}
+
 bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   if (!ok_) return false;
+  if (thinned_out(r)) return true;  // not logged by design: not a lost row
   const model::Truth t = sim_.truth();
   line_.clear();
   append_time(line_, r.time_us);
@@ -90,6 +111,12 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   append_integer(line_, r.x_yo_count);
   append_integer(line_, r.x_abort_cause);
   append_integer(line_, r.x_loop_overruns);
+  // The science bay is off at the surface (m_depth_state 0), as in real logs.
+  const bool science_missed = gaps_.enabled && gap_random_.uniform() < gaps_.sci_blank_fraction;
+  const CtdReading ctd = science_missed ? CtdReading{} : ctd_.sample(t, r.m_depth_state != 0);
+  append_number(line_, ctd.temperature_c);
+  append_number(line_, ctd.conductivity_s_m);
+  append_number(line_, ctd.pressure_bar);
   append_number(line_, t.east_m);
   append_number(line_, t.north_m);
   append_number(line_, t.depth_m);
@@ -108,6 +135,8 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   append_number(line_, t.water.current_east_m_s);
   append_number(line_, t.water.current_north_m_s);
   append_number(line_, t.water.vertical_velocity_m_s);
+  append_number(line_, t.water.temperature_c);
+  append_number(line_, t.water.practical_salinity);
   line_.back() = '\n';
   out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
   if (!out_) {

@@ -26,6 +26,11 @@ std::string check_limits(const model::VehicleParams& v, const fw::ActuatorLimits
   return "";
 }
 
+// Random streams of a run, all from options.seed: stream 0 is the firmware
+// sensors' noise (SimHal), the others are derived from it.
+constexpr std::uint64_t kCtdStream = 1;
+constexpr std::uint64_t kLogGapStream = 2;
+
 class NullLogSink final : public hal::LogSink {
  public:
   bool write(const hal::FlightLogRecord&) override { return true; }
@@ -57,7 +62,8 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   NullLogSink no_file;
   std::optional<CsvFlightLog> csv;
   if (!options.log_path.empty()) {
-    csv.emplace(options.log_path, metadata, sim);
+    csv.emplace(options.log_path, metadata, sim, SimCtd(options.noise, derived_seed(options.seed, kCtdStream)),
+                options.log_gaps, derived_seed(options.seed, kLogGapStream));
     if (!csv->ok()) {
       result.error = csv->error();
       return result;

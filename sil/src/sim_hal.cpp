@@ -8,24 +8,7 @@
 namespace glider::sil {
 
 SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed)
-    : sim_(sim), clock_(clock), noise_(noise), rng_(seed) {}
-
-double SimHal::gaussian() {
-  if (has_spare_) {
-    has_spare_ = false;
-    return spare_;
-  }
-  // Box-Muller on 53-bit uniforms: the same numbers on every platform, which
-  // std::normal_distribution does not promise.
-  constexpr double kScale = 1.0 / 9007199254740992.0;  // 2^-53
-  const double u1 = (static_cast<double>(rng_() >> 11) + 0.5) * kScale;
-  const double u2 = static_cast<double>(rng_() >> 11) * kScale;
-  const double radius = std::sqrt(-2.0 * std::log(u1));
-  const double angle = 2.0 * std::numbers::pi * u2;
-  spare_ = radius * std::sin(angle);
-  has_spare_ = true;
-  return radius * std::cos(angle);
-}
+    : sim_(sim), clock_(clock), noise_(noise), random_(seed) {}
 
 hal::DepthSample SimHal::read() {
   hal::DepthSample sample;

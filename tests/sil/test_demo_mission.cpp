@@ -1,13 +1,16 @@
 #include <CppUTest/TestHarness.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "glider/config/toml_document.hpp"
+#include "glider/flightlog/flight_log.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
 #include "glider/model/environment_file.hpp"
+#include "glider/model/seawater.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
 
@@ -64,6 +67,9 @@ TEST(DemoMission, GlidesSettleAtTheCommandedPitch) {
 }
 
 TEST(DemoMission, TwoRunsWriteByteIdenticalLogs) {
+  // Water with a CTD, so its noise is in the log too.
+  options.environment =
+      model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
   options.log_path = GLIDER_TEST_OUTPUT_DIR "/determinism_a.csv";
   const sil::ScenarioResult a = sil::run_scenario(vehicle, config, options);
   options.log_path = GLIDER_TEST_OUTPUT_DIR "/determinism_b.csv";
@@ -102,6 +108,96 @@ TEST(DemoMission, LogFollowsTheFlightLogContract) {
     ++rows;
   }
   LONGS_EQUAL(r.log_rows, rows);  // nothing lost or truncated
+}
+
+TEST(DemoMission, CtdMeasuresTheWaterTheVehicleFeels) {
+  options.environment =
+      model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
+  options.log_path = GLIDER_TEST_OUTPUT_DIR "/ctd.csv";
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
+  CHECK_TRUE(r.completed);
+  const flightlog::FlightLog log = flightlog::read_flight_log(options.log_path);
+  const auto& temp = log.column("sci_water_temp");
+  const auto& cond = log.column("sci_water_cond");
+  const auto& bar = log.column("sci_water_pressure");
+  const auto& state = log.column("m_depth_state");
+  const auto& depth = log.column("sim_depth_m");
+  const auto& rho = log.column("sim_density_kg_m3");
+  std::size_t sampled = 0;
+  double worst_rho = 0.0, worst_p = 0.0;
+  for (std::size_t i = 0; i < log.rows(); ++i) {
+    // Blank at the surface, like the real logs; sampled everywhere else.
+    CHECK_EQUAL(state[i] == 0.0, std::isnan(temp[i]));
+    if (std::isnan(temp[i])) continue;
+    ++sampled;
+    // TEOS-10 of the logged T, C, p is the density the vehicle felt; the
+    // CTD's noise (2 mK, 0.3 mS/m, 0.2 dbar) is worth ~0.003 kg/m^3 (1 sigma).
+    const double measured = model::seawater::density_from_ctd(cond[i], temp[i], 10.0 * bar[i]);
+    worst_rho = std::max(worst_rho, std::abs(measured - rho[i]));
+    worst_p = std::max(worst_p, std::abs(10.0 * bar[i] - model::sea_pressure_dbar(std::max(depth[i], 0.0))));
+  }
+  CHECK(sampled > 0.9 * static_cast<double>(log.rows()));
+  CHECK(worst_rho < 0.015);  // 5 sigma
+  CHECK(worst_p < 0.1);      // 5 sigma of 0.02 dbar
+  // Water given by density alone has no salinity: no CTD in the log.
+  options.environment = model::still_water(1025.0);
+  sil::run_scenario(vehicle, config, options);
+  const flightlog::FlightLog plain = flightlog::read_flight_log(options.log_path);
+  for (double c : plain.column("sci_water_cond")) CHECK(std::isnan(c));
+}
+
+TEST(DemoMission, LogGapsThinTheLogLikeARealSlocumLog) {
+  options.environment =
+      model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
+  options.log_gaps.enabled = true;
+  options.log_path = GLIDER_TEST_OUTPUT_DIR "/gaps_a.csv";
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
+  options.log_path = GLIDER_TEST_OUTPUT_DIR "/gaps_b.csv";
+  sil::run_scenario(vehicle, config, options);
+  CHECK_TRUE(slurp(GLIDER_TEST_OUTPUT_DIR "/gaps_a.csv") == slurp(GLIDER_TEST_OUTPUT_DIR "/gaps_b.csv"));
+  CHECK_TRUE(r.completed);
+  CHECK(r.stats.dives().samples > 300);  // the statistics still see every cycle
+  const flightlog::FlightLog log = flightlog::read_flight_log(options.log_path);
+  LONGS_EQUAL(r.log_rows, log.rows());
+  const auto& time = log.time();
+  const auto& temp = log.column("sci_water_temp");
+  const auto& state = log.column("m_depth_state");
+  std::size_t blank = 0, under_water = 0;
+  for (std::size_t i = 1; i < log.rows(); ++i) {
+    // 1 Hz firmware cycles, a row kept every 2-5 s: 2..5 s apart (the last
+    // row, the mission's end, may come sooner).
+    CHECK(time[i] - time[i - 1] >= (i + 1 == log.rows() ? 1.0 : 2.0));
+    CHECK(time[i] - time[i - 1] <= 5.0);
+    if (state[i] != 0.0) {
+      ++under_water;
+      blank += std::isnan(temp[i]) ? 1 : 0;
+    }
+  }
+  const double blank_fraction = static_cast<double>(blank) / static_cast<double>(under_water);
+  CHECK(blank_fraction > 0.02 && blank_fraction < 0.09);  // 5 %, ~1000 rows
+
+  // At the surface (the SIL missions dive at once and end on surfacing, so
+  // this is fed directly): no rows for 20-200 s after arriving there.
+  model::GliderSimulator sim(vehicle, options.environment);
+  const std::string path = GLIDER_TEST_OUTPUT_DIR "/gaps_surface.csv";
+  sil::CsvFlightLog csv(path, {}, sim, sil::SimCtd(options.noise, 1), options.log_gaps, 7);
+  hal::FlightLogRecord record;
+  for (int second = 0; second < 600; ++second) {
+    record.time_us = static_cast<hal::Micros>(second) * hal::kMicrosPerSecond;
+    record.m_depth_state = second < 250 ? 1 : (second < 500 ? 0 : 1);  // dive, surface, dive
+    CHECK_TRUE(csv.write(record));
+  }
+  CHECK_TRUE(csv.close());
+  const flightlog::FlightLog surfaced = flightlog::read_flight_log(path);
+  double longest = 0.0, gap_start = 0.0;
+  for (std::size_t i = 1; i < surfaced.rows(); ++i) {
+    if (surfaced.time()[i] - surfaced.time()[i - 1] > longest) {
+      longest = surfaced.time()[i] - surfaced.time()[i - 1];
+      gap_start = surfaced.time()[i - 1];
+    }
+  }
+  CHECK(longest >= 20.0 && longest <= 205.0);
+  CHECK(gap_start >= 245.0 && gap_start < 250.0);
 }
 
 TEST(DemoMission, DepthSensorFailureAbortsAndSurfaces) {

@@ -24,8 +24,11 @@ except ImportError as e:  # pragma: no cover - depends on the machine
 from make_seawater_reference import in_funnel  # the one statement of seawater.hpp's density range
 
 # Same algorithms and coefficients as GSW-C: differences are rounding.
-TOLERANCES = {"SP": 1e-10, "SA": 1e-10, "CT": 1e-10, "rho": 1e-6}
-UNITS = {"SP": "", "SA": " g/kg", "CT": " degC", "rho": " kg/m^3"}
+# C is the inverse of PSS-78 (gsw.C_from_SP, mS/cm there): GSW stops its
+# modified Newton iteration after a fixed number of steps, the C++ code when
+# the step reaches rounding, so the two agree to a few 1e-12 S/m, not bits.
+TOLERANCES = {"SP": 1e-10, "SA": 1e-10, "CT": 1e-10, "rho": 1e-6, "C": 1e-10}
+UNITS = {"SP": "", "SA": " g/kg", "CT": " degC", "rho": " kg/m^3", "C": " S/m"}
 
 
 def draw(rng, n):
@@ -46,9 +49,9 @@ def run_probe(probe, c, t, p):
     lines = "".join(f"{a:.17g} {b:.17g} {d:.17g}\n" for a, b, d in zip(c, t, p))
     out = subprocess.run([probe], input=lines, capture_output=True, text=True, check=True).stdout
     values = np.array([[float(x) for x in line.split()] for line in out.splitlines()])
-    if values.shape != (len(c), 4):
-        sys.exit(f"check_seawater_vs_gsw: probe printed {values.shape}, expected {(len(c), 4)}")
-    return dict(zip(("SP", "SA", "CT", "rho"), values.T))
+    if values.shape != (len(c), 5):
+        sys.exit(f"check_seawater_vs_gsw: probe printed {values.shape}, expected {(len(c), 5)}")
+    return dict(zip(("SP", "SA", "CT", "rho", "C"), values.T))
 
 
 def main():
@@ -63,11 +66,13 @@ def main():
     sp = gsw.SP_from_C(c * 10.0, t, p)
     sa = gsw.SR_from_SP(sp)
     ct = gsw.CT_from_t(sa, t, p)
-    ref = {"SP": sp, "SA": sa, "CT": ct, "rho": gsw.rho(sa, ct, p)}
+    # C back from gsw's own SP (the probe inverts its SP, equal to rounding).
+    ref = {"SP": sp, "SA": sa, "CT": ct, "rho": gsw.rho(sa, ct, p), "C": gsw.C_from_SP(sp, t, p) / 10.0}
     # SP and SA are defined for every drawn point (SP < 42), CT for SA <= 42 g/kg
     # (SP <= 41.8), density only inside the funnel.
     everywhere = np.ones(len(c), bool)
-    expect_value = {"SP": everywhere, "SA": everywhere, "CT": sa <= 42.0, "rho": in_funnel(sa, ct, p)}
+    expect_value = {"SP": everywhere, "SA": everywhere, "CT": sa <= 42.0, "rho": in_funnel(sa, ct, p),
+                    "C": everywhere}
 
     failed = False
     print(f"seawater_probe vs python3-gsw {gsw.__version__}: {len(c)} points (seed {args.seed}), "

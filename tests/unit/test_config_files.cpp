@@ -1,7 +1,8 @@
 #include <CppUTest/TestHarness.h>
 
-#include <fstream>
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -9,6 +10,7 @@
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
 #include "glider/model/environment_file.hpp"
+#include "glider/model/seawater.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 
@@ -157,23 +159,62 @@ TEST(ConfigFiles, EveryShippedVehicleLoadsAndGlides) {
   LONGS_EQUAL(4, count);  // WE01, Stante's SLOCUM, IIT Madras, USM
 }
 
+namespace {
+
+// The message an environment file text is refused with ("" if accepted).
+std::string environment_error_of(const std::string& text) {
+  try {
+    glider::model::parse_environment_text(text, "env.toml");
+  } catch (const ConfigError& e) {
+    return std::string(e.what());
+  }
+  return std::string();
+}
+
+}  // namespace
+
 TEST(ConfigFiles, EnvironmentFileErrorsNameTheLine) {
   const auto env = glider::model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/tidal_shelf.toml");
   DOUBLES_EQUAL(1026.2, env.water.at(30.0, 0.0).density_kg_m3, 1e-12);
-  auto error_of = [](const std::string& text) {
-    try {
-      glider::model::parse_environment_text(text, "env.toml");
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
-  CHECK(error_of("[profile]\ndepth_m = [0, 10]\ndensity_kg_m3 = [1025]\n")
+  CHECK(environment_error_of("[profile]\ndepth_m = [0, 10]\ndensity_kg_m3 = [1025]\n")
             .find("env.toml:3:") == 0);  // one value for two depths
-  CHECK(error_of("[profile]\ndepth_m = [10, 0]\n").find("strictly") != std::string::npos);
-  CHECK(error_of("[profile]\ndepth_m = [0, \"x\"]\n").find("env.toml:2:") == 0);
-  CHECK(error_of("[profile]\ndepth_m = [0]\ncurent_east_m_s = [0.1]\n").find("unknown key 'profile.curent_east_m_s'") !=
+  CHECK(environment_error_of("[profile]\ndepth_m = [10, 0]\n").find("strictly") != std::string::npos);
+  CHECK(environment_error_of("[profile]\ndepth_m = [0, \"x\"]\n").find("env.toml:2:") == 0);
+  CHECK(environment_error_of("[profile]\ndepth_m = [0]\ncurent_east_m_s = [0.1]\n")
+            .find("unknown key 'profile.curent_east_m_s'") != std::string::npos);
+}
+
+TEST(ConfigFiles, EnvironmentWithSalinityIsTeos10Water) {
+  // A Baltic summer column: warm brackish water over a cold, saltier layer.
+  const auto env = glider::model::parse_environment_text(
+      "[profile]\ndepth_m = [0, 20, 40]\ntemperature_c = [17.0, 12.0, 5.0]\n"
+      "practical_salinity = [7.0, 7.5, 9.0]\n",
+      "baltic.toml");
+  CHECK_TRUE(env.water.has_salinity());
+  namespace sw = glider::model::seawater;
+  // The density the vehicle feels anywhere is what a CTD there measures:
+  // TEOS-10 of the water's T, S at the column's pressure, including between
+  // nodes and below the last one.
+  for (double depth : {0.0, 7.3, 20.0, 31.0, 40.0, 95.0}) {
+    const auto w = env.water.at(depth, 0.0);
+    const double p = glider::model::sea_pressure_dbar(depth);
+    const double c = sw::conductivity_from_practical_salinity(w.practical_salinity, w.temperature_c, p);
+    DOUBLES_EQUAL(sw::density_from_ctd(c, w.temperature_c, p), w.density_kg_m3, 1e-9);
+  }
+  CHECK(env.water.at(0.0, 0.0).density_kg_m3 > 1004.0 && env.water.at(0.0, 0.0).density_kg_m3 < 1005.0);
+  CHECK(env.water.at(40.0, 0.0).density_kg_m3 > 1007.0 && env.water.at(40.0, 0.0).density_kg_m3 < 1007.5);
+  DOUBLES_EQUAL(env.water.at(20.0, 0.0).density_kg_m3, env.water.nodes()[1].water.density_kg_m3, 0.0);
+  // A density-only column keeps working, with no salinity.
+  CHECK_FALSE(glider::model::still_water(1025.0).water.has_salinity());
+  CHECK(std::isnan(glider::model::still_water(1025.0).water.at(10.0, 0.0).practical_salinity));
+
+  CHECK(environment_error_of("[profile]\ndepth_m = [0]\ntemperature_c = [10]\npractical_salinity = [35]\n"
+                 "density_kg_m3 = [1025]\n")
+            .find("not both") != std::string::npos);
+  CHECK(environment_error_of("[profile]\ndepth_m = [0]\npractical_salinity = [35]\n").find("needs temperature_c") !=
         std::string::npos);
+  CHECK(environment_error_of("[profile]\ndepth_m = [0]\ntemperature_c = [10]\npractical_salinity = [45]\n")
+            .find("0..42") != std::string::npos);
 }
 
 TEST(ConfigFiles, VehicleFileTextAndLogMetadataRoundTrip) {

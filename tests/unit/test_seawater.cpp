@@ -46,6 +46,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kRhoTolKgM3 = 1e-6;  // the task's requirement
 constexpr double kSpTol = 1e-10;
 constexpr double kTemperatureTolC = 1e-10;
+// gsw.C_from_SP ends its iteration after a fixed number of steps; ours at
+// rounding: agreement to ~1e-13 S/m, the bound leaves room.
+constexpr double kConductivityTolSM = 1e-10;
 
 }  // namespace
 
@@ -91,6 +94,47 @@ TEST(Seawater, MatchesGswOnReferenceGrid) {
                 "|drho| %.2g kg/m^3 (chain from C,t,p %.2g)",
                 rows.size(), worst_sp, worst_sa, worst_pt0, worst_ct, worst_rho, worst_chain);
   UT_PRINT(summary);
+}
+
+TEST(Seawater, ConductivityFromSalinityMatchesGswOnReferenceGrid) {
+  // The grid's conductivities are gsw.C_from_SP of its SP values, and its SP
+  // column is gsw.SP_from_C of those conductivities: the inverse must give
+  // them back.
+  double worst = 0.0;
+  for (const Reference& r : load_reference()) {
+    const double c = conductivity_from_practical_salinity(r.sp, r.t_c, r.p_dbar);
+    DOUBLES_EQUAL(r.c_s_m, c, kConductivityTolSM);
+    worst = std::max(worst, std::abs(c - r.c_s_m));
+  }
+  char summary[96];
+  std::snprintf(summary, sizeof summary, "conductivity from SP vs gsw.C_from_SP: worst |dC| %.2g S/m", worst);
+  UT_PRINT(summary);
+}
+
+TEST(Seawater, ConductivityAndSalinityRoundTrip) {
+  // Fresh to brine-limit water, cold to hot, surface to the deep ocean,
+  // including the Hill et al. branch below SP = 2.
+  for (double sp : {0.01, 0.5, 1.999, 2.0, 2.001, 7.0, 20.0, 35.0, 41.9}) {
+    for (double t : {-2.0, 0.0, 6.0, 18.0, 30.0, 40.0}) {
+      for (double p : {0.0, 80.0, 1000.0, 6000.0}) {
+        const double c = conductivity_from_practical_salinity(sp, t, p);
+        CHECK(c >= 0.0);
+        DOUBLES_EQUAL(sp, practical_salinity(c, t, p), 1e-12);
+      }
+    }
+  }
+  // And from conductivity: C -> SP -> C (C = 0 gives SP -1e-19 by rounding,
+  // NaN by the range check: start just above).
+  for (double c = 0.0; c < 4.5; c += 0.37) {  // SP 0 .. ~40 at 12 degC
+    const double sp = practical_salinity(c + 0.01, 12.0, 50.0);
+    DOUBLES_EQUAL(c + 0.01, conductivity_from_practical_salinity(sp, 12.0, 50.0), 1e-12);
+  }
+  DOUBLES_EQUAL(0.0, conductivity_from_practical_salinity(0.0, 10.0, 0.0), 0.0);
+  CHECK(std::isnan(conductivity_from_practical_salinity(-0.1, 10.0, 0.0)));
+  CHECK(std::isnan(conductivity_from_practical_salinity(42.5, 10.0, 0.0)));
+  CHECK(std::isnan(conductivity_from_practical_salinity(35.0, 40.5, 0.0)));
+  CHECK(std::isnan(conductivity_from_practical_salinity(35.0, 10.0, -0.1)));
+  CHECK(std::isnan(conductivity_from_practical_salinity(kNaN, 10.0, 0.0)));
 }
 
 TEST(Seawater, Pss78DefinitionPoint) {

@@ -52,6 +52,15 @@ inline constexpr double kSurfaceSlackDbar = 1.0;
 // takes mS/cm: 1 S/m = 10 mS/cm).
 double practical_salinity(double conductivity_s_m, double temperature_c, double pressure_dbar) noexcept;
 
+// The inverse of practical_salinity(): conductivity [S/m] of water of
+// Practical Salinity SP at in-situ temperature and sea pressure, as
+// gsw_C_from_SP (which returns mS/cm). Solved by safeguarded Newton
+// iteration on practical_salinity() itself, so the two round-trip to
+// rounding; NaN outside the ranges above (SP 0 .. 42). What the SIL's CTD
+// logs for a water column given by temperature and salinity.
+double conductivity_from_practical_salinity(double practical_salinity, double temperature_c,
+                                            double pressure_dbar) noexcept;
+
 // Absolute Salinity [g/kg] as Reference Salinity, SA = SP * 35.16504/35
 // (gsw_SR_from_SP). This neglects the Absolute Salinity Anomaly, SA - SR,
 // that gsw_SA_from_SP adds from position and pressure: in the open ocean it

@@ -7,19 +7,38 @@
 #include "glider/hal/log_record.hpp"
 #include "glider/model/environment.hpp"
 #include "glider/model/simulator.hpp"
+#include "glider/sil/sim_ctd.hpp"
 
 namespace glider::sil {
 
 using Metadata = std::vector<std::pair<std::string, std::string>>;
 
+// Real Slocum logs are not one row per second: the flight computer logs a
+// dbd cycle every ~4 s (2-5 s), the science columns miss a cycle now and then,
+// and nothing is logged during the surface dialogs (gaps of 20-230 s; see
+// /work/shared/data/real/README.md). Enabled, the SIL log is thinned the same
+// way, from its own seeded stream, so analyses are tested on data shaped
+// like the real logs. The firmware and the run's statistics still see every
+// cycle: only the file is thinned.
+struct LogGaps {
+  bool enabled = false;
+  double min_interval_s = 2.0;       // a row is kept, then the next one at least
+  double max_interval_s = 5.0;       //   U(min, max) seconds later
+  double sci_blank_fraction = 0.05;  // of the kept rows, with empty sci_* fields
+  double surface_gap_min_s = 20.0;   // every time the glider reaches the surface
+  double surface_gap_max_s = 200.0;  //   (m_depth_state 0), no rows for U(min, max) s
+};
+
 // Writes the flight log in the project's CSV format (docs/flight-log.md):
 // `# key: value` metadata, one header line, one row per firmware cycle, with
-// the simulator's truths appended as sim_ columns. Numbers are written in
-// their shortest exact form (std::to_chars), so the same run gives the same
+// the simulator's truths appended as sim_ columns. The CTD columns (sci_*)
+// are the SimCtd's readings of the water at the vehicle. Numbers are written
+// in their shortest exact form (std::to_chars), so the same run gives the same
 // bytes; a value the firmware did not have (NaN) is an empty field.
 class CsvFlightLog final : public hal::LogSink {
  public:
-  CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim);
+  CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
+               const SimCtd& ctd, const LogGaps& gaps = {}, std::uint64_t gap_seed = 0);
 
   bool write(const hal::FlightLogRecord& record) override;
 
@@ -27,14 +46,25 @@ class CsvFlightLog final : public hal::LogSink {
   bool close();
   bool ok() const { return ok_; }
   const std::string& error() const { return error_; }
-  std::uint64_t rows() const { return rows_; }
+  std::uint64_t rows() const { return rows_; }  // written (after thinning)
 
   static const char* header();
 
  private:
+  // True if the row of this record is left out of the file (LogGaps);
+  // never when thinning is off.
+  bool thinned_out(const hal::FlightLogRecord& record);
+  hal::Micros draw_us(double min_s, double max_s);
+
   std::string path_;
   std::ofstream out_;
   const model::GliderSimulator& sim_;
+  SimCtd ctd_;
+  LogGaps gaps_;
+  PortableRandom gap_random_;
+  hal::Micros next_row_us_ = 0;          // thinning: the earliest time of the next row
+  hal::Micros surface_gap_end_us_ = -1;  // no rows before this while at the surface
+  bool at_surface_ = false;
   std::string line_;
   bool ok_ = true;
   std::string error_;

@@ -24,6 +24,7 @@ struct ScenarioOptions {
   hal::Micros period_us = fw::Executive::kDefaultPeriodUs;
   std::string log_path;  // empty: no CSV file
   Metadata metadata;     // extra `# key: value` lines (vehicle.* are added)
+  LogGaps log_gaps;      // thin the CSV like a real Slocum log (off by default)
   // The vehicle the log's vehicle.* metadata states; default: the one flown.
   // Tests that hide an effect fly a modified vehicle and log the nominal one.
   std::optional<model::VehicleParams> logged_vehicle;

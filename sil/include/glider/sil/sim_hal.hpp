@@ -1,6 +1,5 @@
 #pragma once
 #include <cstdint>
-#include <random>
 
 #include "glider/hal/attitude_sensor.hpp"
 #include "glider/hal/battery_slide.hpp"
@@ -8,17 +7,22 @@
 #include "glider/hal/depth_sensor.hpp"
 #include "glider/hal/rudder.hpp"
 #include "glider/model/simulator.hpp"
+#include "glider/sil/portable_random.hpp"
 #include "glider/sil/sim_clock.hpp"
 
 namespace glider::sil {
 
 // Measurement noise of the simulated sensors (1 sigma). Defaults are those of
-// a Slocum's pressure sensor and compass as seen in the real logs.
+// a Slocum's pressure sensor and compass as seen in the real logs, and of the
+// science bay's pumped CTD (SBE-41 class: its stated accuracy).
 struct SensorNoise {
   double depth_m = 0.01;
   double pitch_rad = 0.0017;  // 0.1 deg
   double roll_rad = 0.0017;
   double heading_rad = 0.0035;
+  double ctd_temperature_c = 0.002;
+  double ctd_conductivity_s_m = 0.0003;
+  double ctd_pressure_bar = 0.002;
 };
 
 // Faults a test can switch on to exercise the firmware's abort paths.
@@ -31,8 +35,8 @@ struct FaultInjection {
 };
 
 // The HAL implemented on the vehicle model. Deterministic: the noise comes
-// from a seeded generator with a portable normal transform (Box-Muller on
-// mt19937_64), so logs are bit-identical across runs and machines.
+// from a seeded PortableRandom, so logs are bit-identical across runs and
+// machines.
 class SimHal final : public hal::DepthSensor,
                      public hal::BuoyancyPump,
                      public hal::BatterySlide {
@@ -75,17 +79,15 @@ class SimHal final : public hal::DepthSensor,
     SimHal& owner_;
   };
 
-  double gaussian();
+  double gaussian() { return random_.gaussian(); }
 
   model::GliderSimulator& sim_;
   const SimClock& clock_;
   SensorNoise noise_;
-  std::mt19937_64 rng_;
+  PortableRandom random_;
   FaultInjection faults_{};
   AttitudePort attitude_port_{*this};
   RudderPort rudder_port_{*this};
-  bool has_spare_ = false;
-  double spare_ = 0.0;
 };
 
 }  // namespace glider::sil
