@@ -490,12 +490,21 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     current_fit = fit(set, current, train, heldout);
     for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
   }
+  // The measured density is a known input, not a fitted number: where the
+  // log has a CTD it is tried alone at the start of every round until it is
+  // taken, so that a fitted effect of the same shape (a negative hull
+  // compressibility in stratified water) cannot take its place.
+  bool ctd_declined_this_round = false;
   while (!remaining.empty()) {
+    const auto ctd = std::find(remaining.begin(), remaining.end(), Effect::kWaterDensity);
+    const bool ctd_alone = ctd != remaining.end() && !ctd_declined_this_round;
     std::optional<std::pair<std::size_t, FitResult>> best;
     Candidate best_candidate;
     for (std::size_t c = 0; c < remaining.size(); ++c) {
+      const bool is_ctd = remaining[c] == Effect::kWaterDensity;
+      if (ctd_alone != is_ctd) continue;
       Candidate trial = current;
-      if (remaining[c] == Effect::kWaterDensity) {
+      if (is_ctd) {
         trial.ctd_density = true;
       } else {
         trial.fitted.push_back(remaining[c]);
@@ -506,6 +515,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
         best_candidate = trial;
       }
     }
+    if (!best) break;
     const Effect effect = remaining[best->first];
     const FitResult& f = best->second;
     const bool helps = f.heldout_rms < current_fit.heldout_rms * (1.0 - options.min_heldout_improvement) &&
@@ -515,9 +525,14 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     if (effect != Effect::kWaterDensity) {
       const std::size_t j = best_candidate.fitted.size() - 1;
       const double value = f.parameters.values[static_cast<std::size_t>(effect)];
-      significant = std::abs(value - info(effect).nominal) > 1.96 * f.sigma[j];
+      significant = std::abs(value - info(effect).nominal) > 1.96 * f.sigma[j] && plausible(effect, value);
     }
-    if (!(helps && bic_better && significant)) break;
+    if (!(helps && bic_better && significant)) {
+      if (!ctd_alone) break;
+      ctd_declined_this_round = true;  // not yet: the other effects get their turn
+      continue;
+    }
+    ctd_declined_this_round = false;
     current = best_candidate;
     current_fit = f;
     d.findings.push_back(new_finding(effect, f.heldout_rms, d));

@@ -84,20 +84,27 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     const double v1 = start.glide ? start.glide->speed_m_s * std::cos(start.glide->alpha_rad) : 0.0;
     const double v3 = start.glide ? start.glide->speed_m_s * std::sin(start.glide->alpha_rad) : 0.0;
     model::PrescribedPitchDynamics::Impulse p = dynamics.impulse(v1, v3, in0);
-    auto record = [&](std::size_t k, const model::PrescribedPitchInputs& in) {
-      while (next < samples.size() && samples[next] < k) ++next;
-      if (next < samples.size() && samples[next] == k) {
-        if (depth_rate != nullptr) (*depth_rate)[next] = dynamics.depth_rate_m_s(p, in) + water_w(t.depth_m[k]);
-        if (speed != nullptr) (*speed)[next] = dynamics.velocities(p, in).norm();
-        ++next;
-      }
+    // The model's depth, integrated with the same RK4 weights, so that its
+    // depth rate can go through the very estimator the measurement went
+    // through (the track's windowed slope): like is compared with like, also
+    // in turns, where a +-5 s slope is not the instantaneous rate.
+    const std::size_t last_needed = std::min(end - 1, samples.back() + 16);
+    std::vector<double>& z = depth_buffer_;
+    z.assign(last_needed - first + 1, kNaN);
+    std::vector<double>& u = speed_buffer_;
+    u.assign(last_needed - first + 1, kNaN);
+    z[0] = t.depth_m[first];
+    u[0] = dynamics.velocities(p, in0).norm();
+    std::size_t flown = first;  // last sample reached with a finite state
+    auto rate_at = [&](const model::PrescribedPitchDynamics::Impulse& state, const model::PrescribedPitchInputs& in) {
+      return dynamics.depth_rate_m_s(state, in) + water_w(in.depth_m);
     };
-    record(first, in0);
-    for (std::size_t i = first; i + 1 < end && next < samples.size(); ++i) {
+    for (std::size_t i = first; i < last_needed; ++i) {
       const double dt = t.time_s[i + 1] - t.time_s[i];
       const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
       const double h = dt / steps;
       const double q = dt > 0.0 ? (t.pitch_rad[i + 1] - t.pitch_rad[i]) / dt : 0.0;
+      double depth = z[i - first];
       for (int s = 0; s < steps; ++s) {
         const double fa = static_cast<double>(s) / steps;
         const double fb = (s + 0.5) / steps;
@@ -105,15 +112,32 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
         const auto a = inputs(i, fa, q, lagged, fa);
         const auto b = inputs(i, fb, q, lagged, fa);
         const auto c = inputs(i, fc, q, lagged, fa);
-        const auto k1 = dynamics.rate(p, a);
-        const auto k2 = dynamics.rate(p + 0.5 * h * k1, b);
-        const auto k3 = dynamics.rate(p + 0.5 * h * k2, b);
-        const auto k4 = dynamics.rate(p + h * k3, c);
+        using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
+        const Impulse k1 = dynamics.rate(p, a);
+        const Impulse p2 = p + 0.5 * h * k1;
+        const Impulse k2 = dynamics.rate(p2, b);
+        const Impulse p3 = p + 0.5 * h * k2;
+        const Impulse k3 = dynamics.rate(p3, b);
+        const Impulse p4 = p + h * k3;
+        const Impulse k4 = dynamics.rate(p4, c);
+        depth += h / 6.0 * (rate_at(p, a) + 2.0 * rate_at(p2, b) + 2.0 * rate_at(p3, b) + rate_at(p4, c));
         p += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-        if (!p.allFinite()) return;  // the rest stays NaN: counted as unflyable
         lagged = c.pumped_volume_m3;
       }
-      record(i + 1, inputs(i, 1.0, q, lagged, 1.0));
+      if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
+      z[i + 1 - first] = depth;
+      u[i + 1 - first] = dynamics.velocities(p, inputs(i, 1.0, q, lagged, 1.0)).norm();
+      flown = i + 1;
+    }
+    const std::size_t count = flown - first + 1;
+    const flightlog::Column rate = depth_rate_estimate(std::span(t.time_s).subspan(first, count),
+                                                       std::span<const double>(z).first(count),
+                                                       t.rate_half_window_s, t.max_gap_s);
+    for (; next < samples.size() && samples[next] < end; ++next) {
+      const std::size_t k = samples[next];
+      if (k > flown) continue;
+      if (depth_rate != nullptr) (*depth_rate)[next] = rate[k - first];
+      if (speed != nullptr) (*speed)[next] = u[k - first];
     }
   }
 }

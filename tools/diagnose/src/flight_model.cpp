@@ -13,15 +13,21 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Plausible ranges: a glider a kilogram off trim could not fly its yos;
+// hull compressibility of 1.5e-9 /Pa would be a 0.15 % volume change per
+// 100 m, five times a soft Seaglider hull (~3e-10 /Pa, Eriksen et al. 2001);
+// thermal expansion 3e-4 /K is four times Seaglider's therm_expan; a vertical
+// velocity of 0.2 m/s is convection at its strongest; a pump lag beyond two
+// minutes is a broken pump, not a lag.
 const std::array<EffectInfo, kEffectCount> kInfo{{
-    {"buoyancy_offset", "g", 0.0, 20.0},
-    {"drag_change", "ratio", 1.0, 0.1},
-    {"hull_compressibility", "1/Pa", 0.0, 1e-10},
-    {"thermal_expansion", "1/K", 0.0, 1e-5},
-    {"vertical_water_velocity", "m/s", 0.0, 0.01},
-    {"water_density", "kg/m^3", 0.0, 1.0},
-    {"pitch_trim_offset", "in", 0.0, 0.01},
-    {"pump_lag", "s", 0.0, 5.0},
+    {"buoyancy_offset", "g", 0.0, 20.0, -1000.0, 1000.0},
+    {"drag_change", "ratio", 1.0, 0.1, 0.3, 5.0},
+    {"hull_compressibility", "1/Pa", 0.0, 1e-10, -1.5e-9, 1.5e-9},
+    {"thermal_expansion", "1/K", 0.0, 1e-5, -3e-4, 3e-4},
+    {"vertical_water_velocity", "m/s", 0.0, 0.01, -0.2, 0.2},
+    {"water_density", "kg/m^3", 0.0, 1.0, -40.0, 40.0},
+    {"pitch_trim_offset", "in", 0.0, 0.01, -2.0, 2.0},
+    {"pump_lag", "s", 0.0, 5.0, -120.0, 120.0},
 }};
 
 }  // namespace
@@ -38,6 +44,11 @@ model::VehicleParams apply(model::VehicleParams v, const EffectValues& x) {
 
 const EffectInfo& info(Effect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
 Effect effect_from_index(std::size_t index) { return static_cast<Effect>(index); }
+
+bool plausible(Effect effect, double value) {
+  const EffectInfo& i = info(effect);
+  return value >= i.plausible_min && value <= i.plausible_max;
+}
 
 EffectValues nominal_values() {
   EffectValues x{};

@@ -19,48 +19,56 @@ flightlog::Column interpolated_or_empty(const flightlog::FlightLog& log, const c
   return flightlog::interpolate_linear(log.time(), *column, max_gap_s);
 }
 
-// d(depth)/dt as the slope of a straight line fitted to the depth samples
-// within +-half_window_s (and no gap longer than max_gap_s): for a smooth
-// depth the slope is the derivative at the centre (exact for a parabola), and
-// the sensor's noise is averaged down (1 Hz, +-5 s: ~10x less than a centred
-// difference). Where the window holds no sample on one side, the plain
-// centred / one-sided difference of derive_depth_rate() is kept.
-flightlog::Column windowed_depth_rate(std::span<const double> time, std::span<const double> depth,
-                                      double half_window_s, double max_gap_s) {
-  flightlog::Column rate = flightlog::derive_depth_rate(time, depth, max_gap_s);
-  if (!(half_window_s > 0.0)) return rate;
+// A straight line fitted to the samples within +-half_window_s of each
+// sample (no gap longer than max_gap_s inside): its value or its slope at the
+// centre. For a smooth signal both are exact up to the curvature's (a
+// parabola's slope is exact), and the sensor's noise is averaged down (1 Hz,
+// +-5 s: ~10x less than a centred difference). Where the window holds no
+// sample on one side, `fallback` is kept.
+enum class LineAt { kValue, kSlope };
+flightlog::Column local_line(std::span<const double> time, std::span<const double> values, double half_window_s,
+                             double max_gap_s, LineAt what, flightlog::Column fallback) {
+  if (!(half_window_s > 0.0)) return fallback;
   const std::size_t n = time.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(depth[i])) continue;
+    if (!std::isfinite(values[i])) continue;
     std::size_t lo = i, hi = i;
     while (lo > 0 && time[i] - time[lo - 1] <= half_window_s && time[lo] - time[lo - 1] <= max_gap_s &&
-           std::isfinite(depth[lo - 1])) {
+           std::isfinite(values[lo - 1])) {
       --lo;
     }
     while (hi + 1 < n && time[hi + 1] - time[i] <= half_window_s && time[hi + 1] - time[hi] <= max_gap_s &&
-           std::isfinite(depth[hi + 1])) {
+           std::isfinite(values[hi + 1])) {
       ++hi;
     }
     if (lo == i || hi == i) continue;
-    double st = 0.0, sz = 0.0;
+    double st = 0.0, sv = 0.0;
     for (std::size_t j = lo; j <= hi; ++j) {
       st += time[j] - time[i];
-      sz += depth[j];
+      sv += values[j];
     }
     const double count = static_cast<double>(hi - lo + 1);
-    const double mean_t = st / count, mean_z = sz / count;
-    double stt = 0.0, stz = 0.0;
+    const double mean_t = st / count, mean_v = sv / count;
+    double stt = 0.0, stv = 0.0;
     for (std::size_t j = lo; j <= hi; ++j) {
       const double dt = time[j] - time[i] - mean_t;
       stt += dt * dt;
-      stz += dt * (depth[j] - mean_z);
+      stv += dt * (values[j] - mean_v);
     }
-    if (stt > 0.0) rate[i] = stz / stt;
+    if (!(stt > 0.0)) continue;
+    const double slope = stv / stt;
+    fallback[i] = what == LineAt::kSlope ? slope : mean_v - slope * mean_t;
   }
-  return rate;
+  return fallback;
 }
 
 }  // namespace
+
+flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth,
+                                      double half_window_s, double max_gap_s) {
+  return local_line(time, depth, half_window_s, max_gap_s, LineAt::kSlope,
+                    flightlog::derive_depth_rate(time, depth, max_gap_s));
+}
 
 Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options) {
   Track track;
@@ -72,8 +80,14 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
   // The measured depth rate: a centred slope of the depth, not Slocum's
   // m_depth_rate, which differences backwards (it trails by half a cycle,
   // ~2 s, which the fit would read as a pump lag).
-  const flightlog::Column rate = windowed_depth_rate(time, depth, options.rate_half_window_s, gap);
-  const flightlog::Column pitch = interpolated_or_empty(log, "m_pitch", gap);
+  const flightlog::Column rate = depth_rate_estimate(time, depth, options.rate_half_window_s, gap);
+  track.rate_half_window_s = options.rate_half_window_s;
+  track.max_gap_s = gap;
+  // The pitch is the model's input: its sensor noise (and wave-driven
+  // wobble) would add angle of attack, i.e. drag, that the glider never had.
+  const flightlog::Column raw_pitch = interpolated_or_empty(log, "m_pitch", gap);
+  const flightlog::Column pitch =
+      local_line(time, raw_pitch, options.pitch_half_window_s, gap, LineAt::kValue, raw_pitch);
   const flightlog::Column ballast = interpolated_or_empty(log, "m_ballast_pumped", gap);
   const flightlog::Column battpos = interpolated_or_empty(log, "m_battpos", gap);
   const flightlog::Column temperature = interpolated_or_empty(log, "sci_water_temp", gap);

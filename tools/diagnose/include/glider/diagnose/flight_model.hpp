@@ -32,7 +32,11 @@ struct EffectInfo {
   const char* unit;   // of the reported value
   double nominal;     // the value that means "no effect"
   double scale;       // typical size, for the optimiser's conditioning
+  double plausible_min, plausible_max;  // a fit outside is a model-structure artefact, not this effect
 };
+
+// Whether a fitted value is physically possible for the effect.
+bool plausible(Effect effect, double value);
 const EffectInfo& info(Effect effect);
 Effect effect_from_index(std::size_t index);
 

@@ -4,6 +4,7 @@
 // glider's (irregular, 1-5 s) cycles. The steady-glide samples of
 // observations.hpp are a subset; this is what the dynamic fit flies through.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "glider/flightlog/flight_log.hpp"
@@ -20,6 +21,7 @@ struct Track {
   std::vector<int> yo;                  // a dive and what follows it up to the next dive; -1 before the first
   std::vector<std::size_t> run_first;   // first sample of each run; a run ends where the next begins
   std::vector<std::size_t> scored;      // samples whose depth rate the fit compares (sorted)
+  double rate_half_window_s = 0.0, max_gap_s = 0.0;  // how depth_rate_m_s was estimated
   std::size_t size() const { return time_s.size(); }
   std::size_t run_end(std::size_t run) const { return run + 1 < run_first.size() ? run_first[run + 1] : size(); }
 };
@@ -33,8 +35,17 @@ struct TrackOptions {
   // The measured depth rate is the slope of the depth over +-this (0: a
   // centred difference, as gliderflight's np.gradient).
   double rate_half_window_s = 5.0;
+  // The measured pitch (the model's input) is smoothed the same way over +-this.
+  double pitch_half_window_s = 5.0;
   double spin_up_s = 30.0;   // the model starts in a steady glide: not scored until it has settled
 };
+
+// The depth rate estimator used for the measured depth (and for the
+// modelled one, so that the two are compared through the same filter): the
+// slope of a straight line fitted to the depth within +-half_window_s (no gap
+// longer than max_gap_s inside), else a centred / one-sided difference.
+flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth,
+                                      double half_window_s, double max_gap_s);
 
 // Runs need pitch, ballast and depth; battery, temperature and CTD density
 // are used where the log has them. Two optional columns beyond Slocum's:
