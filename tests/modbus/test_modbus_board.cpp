@@ -64,7 +64,7 @@ TEST(ModbusBoardFile, ProblemsNameFileLineAndKey) {
                error_of(replaced(kValid, "max_cc = 250.0", "max_cc = 300.0")).c_str());
   STRCMP_EQUAL("board.toml:14:15: unknown key 'slide.base_adress'",
                error_of(replaced(kValid, "base_address", "base_adress")).c_str());
-  STRCMP_EQUAL("board.toml:17:17: slide.travel_min_in: does not fit a 16-bit register at this counts_per_unit",
+  STRCMP_EQUAL("board.toml:16:17: slide.travel_min_in: does not fit a 16-bit register at this counts_per_unit",
                error_of(replaced(kValid, "travel_min_in = -1.2", "travel_min_in = -40.0")).c_str());
   CHECK(error_of(replaced(kValid, "[slide]\nbase_address = 32", "[slide]")).find("overlaps") != std::string::npos);
   STRCMP_EQUAL("board.toml: missing required key 'pump.rate_cc_s'",
