@@ -45,13 +45,9 @@ std::unique_ptr<ModbusLink> ModbusLink::open(const BusConfig& bus, std::string& 
   set_timeout(context, modbus_set_response_timeout, bus.response_timeout_ms);
   set_timeout(context, modbus_set_byte_timeout, bus.byte_timeout_ms);
   std::unique_ptr<ModbusLink> link(new ModbusLink(bus, context));
-  if (link->connect() && bus.transport == Transport::kRtu && bus.rs485) {
-    // Needs a serial driver with RS-485 support (TIOCSRS485); a pty or a
-    // USB adapter that switches direction itself answers ENOTTY. Not fatal.
-    if (modbus_rtu_set_serial_mode(context, MODBUS_RTU_RS485) == -1) {
-      warning = describe(bus) + ": RS-485 mode not available (" + modbus_strerror(errno) +
-                "); continuing in the port's own mode";
-    }
+  if (link->connect() && link->serial_mode_refused_) {
+    warning = describe(bus) + ": RS-485 mode not available (" + modbus_strerror(link->serial_mode_errno_) +
+              "); continuing in the port's own mode";
   }
   return link;
 }
@@ -77,6 +73,13 @@ bool ModbusLink::connect() noexcept {
   }
   connected_ = true;
   needs_flush_ = false;
+  // On every (re)connect: a USB adapter that appeared late still gets it.
+  // Needs a serial driver with RS-485 support (TIOCSRS485); a pty or an
+  // adapter that switches direction itself answers ENOTTY. Not fatal.
+  if (bus_.transport == Transport::kRtu && bus_.rs485) {
+    serial_mode_refused_ = modbus_rtu_set_serial_mode(context_, MODBUS_RTU_RS485) == -1;
+    if (serial_mode_refused_) serial_mode_errno_ = errno;
+  }
   return true;
 }
 

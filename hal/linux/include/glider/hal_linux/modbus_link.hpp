@@ -65,6 +65,8 @@ class ModbusLink {
   _modbus* context_;
   bool connected_ = false;
   bool needs_flush_ = false;
+  bool serial_mode_refused_ = false;
+  int serial_mode_errno_ = 0;
   const char* last_error_ = "";
   LinkStats stats_;
   Clock::duration attempt_cost_;
