@@ -1,6 +1,9 @@
 #pragma once
 // The one place where Slocum's units (cc, inches, degrees) meet SI.
+#include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <optional>
 
 namespace glider {
 
@@ -14,5 +17,17 @@ constexpr double in_to_m(double in) { return in * kMetresPerInch; }
 constexpr double m_to_in(double m) { return m / kMetresPerInch; }
 constexpr double deg_to_rad(double deg) { return deg * kRadPerDeg; }
 constexpr double rad_to_deg(double rad) { return rad / kRadPerDeg; }
+
+// Fixed-point register values of the Modbus actuators: a register holds
+// round(value * counts_per_unit) as a signed 16-bit count (boards/modbus_actuators.md).
+constexpr double counts_to_value(std::int16_t counts, double counts_per_unit) {
+  return static_cast<double>(counts) / counts_per_unit;
+}
+// Empty when the value does not fit a signed 16-bit register (never wrapped).
+inline std::optional<std::int16_t> value_to_counts(double value, double counts_per_unit) {
+  const double counts = std::round(value * counts_per_unit);
+  if (!(counts >= -32768.0 && counts <= 32767.0)) return std::nullopt;  // also NaN
+  return static_cast<std::int16_t>(counts);
+}
 
 }  // namespace glider

@@ -1,0 +1,80 @@
+// Modbus board files: the default one reads, malformed ones are refused with
+// file, line and problem.
+#include <CppUTest/TestHarness.h>
+
+#include "glider/config/toml_document.hpp"
+#include "glider/hal_linux/modbus_board.hpp"
+
+using namespace glider;
+
+namespace {
+
+const char* const kValid = R"(
+[bus]
+transport = "rtu"
+device = "/dev/ttyS1"
+[pump]
+counts_per_unit = 10
+travel_min_cc = -270.0
+travel_max_cc = 270.0
+min_cc = -250.0
+max_cc = 250.0
+rate_cc_s = 30.0
+max_rate_cc_s = 45.0
+[slide]
+base_address = 32
+counts_per_unit = 1000
+travel_min_in = -1.2
+travel_max_in = 1.2
+min_in = -1.0
+max_in = 1.0
+rate_in_s = 0.05
+max_rate_in_s = 0.1
+)";
+
+std::string error_of(const std::string& text) {
+  try {
+    hal_linux::parse_modbus_board(text, "board.toml");
+  } catch (const config::ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
+
+}  // namespace
+
+TEST_GROUP(ModbusBoardFile){};
+
+TEST(ModbusBoardFile, TheDefaultBoardReads) {
+  const auto board = hal_linux::load_modbus_board(GLIDER_SOURCE_DIR "/boards/actuators/default_modbus.toml");
+  CHECK(board.bus.transport == hal_linux::Transport::kTcp);
+  CHECK_EQUAL(32, board.slide.base_address);
+  DOUBLES_EQUAL(30.0, board.pump.rate, 0.0);
+  STRCMP_EQUAL("rtu /dev/ttyS1 19200 8N1", hal_linux::describe(hal_linux::parse_modbus_board(kValid, "b").bus).c_str());
+}
+
+TEST(ModbusBoardFile, ProblemsNameFileLineAndKey) {
+  STRCMP_EQUAL("board.toml:3:13: bus.transport: expected \"tcp\" or \"rtu\", not \"can\"",
+               error_of(replaced(kValid, "\"rtu\"", "\"can\"")).c_str());
+  STRCMP_EQUAL("board.toml:10:10: pump.max_cc: command limits must be increasing and inside the travel",
+               error_of(replaced(kValid, "max_cc = 250.0", "max_cc = 300.0")).c_str());
+  STRCMP_EQUAL("board.toml:14:15: unknown key 'slide.base_adress'",
+               error_of(replaced(kValid, "base_address", "base_adress")).c_str());
+  STRCMP_EQUAL("board.toml:16:17: slide.travel_min_in: does not fit a 16-bit register at this counts_per_unit",
+               error_of(replaced(kValid, "travel_min_in = -1.2", "travel_min_in = -40.0")).c_str());
+  CHECK(error_of(replaced(kValid, "[slide]\nbase_address = 32", "[slide]")).find("overlaps") != std::string::npos);
+  STRCMP_EQUAL("board.toml: missing required key 'pump.rate_cc_s'",
+               error_of(replaced(kValid, "rate_cc_s = 30.0", "")).c_str());
+}
+
+TEST(ModbusBoardFile, EndpointOverrides) {
+  hal_linux::BusConfig bus;
+  hal_linux::use_tcp_endpoint(bus, "10.0.0.7:502");
+  STRCMP_EQUAL("tcp 10.0.0.7:502", hal_linux::describe(bus).c_str());
+  CHECK_THROWS(config::ConfigError, hal_linux::use_tcp_endpoint(bus, "10.0.0.7"));
+  CHECK_THROWS(config::ConfigError, hal_linux::use_tcp_endpoint(bus, "host:99999"));
+}
