@@ -19,14 +19,19 @@ WaterSample water_of(const PrescribedPitchInputs& in) {
   return w;
 }
 
+// Body velocities from the impulses with the pitch rate prescribed: A's 2x2
+// translational block is diagonal, its coupling to q is the third column.
+Eigen::Vector2d velocities_from(const GliderDynamics::MassProperties& mp, const Eigen::Vector2d& p, double q) {
+  return {(p[0] - mp.a(0, 2) * q) / mp.a(0, 0), (p[1] - mp.a(1, 2) * q) / mp.a(1, 1)};
+}
+
 }  // namespace
 
 PrescribedPitchDynamics::PrescribedPitchDynamics(const VehicleParams& vehicle, double gravity_m_s2)
-    : dynamics_(vehicle, Environment{WaterColumn(vehicle.trim_density_kg_m3), gravity_m_s2}), gravity_(gravity_m_s2) {}
+    : dynamics_(vehicle, Environment{WaterColumn(vehicle.trim_density_kg_m3), gravity_m_s2}) {}
 
 Eigen::Vector2d PrescribedPitchDynamics::velocities(const Impulse& p, const PrescribedPitchInputs& in) const {
-  const auto mp = dynamics_.mass_properties(masses_of(in), in.density_kg_m3);
-  return {(p[0] - mp.a(0, 2) * in.q_rad_s) / mp.a(0, 0), (p[1] - mp.a(1, 2) * in.q_rad_s) / mp.a(1, 1)};
+  return velocities_from(dynamics_.mass_properties(masses_of(in), in.density_kg_m3), p, in.q_rad_s);
 }
 
 PrescribedPitchDynamics::Impulse PrescribedPitchDynamics::impulse(double v1, double v3,
@@ -43,12 +48,12 @@ PrescribedPitchDynamics::Impulse PrescribedPitchDynamics::rate(const Impulse& p,
                                                                const PrescribedPitchInputs& in) const {
   const WaterSample water = water_of(in);
   const auto mp = dynamics_.mass_properties(masses_of(in), in.density_kg_m3);
-  const double v1 = (p[0] - mp.a(0, 2) * in.q_rad_s) / mp.a(0, 0);
-  const double v3 = (p[1] - mp.a(1, 2) * in.q_rad_s) / mp.a(1, 1);
+  const Eigen::Vector2d v = velocities_from(mp, p, in.q_rad_s);
   const double net_kg = mp.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water);
-  const FlowForces flow = flow_forces(dynamics_.vehicle().hydro, in.density_kg_m3, v1, v3);
-  const double f1 = -net_kg * gravity_ * std::sin(in.theta_rad) + flow.f1;
-  const double f3 = net_kg * gravity_ * std::cos(in.theta_rad) + flow.f3;
+  const FlowForces flow = flow_forces(dynamics_.vehicle().hydro, in.density_kg_m3, v[0], v[1]);
+  const double g = dynamics_.environment().gravity_m_s2;
+  const double f1 = -net_kg * g * std::sin(in.theta_rad) + flow.f1;
+  const double f3 = net_kg * g * std::cos(in.theta_rad) + flow.f3;
   return {f1 - in.q_rad_s * p[1], f3 + in.q_rad_s * p[0]};
 }
 

@@ -397,7 +397,6 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     nominal.trim_density_kg_m3 = *rho;
     d.retrimmed_to_kg_m3 = *rho;
   }
-  d.model = options.model;
   const FlightModel steady_model(nominal, obs);
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
   const bool dynamic = options.model == FlightModelKind::kDynamic && !obs.track.scored.empty();

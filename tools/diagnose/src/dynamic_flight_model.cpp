@@ -56,8 +56,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
   for (std::size_t run = 0; run < t.run_first.size() && next < samples.size(); ++run) {
     const std::size_t first = t.run_first[run];
     const std::size_t end = t.run_end(run);
-    while (next < samples.size() && samples[next] < first) ++next;  // left behind by a failed run
-    if (next == samples.size() || samples[next] >= end) continue;   // nothing requested in this run
+    if (samples[next] >= end) continue;  // nothing requested in this run (every sample is in a run)
     // Inputs at fraction f of the interval [i, i + 1], with the displaced
     // volume lagged from `lagged0` at the interval's start fraction f0.
     auto inputs = [&](std::size_t i, double f, double q, double lagged0, double f0) {
@@ -88,7 +87,11 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     // depth rate can go through the very estimator the measurement went
     // through (the track's windowed slope): like is compared with like, also
     // in turns, where a +-5 s slope is not the instantaneous rate.
-    const std::size_t last_needed = std::min(end - 1, samples.back() + 16);
+    // Fly up to the last requested sample of this run and on through its
+    // estimator window (the slope at a sample uses the samples after it).
+    std::size_t last_needed = std::min(end - 1, samples.back());
+    const double window_end_s = t.time_s[last_needed] + t.rate_half_window_s;
+    while (last_needed + 1 < end && t.time_s[last_needed + 1] <= window_end_s) ++last_needed;
     std::vector<double>& z = depth_buffer_;
     z.assign(last_needed - first + 1, kNaN);
     std::vector<double>& u = speed_buffer_;

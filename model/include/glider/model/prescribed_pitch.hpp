@@ -50,8 +50,7 @@ class PrescribedPitchDynamics {
   const GliderDynamics& dynamics() const { return dynamics_; }
 
  private:
-  GliderDynamics dynamics_;
-  double gravity_;
+  GliderDynamics dynamics_;  // its environment carries only the gravity
 };
 
 }  // namespace glider::model

@@ -39,7 +39,7 @@ class DynamicFlightModel final : public DepthRateModel {
   model::VehicleParams nominal_;
   const Track& track_;
   double max_step_s_;
-  mutable std::vector<double> depth_buffer_, speed_buffer_;  // per run, reused (no allocation per run)
+  mutable std::vector<double> depth_buffer_, speed_buffer_;  // per run, reused across runs and calls
 };
 
 }  // namespace glider::diagnose
