@@ -356,6 +356,81 @@ std::optional<SpeedScore> score_speed(const DynamicFlightModel& model, const Tra
   return score;
 }
 
+Candidate without(Candidate c, Effect e) {
+  if (e == Effect::kWaterDensity) {
+    c.ctd_density = false;
+  } else {
+    std::erase(c.fitted, e);
+  }
+  return c;
+}
+
+// Does the final joint fit put the effect's value outside its nominal, with
+// 95 % confidence, and inside the plausible range?
+bool interval_excludes_nominal(const Candidate& c, const FitResult& f, Effect e) {
+  if (e == Effect::kWaterDensity) return true;  // measured, not fitted
+  const auto it = std::find(c.fitted.begin(), c.fitted.end(), e);
+  const std::size_t j = static_cast<std::size_t>(it - c.fitted.begin());
+  const double value = f.parameters.values[static_cast<std::size_t>(e)];
+  return std::abs(value - info(e).nominal) > 1.96 * f.sigma[j] && plausible(e, value);
+}
+
+// Forward selection is greedy: an effect taken early (a vertical-velocity
+// profile standing in for a buoyancy offset before the drag is known) can
+// become redundant once the others are in. Backward step: every effect must
+// still earn its place in the final joint fit - removing it must cost the
+// held-out error the same margins that let it in, raise the BIC, and its
+// interval must exclude the nominal. The weakest that does not is removed
+// and the rest refitted, until all do. Then the findings are ranked by what
+// each one is worth (the held-out error without it, largest first), and each
+// gets the held-out error and gain of the model with it and those ranked
+// above it.
+void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
+                       std::span<const std::size_t> heldout, const DiagnoseOptions& options, Candidate& current,
+                       FitResult& current_fit, Diagnosis& d) {
+  std::vector<std::pair<Effect, double>> worth;  // held-out RMS without the effect
+  for (;;) {
+    worth.clear();
+    std::optional<std::pair<Effect, FitResult>> weakest;
+    for (const Finding& finding : d.findings) {
+      const Effect e = finding.effect;
+      FitResult reduced = fit(set, without(current, e), train, heldout);
+      worth.emplace_back(e, reduced.heldout_rms);
+      const bool earns = current_fit.heldout_rms < reduced.heldout_rms * (1.0 - options.min_heldout_improvement) &&
+                         current_fit.heldout_rms < reduced.heldout_rms - options.min_heldout_improvement_m_s &&
+                         current_fit.bic < reduced.bic && interval_excludes_nominal(current, current_fit, e);
+      if (!earns && (!weakest || reduced.heldout_rms < weakest->second.heldout_rms)) {
+        weakest.emplace(e, std::move(reduced));
+      }
+    }
+    if (!weakest) break;
+    current = without(current, weakest->first);
+    current_fit = std::move(weakest->second);
+    std::erase_if(d.findings, [&](const Finding& f) { return f.effect == weakest->first; });
+  }
+  auto worth_of = [&](Effect e) {
+    for (const auto& [effect, rms] : worth) {
+      if (effect == e) return rms;
+    }
+    return 0.0;
+  };
+  std::stable_sort(d.findings.begin(), d.findings.end(),
+                   [&](const Finding& a, const Finding& b) { return worth_of(a.effect) > worth_of(b.effect); });
+  Candidate cumulative;
+  for (std::size_t k = 0; k < d.findings.size(); ++k) {
+    Finding& finding = d.findings[k];
+    if (finding.effect == Effect::kWaterDensity) {
+      cumulative.ctd_density = true;
+    } else {
+      cumulative.fitted.push_back(finding.effect);
+    }
+    const double rms = k + 1 == d.findings.size() ? current_fit.heldout_rms
+                                                  : fit(set, cumulative, train, heldout).heldout_rms;
+    finding.heldout_rms_m_s = rms;
+    finding.gain = 1.0 - rms / d.baseline.heldout_rms_m_s;
+  }
+}
+
 // A finding before its value is known (that comes from the final joint fit).
 Finding new_finding(Effect effect, double heldout_rms_m_s, const Diagnosis& d) {
   Finding finding;
@@ -520,13 +595,12 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     const bool helps = f.heldout_rms < current_fit.heldout_rms * (1.0 - options.min_heldout_improvement) &&
                        f.heldout_rms < current_fit.heldout_rms - options.min_heldout_improvement_m_s;
     const bool bic_better = f.bic < current_fit.bic;
-    bool significant = true;
-    if (effect != Effect::kWaterDensity) {
-      const std::size_t j = best_candidate.fitted.size() - 1;
-      const double value = f.parameters.values[static_cast<std::size_t>(effect)];
-      significant = std::abs(value - info(effect).nominal) > 1.96 * f.sigma[j] && plausible(effect, value);
-    }
-    if (!(helps && bic_better && significant)) {
+    // Its interval is judged in the final joint fit (backward step below):
+    // while another effect is still missing, the residuals are serially
+    // correlated and inflate every interval.
+    const bool is_plausible =
+        effect == Effect::kWaterDensity || plausible(effect, f.parameters.values[static_cast<std::size_t>(effect)]);
+    if (!(helps && bic_better && is_plausible)) {
       if (!ctd_alone) break;
       ctd_declined_this_round = true;  // not yet: the other effects get their turn
       continue;
@@ -537,6 +611,8 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     d.findings.push_back(new_finding(effect, f.heldout_rms, d));
     remaining.erase(remaining.begin() + static_cast<long>(best->first));
   }
+
+  if (options.fit_only.empty()) backward_and_rank(set, train, heldout, options, current, current_fit, d);
 
   // Report every finding's value from the final joint fit.
   for (Finding& finding : d.findings) {

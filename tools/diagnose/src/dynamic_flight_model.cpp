@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Dense>
+
 #include "glider/model/first_order_lag.hpp"
 #include "glider/model/prescribed_pitch.hpp"
 #include "glider/model/steady_glide.hpp"
@@ -75,63 +77,127 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
       return in;
     };
     model::PrescribedPitchInputs in0 = inputs(first, 0.0, 0.0, cc_to_m3(t.ballast_cc[first]), 0.0);
-    double lagged = in0.pumped_volume_m3;
-    // Start in the steady glide at the first pitch, else at rest (the
-    // track's spin-up keeps the start's transient out of the score).
-    const auto start = model::steady_glide_for_pitch(v.hydro, in0.density_kg_m3, in0.theta_rad,
-                                                     dynamics.net_buoyancy_kg(in0));
-    const double v1 = start.glide ? start.glide->speed_m_s * std::cos(start.glide->alpha_rad) : 0.0;
-    const double v3 = start.glide ? start.glide->speed_m_s * std::sin(start.glide->alpha_rad) : 0.0;
-    model::PrescribedPitchDynamics::Impulse p = dynamics.impulse(v1, v3, in0);
-    // The model's depth, integrated with the same RK4 weights, so that its
+    using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
+    auto rate_at = [&](const Impulse& state, const model::PrescribedPitchInputs& in) {
+      return dynamics.depth_rate_m_s(state, in) + water_w(in.depth_m);
+    };
+    // Flies the run from its first sample with body velocities (v1, v3) up
+    // to sample `last`: the model's depth at each sample into z (from the
+    // measured first depth), its speed into u when asked. Returns the last
+    // sample reached with a finite state.
+    auto fly_run = [&](double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u) {
+      Impulse p = dynamics.impulse(v1, v3, in0);
+      double lagged = in0.pumped_volume_m3;
+      z.assign(last - first + 1, kNaN);
+      if (u != nullptr) u->assign(last - first + 1, kNaN);
+      z[0] = t.depth_m[first];
+      if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0).norm();
+      std::size_t flown = first;
+      for (std::size_t i = first; i < last; ++i) {
+        const double dt = t.time_s[i + 1] - t.time_s[i];
+        const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
+        const double h = dt / steps;
+        const double q = dt > 0.0 ? (t.pitch_rad[i + 1] - t.pitch_rad[i]) / dt : 0.0;
+        double depth = z[i - first];
+        for (int s = 0; s < steps; ++s) {
+          const double fa = static_cast<double>(s) / steps;
+          const double fb = (s + 0.5) / steps;
+          const double fc = static_cast<double>(s + 1) / steps;
+          const auto a = inputs(i, fa, q, lagged, fa);
+          const auto b = inputs(i, fb, q, lagged, fa);
+          const auto c = inputs(i, fc, q, lagged, fa);
+          const Impulse k1 = dynamics.rate(p, a);
+          const Impulse p2 = p + 0.5 * h * k1;
+          const Impulse k2 = dynamics.rate(p2, b);
+          const Impulse p3 = p + 0.5 * h * k2;
+          const Impulse k3 = dynamics.rate(p3, b);
+          const Impulse p4 = p + h * k3;
+          const Impulse k4 = dynamics.rate(p4, c);
+          depth += h / 6.0 * (rate_at(p, a) + 2.0 * rate_at(p2, b) + 2.0 * rate_at(p3, b) + rate_at(p4, c));
+          p += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+          lagged = c.pumped_volume_m3;
+        }
+        if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
+        z[i + 1 - first] = depth;
+        if (u != nullptr) (*u)[i + 1 - first] = dynamics.velocities(p, inputs(i, 1.0, q, lagged, 1.0)).norm();
+        flown = i + 1;
+      }
+      return flown;
+    };
+    // The start. A run begins where the glider leaves the surface or a gap,
+    // far from a steady glide: leaving the surface it sinks at a large angle
+    // of attack and takes a minute or two to reach its glide (surge is
+    // slow). Started on the steady glide, the model dives too fast for that
+    // long, in the warm top layer, and a fit reads it as buoyancy that
+    // follows temperature (+5.5e-6 /K of thermal expansion on clean SIL
+    // data). So the two body velocities at the start are nuisance
+    // parameters, fitted (Gauss-Newton) to the measured depth over the
+    // spin-up, which is never scored; the guess is the steady glide at the
+    // first pitch, scaled to the measured depth rate.
+    double v1 = 0.0, v3 = 0.0;
+    const auto steady = model::steady_glide_for_pitch(v.hydro, in0.density_kg_m3, in0.theta_rad,
+                                                      dynamics.net_buoyancy_kg(in0));
+    if (steady.glide) {
+      v1 = steady.glide->speed_m_s * std::cos(steady.glide->alpha_rad);
+      v3 = steady.glide->speed_m_s * std::sin(steady.glide->alpha_rad);
+      const double steady_rate = dynamics.depth_rate_m_s(dynamics.impulse(v1, v3, in0), in0);
+      const double measured_rate = t.depth_rate_m_s[first] - water_w(in0.depth_m);
+      if (std::abs(steady_rate) > 1e-3 && std::isfinite(measured_rate)) {
+        const double scale = std::clamp(measured_rate / steady_rate, 0.0, 1.5);
+        v1 *= scale;
+        v3 *= scale;
+      }
+    }
+    std::size_t fit_last = first;
+    while (fit_last + 1 < end && t.time_s[fit_last + 1] - t.time_s[first] <= t.spin_up_s) ++fit_last;
+    if (fit_last >= first + 3) {
+      const std::size_t n = fit_last - first;
+      std::vector<double>& zf = fit_buffer_;
+      auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
+        if (fly_run(a, b, fit_last, zf, nullptr) != fit_last) return false;
+        r.resize(static_cast<Eigen::Index>(n));
+        for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first + k];
+        return true;
+      };
+      Eigen::VectorXd r, r_trial, r_a, r_b;
+      if (misfit(v1, v3, r)) {
+        constexpr double kDelta = 1e-4;  // m/s, finite-difference step
+        double lambda = 1e-3;
+        for (int iteration = 0; iteration < 20; ++iteration) {
+          if (!misfit(v1 + kDelta, v3, r_a) || !misfit(v1, v3 + kDelta, r_b)) break;
+          Eigen::MatrixXd jac(r.size(), 2);
+          jac.col(0) = (r_a - r) / kDelta;
+          jac.col(1) = (r_b - r) / kDelta;
+          Eigen::Matrix2d normal = jac.transpose() * jac;
+          normal.diagonal() *= 1.0 + lambda;
+          const Eigen::Vector2d step = normal.ldlt().solve(-jac.transpose() * r);
+          if (!step.allFinite()) break;
+          const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
+          if (misfit(a, b, r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+            v1 = a;
+            v3 = b;
+            r.swap(r_trial);
+            lambda *= 0.1;
+            if (step.norm() < 1e-7) break;
+          } else {
+            lambda *= 10.0;
+            if (lambda > 1e6) break;
+          }
+        }
+      }
+    }
+    // Fly up to the last requested sample of this run and on through its
+    // estimator window (the slope at a sample uses the samples after it).
+    // The model's depth is integrated with the same RK4 weights, so that its
     // depth rate can go through the very estimator the measurement went
     // through (the track's windowed slope): like is compared with like, also
     // in turns, where a +-5 s slope is not the instantaneous rate.
-    // Fly up to the last requested sample of this run and on through its
-    // estimator window (the slope at a sample uses the samples after it).
     std::size_t last_needed = std::min(end - 1, samples.back());
     const double window_end_s = t.time_s[last_needed] + t.rate_half_window_s;
     while (last_needed + 1 < end && t.time_s[last_needed + 1] <= window_end_s) ++last_needed;
     std::vector<double>& z = depth_buffer_;
-    z.assign(last_needed - first + 1, kNaN);
     std::vector<double>& u = speed_buffer_;
-    u.assign(last_needed - first + 1, kNaN);
-    z[0] = t.depth_m[first];
-    u[0] = dynamics.velocities(p, in0).norm();
-    std::size_t flown = first;  // last sample reached with a finite state
-    auto rate_at = [&](const model::PrescribedPitchDynamics::Impulse& state, const model::PrescribedPitchInputs& in) {
-      return dynamics.depth_rate_m_s(state, in) + water_w(in.depth_m);
-    };
-    for (std::size_t i = first; i < last_needed; ++i) {
-      const double dt = t.time_s[i + 1] - t.time_s[i];
-      const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
-      const double h = dt / steps;
-      const double q = dt > 0.0 ? (t.pitch_rad[i + 1] - t.pitch_rad[i]) / dt : 0.0;
-      double depth = z[i - first];
-      for (int s = 0; s < steps; ++s) {
-        const double fa = static_cast<double>(s) / steps;
-        const double fb = (s + 0.5) / steps;
-        const double fc = static_cast<double>(s + 1) / steps;
-        const auto a = inputs(i, fa, q, lagged, fa);
-        const auto b = inputs(i, fb, q, lagged, fa);
-        const auto c = inputs(i, fc, q, lagged, fa);
-        using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
-        const Impulse k1 = dynamics.rate(p, a);
-        const Impulse p2 = p + 0.5 * h * k1;
-        const Impulse k2 = dynamics.rate(p2, b);
-        const Impulse p3 = p + 0.5 * h * k2;
-        const Impulse k3 = dynamics.rate(p3, b);
-        const Impulse p4 = p + h * k3;
-        const Impulse k4 = dynamics.rate(p4, c);
-        depth += h / 6.0 * (rate_at(p, a) + 2.0 * rate_at(p2, b) + 2.0 * rate_at(p3, b) + rate_at(p4, c));
-        p += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-        lagged = c.pumped_volume_m3;
-      }
-      if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
-      z[i + 1 - first] = depth;
-      u[i + 1 - first] = dynamics.velocities(p, inputs(i, 1.0, q, lagged, 1.0)).norm();
-      flown = i + 1;
-    }
+    const std::size_t flown = fly_run(v1, v3, last_needed, z, speed != nullptr ? &u : nullptr);
     const std::size_t count = flown - first + 1;
     const flightlog::Column rate = depth_rate_estimate(std::span(t.time_s).subspan(first, count),
                                                        std::span<const double>(z).first(count),

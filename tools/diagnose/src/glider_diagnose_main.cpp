@@ -201,6 +201,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> fit_only;
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
+  double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
   app.add_option("LOG", log_path, "flight log (CSV, docs/flight-log.md)")->required();
   app.add_option("--vehicle", vehicle_path, "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
       ->check(CLI::ExistingFile);
@@ -220,6 +221,9 @@ int main(int argc, char** argv) {
       ->expected(2);
   app.add_option("--rate-window", rate_window_s,
                  "the measured depth rate is the slope of the depth over +-this many seconds (0: centred difference)")
+      ->check(CLI::Range(0.0, 60.0));
+  app.add_option("--pitch-window", pitch_window_s,
+                 "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)")
       ->check(CLI::Range(0.0, 60.0));
   CLI11_PARSE(app, argc, argv);
   glider::diagnose::DiagnoseOptions options;
@@ -244,6 +248,7 @@ int main(int argc, char** argv) {
   }
   glider::diagnose::ObservationOptions observation_options;
   observation_options.track.rate_half_window_s = rate_window_s;
+  observation_options.track.pitch_half_window_s = pitch_window_s;
 
   try {
     glider::flightlog::ReadOptions read_options;

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <span>
+#include <utility>
+
+#include <Eigen/Dense>
 
 #include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/gaps.hpp"
@@ -20,27 +23,33 @@ flightlog::Column interpolated_or_empty(const flightlog::FlightLog& log, const c
 }
 
 // A straight line fitted to the samples within +-half_window_s of each
-// sample (no gap longer than max_gap_s inside): its value or its slope at the
-// centre. For a smooth signal both are exact up to the curvature's (a
+// sample (no gap longer than max_gap_s inside): its slope at the centre. For a smooth signal both are exact up to the curvature's (a
 // parabola's slope is exact), and the sensor's noise is averaged down (1 Hz,
 // +-5 s: ~10x less than a centred difference). Where the window holds no
 // sample on one side, `fallback` is kept.
-enum class LineAt { kValue, kSlope };
-flightlog::Column local_line(std::span<const double> time, std::span<const double> values, double half_window_s,
-                             double max_gap_s, LineAt what, flightlog::Column fallback) {
+// The samples within +-half_window_s of sample i, with finite values and no
+// gap longer than max_gap_s between neighbours: [lo, hi].
+std::pair<std::size_t, std::size_t> window_around(std::span<const double> time, std::span<const double> values,
+                                                  std::size_t i, double half_window_s, double max_gap_s) {
+  std::size_t lo = i, hi = i;
+  while (lo > 0 && time[i] - time[lo - 1] <= half_window_s && time[lo] - time[lo - 1] <= max_gap_s &&
+         std::isfinite(values[lo - 1])) {
+    --lo;
+  }
+  while (hi + 1 < time.size() && time[hi + 1] - time[i] <= half_window_s && time[hi + 1] - time[hi] <= max_gap_s &&
+         std::isfinite(values[hi + 1])) {
+    ++hi;
+  }
+  return {lo, hi};
+}
+
+flightlog::Column local_slope(std::span<const double> time, std::span<const double> values, double half_window_s,
+                              double max_gap_s, flightlog::Column fallback) {
   if (!(half_window_s > 0.0)) return fallback;
   const std::size_t n = time.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(values[i])) continue;
-    std::size_t lo = i, hi = i;
-    while (lo > 0 && time[i] - time[lo - 1] <= half_window_s && time[lo] - time[lo - 1] <= max_gap_s &&
-           std::isfinite(values[lo - 1])) {
-      --lo;
-    }
-    while (hi + 1 < n && time[hi + 1] - time[i] <= half_window_s && time[hi + 1] - time[hi] <= max_gap_s &&
-           std::isfinite(values[hi + 1])) {
-      ++hi;
-    }
+    const auto [lo, hi] = window_around(time, values, i, half_window_s, max_gap_s);
     if (lo == i || hi == i) continue;
     double st = 0.0, sv = 0.0;
     for (std::size_t j = lo; j <= hi; ++j) {
@@ -56,18 +65,43 @@ flightlog::Column local_line(std::span<const double> time, std::span<const doubl
       stv += dt * (values[j] - mean_v);
     }
     if (!(stt > 0.0)) continue;
-    const double slope = stv / stt;
-    fallback[i] = what == LineAt::kSlope ? slope : mean_v - slope * mean_t;
+    fallback[i] = stv / stt;
   }
   return fallback;
+}
+
+// A parabola fitted to the samples within +-half_window_s of each sample
+// (same window rule as local_slope), its value at the centre: noise is
+// averaged down as by the line, but a turn's curvature is kept (the line
+// cuts the corners of a pitch turn, which the model then flies).
+flightlog::Column local_parabola_value(std::span<const double> time, std::span<const double> values,
+                                       double half_window_s, double max_gap_s) {
+  flightlog::Column out(values.begin(), values.end());
+  if (!(half_window_s > 0.0)) return out;
+  const std::size_t n = time.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(values[i])) continue;
+    const auto [lo, hi] = window_around(time, values, i, half_window_s, max_gap_s);
+    if (hi - lo < 3 || lo == i || hi == i) continue;  // a parabola needs more than three points to smooth
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    for (std::size_t j = lo; j <= hi; ++j) {
+      const double dt = (time[j] - time[i]) / half_window_s;  // scaled: a well-conditioned system
+      const Eigen::Vector3d basis(1.0, dt, dt * dt);
+      normal += basis * basis.transpose();
+      rhs += basis * values[j];
+    }
+    const Eigen::Vector3d coefficients = normal.ldlt().solve(rhs);
+    if (std::isfinite(coefficients[0])) out[i] = coefficients[0];
+  }
+  return out;
 }
 
 }  // namespace
 
 flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth,
                                       double half_window_s, double max_gap_s) {
-  return local_line(time, depth, half_window_s, max_gap_s, LineAt::kSlope,
-                    flightlog::derive_depth_rate(time, depth, max_gap_s));
+  return local_slope(time, depth, half_window_s, max_gap_s, flightlog::derive_depth_rate(time, depth, max_gap_s));
 }
 
 Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options) {
@@ -83,11 +117,11 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
   const flightlog::Column rate = depth_rate_estimate(time, depth, options.rate_half_window_s, gap);
   track.rate_half_window_s = options.rate_half_window_s;
   track.max_gap_s = gap;
+  track.spin_up_s = options.spin_up_s;
   // The pitch is the model's input: its sensor noise (and wave-driven
   // wobble) would add angle of attack, i.e. drag, that the glider never had.
   const flightlog::Column raw_pitch = interpolated_or_empty(log, "m_pitch", gap);
-  const flightlog::Column pitch =
-      local_line(time, raw_pitch, options.pitch_half_window_s, gap, LineAt::kValue, raw_pitch);
+  const flightlog::Column pitch = local_parabola_value(time, raw_pitch, options.pitch_half_window_s, gap);
   const flightlog::Column ballast = interpolated_or_empty(log, "m_ballast_pumped", gap);
   const flightlog::Column battpos = interpolated_or_empty(log, "m_battpos", gap);
   const flightlog::Column temperature = interpolated_or_empty(log, "sci_water_temp", gap);

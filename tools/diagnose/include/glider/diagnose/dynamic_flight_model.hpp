@@ -2,7 +2,8 @@
 // The dynamic flight model of the diagnosis: the project's vertical-plane
 // dynamics with the measured pitch prescribed (model/prescribed_pitch.hpp),
 // flown through every run of the log with the logged ballast (through the
-// pump lag) and battery, from rest at the start of each run. It predicts the
+// pump lag) and battery, from the start state that flies each run's spin-up
+// (never scored) closest to the measured depth. It predicts the
 // depth rate of every sample, turns included, which the steady model cannot:
 // that is where a pump lag shows ("the model turns earlier than the glider").
 #include <span>
@@ -39,7 +40,7 @@ class DynamicFlightModel final : public DepthRateModel {
   model::VehicleParams nominal_;
   const Track& track_;
   double max_step_s_;
-  mutable std::vector<double> depth_buffer_, speed_buffer_;  // per run, reused across runs and calls
+  mutable std::vector<double> depth_buffer_, speed_buffer_, fit_buffer_;  // per run, reused across runs and calls
 };
 
 }  // namespace glider::diagnose

@@ -22,6 +22,7 @@ struct Track {
   std::vector<std::size_t> run_first;   // first sample of each run; a run ends where the next begins
   std::vector<std::size_t> scored;      // samples whose depth rate the fit compares (sorted)
   double rate_half_window_s = 0.0, max_gap_s = 0.0;  // how depth_rate_m_s was estimated
+  double spin_up_s = 0.0;  // from the start of each run: not scored (the model's start state is fitted there)
   std::size_t size() const { return time_s.size(); }
   std::size_t run_end(std::size_t run) const { return run + 1 < run_first.size() ? run_first[run + 1] : size(); }
 };
@@ -35,9 +36,9 @@ struct TrackOptions {
   // The measured depth rate is the slope of the depth over +-this (0: a
   // centred difference, as gliderflight's np.gradient).
   double rate_half_window_s = 5.0;
-  // The measured pitch (the model's input) is smoothed the same way over +-this.
+  // The measured pitch (the model's input) is smoothed by a parabola over +-this.
   double pitch_half_window_s = 5.0;
-  double spin_up_s = 30.0;   // the model starts in a steady glide: not scored until it has settled
+  double spin_up_s = 30.0;   // not scored after a run starts: the model's start state is fitted there
 };
 
 // The depth rate estimator used for the measured depth (and for the
