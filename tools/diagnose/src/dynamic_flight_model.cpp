@@ -159,30 +159,32 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
         for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first + k];
         return true;
       };
+      // Chord method: the depth over half a minute is nearly linear in the
+      // start velocities, so the Jacobian at the guess serves every step
+      // (each step then costs one flight of the spin-up, not three).
       Eigen::VectorXd r, r_trial, r_a, r_b;
-      if (misfit(v1, v3, r)) {
-        constexpr double kDelta = 1e-4;  // m/s, finite-difference step
-        double lambda = 1e-3;
-        for (int iteration = 0; iteration < 20; ++iteration) {
-          if (!misfit(v1 + kDelta, v3, r_a) || !misfit(v1, v3 + kDelta, r_b)) break;
-          Eigen::MatrixXd jac(r.size(), 2);
-          jac.col(0) = (r_a - r) / kDelta;
-          jac.col(1) = (r_b - r) / kDelta;
-          Eigen::Matrix2d normal = jac.transpose() * jac;
-          normal.diagonal() *= 1.0 + lambda;
-          const Eigen::Vector2d step = normal.ldlt().solve(-jac.transpose() * r);
+      constexpr double kDelta = 1e-4;  // m/s, finite-difference step
+      if (misfit(v1, v3, r) && misfit(v1 + kDelta, v3, r_a) && misfit(v1, v3 + kDelta, r_b)) {
+        Eigen::MatrixXd jac(r.size(), 2);
+        jac.col(0) = (r_a - r) / kDelta;
+        jac.col(1) = (r_b - r) / kDelta;
+        const Eigen::Matrix2d normal = jac.transpose() * jac + 1e-9 * Eigen::Matrix2d::Identity();
+        const auto solver = normal.ldlt();
+        for (int iteration = 0; iteration < 8; ++iteration) {
+          Eigen::Vector2d step = solver.solve(-jac.transpose() * r);
           if (!step.allFinite()) break;
-          const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
-          if (misfit(a, b, r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
-            v1 = a;
-            v3 = b;
-            r.swap(r_trial);
-            lambda *= 0.1;
-            if (step.norm() < 1e-7) break;
-          } else {
-            lambda *= 10.0;
-            if (lambda > 1e6) break;
+          double taken = 0.0;  // length of the step taken (halved until the misfit does not grow)
+          for (int halving = 0; halving < 4 && taken == 0.0; ++halving) {
+            const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
+            if (misfit(a, b, r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+              v1 = a;
+              v3 = b;
+              r.swap(r_trial);
+              taken = step.norm() + 1e-300;
+            }
+            step *= 0.5;
           }
+          if (taken < 1e-6) break;  // converged, or no step helps
         }
       }
     }
