@@ -3,6 +3,8 @@
 // Magnitudes are drawn from realistic ranges by a seeded generator.
 #include <CppUTest/TestHarness.h>
 
+#include <cstdio>
+
 #include <cmath>
 #include <random>
 #include <string>
@@ -35,6 +37,12 @@ TEST(DiagnoseHiddenEffects, BuoyancyOffset) {
   model::VehicleParams flown = we01();
   flown.buoyancy_offset_kg = grams * 1e-3;
   const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "buoyancy_offset", 80.0, gaps);
+  char text[160];
+  std::snprintf(text, sizeof text, "hidden %.2f g; found %.2f g (CI %.2f .. %.2f)", grams,
+                o.diagnosis.findings.empty() ? 0.0 : o.diagnosis.findings.front().value,
+                o.diagnosis.findings.empty() ? 0.0 : o.diagnosis.findings.front().ci95_low,
+                o.diagnosis.findings.empty() ? 0.0 : o.diagnosis.findings.front().ci95_high);
+  UT_PRINT(text);
   STRCMP_EQUAL("buoyancy_offset", o.diagnosis.cause.c_str());
   DOUBLES_EQUAL(grams, o.diagnosis.findings.front().value, 5.0);  // within 5 g
   CHECK(o.diagnosis.findings.front().ci95_low < grams && grams < o.diagnosis.findings.front().ci95_high);

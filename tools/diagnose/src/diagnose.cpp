@@ -399,9 +399,10 @@ void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
       // The CTD's density is measured, not fitted: once it has earned its
       // way in it stays (a fitted effect of the same shape - a mean vertical
       // velocity - must not push out what the water was measured to be).
-      const bool earns = e == Effect::kWaterDensity || current_fit.heldout_rms < reduced.heldout_rms * (1.0 - options.min_heldout_improvement) &&
-                         current_fit.heldout_rms < reduced.heldout_rms - options.min_heldout_improvement_m_s &&
-                         current_fit.bic < reduced.bic && interval_excludes_nominal(current, current_fit, e);
+      const bool earns = e == Effect::kWaterDensity ||
+                         (current_fit.heldout_rms < reduced.heldout_rms * (1.0 - options.min_heldout_improvement) &&
+                          current_fit.heldout_rms < reduced.heldout_rms - options.min_heldout_improvement_m_s &&
+                          current_fit.bic < reduced.bic && interval_excludes_nominal(current, current_fit, e));
       if (!earns && (!weakest || reduced.heldout_rms < weakest->second.heldout_rms)) {
         weakest.emplace(e, std::move(reduced));
       }

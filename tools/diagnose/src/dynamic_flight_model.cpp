@@ -61,22 +61,28 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     if (samples[next] >= end) continue;  // nothing requested in this run (every sample is in a run)
     // Inputs at fraction f of the interval [i, i + 1], with the displaced
     // volume lagged from `lagged0` at the interval's start fraction f0.
-    auto inputs = [&](std::size_t i, double f, double q, double lagged0, double f0) {
+    auto inputs = [&](std::size_t i, double f, double lagged0, double f0) {
       const std::size_t j = i + 1 < end ? i + 1 : i;
       model::PrescribedPitchInputs in;
-      in.theta_rad = lerp(t.pitch_rad[i], t.pitch_rad[j], f);
-      in.q_rad_s = q;
+      const double dt = j > i ? t.time_s[j] - t.time_s[i] : 0.0;
+      // Pitch and its rate on the cubic Hermite through the samples.
+      const double f2 = f * f, f3 = f2 * f;
+      in.theta_rad = (2.0 * f3 - 3.0 * f2 + 1.0) * t.pitch_rad[i] + (f3 - 2.0 * f2 + f) * dt * t.pitch_slope_rad_s[i] +
+                     (-2.0 * f3 + 3.0 * f2) * t.pitch_rad[j] + (f3 - f2) * dt * t.pitch_slope_rad_s[j];
+      in.q_rad_s = dt > 0.0 ? ((6.0 * f2 - 6.0 * f) * (t.pitch_rad[i] - t.pitch_rad[j]) / dt +
+                               (3.0 * f2 - 4.0 * f + 1.0) * t.pitch_slope_rad_s[i] +
+                               (3.0 * f2 - 2.0 * f) * t.pitch_slope_rad_s[j])
+                            : t.pitch_slope_rad_s[i];
       in.depth_m = lerp(t.depth_m[i], t.depth_m[j], f);
       in.battery_pos_m = lerp(battery(i), battery(j), f);
       in.density_kg_m3 = lerp(density(i), density(j), f);
       in.temperature_c = lerp(temperature(i), temperature(j), f);
-      const double dt = j > i ? t.time_s[j] - t.time_s[i] : 0.0;
       const double u0 = cc_to_m3(lerp(t.ballast_cc[i], t.ballast_cc[j], f0));
       const double u1 = cc_to_m3(lerp(t.ballast_cc[i], t.ballast_cc[j], f));
       in.pumped_volume_m3 = model::first_order_lag_after(lagged0, u0, u1, (f - f0) * dt, lag_s);
       return in;
     };
-    model::PrescribedPitchInputs in0 = inputs(first, 0.0, 0.0, cc_to_m3(t.ballast_cc[first]), 0.0);
+    model::PrescribedPitchInputs in0 = inputs(first, 0.0, cc_to_m3(t.ballast_cc[first]), 0.0);
     using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
     auto rate_at = [&](const Impulse& state, const model::PrescribedPitchInputs& in) {
       return dynamics.depth_rate_m_s(state, in) + water_w(in.depth_m);
@@ -97,15 +103,14 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
         const double dt = t.time_s[i + 1] - t.time_s[i];
         const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
         const double h = dt / steps;
-        const double q = dt > 0.0 ? (t.pitch_rad[i + 1] - t.pitch_rad[i]) / dt : 0.0;
         double depth = z[i - first];
         for (int s = 0; s < steps; ++s) {
           const double fa = static_cast<double>(s) / steps;
           const double fb = (s + 0.5) / steps;
           const double fc = static_cast<double>(s + 1) / steps;
-          const auto a = inputs(i, fa, q, lagged, fa);
-          const auto b = inputs(i, fb, q, lagged, fa);
-          const auto c = inputs(i, fc, q, lagged, fa);
+          const auto a = inputs(i, fa, lagged, fa);
+          const auto b = inputs(i, fb, lagged, fa);
+          const auto c = inputs(i, fc, lagged, fa);
           const Impulse k1 = dynamics.rate(p, a);
           const Impulse p2 = p + 0.5 * h * k1;
           const Impulse k2 = dynamics.rate(p2, b);
@@ -119,7 +124,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
         }
         if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
         z[i + 1 - first] = depth;
-        if (u != nullptr) (*u)[i + 1 - first] = dynamics.velocities(p, inputs(i, 1.0, q, lagged, 1.0)).norm();
+        if (u != nullptr) (*u)[i + 1 - first] = dynamics.velocities(p, inputs(i, 1.0, lagged, 1.0)).norm();
         flown = i + 1;
       }
       return flown;

@@ -1,6 +1,7 @@
 #include "glider/diagnose/track.hpp"
 
 #include <cmath>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -97,6 +98,39 @@ flightlog::Column local_parabola_value(std::span<const double> time, std::span<c
   return out;
 }
 
+// Slopes for a monotone cubic (PCHIP, Fritsch-Carlson) through the samples:
+// the weighted harmonic mean of the neighbouring secants, zero at a local
+// extremum, one-sided at gaps and ends. Between a Slocum's 2-5 s cycles a
+// turn's pitch is a curve; straight lines between the samples cut its
+// corners, which the model flies as a turn that starts late and ends early.
+flightlog::Column pchip_slopes(std::span<const double> time, std::span<const double> values, double max_gap_s) {
+  const std::size_t n = time.size();
+  flightlog::Column slope(n, 0.0);
+  auto secant = [&](std::size_t a) -> std::optional<std::pair<double, double>> {  // (h, d) of [a, a + 1]
+    if (a + 1 >= n) return std::nullopt;
+    const double h = time[a + 1] - time[a];
+    if (!(h > 0.0) || h > max_gap_s || !std::isfinite(values[a]) || !std::isfinite(values[a + 1])) return std::nullopt;
+    return std::make_pair(h, (values[a + 1] - values[a]) / h);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto before = i > 0 ? secant(i - 1) : std::nullopt;
+    const auto after = secant(i);
+    if (before && after) {
+      const auto [h0, d0] = *before;
+      const auto [h1, d1] = *after;
+      if (d0 * d1 > 0.0) {
+        const double w0 = 2.0 * h1 + h0, w1 = h1 + 2.0 * h0;
+        slope[i] = (w0 + w1) / (w0 / d0 + w1 / d1);
+      }
+    } else if (before) {
+      slope[i] = before->second;
+    } else if (after) {
+      slope[i] = after->second;
+    }
+  }
+  return slope;
+}
+
 }  // namespace
 
 flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth,
@@ -122,6 +156,7 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
   // wobble) would add angle of attack, i.e. drag, that the glider never had.
   const flightlog::Column raw_pitch = interpolated_or_empty(log, "m_pitch", gap);
   const flightlog::Column pitch = local_parabola_value(time, raw_pitch, options.pitch_half_window_s, gap);
+  const flightlog::Column pitch_slope = pchip_slopes(time, pitch, gap);
   const flightlog::Column ballast = interpolated_or_empty(log, "m_ballast_pumped", gap);
   const flightlog::Column battpos = interpolated_or_empty(log, "m_battpos", gap);
   const flightlog::Column temperature = interpolated_or_empty(log, "sci_water_temp", gap);
@@ -157,6 +192,7 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
     track.depth_m.push_back(depth[i]);
     track.depth_rate_m_s.push_back(rate[i]);
     track.pitch_rad.push_back(pitch[i]);
+    track.pitch_slope_rad_s.push_back(pitch_slope[i]);
     track.ballast_cc.push_back(ballast[i]);
     track.battpos_in.push_back(battpos[i]);
     track.temperature_c.push_back(temperature[i]);

@@ -15,6 +15,7 @@ namespace glider::diagnose {
 struct Track {
   // One entry per sample of a run (samples outside runs are dropped).
   std::vector<double> time_s, depth_m, depth_rate_m_s, pitch_rad, ballast_cc, battpos_in;
+  std::vector<double> pitch_slope_rad_s;  // the pitch between samples is a monotone cubic with these slopes
   std::vector<double> temperature_c, density_kg_m3;  // NaN where the log has none
   std::vector<double> speed_through_water_m_s;       // measured (a DVL's), NaN where none
   std::vector<flightlog::Phase> phase;
@@ -38,7 +39,7 @@ struct TrackOptions {
   double rate_half_window_s = 5.0;
   // The measured pitch (the model's input) is smoothed by a parabola over +-this.
   double pitch_half_window_s = 5.0;
-  double spin_up_s = 30.0;   // not scored after a run starts: the model's start state is fitted there
+  double spin_up_s = 60.0;   // not scored after a run starts: the model's start state is fitted there
 };
 
 // The depth rate estimator used for the measured depth (and for the
