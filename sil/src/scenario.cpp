@@ -51,7 +51,8 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   model::GliderSimulator sim(vehicle, options.environment);
   sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0, deg_to_rad(options.heading_deg));
   SimClock clock;
-  SimHal sim_hal(sim, clock, options.noise, options.seed);
+  SimHal sim_hal(sim, clock, options.noise, options.seed, options.peripherals);
+  std::vector<bool> fault_applied(options.faults.size(), false);
 
   Metadata metadata = options.metadata;
   metadata.emplace_back("seed", std::to_string(options.seed));
@@ -83,6 +84,12 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   const double period_s = hal::to_seconds(options.period_us);
   while (sim.time_s() <= options.max_sim_time_s) {
     if (options.before_cycle) options.before_cycle(sim.time_s(), sim_hal);
+    for (std::size_t i = 0; i < options.faults.size(); ++i) {
+      if (!fault_applied[i] && sim.time_s() >= options.faults[i].at_s) {
+        fault_applied[i] = true;
+        sim_hal.inject(options.faults[i].name);
+      }
+    }
     executive.step();
     if (flight.complete()) break;
     sim.advance(period_s);
@@ -96,6 +103,9 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   result.sim_time_s = sim.time_s();
   result.final_truth = sim.truth();
   result.executive = executive.stats();
+  result.drop_weight_released = sim_hal.drop_weight().released();
+  result.energy_used_j = sim_hal.power().energy_used_j();
+  result.charge_used_amphr = sim_hal.power().read().charge_used_amphr;
   result.log_rows_lost = flight.log_rows_lost();
   if (csv) {
     result.log_rows = csv->rows();

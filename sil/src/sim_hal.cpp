@@ -45,6 +45,12 @@ hal::AttitudeSample SimHal::read_attitude() {
   return sample;
 }
 
+bool SimHal::inject(const std::string& name) {
+  if (!apply_fault(name, faults_)) return false;
+  if (faults_.pump_stuck) sim_.command_pumped_volume_m3(sim_.pump().position());
+  return true;
+}
+
 void SimHal::command_volume_cc(double volume_cc) {
   if (faults_.pump_stuck) {
     sim_.command_pumped_volume_m3(sim_.pump().position());  // stops where it is

@@ -17,6 +17,15 @@ struct GlideStats {
   }
 };
 
+// The first GPS fix after a segment: how far the dead reckoning was off.
+struct SurfacingStats {
+  double time_s = 0.0;
+  double dr_error_m = 0.0;
+  double dr_distance_m = 0.0;  // the segment's DR distance through the water
+  double water_vx_m_s = 0.0;   // current estimate after this surfacing
+  double water_vy_m_s = 0.0;
+};
+
 // What the summary and the SIL tests look at, computed from the log rows as
 // they are written. "Settled" = at least settle_s into a dive or climb.
 class FlightStats final : public hal::LogSink {
@@ -31,6 +40,14 @@ class FlightStats final : public hal::LogSink {
   // Depth of every inflection: the bottom of each dive, the top of each climb.
   const std::vector<double>& inflection_depths_m() const { return inflections_; }
   double max_depth_m() const { return max_depth_; }
+  std::int32_t segments() const { return segments_; }
+  std::int32_t waypoints_reached() const { return waypoints_reached_; }
+  const std::vector<SurfacingStats>& surfacings() const { return surfacings_; }
+  // First abort cause logged (0 none), when, and when the depth was next
+  // <= 1 m (-1: never).
+  std::int32_t abort_cause() const { return abort_cause_; }
+  double abort_time_s() const { return abort_time_s_; }
+  double surfaced_after_abort_s() const { return surfaced_after_abort_s_; }
 
  private:
   double settle_s_;
@@ -42,6 +59,12 @@ class FlightStats final : public hal::LogSink {
   double extreme_depth_ = 0.0;
   double max_depth_ = 0.0;
   std::vector<double> inflections_;
+  std::int32_t segments_ = 0;
+  std::int32_t waypoints_reached_ = 0;
+  std::vector<SurfacingStats> surfacings_;
+  std::int32_t abort_cause_ = 0;
+  double abort_time_s_ = 0.0;
+  double surfaced_after_abort_s_ = -1.0;
 };
 
 // Hands every row to two sinks (e.g. the CSV file and the statistics).

@@ -10,6 +10,7 @@
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle.hpp"
 #include "glider/sil/csv_flight_log.hpp"
+#include "glider/sil/fault_injection.hpp"
 #include "glider/sil/flight_stats.hpp"
 #include "glider/sil/sim_hal.hpp"
 
@@ -31,6 +32,9 @@ struct ScenarioOptions {
   // Called before every firmware cycle with the simulated time: tests inject
   // faults through it.
   std::function<void(double sim_time_s, SimHal& hal)> before_cycle;
+  // Faults switched on at a simulated time (`--fault NAME@T`).
+  std::vector<ScheduledFault> faults;
+  PeripheralModels peripherals{};  // GPS (launch position) and energy model
 };
 
 struct ScenarioResult {
@@ -44,6 +48,9 @@ struct ScenarioResult {
   fw::ExecutiveStats executive;
   std::uint64_t log_rows = 0;
   std::uint64_t log_rows_lost = 0;
+  bool drop_weight_released = false;
+  double energy_used_j = 0.0;
+  double charge_used_amphr = 0.0;
   std::string error;  // set when the run could not start or the log failed
 };
 

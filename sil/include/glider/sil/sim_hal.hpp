@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <string>
 
 #include "glider/hal/attitude_sensor.hpp"
 #include "glider/hal/battery_slide.hpp"
@@ -51,6 +52,9 @@ class SimHal final : public hal::DepthSensor,
   hal::ActuatorReading read_position_in() override;
 
   FaultInjection& faults() { return faults_; }
+  // Switches a named fault on (fault_names()), with its side effects on the
+  // plant (a stuck pump stops where it is). False if the name is unknown.
+  bool inject(const std::string& name);
 
   // AttitudeSensor::read() would clash with DepthSensor::read(): the attitude
   // sensor is a small port object.
