@@ -24,13 +24,7 @@ bool FlightStats::write(const hal::FlightLogRecord& r) {
   if (std::isfinite(r.x_dr_error_m)) {
     surfacings_.push_back({hal::to_seconds(r.time_us), r.x_dr_error_m, r.x_dr_distance_m, r.m_water_vx, r.m_water_vy});
   }
-  if (r.x_abort_cause != 0 && abort_cause_ == 0) {
-    abort_cause_ = r.x_abort_cause;
-    abort_time_s_ = hal::to_seconds(r.time_us);
-  }
-  if (abort_cause_ != 0 && surfaced_after_abort_s_ < 0.0 && std::isfinite(r.m_depth) && r.m_depth <= 1.0) {
-    surfaced_after_abort_s_ = hal::to_seconds(r.time_us);
-  }
+
   if (std::isfinite(r.m_depth)) {
     max_depth_ = std::max(max_depth_, r.m_depth);
     extreme_depth_ = phase_ == dive ? std::max(extreme_depth_, r.m_depth) : std::min(extreme_depth_, r.m_depth);

@@ -200,13 +200,14 @@ int main(int argc, char** argv) {
     std::printf("SIL flight: %s with vehicle %s (seed %llu)\n", mission_path.c_str(), vehicle.name.c_str(),
                 static_cast<unsigned long long>(seed));
     if (aborted) {
-      std::printf("  result  : ABORTED (%s) at %.0f s%s", glider::fw::to_string(result.abort_cause),
-                  stats.abort_time_s(), result.completed ? ", surfaced" : ", NOT surfaced");
-      if (stats.surfaced_after_abort_s() >= 0.0) {
-        std::printf(" at %.0f s (%.0f s after the abort)", stats.surfaced_after_abort_s(),
-                    stats.surfaced_after_abort_s() - stats.abort_time_s());
+      std::printf("  result  : ABORTED (%s) at %.0f s", glider::fw::to_string(result.abort_cause), result.abort_time_s);
+      if (result.abort_surfaced_s >= 0.0) {
+        std::printf(", at the surface %.0f s later (truth: antenna out)", result.abort_surfaced_s - result.abort_time_s);
+      } else {
+        std::printf(", NOT at the surface");
       }
-      std::printf("%s\n", result.drop_weight_released ? "; drop weight released" : "");
+      std::printf("%s%s\n", result.completed ? "; the firmware knows it is up" : "; the firmware cannot tell it is up",
+                  result.drop_weight_released ? "; drop weight released" : "");
     } else {
       std::printf("  result  : %s\n", result.completed ? "mission complete, surfaced" : "NOT complete (time limit)");
     }
@@ -216,6 +217,13 @@ int main(int argc, char** argv) {
     if (config.plan.waypoint_count > 0 || stats.segments() > 1) {
       std::printf("  segments       : %d; waypoints reached %d (of a list of %d)\n", stats.segments(),
                   stats.waypoints_reached(), config.plan.waypoint_count);
+      const glider::fw::LocalFrame frame(options.peripherals.gps.launch);
+      for (const auto& w : result.waypoints) {
+        const auto index = static_cast<std::size_t>((w.reached - 1) % config.plan.waypoint_count);
+        const glider::fw::EastNorth target = frame.to_local(config.plan.waypoints[index]);
+        std::printf("    waypoint %zu counted at %8.0f s, true distance %6.0f m (radius %.0f m)\n", index, w.time_s,
+                    std::hypot(w.east_m - target.east_m, w.north_m - target.north_m), config.plan.waypoint_radius_m);
+      }
     }
     print_surfacings(stats.surfacings());
     std::printf("  distance       : %.2f km over ground (start to end)\n",

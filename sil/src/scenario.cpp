@@ -91,6 +91,17 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
       }
     }
     executive.step();
+    const model::Truth truth = sim.truth();
+    if (flight.navigator().waypoints_reached() > static_cast<std::int32_t>(result.waypoints.size())) {
+      result.waypoints.push_back({flight.navigator().waypoints_reached(), sim.time_s(), truth.east_m, truth.north_m});
+    }
+    if (flight.phase() == fw::Phase::kAbort) {
+      if (result.abort_time_s < 0.0) result.abort_time_s = sim.time_s();
+      if (result.abort_surfaced_s < 0.0 && truth.depth_m < options.peripherals.gps.antenna_out_depth_m) {
+        result.abort_surfaced_s = sim.time_s();
+      }
+      if (sim.time_s() - result.abort_time_s >= options.stop_after_abort_s) break;
+    }
     if (flight.complete()) break;
     sim.advance(period_s);
     clock.advance(options.period_us);

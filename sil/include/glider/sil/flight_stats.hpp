@@ -43,11 +43,6 @@ class FlightStats final : public hal::LogSink {
   std::int32_t segments() const { return segments_; }
   std::int32_t waypoints_reached() const { return waypoints_reached_; }
   const std::vector<SurfacingStats>& surfacings() const { return surfacings_; }
-  // First abort cause logged (0 none), when, and when the depth was next
-  // <= 1 m (-1: never).
-  std::int32_t abort_cause() const { return abort_cause_; }
-  double abort_time_s() const { return abort_time_s_; }
-  double surfaced_after_abort_s() const { return surfaced_after_abort_s_; }
 
  private:
   double settle_s_;
@@ -62,9 +57,6 @@ class FlightStats final : public hal::LogSink {
   std::int32_t segments_ = 0;
   std::int32_t waypoints_reached_ = 0;
   std::vector<SurfacingStats> surfacings_;
-  std::int32_t abort_cause_ = 0;
-  double abort_time_s_ = 0.0;
-  double surfaced_after_abort_s_ = -1.0;
 };
 
 // Hands every row to two sinks (e.g. the CSV file and the statistics).
