@@ -10,8 +10,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Fixes older than this when read are not news (the receiver keeps its last).
 constexpr double kFixMaxAgeS = 5.0;
-// A segment this short says nothing useful about the current.
-constexpr double kMinSegmentForCurrentS = 120.0;
+// A segment this short says nothing useful about the current: the DR's own
+// error over a yo or two (inflections, speed) would dominate the estimate.
+constexpr double kMinSegmentForCurrentS = 600.0;
 // Never steer more than this off the bearing to fight a current: beyond it
 // the glider cannot make good its track anyway and would only lose ground.
 constexpr double kMaxCrabRad = 1.05;  // 60 deg

@@ -102,7 +102,9 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
       }
       if (sim.time_s() - result.abort_time_s >= options.stop_after_abort_s) break;
     }
-    if (flight.complete()) break;
+    // An aborted mission is complete for the firmware once its depth says
+    // it is up; the run goes on until the antenna is truly out (or the stop).
+    if (flight.complete() && !(result.abort_time_s >= 0.0 && result.abort_surfaced_s < 0.0)) break;
     sim.advance(period_s);
     clock.advance(options.period_us);
   }
