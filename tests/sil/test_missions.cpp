@@ -124,47 +124,30 @@ TEST_GROUP(SilAborts) {
   void inject(const std::string& fault, double at_s) { options.faults.push_back({fault, at_s}); }
 };
 
-// Injected mid-dive (the first dive starts after the launch fix, ~20-60 s):
-// up from <= 45 m at ~0.24 m/s after the pump's 25 s: within 300 s.
-TEST(SilAborts, Leak) {
-  inject("leak", 150.0);
-  abort_and_surface(fw::AbortCause::kLeak, 300.0, "leak");
-}
-
-TEST(SilAborts, DepthSensorInvalid) {
-  inject("depth_invalid", 150.0);
-  abort_and_surface(fw::AbortCause::kDepthSensor, 300.0, "depth_invalid");
-}
-
-TEST(SilAborts, DepthSensorStale) {
-  inject("depth_frozen", 150.0);
-  const double at = abort_and_surface(fw::AbortCause::kDepthSensor, 300.0, "depth_frozen");
-  CHECK(at >= 160.0 && at <= 162.0);  // after the 10 s staleness limit
-}
-
-TEST(SilAborts, AttitudeSensorInvalid) {
-  inject("attitude_invalid", 150.0);
-  abort_and_surface(fw::AbortCause::kAttitudeSensor, 300.0, "attitude_invalid");
-}
-
-TEST(SilAborts, AttitudeSensorStale) {
-  inject("attitude_frozen", 150.0);
-  abort_and_surface(fw::AbortCause::kAttitudeSensor, 300.0, "attitude_frozen");
-}
-
-TEST(SilAborts, PumpFault) {
-  inject("pump_fault", 150.0);
-  abort_and_surface(fw::AbortCause::kActuatorFault, 300.0, "pump_fault");
-}
-
-TEST(SilAborts, BatterySlideFault) {
-  inject("battery_fault", 150.0);
-  abort_and_surface(fw::AbortCause::kActuatorFault, 300.0, "battery_fault");
-}
-
-TEST(SilAborts, FinFault) {
-  inject("fin_fault", 150.0);
-  abort_and_surface(fw::AbortCause::kActuatorFault, 300.0, "fin_fault");
+// Injected mid-dive at 150 s (the first dive starts after the launch fix,
+// 20-60 s): up from <= 45 m at ~0.24 m/s after the pump's 25 s: within
+// 300 s. A sensor without fresh valid readings is declared failed after
+// the 10 s staleness limit.
+TEST(SilAborts, EveryInjectedSensorOrActuatorFault) {
+  const struct {
+    const char* fault;
+    fw::AbortCause cause;
+    double detected_after_s;
+  } cards[] = {
+      {"leak", fw::AbortCause::kLeak, 0.0},
+      {"depth_invalid", fw::AbortCause::kDepthSensor, 10.0},  // the last valid value holds 10 s
+      {"depth_frozen", fw::AbortCause::kDepthSensor, 10.0},
+      {"attitude_invalid", fw::AbortCause::kAttitudeSensor, 10.0},
+      {"attitude_frozen", fw::AbortCause::kAttitudeSensor, 10.0},
+      {"pump_fault", fw::AbortCause::kActuatorFault, 0.0},
+      {"battery_fault", fw::AbortCause::kActuatorFault, 0.0},
+      {"fin_fault", fw::AbortCause::kActuatorFault, 0.0},
+  };
+  for (const auto& card : cards) {
+    options.faults = {{card.fault, 150.0}};
+    const double at = abort_and_surface(card.cause, 300.0, card.fault);
+    CHECK_TEXT(at >= 150.0 + card.detected_after_s && at <= 152.0 + card.detected_after_s, card.fault);
+  }
 }
 
 TEST(SilAborts, LowBattery) {
