@@ -118,7 +118,8 @@ double FlightSoftware::fin_command(const NavigatorOutputs& nav, double dt_s) {
     heading_.reset_rate();  // fin centred at the surface, in an abort, or without a heading to fly
     return 0.0;
   }
-  return heading_.update(attitude_.heading_rad, nav.heading_target_rad, dt_s);
+  heading_.select_glide(last_.phase == Phase::kDive);
+  return heading_.update(attitude_.heading_rad, nav.heading_target_rad, dt_s, navigator_.speed_m_s());
 }
 
 void FlightSoftware::run(hal::Micros now_us) {

@@ -160,6 +160,7 @@ int main(int argc, char** argv) {
     config.heading = base.heading;
     config.heading.fin_max_rad = vehicle.heading.fin_max_rad;
     config.heading.fin_rate_rad_s = vehicle.heading.fin_rate_rad_s;
+    config.heading.yaw_gain_per_m = vehicle.heading.fin_yaw_gain_per_m;
     config.dead_reckoning = base.dead_reckoning;
   }
   if (max_sim_time_s > 0.0) options.max_sim_time_s = max_sim_time_s;

@@ -16,6 +16,7 @@ fw::mission_file::MissionVehicle mission_vehicle(const model::VehicleParams& v, 
   m.limits.battery_max_in = m_to_in(v.battery.travel_max_m);
   m.fin_max_rad = v.heading.fin_max_rad;
   m.fin_rate_rad_s = v.heading.fin_rate_rad_s;
+  m.yaw_gain_per_m = v.heading.fin_yaw_gain_per_m;
   return m;
 }
 

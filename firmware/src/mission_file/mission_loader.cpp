@@ -448,6 +448,7 @@ std::optional<FlightSoftwareConfig> Loader::load(const MiDocument& doc) {
   config_.limits = vehicle_.limits;
   config_.heading.fin_max_rad = vehicle_.fin_max_rad;
   config_.heading.fin_rate_rad_s = vehicle_.fin_rate_rad_s;
+  config_.heading.yaw_gain_per_m = vehicle_.yaw_gain_per_m;
   config_.aborts.drop_weight_fitted = vehicle_.drop_weight_fitted;
   config_.mission.start_at_launch = false;  // prepare_to_dive: GPS first
   config_.plan = MissionPlan{};

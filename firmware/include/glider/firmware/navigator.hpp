@@ -56,6 +56,7 @@ class Navigator {
   std::int32_t active_waypoint() const { return waypoint_; }
   std::int32_t waypoints_reached() const { return reached_; }
   std::int32_t segments() const { return segments_; }
+  double speed_m_s() const { return dr_.last_speed_m_s(); }  // horizontal, through the water
 
  private:
   enum class State { kSurface, kUnderWater, kDone };

@@ -20,6 +20,7 @@ struct MissionVehicle {
   ActuatorLimits limits{};             // pump and slide travel the firmware may use
   double fin_max_rad = 0.25;           // f_fin_safety_max
   double fin_rate_rad_s = 0.1;
+  double yaw_gain_per_m = 0.0;         // yaw rate per fin per speed (heading predictor; 0 = unknown)
   bool drop_weight_fitted = false;
 };
 
