@@ -29,7 +29,14 @@ double DeadReckoning::horizontal_speed(double pitch_rad, double depth_rate_m_s) 
 
 void DeadReckoning::update(double pitch_rad, double heading_rad, double depth_rate_m_s, EastNorth current_m_s,
                            double dt_s) {
-  speed_ = horizontal_speed(pitch_rad, depth_rate_m_s);
+  const double inferred = horizontal_speed(pitch_rad, depth_rate_m_s);
+  if (config_.method == DrMethod::kFlightModel && inferred == 0.0 && std::fabs(pitch_rad) < config_.min_pitch_rad) {
+    // Through an inflection the glider coasts: the flight model's speed
+    // decays with its drag time constant instead of dropping to zero.
+    speed_ *= std::exp(-dt_s / config_.coast_time_constant_s);
+  } else {
+    speed_ = inferred;
+  }
   position_.east_m += (speed_ * std::sin(heading_rad) + current_m_s.east_m) * dt_s;
   position_.north_m += (speed_ * std::cos(heading_rad) + current_m_s.north_m) * dt_s;
   distance_m_ += speed_ * dt_s;

@@ -38,6 +38,13 @@ fw::DeadReckoningConfig flight_model_dead_reckoning(const model::VehicleParams& 
       table[k] = fallback;
     }
   }
+  // Coasting through an inflection: surge momentum over the drag's linear
+  // damping at the glide speed, tau = (m + m_f1) / (rho A C_D0 V).
+  const model::SteadyGlideResult typical = solver.solve(density_kg_m3, -0.4363, 0.2);
+  if (typical.glide) {
+    const double damping = density_kg_m3 * v.hydro.reference_area_m2 * v.hydro.cd0 * typical.glide->speed_m_s;
+    dr.coast_time_constant_s = (model::dry_mass_kg(v) + v.added_mass_x_kg) / damping;
+  }
   return dr;
 }
 

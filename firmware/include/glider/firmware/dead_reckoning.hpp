@@ -30,6 +30,9 @@ struct DeadReckoningConfig {
   // through-water speed is inferred (the depth rate says nothing about it).
   double min_pitch_rad = 0.1745;  // 10 deg
   double max_speed_m_s = 1.0;     // a depth-rate spike never becomes a sprint
+  // kFlightModel: through an inflection (|pitch| < min_pitch_rad) the speed
+  // decays from the last glide's with this time constant (from the model).
+  double coast_time_constant_s = 30.0;
 };
 
 class DeadReckoning {

@@ -15,7 +15,8 @@ fw::mission_file::MissionVehicle mission_vehicle(const model::VehicleParams& veh
 // kFlightModel dead reckoning: |alpha| of the model's steady glide at each
 // |pitch| of the table, for dives and climbs, in water of `density_kg_m3`.
 // Pitches shallower than the best glide have no steady glide: they take the
-// nearest steeper entry.
+// nearest steeper entry. The coast time constant through inflections is the
+// surge momentum over the drag's damping at a 25 deg glide.
 fw::DeadReckoningConfig flight_model_dead_reckoning(const model::VehicleParams& vehicle, double density_kg_m3,
                                                     fw::DeadReckoningConfig base = {});
 
