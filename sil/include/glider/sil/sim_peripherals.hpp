@@ -36,7 +36,7 @@ struct PowerModel {
   double voltage_full_v = 15.0;
   double voltage_empty_v = 10.5;
   double hotel_w = 0.6;
-  double pump_efficiency = 0.3;
+  double pump_efficiency = 0.5;    // piston pump and motor
   double pump_fixed_j_per_cc = 0.5;
   double slide_j_per_in = 60.0;    // ~3 W at 0.05 in/s
   double fin_j_per_rad = 5.0;
