@@ -31,8 +31,9 @@ struct MissionPlan {
   double heading_rad = std::numeric_limits<double>::quiet_NaN();
   // At the surface: wait this long at most for a GPS fix (gps_wait_time),
   // and stay at least `surface_dwell_s` (keystroke_wait_time: the pilot's
-  // chance to call in) before the next dive.
-  double gps_wait_s = 300.0;
+  // chance to call in) before the next dive. 0 (a TOML yo mission): the
+  // mission ends as soon as it is up.
+  double gps_wait_s = 0.0;
   double surface_dwell_s = 0.0;
   bool current_correction = true;  // u_use_current_correction
 };
