@@ -115,7 +115,7 @@ double FlightSoftware::battery_command(const MissionOutputs& mission, double pit
 double FlightSoftware::fin_command(const NavigatorOutputs& nav, double dt_s) {
   const bool gliding = last_.phase == Phase::kDive || last_.phase == Phase::kClimb;
   if (!gliding || !std::isfinite(nav.heading_target_rad) || !have_attitude_) {
-    heading_.reset_rate();  // fin centred at the surface, in an abort, or without a heading to fly
+    heading_.centre();  // at the surface, in an abort, or without a heading to fly
     return 0.0;
   }
   heading_.select_glide(last_.phase == Phase::kDive);

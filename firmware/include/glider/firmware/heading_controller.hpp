@@ -46,8 +46,15 @@ class HeadingController {
  public:
   explicit HeadingController(const HeadingControlConfig& config) : config_(config) {}
 
-  // Restart (e.g. a new glide): integrator kept, rate estimate dropped.
-  void reset_rate() { have_heading_ = false; }
+  // The fin is held centred this cycle (surface, abort, no heading to fly):
+  // the integrators are kept, the rate estimate is dropped, and the centred
+  // fin goes into the command history the predictor uses.
+  void centre() {
+    have_heading_ = false;
+    fin_ = 0.0;
+    history_[history_next_] = 0.0;
+    history_next_ = (history_next_ + 1) % kHistory;
+  }
   void reset() {
     integrator_ = 0.0;
     fin_ = 0.0;
