@@ -33,6 +33,7 @@ const char* validate(const FlightSoftwareConfig& c) {
   if (!(c.pitch_kp_in_per_rad >= 0.0 && c.pitch_ki_in_per_rad_s >= 0.0)) return "pitch gains must be >= 0";
   if (!(c.sensor_timeout_s > 0.0)) return "sensor_timeout_s must be positive";
   if (!(c.depth_rate_filter_s > 0.0)) return "depth_rate_filter_s must be positive";
+  if (!(c.battery_deadband_in >= 0.0)) return "battery_deadband_in must be >= 0";
   const MissionPlan& p = c.plan;
   if (p.waypoint_count < 0 || p.waypoint_count > static_cast<std::int32_t>(kMaxWaypoints)) {
     return "waypoint count out of range";
@@ -109,7 +110,13 @@ double FlightSoftware::battery_command(const MissionOutputs& mission, double pit
   }
   // Battery forward pitches the nose down: nose too high (positive error)
   // needs more forward battery, i.e. a larger output.
-  return pitch_servo_.update(pitch_rad - mission.pitch_target_rad, dt_s);
+  const double wanted = pitch_servo_.update(pitch_rad - mission.pitch_target_rad, dt_s);
+  // Every slide move costs energy: a change smaller than the deadband is
+  // not made (the servo's integrator keeps the difference and moves the
+  // slide once it has grown past it). Saturated commands always go out.
+  const bool at_limit = wanted <= config_.limits.battery_min_in || wanted >= config_.limits.battery_max_in;
+  if (!at_limit && std::abs(wanted - battery_cmd_in_) < config_.battery_deadband_in) return battery_cmd_in_;
+  return wanted;
 }
 
 double FlightSoftware::fin_command(const NavigatorOutputs& nav, double dt_s) {

@@ -40,6 +40,9 @@ struct FlightSoftwareConfig {
   // then remembers where each direction settled: the vehicle's trim).
   double dive_battpos_in = 0.2;
   double climb_battpos_in = -0.2;
+  // Slide moves smaller than this are not made (energy): 0.01 in is ~0.35
+  // deg of pitch on a SLOCUM, inside the pitch noise of a glide.
+  double battery_deadband_in = 0.01;
   double sensor_timeout_s = 10.0;    // older than this = stale -> abort
   double depth_rate_filter_s = 4.0;  // first-order filter of d(depth)/dt
 };
