@@ -277,8 +277,8 @@ TEST_GROUP(SilDeadReckoning) {
   }
 };
 
-// Measured (docs/dead-reckoning.md): still water 47 vs 16 m/km, the steady
-// sheared current 46 vs 16 m/km (Slocum's constant 3 deg vs the flight model).
+// Measured (docs/dead-reckoning.md): still water 49 vs 19 m/km, the steady
+// sheared current 48 vs 18 m/km (Slocum's constant 3 deg vs the flight model).
 TEST(SilDeadReckoning, FlightModelBeatsTheAssumedAngleOfAttack) {
   const model::Environment still = model::still_water(vehicle.trim_density_kg_m3);
   const double slocum_still = metres_per_km(still, false);
