@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "glider/firmware/geo.hpp"
+
 namespace glider::fw {
 namespace {
 
@@ -31,6 +33,22 @@ const char* validate(const FlightSoftwareConfig& c) {
   if (!(c.pitch_kp_in_per_rad >= 0.0 && c.pitch_ki_in_per_rad_s >= 0.0)) return "pitch gains must be >= 0";
   if (!(c.sensor_timeout_s > 0.0)) return "sensor_timeout_s must be positive";
   if (!(c.depth_rate_filter_s > 0.0)) return "depth_rate_filter_s must be positive";
+  if (!(c.battery_deadband_in >= 0.0)) return "battery_deadband_in must be >= 0";
+  const MissionPlan& p = c.plan;
+  if (p.waypoint_count < 0 || p.waypoint_count > static_cast<std::int32_t>(kMaxWaypoints)) {
+    return "waypoint count out of range";
+  }
+  if (p.waypoint_count > 0 && !(p.waypoint_radius_m > 0.0)) return "waypoint radius must be positive";
+  if (p.waypoint_count > 0 && c.mission.start_at_launch) {
+    return "a mission with waypoints must wait at the surface for a GPS fix (start_at_launch false)";
+  }
+  if (p.legs_to_run == 0 || p.legs_to_run < kLegsOnce) return "legs_to_run must be > 0, -1 (loop) or -2 (once)";
+  if (!(p.gps_wait_s >= 0.0 && p.surface_dwell_s >= 0.0)) return "surface waits must be >= 0";
+  const HeadingControlConfig& h = c.heading;
+  if (!(h.fin_max_rad > 0.0 && h.fin_rate_rad_s > 0.0 && h.delay_s >= 0.0)) {
+    return "heading control: fin limit and rate must be positive, delay >= 0";
+  }
+  if (!(c.aborts.battery_capacity_amphr > 0.0)) return "battery capacity must be positive";
   return "";
 }
 
@@ -38,6 +56,9 @@ FlightSoftware::FlightSoftware(const hal::Hal& hal, const FlightSoftwareConfig& 
     : hal_(hal),
       config_(config),
       mission_(config.mission),
+      navigator_(config.plan, config.dead_reckoning, config.aborts.max_wpt_distance_m),
+      abort_monitor_(config.aborts),
+      heading_(config.heading),
       pitch_servo_(PiGains{config.pitch_kp_in_per_rad, config.pitch_ki_in_per_rad_s,
                            config.limits.battery_min_in, config.limits.battery_max_in}),
       dive_trim_in_(config.dive_battpos_in),
@@ -65,6 +86,9 @@ double FlightSoftware::battery_command(const MissionOutputs& mission, double pit
   if (mission.phase == Phase::kAbort) {
     return config_.limits.battery_min_in;  // full aft: nose up
   }
+  if (!std::isnan(mission.battery_in)) {
+    return mission.battery_in;  // pump-only pitch: the battery sits where the mission says
+  }
   if (!mission.pitch_control) {
     return battery_cmd_in_;  // hold
   }
@@ -86,7 +110,23 @@ double FlightSoftware::battery_command(const MissionOutputs& mission, double pit
   }
   // Battery forward pitches the nose down: nose too high (positive error)
   // needs more forward battery, i.e. a larger output.
-  return pitch_servo_.update(pitch_rad - mission.pitch_target_rad, dt_s);
+  const double wanted = pitch_servo_.update(pitch_rad - mission.pitch_target_rad, dt_s);
+  // Every slide move costs energy: a change smaller than the deadband is
+  // not made (the servo's integrator keeps the difference and moves the
+  // slide once it has grown past it). Saturated commands always go out.
+  const bool at_limit = wanted <= config_.limits.battery_min_in || wanted >= config_.limits.battery_max_in;
+  if (!at_limit && std::abs(wanted - battery_cmd_in_) < config_.battery_deadband_in) return battery_cmd_in_;
+  return wanted;
+}
+
+double FlightSoftware::fin_command(const NavigatorOutputs& nav, double dt_s) {
+  const bool gliding = last_.phase == Phase::kDive || last_.phase == Phase::kClimb;
+  if (!gliding || !std::isfinite(nav.heading_target_rad) || !have_attitude_) {
+    heading_.centre();  // at the surface, in an abort, or without a heading to fly
+    return 0.0;
+  }
+  heading_.select_glide(last_.phase == Phase::kDive);
+  return heading_.update(attitude_.heading_rad, nav.heading_target_rad, dt_s, navigator_.speed_m_s());
 }
 
 void FlightSoftware::run(hal::Micros now_us) {
@@ -112,17 +152,64 @@ void FlightSoftware::run(hal::Micros now_us) {
   }
   const hal::ActuatorReading pump = hal_.pump.read_volume_cc();
   const hal::ActuatorReading battery = hal_.battery.read_position_in();
+  const hal::ActuatorReading fin = hal_.rudder.read_angle_rad();
   const bool pump_ok = pump.valid && !pump.fault && std::isfinite(pump.position);
   const bool battery_ok = battery.valid && !battery.fault && std::isfinite(battery.position);
+  const bool fin_ok = fin.valid && !fin.fault && std::isfinite(fin.position);
+  const hal::GpsFix fix = hal_.gps.read();
+  const hal::DigitalSample leak = hal_.leak.read();
+  const bool leak_ok = leak.valid && is_fresh(now_us, leak.time_us, config_.sensor_timeout_s);
+  const hal::PowerSample power = hal_.power.read();
+  const bool power_ok = power.valid && std::isfinite(power.charge_used_amphr) &&
+                        std::isfinite(power.battery_voltage_v) &&
+                        is_fresh(now_us, power.time_us, config_.sensor_timeout_s);
+
+  const bool depth_ok = have_depth_ && is_fresh(now_us, depth_time_us_, config_.sensor_timeout_s);
+  const bool attitude_ok = have_attitude_ && is_fresh(now_us, attitude_.time_us, config_.sensor_timeout_s);
+
+  // --- navigation (on last cycle's vertical state: it decides this cycle's segment start)
+  NavigatorInputs nav_in;
+  nav_in.now_us = now_us;
+  nav_in.phase = last_.phase;
+  nav_in.segment_complete = last_.segment_complete;
+  nav_in.attitude_ok = attitude_ok;
+  nav_in.pitch_rad = attitude_.pitch_rad;
+  nav_in.heading_rad = attitude_.heading_rad;
+  nav_in.depth_rate_ok = have_depth_rate_ && depth_ok;
+  nav_in.depth_rate_m_s = depth_rate_m_s_;
+  nav_in.fix = fix;
+  const NavigatorOutputs nav = navigator_.update(nav_in);
+  if (nav.start_segment) mission_.start_segment();
+  if (nav.mission_complete) mission_over_ = true;
+
+  // --- abort checks beyond the yo's envelope
+  AbortMonitorInputs checks;
+  checks.now_us = now_us;
+  checks.phase = last_.phase;
+  checks.depth_ok = depth_ok;
+  checks.depth_m = depth_m_;
+  checks.depth_rate_ok = have_depth_rate_ && depth_ok;
+  checks.depth_rate_m_s = depth_rate_m_s_;
+  checks.gliding = (last_.phase == Phase::kDive || last_.phase == Phase::kClimb) && pump_ok &&
+                   std::abs(pump.position - last_.ballast_cc) <= config_.limits.ballast_settled_cc;
+  checks.leak_ok = leak_ok;
+  checks.leak = leak.active;
+  checks.power_ok = power_ok;
+  checks.charge_used_amphr = power.charge_used_amphr;
+  const AbortCause monitored = abort_monitor_.check(checks);
 
   // --- mission
   MissionInputs in;
   in.now_us = now_us;
   in.depth_m = depth_m_;
-  in.depth_ok = have_depth_ && is_fresh(now_us, depth_time_us_, config_.sensor_timeout_s);
-  in.attitude_ok = have_attitude_ && is_fresh(now_us, attitude_.time_us, config_.sensor_timeout_s);
-  in.actuator_fault = !pump_ok || !battery_ok;
+  in.depth_ok = depth_ok;
+  in.attitude_ok = attitude_ok;
+  in.actuator_fault = !pump_ok || !battery_ok || !fin_ok;
+  in.external_abort = monitored != AbortCause::kNone ? monitored : nav.abort;
+  in.surface_requested = nav.surface_requested;
+  in.mission_over = mission_over_;
   last_ = mission_.update(in);
+  const bool aborting = last_.phase == Phase::kAbort;
 
   // --- control and actuators
   const double ballast_target = last_.phase == Phase::kAbort ? config_.limits.ballast_max_cc : last_.ballast_cc;
@@ -134,8 +221,18 @@ void FlightSoftware::run(hal::Micros now_us) {
   if (!commanded_ || battery_target != battery_cmd_in_) {
     hal_.battery.command_position_in(battery_target);
   }
+  const double fin_target = aborting ? 0.0 : fin_command(nav, dt_s);
+  if (!commanded_ || fin_target != fin_cmd_rad_) {
+    hal_.rudder.command_angle_rad(fin_target);
+  }
+  // The abort sequence drops the emergency weight where one is fitted
+  // (once: the burn wire is commanded and left on).
+  if (aborting && config_.aborts.drop_weight_fitted && !drop_weight_released_) {
+    drop_weight_released_ = hal_.drop_weight.set(true);
+  }
   ballast_cmd_cc_ = ballast_target;
   battery_cmd_in_ = battery_target;
+  fin_cmd_rad_ = fin_target;
   commanded_ = true;
 
   // --- log
@@ -155,6 +252,25 @@ void FlightSoftware::run(hal::Micros now_us) {
   row.x_yo_count = last_.yos_completed;
   row.x_abort_cause = static_cast<std::int32_t>(last_.abort_cause);
   row.x_loop_overruns = executive_ != nullptr ? executive_->stats().overruns : 0;
+  row.c_heading = std::isfinite(nav.heading_target_rad) && !aborting ? nav.heading_target_rad : kNaN;
+  row.m_fin = fin_ok ? fin.position : kNaN;
+  row.c_fin = fin_target;
+  row.m_gps_lat = nav.new_fix ? degrees_to_nmea(fix.latitude_deg) : kNaN;
+  row.m_gps_lon = nav.new_fix ? degrees_to_nmea(fix.longitude_deg) : kNaN;
+  const bool have_position = navigator_.have_position();
+  row.m_lat = have_position ? degrees_to_nmea(navigator_.dr_position().lat_deg) : kNaN;
+  row.m_lon = have_position ? degrees_to_nmea(navigator_.dr_position().lon_deg) : kNaN;
+  row.m_water_vx = navigator_.have_current() ? navigator_.current_m_s().east_m : kNaN;
+  row.m_water_vy = navigator_.have_current() ? navigator_.current_m_s().north_m : kNaN;
+  row.m_leakdetect = leak_ok ? (leak.active ? 1 : 0) : -1;
+  row.m_coulomb_amphr_total = power_ok ? power.charge_used_amphr : kNaN;
+  row.m_battery = power_ok ? power.battery_voltage_v : kNaN;
+  row.x_waypoint = navigator_.active_waypoint();
+  row.x_waypoints_reached = navigator_.waypoints_reached();
+  row.x_segment = navigator_.segments();
+  row.x_dr_error_m = nav.surfacing.valid ? nav.surfacing.dr_error_m : kNaN;
+  row.x_dr_distance_m = nav.surfacing.valid ? nav.surfacing.distance_through_water_m : kNaN;
+  row.x_mission_complete = complete() ? 1 : 0;
   if (!hal_.log.write(row)) {
     ++log_rows_lost_;
   }

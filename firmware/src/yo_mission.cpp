@@ -1,5 +1,7 @@
 #include "glider/firmware/yo_mission.hpp"
 
+#include <cmath>
+
 namespace glider::fw {
 
 const char* to_string(Phase phase) {
@@ -20,6 +22,11 @@ const char* to_string(AbortCause cause) {
     case AbortCause::kDepthSensor: return "depth sensor invalid or stale";
     case AbortCause::kAttitudeSensor: return "attitude sensor invalid or stale";
     case AbortCause::kActuatorFault: return "actuator fault";
+    case AbortCause::kLeak: return "leak detected";
+    case AbortCause::kLowBattery: return "low battery (remaining charge)";
+    case AbortCause::kSameDepth: return "stuck at the same depth";
+    case AbortCause::kStalled: return "stalled";
+    case AbortCause::kWaypointTooFar: return "waypoint too far";
   }
   return "?";
 }
@@ -34,6 +41,9 @@ const char* validate(const YoMissionConfig& c) {
   if (!(c.dive_pitch_rad < 0.0)) return "dive pitch must be negative (nose down)";
   if (!(c.climb_pitch_rad > 0.0)) return "climb pitch must be positive (nose up)";
   if (!(c.max_duration_s > 0.0)) return "max_duration_s must be positive";
+  if (std::isnan(c.dive_battpos_in) != std::isnan(c.climb_battpos_in)) {
+    return "a fixed battery position needs both dive and climb values";
+  }
   return "";
 }
 
@@ -43,7 +53,7 @@ AbortCause YoMission::check_envelope(const MissionInputs& in) const {
   if (in.actuator_fault) return AbortCause::kActuatorFault;
   if (in.depth_m > config_.max_depth_m) return AbortCause::kOverdepth;
   if (hal::to_seconds(in.now_us - start_us_) > config_.max_duration_s) return AbortCause::kOvertime;
-  return AbortCause::kNone;
+  return in.external_abort;
 }
 
 void YoMission::enter(Phase phase, MissionOutputs& out) {
@@ -56,15 +66,37 @@ MissionOutputs YoMission::update(const MissionInputs& in) {
   if (!started_) {
     started_ = true;
     start_us_ = in.now_us;
+    if (config_.start_at_launch) {
+      enter(Phase::kDive, out);
+    } else {
+      complete_ = true;  // at the surface, waiting to be sent down
+    }
+  }
+  const bool segment_over = complete_ && phase_ == Phase::kSurface;
+  if (start_requested_ && segment_over) {
+    complete_ = false;
+    final_climb_ = false;
+    segment_yos_ = 0;
     enter(Phase::kDive, out);
   }
+  start_requested_ = false;
 
-  if (phase_ != Phase::kAbort && !complete_) {
+  // The envelope is watched from launch on, at the surface between segments
+  // too (a leak or a dead sensor there), but not after the mission is over.
+  const bool over = complete_ && (config_.start_at_launch || in.mission_over);
+  const bool watching = phase_ != Phase::kAbort && !over;
+  if (watching) {
     const AbortCause cause = check_envelope(in);
     if (cause != AbortCause::kNone) {
       abort_cause_ = cause;
+      complete_ = false;
       enter(Phase::kAbort, out);
     }
+  }
+
+  if (in.surface_requested && (phase_ == Phase::kDive || phase_ == Phase::kClimb) && !final_climb_) {
+    final_climb_ = true;
+    if (phase_ == Phase::kDive) enter(Phase::kClimb, out);
   }
 
   switch (phase_) {
@@ -76,7 +108,8 @@ MissionOutputs YoMission::update(const MissionInputs& in) {
     case Phase::kClimb:
       if (!final_climb_ && in.depth_m <= config_.climb_to_m) {
         ++yos_completed_;
-        if (yos_completed_ < config_.yos) {
+        ++segment_yos_;
+        if (segment_yos_ < config_.yos) {
           enter(Phase::kDive, out);
         } else {
           final_climb_ = true;  // keep climbing to the surface
@@ -99,16 +132,20 @@ MissionOutputs YoMission::update(const MissionInputs& in) {
   out.abort_cause = abort_cause_;
   out.yos_completed = yos_completed_;
   out.complete = complete_;
+  out.segment_complete = complete_ && phase_ == Phase::kSurface;
+  const bool fixed_battery = !std::isnan(config_.dive_battpos_in);
   switch (phase_) {
     case Phase::kDive:
       out.ballast_cc = config_.dive_ballast_cc;
       out.pitch_target_rad = config_.dive_pitch_rad;
-      out.pitch_control = true;
+      out.pitch_control = !fixed_battery;
+      out.battery_in = config_.dive_battpos_in;
       break;
     case Phase::kClimb:
       out.ballast_cc = config_.climb_ballast_cc;
       out.pitch_target_rad = config_.climb_pitch_rad;
-      out.pitch_control = true;
+      out.pitch_control = !fixed_battery;
+      out.battery_in = config_.climb_battpos_in;
       break;
     case Phase::kSurface:
     case Phase::kAbort:

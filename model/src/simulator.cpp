@@ -55,6 +55,7 @@ void GliderSimulator::reset_servos(double pumped_volume_m3, double battery_pos_m
   battery_ = make_slide(v.battery, battery_pos_m);
   second_ = make_slide(v.second_mass, 0.0);
   fin_ = RateLimitedServo(-v.heading.fin_max_rad, v.heading.fin_max_rad, v.heading.fin_rate_rad_s, 0.0);
+  pending_count_ = 0;
 }
 
 void GliderSimulator::reset_at_depth(double depth_m, double pumped_volume_m3, double battery_pos_m,
@@ -96,9 +97,29 @@ void GliderSimulator::step(double h) {
   time_s_ += h;
 }
 
+void GliderSimulator::command_fin_rad(double angle) {
+  const double delay = dynamics_.vehicle().heading.fin_delay_s;
+  if (!(delay > 0.0)) {
+    fin_.set_target(angle);
+    return;
+  }
+  if (pending_count_ == kMaxPendingFin) {  // a command per step at most: drop the oldest
+    fin_.set_target(pending_fin_[pending_first_].angle_rad);
+    pending_first_ = (pending_first_ + 1) % kMaxPendingFin;
+    --pending_count_;
+  }
+  pending_fin_[(pending_first_ + pending_count_) % kMaxPendingFin] = {time_s_ + delay, angle};
+  ++pending_count_;
+}
+
 void GliderSimulator::advance(double duration_s) {
   double remaining = duration_s;
   while (remaining > 1e-12) {
+    while (pending_count_ > 0 && pending_fin_[pending_first_].due_s <= time_s_ + 1e-9) {
+      fin_.set_target(pending_fin_[pending_first_].angle_rad);
+      pending_first_ = (pending_first_ + 1) % kMaxPendingFin;
+      --pending_count_;
+    }
     const double h = remaining < step_s_ * (1.0 + 1e-9) ? remaining : step_s_;
     step(h);
     remaining -= h;

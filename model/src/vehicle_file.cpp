@@ -69,6 +69,7 @@ void visit_numbers(VehicleParams& v, Visitor&& visit) {
   visit("heading.roll_offset_rad", v.heading.roll_offset_rad, opt);
   visit("heading.fin_max_rad", v.heading.fin_max_rad, req);
   visit("heading.fin_rate_rad_s", v.heading.fin_rate_rad_s, req);
+  visit("heading.fin_delay_s", v.heading.fin_delay_s, opt);
   visit("buoyancy.trim_density_kg_m3", v.trim_density_kg_m3, req);
   visit("buoyancy.offset_kg", v.buoyancy_offset_kg, req);
 }

@@ -49,10 +49,12 @@ void append_time(std::string& line, hal::Micros us) {
 const char* CsvFlightLog::header() {
   return "m_present_time,m_depth,m_depth_rate,m_pitch,m_roll,m_heading,m_ballast_pumped,c_ballast_pumped,"
          "m_battpos,c_battpos,c_pitch,m_depth_state,x_yo_count,x_abort_cause,x_loop_overruns,"
+         "c_heading,m_fin,c_fin,m_gps_lat,m_gps_lon,m_lat,m_lon,m_water_vx,m_water_vy,m_leakdetect,"
+         "m_coulomb_amphr_total,m_battery,x_waypoint,x_waypoints_reached,x_segment,x_dr_error_m,x_dr_distance_m,x_mission_complete,"
          "sci_water_temp,sci_water_cond,sci_water_pressure,"
          "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
          "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
-         "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_density_kg_m3,sim_u_water_m_s,sim_v_water_m_s,"
+         "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_yaw_rate_rad_s,sim_density_kg_m3,sim_u_water_m_s,sim_v_water_m_s,"
          "sim_w_water_m_s,sim_temperature_c,sim_practical_salinity";
 }
 
@@ -111,6 +113,24 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   append_integer(line_, r.x_yo_count);
   append_integer(line_, r.x_abort_cause);
   append_integer(line_, r.x_loop_overruns);
+  append_number(line_, r.c_heading);
+  append_number(line_, r.m_fin);
+  append_number(line_, r.c_fin);
+  append_number(line_, r.m_gps_lat);
+  append_number(line_, r.m_gps_lon);
+  append_number(line_, r.m_lat);
+  append_number(line_, r.m_lon);
+  append_number(line_, r.m_water_vx);
+  append_number(line_, r.m_water_vy);
+  append_integer(line_, r.m_leakdetect);
+  append_number(line_, r.m_coulomb_amphr_total);
+  append_number(line_, r.m_battery);
+  append_integer(line_, r.x_waypoint);
+  append_integer(line_, r.x_waypoints_reached);
+  append_integer(line_, r.x_segment);
+  append_number(line_, r.x_dr_error_m);
+  append_number(line_, r.x_dr_distance_m);
+  append_integer(line_, r.x_mission_complete);
   // The science bay is off at the surface (m_depth_state 0), as in real logs.
   const bool science_missed = gaps_.enabled && gap_random_.uniform() < gaps_.sci_blank_fraction;
   const CtdReading ctd = science_missed ? CtdReading{} : ctd_.sample(t, r.m_depth_state != 0);
@@ -131,6 +151,7 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   append_number(line_, m3_to_cc(t.pumped_volume_m3));
   append_number(line_, m_to_in(t.battery_pos_m));
   append_number(line_, t.fin_rad);
+  append_number(line_, t.yaw_rate_rad_s);
   append_number(line_, t.water.density_kg_m3);
   append_number(line_, t.water.current_east_m_s);
   append_number(line_, t.water.current_north_m_s);

@@ -19,6 +19,12 @@ bool FlightStats::write(const hal::FlightLogRecord& r) {
     extreme_depth_ = std::isfinite(r.m_depth) ? r.m_depth : 0.0;
   }
   yos_ = std::max(yos_, r.x_yo_count);
+  segments_ = std::max(segments_, r.x_segment);
+  waypoints_reached_ = std::max(waypoints_reached_, r.x_waypoints_reached);
+  if (std::isfinite(r.x_dr_error_m)) {
+    surfacings_.push_back({hal::to_seconds(r.time_us), r.x_dr_error_m, r.x_dr_distance_m, r.m_water_vx, r.m_water_vy});
+  }
+
   if (std::isfinite(r.m_depth)) {
     max_depth_ = std::max(max_depth_, r.m_depth);
     extreme_depth_ = phase_ == dive ? std::max(extreme_depth_, r.m_depth) : std::min(extreme_depth_, r.m_depth);

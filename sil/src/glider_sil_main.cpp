@@ -1,18 +1,22 @@
-// glider-sil: fly a mission in SIL and print a summary.
+// glider-sil: fly a mission in SIL and print a summary. A mission is either
+// a Slocum .mi file (with its .ma files; docs/missions.md) or one of the
+// project's TOML yo missions (boards/README.md).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <vector>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/firmware/mission_file/mission_loader.hpp"
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
 #include "glider/units.hpp"
 
@@ -42,41 +46,134 @@ void print_inflections(int yos, const std::vector<double>& depths) {
   std::printf(" %.1f-%.1f m at the bottoms, %.1f-%.1f m at the tops)\n", bottom_min, bottom_max, top_min, top_max);
 }
 
+// DR error at every surfacing (the first dozen and the totals for long runs).
+void print_surfacings(const std::vector<glider::sil::SurfacingStats>& surfacings) {
+  double error_sum = 0.0, distance_sum = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < surfacings.size(); ++i) {
+    const auto& s = surfacings[i];
+    error_sum += s.dr_error_m;
+    distance_sum += s.dr_distance_m;
+    worst = std::max(worst, s.dr_error_m);
+    if (i < 12) {
+      std::printf("    surfacing %2zu at %8.0f s: DR error %7.1f m over %6.0f m (%5.1f m/km); current %+.3f %+.3f m/s\n",
+                  i + 1, s.time_s, s.dr_error_m, s.dr_distance_m,
+                  s.dr_distance_m > 0.0 ? 1000.0 * s.dr_error_m / s.dr_distance_m : 0.0, s.water_vx_m_s,
+                  s.water_vy_m_s);
+    }
+  }
+  if (surfacings.size() > 12) std::printf("    ... %zu surfacings in all\n", surfacings.size());
+  if (!surfacings.empty()) {
+    std::printf("  DR error       : %.1f m/km travelled (sum of errors / sum of DR distances), worst %.1f m\n",
+                distance_sum > 0.0 ? 1000.0 * error_sum / distance_sum : 0.0, worst);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Fly a glider mission in software-in-the-loop simulation"};
+  CLI::App app{"Fly a glider mission (.mi Slocum or .toml) in software-in-the-loop simulation"};
   std::string vehicle_path;
   std::string mission_path;
   std::string out_path;
   std::string env_path;
   std::uint64_t seed = 1;
   double heading_deg = 90.0;
+  double max_working_depth_m = 100.0;
+  double max_sim_time_s = 0.0;
+  int legs = 0;
+  std::string heading_law = "compensated";
+  std::string dr_method = "assumed";
+  std::vector<std::string> fault_texts;
+  double launch_lat = std::nan("");
+  double launch_lon = std::nan("");
   bool quiet = false;
   app.add_option("--vehicle", vehicle_path, "vehicle parameter file (TOML)")->required()->check(CLI::ExistingFile);
-  app.add_option("--mission", mission_path, "mission file (TOML)")->required()->check(CLI::ExistingFile);
+  app.add_option("--mission,mission", mission_path, "mission file: Slocum .mi, or TOML")
+      ->required()
+      ->check(CLI::ExistingFile);
   app.add_option("--out", out_path, "flight log to write (CSV, docs/flight-log.md)");
   app.add_option("--env", env_path, "environment file: water profile, currents, tide (TOML)")->check(CLI::ExistingFile);
   app.add_option("--seed", seed, "seed of the sensor noise")->capture_default_str();
-  app.add_option("--heading-deg", heading_deg, "heading to fly")->capture_default_str();
+  app.add_option("--heading-deg", heading_deg, "initial heading (TOML missions fly it with the fin centred)")
+      ->capture_default_str();
+  app.add_option("--max-working-depth-m", max_working_depth_m, ".mi: the vehicle's depth rating (f_max_working_depth)")
+      ->capture_default_str();
+  app.add_option("--legs", legs, ".mi: override goto_list num_legs_to_run (a looping list never ends)");
+  app.add_option("--max-sim-time-s", max_sim_time_s, "stop the simulation after this long (default: mission's)");
+  app.add_option("--heading-law", heading_law, "fin autopilot: proportional (paper 001), slocum, compensated")
+      ->check(CLI::IsMember({"proportional", "slocum", "compensated"}))
+      ->capture_default_str();
+  app.add_option("--dr", dr_method, "dead reckoning: assumed (constant angle of attack, Slocum) or model (flight model)")
+      ->check(CLI::IsMember({"assumed", "model"}))
+      ->capture_default_str();
+  app.add_option("--fault", fault_texts, "inject NAME@TIME (s, m or h), e.g. leak@1200s; repeatable; "
+                                         "names: depth_invalid depth_frozen attitude_invalid attitude_frozen "
+                                         "pump_fault pump_stuck battery_fault fin_fault leak gps_dead power_drain");
+  app.add_option("--launch-lat", launch_lat, "launch latitude, decimal degrees (default: comet 2019's first fix)");
+  app.add_option("--launch-lon", launch_lon, "launch longitude, decimal degrees");
   app.add_flag("--quiet", quiet, "print nothing but errors");
   CLI11_PARSE(app, argc, argv);
 
   glider::model::VehicleParams vehicle;
   glider::fw::FlightSoftwareConfig config;
   glider::sil::ScenarioOptions options;
+  const bool slocum_mission = std::filesystem::path(mission_path).extension() == ".mi";
   try {
     vehicle = glider::model::load_vehicle_file(vehicle_path);
     options.environment = env_path.empty() ? glider::model::still_water(vehicle.trim_density_kg_m3)
                                            : glider::model::load_environment_file(env_path);
-    const auto mission = glider::config::TomlDocument::load(mission_path);
-    config = glider::fw::read_flight_config(mission);
-    options.max_sim_time_s = mission.number_or("sil.max_sim_time_s", options.max_sim_time_s);
-    mission.reject_unknown_keys();
+    if (!slocum_mission) {
+      const auto mission = glider::config::TomlDocument::load(mission_path);
+      config = glider::fw::read_flight_config(mission);
+      options.max_sim_time_s = mission.number_or("sil.max_sim_time_s", options.max_sim_time_s);
+      mission.reject_unknown_keys();
+    }
   } catch (const glider::config::ConfigError& error) {
     std::fprintf(stderr, "glider-sil: %s\n", error.what());
     return 1;
   }
+  glider::fw::FlightSoftwareConfig base;
+  base.heading.law = heading_law == "proportional" ? glider::fw::HeadingLaw::kProportional
+                     : heading_law == "slocum"     ? glider::fw::HeadingLaw::kSlocum
+                                                   : glider::fw::HeadingLaw::kCompensated;
+  base.heading.delay_s = vehicle.heading.fin_delay_s;
+  if (dr_method == "model") {
+    base.dead_reckoning =
+        glider::sil::flight_model_dead_reckoning(vehicle, options.environment.water.at(0.0, 0.0).density_kg_m3);
+  }
+  if (slocum_mission) {
+    const auto loaded = glider::fw::mission_file::load_mission_file(
+        mission_path, glider::sil::mission_vehicle(vehicle, max_working_depth_m), base);
+    for (const auto& d : loaded.diagnostics) {
+      if (!quiet || d.severity == glider::fw::mission_file::Severity::kError) {
+        std::fprintf(stderr, "%s\n", d.text().c_str());
+      }
+    }
+    if (!loaded.config) {
+      std::fprintf(stderr, "glider-sil: %s: mission refused before launch\n", mission_path.c_str());
+      return 1;
+    }
+    config = *loaded.config;
+    if (legs != 0) config.plan.legs_to_run = legs;
+    options.max_sim_time_s = 60.0 * 86400.0;  // the mission's own limits end it
+  } else {
+    config.heading = base.heading;
+    config.heading.fin_max_rad = vehicle.heading.fin_max_rad;
+    config.heading.fin_rate_rad_s = vehicle.heading.fin_rate_rad_s;
+    config.heading.yaw_gain_per_m = vehicle.heading.fin_yaw_gain_per_m;
+    config.dead_reckoning = base.dead_reckoning;
+  }
+  if (max_sim_time_s > 0.0) options.max_sim_time_s = max_sim_time_s;
+  for (const std::string& text : fault_texts) {
+    std::string error;
+    const auto fault = glider::sil::parse_fault(text, error);
+    if (!fault) {
+      std::fprintf(stderr, "glider-sil: --fault: %s\n", error.c_str());
+      return 1;
+    }
+    options.faults.push_back(*fault);
+  }
+  if (std::isfinite(launch_lat) && std::isfinite(launch_lon)) options.peripherals.gps.launch = {launch_lat, launch_lon};
   options.seed = seed;
   options.heading_deg = heading_deg;
   options.log_path = out_path;
@@ -85,6 +182,8 @@ int main(int argc, char** argv) {
                       {"vehicle_file", std::filesystem::path(vehicle_path).filename().string()},
                       {"environment_file", env_path.empty() ? std::string("none (still water at the vehicle's trim density)")
                                                             : std::filesystem::path(env_path).filename().string()},
+                      {"heading_law", heading_law},
+                      {"dead_reckoning", dr_method},
                       {"time", "m_present_time is seconds since the start of the mission"},
                       {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
 
@@ -98,19 +197,39 @@ int main(int argc, char** argv) {
   }
   const bool aborted = result.final_phase == glider::fw::Phase::kAbort;
   if (!quiet) {
+    const auto& stats = result.stats;
     std::printf("SIL flight: %s with vehicle %s (seed %llu)\n", mission_path.c_str(), vehicle.name.c_str(),
                 static_cast<unsigned long long>(seed));
     if (aborted) {
-      std::printf("  result  : ABORTED (%s)%s\n", glider::fw::to_string(result.abort_cause),
-                  result.completed ? ", surfaced" : "");
+      std::printf("  result  : ABORTED (%s) at %.0f s", glider::fw::to_string(result.abort_cause), result.abort_time_s);
+      if (result.abort_surfaced_s >= 0.0) {
+        std::printf(", at the surface %.0f s later (truth: antenna out)", result.abort_surfaced_s - result.abort_time_s);
+      } else {
+        std::printf(", NOT at the surface");
+      }
+      std::printf("%s%s\n", result.completed ? "; the firmware knows it is up" : "; the firmware cannot tell it is up",
+                  result.drop_weight_released ? "; drop weight released" : "");
     } else {
       std::printf("  result  : %s\n", result.completed ? "mission complete, surfaced" : "NOT complete (time limit)");
     }
-    print_inflections(result.yos, result.stats.inflection_depths_m());
-    print_glides("dives", result.stats.dives());
-    print_glides("climbs", result.stats.climbs());
-    std::printf("  distance       : %.2f km over ground\n",
+    print_inflections(result.yos, stats.inflection_depths_m());
+    print_glides("dives", stats.dives());
+    print_glides("climbs", stats.climbs());
+    if (config.plan.waypoint_count > 0 || stats.segments() > 1) {
+      std::printf("  segments       : %d; waypoints reached %d (of a list of %d)\n", stats.segments(),
+                  stats.waypoints_reached(), config.plan.waypoint_count);
+      const glider::fw::LocalFrame frame(options.peripherals.gps.launch);
+      for (const auto& w : result.waypoints) {
+        const auto index = static_cast<std::size_t>((w.reached - 1) % config.plan.waypoint_count);
+        const glider::fw::EastNorth target = frame.to_local(config.plan.waypoints[index]);
+        std::printf("    waypoint %zu counted at %8.0f s, true distance %6.0f m (radius %.0f m)\n", index, w.time_s,
+                    std::hypot(w.east_m - target.east_m, w.north_m - target.north_m), config.plan.waypoint_radius_m);
+      }
+    }
+    print_surfacings(stats.surfacings());
+    std::printf("  distance       : %.2f km over ground (start to end)\n",
                 std::hypot(result.final_truth.east_m, result.final_truth.north_m) / 1000.0);
+    std::printf("  energy         : %.0f kJ, %.2f Ah\n", result.energy_used_j / 1000.0, result.charge_used_amphr);
     if (result.sim_time_s < 86400.0) {
       std::printf("  simulated time : %.0f s (%.1f min)\n", result.sim_time_s, result.sim_time_s / 60.0);
     } else {

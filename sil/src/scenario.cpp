@@ -51,7 +51,8 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   model::GliderSimulator sim(vehicle, options.environment);
   sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0, deg_to_rad(options.heading_deg));
   SimClock clock;
-  SimHal sim_hal(sim, clock, options.noise, options.seed);
+  SimHal sim_hal(sim, clock, options.noise, options.seed, options.peripherals);
+  std::vector<bool> fault_applied(options.faults.size(), false);
 
   Metadata metadata = options.metadata;
   metadata.emplace_back("seed", std::to_string(options.seed));
@@ -72,7 +73,9 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
   TeeLogSink log(file_sink, result.stats);
 
-  const hal::Hal hal{clock, sim_hal.depth(), sim_hal.attitude(), sim_hal, sim_hal, log};
+  const hal::Hal hal{.clock = clock, .depth = sim_hal.depth(), .attitude = sim_hal.attitude(), .pump = sim_hal,
+                     .battery = sim_hal, .log = log, .rudder = sim_hal.rudder(), .gps = sim_hal.gps(),
+                     .leak = sim_hal.leak(), .drop_weight = sim_hal.drop_weight(), .power = sim_hal.power()};
   fw::FlightSoftware flight(hal, config);
   const std::array<fw::TaskSlot, 1> tasks{{{"flight", &flight, 1, options.period_us / 2}}};
   fw::Executive executive(clock, tasks, options.period_us);
@@ -81,8 +84,27 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   const double period_s = hal::to_seconds(options.period_us);
   while (sim.time_s() <= options.max_sim_time_s) {
     if (options.before_cycle) options.before_cycle(sim.time_s(), sim_hal);
+    for (std::size_t i = 0; i < options.faults.size(); ++i) {
+      if (!fault_applied[i] && sim.time_s() >= options.faults[i].at_s) {
+        fault_applied[i] = true;
+        sim_hal.inject(options.faults[i].name);
+      }
+    }
     executive.step();
-    if (flight.complete()) break;
+    const model::Truth truth = sim.truth();
+    if (flight.navigator().waypoints_reached() > static_cast<std::int32_t>(result.waypoints.size())) {
+      result.waypoints.push_back({flight.navigator().waypoints_reached(), sim.time_s(), truth.east_m, truth.north_m});
+    }
+    if (flight.phase() == fw::Phase::kAbort) {
+      if (result.abort_time_s < 0.0) result.abort_time_s = sim.time_s();
+      if (result.abort_surfaced_s < 0.0 && truth.depth_m < options.peripherals.gps.antenna_out_depth_m) {
+        result.abort_surfaced_s = sim.time_s();
+      }
+      if (sim.time_s() - result.abort_time_s >= options.stop_after_abort_s) break;
+    }
+    // An aborted mission is complete for the firmware once its depth says
+    // it is up; the run goes on until the antenna is truly out (or the stop).
+    if (flight.complete() && !(result.abort_time_s >= 0.0 && result.abort_surfaced_s < 0.0)) break;
     sim.advance(period_s);
     clock.advance(options.period_us);
   }
@@ -94,6 +116,9 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   result.sim_time_s = sim.time_s();
   result.final_truth = sim.truth();
   result.executive = executive.stats();
+  result.drop_weight_released = sim_hal.drop_weight().released();
+  result.energy_used_j = sim_hal.power().energy_used_j();
+  result.charge_used_amphr = sim_hal.power().read().charge_used_amphr;
   result.log_rows_lost = flight.log_rows_lost();
   if (csv) {
     result.log_rows = csv->rows();

@@ -7,18 +7,32 @@
 
 namespace glider::sil {
 
-SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed)
-    : sim_(sim), clock_(clock), noise_(noise), random_(seed) {}
+namespace {
+// The GPS draws from its own stream so that adding it left the other
+// sensors' noise unchanged (see derived_seed).
+constexpr std::uint64_t kGpsStream = 3;
+}  // namespace
+
+SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
+               const PeripheralModels& peripherals)
+    : sim_(sim), clock_(clock), noise_(noise), random_(seed),
+      gps_(sim, clock, faults_, peripherals.gps, derived_seed(seed, kGpsStream)),
+      leak_(clock, faults_),
+      drop_weight_(clock),
+      power_(sim, clock, faults_, peripherals.power) {}
 
 hal::DepthSample SimHal::read() {
+  if (faults_.depth_frozen) return last_depth_;
   hal::DepthSample sample;
   sample.time_us = clock_.now_us();
   sample.depth_m = sim_.state()[model::kZ] + noise_.depth_m * gaussian();
   sample.valid = !faults_.depth_invalid;
+  last_depth_ = sample;
   return sample;
 }
 
 hal::AttitudeSample SimHal::read_attitude() {
+  if (faults_.attitude_frozen) return last_attitude_;
   hal::AttitudeSample sample;
   sample.time_us = clock_.now_us();
   sample.pitch_rad = sim_.state()[model::kTheta] + noise_.pitch_rad * gaussian();
@@ -27,10 +41,23 @@ hal::AttitudeSample SimHal::read_attitude() {
   const double heading = sim_.state()[model::kPsi] + noise_.heading_rad * gaussian();
   sample.heading_rad = std::fmod(std::fmod(heading, two_pi) + two_pi, two_pi);
   sample.valid = !faults_.attitude_invalid;
+  last_attitude_ = sample;
   return sample;
 }
 
-void SimHal::command_volume_cc(double volume_cc) { sim_.command_pumped_volume_m3(cc_to_m3(volume_cc)); }
+bool SimHal::inject(const std::string& name) {
+  if (!apply_fault(name, faults_)) return false;
+  if (faults_.pump_stuck) sim_.command_pumped_volume_m3(sim_.pump().position());
+  return true;
+}
+
+void SimHal::command_volume_cc(double volume_cc) {
+  if (faults_.pump_stuck) {
+    sim_.command_pumped_volume_m3(sim_.pump().position());  // stops where it is
+    return;
+  }
+  sim_.command_pumped_volume_m3(cc_to_m3(volume_cc));
+}
 
 hal::ActuatorReading SimHal::read_volume_cc() {
   hal::ActuatorReading reading;

@@ -18,7 +18,7 @@ TEST(ModbusFlight, ADeadActuatorBusAbortsTheMission) {
   test::FakeHal fake;  // clock and sensors; actuators are Modbus
   hal_linux::ModbusBuoyancyPump pump(*d.pump, fake);
   hal_linux::ModbusBatterySlide slide(*d.slide, fake);
-  const hal::Hal hal{fake, fake, fake.attitude, pump, slide, fake};
+  const hal::Hal hal = fake.with_actuators(pump, slide);
   fw::FlightSoftwareConfig config;
   fw::FlightSoftware flight(hal, config);
   int cycles = 0;

@@ -1,7 +1,7 @@
 // The firmware allocates nothing after start-up: every global operator new in
 // this program is counted, and the flight software flies a whole scripted
-// mission (dive, climbs, yos, surfacing) and an abort with the count
-// unchanged. A plain program (not CppUTest, whose library replaces the
+// mission (dive, climbs, yos, surfacing), a navigated mission (GPS fixes,
+// segments, waypoints) and an abort with the count unchanged. A plain program (not CppUTest, whose library replaces the
 // allocation operators itself); exit status 0 = pass.
 #include <array>
 #include <atomic>
@@ -41,6 +41,18 @@ int main() {
   fw::Executive executive(fake, table, 1'000'000);
   flight.attach_executive(&executive);
   fw::FlightSoftware aborting(fake.hal(), config);
+  // A navigated mission: two waypoints, segments of 2 yos, GPS at the surface.
+  test::FakeHal nav_fake;
+  fw::FlightSoftwareConfig nav_config;
+  nav_config.mission.start_at_launch = false;
+  nav_config.mission.yos = 2;
+  nav_config.plan.waypoint_count = 2;
+  nav_config.plan.waypoints[0] = {54.02, 7.0};
+  nav_config.plan.waypoints[1] = {54.04, 7.0};  // both north: the fake only moves north
+  nav_config.plan.legs_to_run = 2;
+  nav_config.plan.waypoint_radius_m = 500.0;
+  nav_config.plan.gps_wait_s = 60.0;
+  fw::FlightSoftware navigated(nav_fake.hal(), nav_config);
 
   const unsigned long before = g_allocations.load();
   double depth = 0.5;
@@ -53,6 +65,29 @@ int main() {
     executive.step();
     fake.now += 1'000'000;
   }
+  // The navigated mission: the fake glider moves north at 0.3 m/s under
+  // water and gets a fix where it is at the surface.
+  double north_m = 0.0;
+  double nav_depth = 0.5;
+  int nav_cycles = 0;
+  for (; nav_cycles < 100000 && !navigated.complete(); ++nav_cycles) {
+    const fw::Phase phase = navigated.phase();
+    const bool under_way = phase == fw::Phase::kDive || phase == fw::Phase::kClimb;
+    if (under_way) {
+      nav_depth += phase == fw::Phase::kDive ? 0.3 : -0.3;
+      north_m += 0.3;
+    } else {
+      nav_depth = 0.2;
+    }
+    nav_fake.pump_cc = phase == fw::Phase::kDive ? nav_config.mission.dive_ballast_cc : nav_config.mission.climb_ballast_cc;
+    nav_fake.depth = {nav_depth, nav_fake.now, true};
+    nav_fake.attitude.sample = {phase == fw::Phase::kClimb ? 0.45 : -0.45, 0.0, 0.0, nav_fake.now, true};
+    nav_fake.leak.sample.time_us = nav_fake.now;
+    nav_fake.power.sample.time_us = nav_fake.now;
+    nav_fake.gps.fix = {54.0 + north_m / 111195.0, 7.0, 1, 8, 1.0, nav_fake.now, !under_way};
+    navigated.run(nav_fake.now);
+    nav_fake.now += 1'000'000;
+  }
   fake.sense(5.0, -0.4);
   aborting.run(fake.now);
   fake.pump_fault = true;
@@ -61,7 +96,9 @@ int main() {
 
   const bool flew = flight.complete() && flight.yos_completed() == config.mission.yos;
   const bool aborted = aborting.phase() == fw::Phase::kAbort;
-  std::printf("cycles %d, mission complete %d, abort %d, heap allocations in the loop: %lu\n", cycles, flew,
-              aborted, during);
-  return flew && aborted && during == 0 ? 0 : 1;
+  const bool navigated_ok = navigated.complete() && navigated.navigator().waypoints_reached() == 2;
+  std::printf("cycles %d, mission complete %d, abort %d, navigated mission complete %d (%d cycles, %d segments), "
+              "heap allocations in the loop: %lu\n",
+              cycles, flew, aborted, navigated_ok, nav_cycles, navigated.navigator().segments(), during);
+  return flew && aborted && navigated_ok && during == 0 ? 0 : 1;
 }

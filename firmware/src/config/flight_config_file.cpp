@@ -37,6 +37,7 @@ FlightSoftwareConfig read_flight_config(const config::TomlDocument& doc) {
   c.pitch_ki_in_per_rad_s = doc.number_or("pitch_servo.ki_in_per_rad_s", c.pitch_ki_in_per_rad_s);
   c.dive_battpos_in = doc.number_or("pitch_servo.dive_battpos_in", c.dive_battpos_in);
   c.climb_battpos_in = doc.number_or("pitch_servo.climb_battpos_in", c.climb_battpos_in);
+  c.battery_deadband_in = doc.number_or("pitch_servo.battery_deadband_in", c.battery_deadband_in);
 
   c.sensor_timeout_s = doc.number_or("safety.sensor_timeout_s", c.sensor_timeout_s);
   c.depth_rate_filter_s = doc.number_or("safety.depth_rate_filter_s", c.depth_rate_filter_s);

@@ -1,7 +1,12 @@
 #pragma once
 #include <cstdint>
 
+#include "glider/firmware/abort_monitor.hpp"
+#include "glider/firmware/dead_reckoning.hpp"
 #include "glider/firmware/executive.hpp"
+#include "glider/firmware/heading_controller.hpp"
+#include "glider/firmware/mission_plan.hpp"
+#include "glider/firmware/navigator.hpp"
 #include "glider/firmware/pi_controller.hpp"
 #include "glider/firmware/yo_mission.hpp"
 #include "glider/hal/hal.hpp"
@@ -20,6 +25,10 @@ struct ActuatorLimits {
 
 struct FlightSoftwareConfig {
   YoMissionConfig mission;
+  MissionPlan plan;      // waypoints and segments (none: a yo-only mission)
+  AbortLimits aborts;    // abend limits beyond the yo's envelope
+  HeadingControlConfig heading;
+  DeadReckoningConfig dead_reckoning;
   ActuatorLimits limits;
   // Battery-slide pitch servo, error in rad, output in inches. Tuned on the
   // SLOCUM model: ~0.6 rad of pitch per inch of battery and a pitch pendulum
@@ -31,6 +40,9 @@ struct FlightSoftwareConfig {
   // then remembers where each direction settled: the vehicle's trim).
   double dive_battpos_in = 0.2;
   double climb_battpos_in = -0.2;
+  // Slide moves smaller than this are not made (energy): 0.01 in is ~0.35
+  // deg of pitch on a SLOCUM, inside the pitch noise of a glide.
+  double battery_deadband_in = 0.01;
   double sensor_timeout_s = 10.0;    // older than this = stale -> abort
   double depth_rate_filter_s = 4.0;  // first-order filter of d(depth)/dt
 };
@@ -49,21 +61,30 @@ class FlightSoftware final : public PeriodicTask {
   // The executive's overrun count goes into the log rows.
   void attach_executive(const Executive* executive) { executive_ = executive; }
 
-  bool complete() const { return last_.complete; }
+  // Mission over: navigation ended it at the surface, or an abort has
+  // brought the vehicle up (it stays there).
+  bool complete() const { return mission_over_ || (last_.phase == Phase::kAbort && last_.complete); }
   Phase phase() const { return last_.phase; }
   AbortCause abort_cause() const { return last_.abort_cause; }
   std::int32_t yos_completed() const { return last_.yos_completed; }
+  const Navigator& navigator() const { return navigator_; }
   std::uint64_t log_rows_lost() const { return log_rows_lost_; }
 
  private:
   void update_depth_rate(const hal::DepthSample& depth);
+  double fin_command(const NavigatorOutputs& nav, double dt_s);
   double battery_command(const MissionOutputs& mission, double pitch_rad, double ballast_cc,
                          double dt_s);
 
   hal::Hal hal_;
   FlightSoftwareConfig config_;
   YoMission mission_;
+  Navigator navigator_;
+  AbortMonitor abort_monitor_;
+  HeadingController heading_;
   PiController pitch_servo_;
+  bool mission_over_ = false;  // the navigator's end of mission
+  bool drop_weight_released_ = false;
   const Executive* executive_ = nullptr;
 
   MissionOutputs last_{};
@@ -87,6 +108,7 @@ class FlightSoftware final : public PeriodicTask {
   double climb_trim_in_;
   double battery_cmd_in_ = 0.0;
   double ballast_cmd_cc_ = 0.0;
+  double fin_cmd_rad_ = 0.0;
   bool commanded_ = false;
   std::uint64_t log_rows_lost_ = 0;
 };

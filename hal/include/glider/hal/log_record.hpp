@@ -24,6 +24,24 @@ struct FlightLogRecord {
   std::int32_t x_yo_count = 0;      // completed yos in this mission
   std::int32_t x_abort_cause = 0;   // fw::AbortCause, 0 = none
   std::uint32_t x_loop_overruns = 0;  // executive cycles over budget, cumulative
+  double c_heading = 0.0;        // rad, heading target (NaN: no heading control)
+  double m_fin = 0.0;            // rad
+  double c_fin = 0.0;            // rad
+  double m_gps_lat = 0.0;        // NMEA ddmm.mmm, a fresh fix this cycle only
+  double m_gps_lon = 0.0;
+  double m_lat = 0.0;            // NMEA, dead-reckoned (last fix at the surface)
+  double m_lon = 0.0;
+  double m_water_vx = 0.0;       // m/s east, depth-averaged current estimate
+  double m_water_vy = 0.0;       // m/s north
+  std::int32_t m_leakdetect = 0; // 1 leak, 0 dry, -1 no valid reading
+  double m_coulomb_amphr_total = 0.0;  // Ah used
+  double m_battery = 0.0;        // V
+  std::int32_t x_waypoint = 0;   // index of the active waypoint
+  std::int32_t x_waypoints_reached = 0;
+  std::int32_t x_segment = 0;    // segments started
+  double x_dr_error_m = 0.0;     // |GPS - DR| at the first fix after a segment (NaN otherwise)
+  double x_dr_distance_m = 0.0;  // that segment's DR distance through the water
+  std::int32_t x_mission_complete = 0;
 };
 
 // Where the firmware hands its log rows. Implementations must not block the

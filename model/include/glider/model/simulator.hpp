@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+
 #include "glider/model/dynamics.hpp"
 #include "glider/model/servo.hpp"
 
@@ -49,7 +51,9 @@ class GliderSimulator {
   void command_pumped_volume_m3(double volume) { pump_.set_target(volume); }
   void command_battery_pos_m(double position) { battery_.set_target(position); }
   void command_second_pos_m(double position) { second_.set_target(position); }
-  void command_fin_rad(double angle) { fin_.set_target(angle); }
+  // The fin starts toward a command heading.fin_delay_s after it is given
+  // (to the integration step): the servo's dead time.
+  void command_fin_rad(double angle);
 
   // Advance by `duration_s` (a whole number of integration steps; the last
   // one is shortened if needed).
@@ -76,6 +80,15 @@ class GliderSimulator {
   RateLimitedServo battery_;
   RateLimitedServo second_;
   RateLimitedServo fin_;
+  // Fin commands waiting out the dead time (time due, angle), a ring.
+  struct PendingFin {
+    double due_s;
+    double angle_rad;
+  };
+  static constexpr std::size_t kMaxPendingFin = 64;
+  std::array<PendingFin, kMaxPendingFin> pending_fin_{};
+  std::size_t pending_first_ = 0;
+  std::size_t pending_count_ = 0;
   double displaced_pump_volume_m3_ = 0.0;  // lags pump_ by ballast.lag_s (0: equal)
   State state_ = State::Zero();
   double time_s_ = 0.0;

@@ -64,6 +64,7 @@ struct HeadingModel {
   double roll_offset_rad = 0.0;      // static roll (+ starboard wing down)
   double fin_max_rad = 0.0;          // fin servo travel (+-)
   double fin_rate_rad_s = 0.0;       // fin servo speed
+  double fin_delay_s = 0.0;          // dead time between a fin command and the servo starting to move
 };
 
 struct VehicleParams {

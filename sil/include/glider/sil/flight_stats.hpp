@@ -17,6 +17,15 @@ struct GlideStats {
   }
 };
 
+// The first GPS fix after a segment: how far the dead reckoning was off.
+struct SurfacingStats {
+  double time_s = 0.0;
+  double dr_error_m = 0.0;
+  double dr_distance_m = 0.0;  // the segment's DR distance through the water
+  double water_vx_m_s = 0.0;   // current estimate after this surfacing
+  double water_vy_m_s = 0.0;
+};
+
 // What the summary and the SIL tests look at, computed from the log rows as
 // they are written. "Settled" = at least settle_s into a dive or climb.
 class FlightStats final : public hal::LogSink {
@@ -31,6 +40,9 @@ class FlightStats final : public hal::LogSink {
   // Depth of every inflection: the bottom of each dive, the top of each climb.
   const std::vector<double>& inflection_depths_m() const { return inflections_; }
   double max_depth_m() const { return max_depth_; }
+  std::int32_t segments() const { return segments_; }
+  std::int32_t waypoints_reached() const { return waypoints_reached_; }
+  const std::vector<SurfacingStats>& surfacings() const { return surfacings_; }
 
  private:
   double settle_s_;
@@ -42,6 +54,9 @@ class FlightStats final : public hal::LogSink {
   double extreme_depth_ = 0.0;
   double max_depth_ = 0.0;
   std::vector<double> inflections_;
+  std::int32_t segments_ = 0;
+  std::int32_t waypoints_reached_ = 0;
+  std::vector<SurfacingStats> surfacings_;
 };
 
 // Hands every row to two sinks (e.g. the CSV file and the statistics).

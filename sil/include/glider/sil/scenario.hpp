@@ -3,6 +3,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/flight_software.hpp"
@@ -10,6 +11,7 @@
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle.hpp"
 #include "glider/sil/csv_flight_log.hpp"
+#include "glider/sil/fault_injection.hpp"
 #include "glider/sil/flight_stats.hpp"
 #include "glider/sil/sim_hal.hpp"
 
@@ -31,6 +33,20 @@ struct ScenarioOptions {
   // Called before every firmware cycle with the simulated time: tests inject
   // faults through it.
   std::function<void(double sim_time_s, SimHal& hal)> before_cycle;
+  // Faults switched on at a simulated time (`--fault NAME@T`).
+  std::vector<ScheduledFault> faults;
+  PeripheralModels peripherals{};  // GPS (launch position) and energy model
+  // An aborted firmware stays in its abort state for good; the run stops
+  // this long after the abort (the vehicle is up by then, or never will be).
+  double stop_after_abort_s = 3600.0;
+};
+
+// Where the vehicle truly was when the firmware counted a waypoint reached.
+struct WaypointEvent {
+  std::int32_t reached = 0;  // count after this one
+  double time_s = 0.0;
+  double east_m = 0.0;       // truth, from the launch point
+  double north_m = 0.0;
 };
 
 struct ScenarioResult {
@@ -44,6 +60,12 @@ struct ScenarioResult {
   fw::ExecutiveStats executive;
   std::uint64_t log_rows = 0;
   std::uint64_t log_rows_lost = 0;
+  bool drop_weight_released = false;
+  std::vector<WaypointEvent> waypoints;
+  double abort_time_s = -1.0;     // first cycle in the abort phase
+  double abort_surfaced_s = -1.0; // first time after it that the antenna was truly out of the water
+  double energy_used_j = 0.0;
+  double charge_used_amphr = 0.0;
   std::string error;  // set when the run could not start or the log failed
 };
 

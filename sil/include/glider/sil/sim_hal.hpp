@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <string>
 
 #include "glider/hal/attitude_sensor.hpp"
 #include "glider/hal/battery_slide.hpp"
@@ -7,8 +8,10 @@
 #include "glider/hal/depth_sensor.hpp"
 #include "glider/hal/rudder.hpp"
 #include "glider/model/simulator.hpp"
+#include "glider/sil/fault_injection.hpp"
 #include "glider/sil/portable_random.hpp"
 #include "glider/sil/sim_clock.hpp"
+#include "glider/sil/sim_peripherals.hpp"
 
 namespace glider::sil {
 
@@ -25,23 +28,20 @@ struct SensorNoise {
   double ctd_pressure_bar = 0.002;
 };
 
-// Faults a test can switch on to exercise the firmware's abort paths.
-struct FaultInjection {
-  bool depth_invalid = false;
-  bool attitude_invalid = false;
-  bool pump_fault = false;
-  bool battery_fault = false;
-  bool fin_fault = false;
+struct PeripheralModels {
+  GpsModel gps{};
+  PowerModel power{};
 };
 
 // The HAL implemented on the vehicle model. Deterministic: the noise comes
-// from a seeded PortableRandom, so logs are bit-identical across runs and
-// machines.
+// from a seeded PortableRandom (the GPS from its own stream), so logs are
+// bit-identical across runs and machines.
 class SimHal final : public hal::DepthSensor,
                      public hal::BuoyancyPump,
                      public hal::BatterySlide {
  public:
-  SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed);
+  SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
+         const PeripheralModels& peripherals = {});
 
   hal::DepthSample read() override;
   hal::AttitudeSample read_attitude();
@@ -52,12 +52,19 @@ class SimHal final : public hal::DepthSensor,
   hal::ActuatorReading read_position_in() override;
 
   FaultInjection& faults() { return faults_; }
+  // Switches a named fault on (fault_names()), with its side effects on the
+  // plant (a stuck pump stops where it is). False if the name is unknown.
+  bool inject(const std::string& name);
 
   // AttitudeSensor::read() would clash with DepthSensor::read(): the attitude
   // sensor is a small port object.
   hal::DepthSensor& depth() { return *this; }
   hal::AttitudeSensor& attitude() { return attitude_port_; }
   hal::Rudder& rudder() { return rudder_port_; }
+  SimGps& gps() { return gps_; }
+  SimLeakDetector& leak() { return leak_; }
+  SimDropWeight& drop_weight() { return drop_weight_; }
+  SimPowerMonitor& power() { return power_; }
 
  private:
   class AttitudePort final : public hal::AttitudeSensor {
@@ -86,8 +93,14 @@ class SimHal final : public hal::DepthSensor,
   SensorNoise noise_;
   PortableRandom random_;
   FaultInjection faults_{};
+  hal::DepthSample last_depth_{};        // what a frozen sensor keeps returning
+  hal::AttitudeSample last_attitude_{};
   AttitudePort attitude_port_{*this};
   RudderPort rudder_port_{*this};
+  SimGps gps_;
+  SimLeakDetector leak_;
+  SimDropWeight drop_weight_;
+  SimPowerMonitor power_;
 };
 
 }  // namespace glider::sil

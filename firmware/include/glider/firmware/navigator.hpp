@@ -1,0 +1,90 @@
+#pragma once
+// The mission above the yo: segments, GPS at the surface, dead reckoning
+// under water, the depth-averaged current from each surfacing's DR error,
+// the heading to the active waypoint corrected for that current, waypoints
+// reached, and the end of the list. Pure logic on checked inputs.
+#include <cstdint>
+
+#include "glider/firmware/dead_reckoning.hpp"
+#include "glider/firmware/mission_plan.hpp"
+#include "glider/firmware/yo_mission.hpp"
+#include "glider/hal/gps.hpp"
+
+namespace glider::fw {
+
+struct NavigatorInputs {
+  hal::Micros now_us = 0;
+  Phase phase = Phase::kSurface;
+  bool segment_complete = false;  // the yo is at the surface, ready for the next segment
+  bool attitude_ok = false;
+  double pitch_rad = 0.0;
+  double heading_rad = 0.0;
+  bool depth_rate_ok = false;
+  double depth_rate_m_s = 0.0;
+  hal::GpsFix fix{};  // as read; checked here
+};
+
+// What one surfacing's fix said about the dead reckoning.
+struct SurfacingReport {
+  bool valid = false;
+  double dr_error_m = 0.0;               // |fix - DR position|
+  double distance_through_water_m = 0.0; // the segment's DR distance
+  double under_water_s = 0.0;
+};
+
+struct NavigatorOutputs {
+  double heading_target_rad = 0.0;  // NaN: no heading control (fin centred)
+  bool start_segment = false;
+  bool surface_requested = false;
+  bool mission_complete = false;
+  AbortCause abort = AbortCause::kNone;
+  bool new_fix = false;  // a fresh, checked fix this cycle (logged)
+  SurfacingReport surfacing{};  // valid on the cycle of the first fix after a segment
+};
+
+class Navigator {
+ public:
+  Navigator(const MissionPlan& plan, const DeadReckoningConfig& dr, double max_wpt_distance_m);
+
+  NavigatorOutputs update(const NavigatorInputs& in);
+
+  // For the log.
+  bool have_position() const { return have_origin_; }
+  LatLon dr_position() const { return frame_.to_global(dr_.position()); }
+  EastNorth current_m_s() const { return current_; }
+  bool have_current() const { return have_current_; }
+  std::int32_t active_waypoint() const { return waypoint_; }
+  std::int32_t waypoints_reached() const { return reached_; }
+  std::int32_t segments() const { return segments_; }
+  double speed_m_s() const { return dr_.last_speed_m_s(); }  // horizontal, through the water
+
+ private:
+  enum class State { kSurface, kUnderWater, kDone };
+
+  bool fix_is_fresh(const hal::GpsFix& fix, hal::Micros since_us) const;
+  void on_fix(const hal::GpsFix& fix, NavigatorOutputs& out);
+  void advance_waypoint();
+  bool list_done() const;
+  double heading_to_waypoint() const;
+
+  MissionPlan plan_;
+  double max_wpt_distance_m_;
+  DeadReckoning dr_;
+  LocalFrame frame_;
+  bool have_origin_ = false;
+  State state_ = State::kSurface;
+  bool launched_ = false;
+  hal::Micros surfaced_us_ = 0;
+  hal::Micros dive_us_ = 0;
+  hal::Micros last_us_ = 0;
+  bool fix_this_surfacing_ = false;
+  bool dr_error_pending_ = false;
+  EastNorth position_{};  // last known (fix or DR)
+  EastNorth current_{};
+  bool have_current_ = false;
+  std::int32_t waypoint_ = 0;
+  std::int32_t reached_ = 0;
+  std::int32_t segments_ = 0;
+};
+
+}  // namespace glider::fw

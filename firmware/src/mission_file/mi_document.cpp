@@ -1,0 +1,218 @@
+#include "glider/firmware/mission_file/mi_document.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace glider::fw::mission_file {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string trim(const std::string& s) {
+  const auto begin = s.find_first_not_of(" \t\r\n");
+  if (begin == std::string::npos) return "";
+  const auto end = s.find_last_not_of(" \t\r\n");
+  return s.substr(begin, end - begin + 1);
+}
+
+std::string strip_comment(const std::string& s) {
+  const auto hash = s.find('#');
+  return trim(hash == std::string::npos ? s : s.substr(0, hash));
+}
+
+bool parse_number(const std::string& text, double& value) {
+  if (text.empty()) return false;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (*first == '+') ++first;
+  const auto result = std::from_chars(first, last, value);
+  return result.ec == std::errc() && result.ptr == last;
+}
+
+// Calls fn(where, line, lower-case line) for every line that is not blank
+// once its comment is removed; returns the number of lines read.
+template <typename Fn>
+int for_each_line(std::istream& in, const std::string& file, Fn&& fn) {
+  std::string raw;
+  int number = 0;
+  while (std::getline(in, raw)) {
+    ++number;
+    const std::string line = strip_comment(raw);
+    if (!line.empty()) fn(SourceLocation{file, number}, line, lower(line));
+  }
+  return number;
+}
+
+struct Reader {
+  MiDocument& doc;
+
+  void error(const SourceLocation& at, std::string message) {
+    doc.diagnostics.push_back({Severity::kError, at.file, at.line, std::move(message)});
+  }
+
+  // "name(unit) value" after the "b_arg:" or "sensor:" keyword.
+  bool parse_arg(const std::string& body, const SourceLocation& at, MiArg& arg) {
+    const auto open = body.find('(');
+    const auto close = body.find(')', open == std::string::npos ? 0 : open);
+    if (open == std::string::npos || close == std::string::npos) {
+      error(at, "expected 'name(unit) value', got '" + body + "'");
+      return false;
+    }
+    arg.name = lower(trim(body.substr(0, open)));
+    arg.unit = trim(body.substr(open + 1, close - open - 1));
+    const std::string value = trim(body.substr(close + 1));
+    if (arg.name.empty()) {
+      error(at, "argument without a name");
+      return false;
+    }
+    if (!parse_number(value, arg.value)) {
+      error(at, "value of " + arg.name + " is not a number: '" + value + "'");
+      return false;
+    }
+    arg.where = at;
+    return true;
+  }
+
+  // An argument file: behavior_name=..., <start:b_arg> ... <end:b_arg>,
+  // <start:waypoints> ... <end:waypoints>.
+  void read_ma(const std::filesystem::path& path, MiBehavior& behavior, const SourceLocation& included_at) {
+    std::ifstream in(path);
+    if (!in) {
+      error(included_at, "cannot open argument file " + path.string());
+      return;
+    }
+    const std::string file = path.filename().string();
+    enum class Section { kNone, kArgs, kWaypoints } section = Section::kNone;
+    bool named = false;
+    const int lines = for_each_line(in, file, [&](const SourceLocation& at, const std::string& line,
+                                                  const std::string& key) {
+      if (key.rfind("behavior_name", 0) == 0) {
+        const auto eq = line.find('=');
+        const std::string name = eq == std::string::npos ? "" : lower(trim(line.substr(eq + 1)));
+        if (name != behavior.name) {
+          error(at, "argument file is for behavior '" + name + "', included by '" + behavior.name + "' at " +
+                        included_at.file + ":" + std::to_string(included_at.line));
+        }
+        named = true;
+      } else if (key == "<start:b_arg>") {
+        section = Section::kArgs;
+      } else if (key == "<start:waypoints>") {
+        section = Section::kWaypoints;
+        behavior.has_waypoint_section = true;
+      } else if (key == "<end:b_arg>" || key == "<end:waypoints>") {
+        section = Section::kNone;
+      } else if (section == Section::kArgs && key.rfind("b_arg:", 0) == 0) {
+        MiArg arg;
+        if (parse_arg(trim(line.substr(6)), at, arg)) behavior.args.push_back(arg);
+      } else if (section == Section::kWaypoints) {
+        std::istringstream fields(line);
+        std::string lon, lat, extra;
+        MiWaypoint w;
+        fields >> lon >> lat;
+        if (!parse_number(lon, w.lon_nmea) || !parse_number(lat, w.lat_nmea) || (fields >> extra)) {
+          error(at, "waypoint must be 'lon lat' in NMEA ddmm.mmm, got '" + line + "'");
+          return;
+        }
+        w.where = at;
+        behavior.waypoints.push_back(w);
+      } else {
+        error(at, "unexpected line in argument file: '" + line + "'");
+      }
+    });
+    if (!named) error({file, 0}, "argument file has no behavior_name= line");
+    if (section != Section::kNone) error({file, lines}, "section not closed with <end:...>");
+  }
+
+  void include(const std::filesystem::path& dir, MiBehavior& behavior, const MiArg& arg) {
+    if (arg.value < 0.0) return;  // < 0: arguments from this file only (Slocum)
+    char number[16];
+    std::snprintf(number, sizeof(number), "%02d", static_cast<int>(arg.value));
+    const std::string file = behavior.name.substr(0, 6) + number + ".ma";
+    for (const auto& candidate : {dir / "mafiles" / file, dir / ".." / "mafiles" / file, dir / file}) {
+      std::error_code ec;
+      if (std::filesystem::exists(candidate, ec)) {
+        read_ma(candidate, behavior, arg.where);
+        return;
+      }
+    }
+    error(arg.where, "argument file " + file + " not found (looked in mafiles/ and ../mafiles/ of " +
+                         dir.string() + ")");
+  }
+
+  void read_mi(std::istream& in, const std::string& file, const std::filesystem::path& dir) {
+    MiBehavior* current = nullptr;
+    for_each_line(in, file, [&](const SourceLocation& at, const std::string& line, const std::string& key) {
+      if (key.rfind("behavior:", 0) == 0) {
+        doc.behaviors.push_back({lower(trim(line.substr(9))), at, {}, {}, false});
+        current = &doc.behaviors.back();
+        if (current->name.empty()) error(at, "behavior without a name");
+      } else if (key.rfind("b_arg:", 0) == 0) {
+        if (current == nullptr) {
+          error(at, "b_arg outside a behavior block");
+          return;
+        }
+        MiArg arg;
+        if (!parse_arg(trim(line.substr(6)), at, arg)) return;
+        if (arg.name == "args_from_file") {
+          include(dir, *current, arg);
+        } else {
+          current->args.push_back(arg);
+        }
+      } else if (key.rfind("sensor:", 0) == 0) {
+        MiArg arg;
+        if (parse_arg(trim(line.substr(7)), at, arg)) doc.sensors.push_back(arg);
+      } else {
+        error(at, "expected 'behavior:', 'b_arg:' or 'sensor:', got '" + line + "'");
+      }
+    });
+  }
+};
+
+}  // namespace
+
+std::string Diagnostic::text() const {
+  // Appended piece by piece (GCC 12 warns falsely, -Wrestrict, on operator+ chains).
+  std::string out;
+  out.reserve(file.size() + message.size() + 24);
+  out.append(file);
+  if (line > 0) {
+    out.push_back(':');
+    out.append(std::to_string(line));
+  }
+  out.append(severity == Severity::kError ? ": error: " : ": warning: ");
+  out.append(message);
+  return out;
+}
+
+bool MiDocument::has_errors() const {
+  return std::any_of(diagnostics.begin(), diagnostics.end(),
+                     [](const Diagnostic& d) { return d.severity == Severity::kError; });
+}
+
+MiDocument parse_mi_text(const std::string& text, const std::string& file_name,
+                         const std::filesystem::path& source_dir) {
+  MiDocument doc;
+  std::istringstream in(text);
+  Reader{doc}.read_mi(in, file_name, source_dir);
+  return doc;
+}
+
+MiDocument read_mi_file(const std::filesystem::path& path) {
+  MiDocument doc;
+  std::ifstream in(path);
+  if (!in) {
+    doc.diagnostics.push_back({Severity::kError, path.string(), 0, "cannot open mission file"});
+    return doc;
+  }
+  Reader{doc}.read_mi(in, path.filename().string(), path.parent_path());
+  return doc;
+}
+
+}  // namespace glider::fw::mission_file

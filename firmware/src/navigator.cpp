@@ -1,0 +1,163 @@
+#include "glider/firmware/navigator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace glider::fw {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Fixes older than this when read are not news (the receiver keeps its last).
+constexpr double kFixMaxAgeS = 5.0;
+// A segment this short says nothing useful about the current: the DR's own
+// error over a yo or two (inflections, speed) would dominate the estimate.
+constexpr double kMinSegmentForCurrentS = 600.0;
+// Never steer more than this off the bearing to fight a current: beyond it
+// the glider cannot make good its track anyway and would only lose ground.
+constexpr double kMaxCrabRad = 1.05;  // 60 deg
+
+bool plausible(const hal::GpsFix& f) {
+  return f.valid && f.quality > 0 && std::isfinite(f.latitude_deg) && std::isfinite(f.longitude_deg) &&
+         std::fabs(f.latitude_deg) <= 90.0 && std::fabs(f.longitude_deg) <= 180.0;
+}
+
+}  // namespace
+
+Navigator::Navigator(const MissionPlan& plan, const DeadReckoningConfig& dr, double max_wpt_distance_m)
+    : plan_(plan), max_wpt_distance_m_(max_wpt_distance_m), dr_(dr) {}
+
+bool Navigator::fix_is_fresh(const hal::GpsFix& fix, hal::Micros since_us) const {
+  return plausible(fix) && fix.time_us >= since_us && hal::to_seconds(last_us_ - fix.time_us) <= kFixMaxAgeS;
+}
+
+bool Navigator::list_done() const {
+  if (plan_.waypoint_count == 0) return segments_ >= 1;  // a yo-only mission is one segment
+  if (plan_.legs_to_run == kLegsLoopForever) return false;
+  const std::int32_t legs = plan_.legs_to_run == kLegsOnce ? plan_.waypoint_count : plan_.legs_to_run;
+  return reached_ >= legs;
+}
+
+void Navigator::advance_waypoint() {
+  ++reached_;
+  waypoint_ = (waypoint_ + 1) % plan_.waypoint_count;
+}
+
+double Navigator::heading_to_waypoint() const {
+  const EastNorth target = frame_.to_local(plan_.waypoints[static_cast<std::size_t>(waypoint_)]);
+  const EastNorth from = dr_.position();
+  const double bearing = bearing_rad(from, target);
+  const double speed = dr_.last_speed_m_s();
+  if (!plan_.current_correction || !have_current_ || !(speed > 0.05)) return bearing;
+  // Aim so that the velocity through the water plus the current points at
+  // the waypoint: U sin(psi - beta) + c_perp = 0, c_perp the current's
+  // component to the right of the track.
+  const double c_perp = current_.east_m * std::cos(bearing) - current_.north_m * std::sin(bearing);
+  const double crab = std::clamp(-std::asin(std::clamp(c_perp / speed, -1.0, 1.0)), -kMaxCrabRad, kMaxCrabRad);
+  const double heading = bearing + crab;
+  return heading < 0.0 ? heading + 2.0 * std::numbers::pi : std::fmod(heading, 2.0 * std::numbers::pi);
+}
+
+void Navigator::on_fix(const hal::GpsFix& fix, NavigatorOutputs& out) {
+  const LatLon here{fix.latitude_deg, fix.longitude_deg};
+  if (!have_origin_) {
+    frame_ = LocalFrame(here);
+    have_origin_ = true;
+  }
+  const EastNorth position = frame_.to_local(here);
+  if (dr_error_pending_) {
+    dr_error_pending_ = false;
+    const double under_water_s = hal::to_seconds(surfaced_us_ - dive_us_);
+    const EastNorth error{position.east_m - dr_.position().east_m, position.north_m - dr_.position().north_m};
+    out.surfacing = {true, std::hypot(error.east_m, error.north_m), dr_.distance_through_water_m(), under_water_s};
+    // The DR already carried the previous estimate: what is left over is
+    // the correction to it (Slocum's m_water_vx/vy update).
+    if (under_water_s >= kMinSegmentForCurrentS) {
+      current_.east_m += error.east_m / under_water_s;
+      current_.north_m += error.north_m / under_water_s;
+      have_current_ = true;
+    }
+  }
+  position_ = position;
+  dr_.reset(position);
+  out.new_fix = true;
+  if (plan_.waypoint_count > 0) {
+    const EastNorth target = frame_.to_local(plan_.waypoints[static_cast<std::size_t>(waypoint_)]);
+    const double distance = distance_m(position, target);
+    if (distance <= plan_.waypoint_radius_m && !list_done()) advance_waypoint();
+    if (max_wpt_distance_m_ > 0.0 && distance > max_wpt_distance_m_) out.abort = AbortCause::kWaypointTooFar;
+  }
+}
+
+NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
+  NavigatorOutputs out;
+  out.heading_target_rad = kNaN;
+  const double dt_s = launched_ ? hal::to_seconds(in.now_us - last_us_) : 0.0;
+  last_us_ = in.now_us;
+  launched_ = true;
+
+  // A yo-only mission dives at launch by itself (YoMission start_at_launch).
+  if (state_ == State::kSurface && (in.phase == Phase::kDive || in.phase == Phase::kClimb)) {
+    state_ = State::kUnderWater;
+    dive_us_ = in.now_us;
+    dr_.reset(position_);
+    ++segments_;
+  }
+
+  if (state_ == State::kUnderWater) {
+    if (in.segment_complete || in.phase == Phase::kSurface) {
+      state_ = State::kSurface;
+      surfaced_us_ = in.now_us;
+      fix_this_surfacing_ = false;
+      dr_error_pending_ = have_origin_;
+    } else {
+      if (in.phase != Phase::kAbort && in.attitude_ok && in.depth_rate_ok && dt_s > 0.0) {
+        dr_.update(in.pitch_rad, in.heading_rad, in.depth_rate_m_s, current_, dt_s);
+      }
+      if (plan_.waypoint_count > 0 && have_origin_) {
+        const EastNorth target = frame_.to_local(plan_.waypoints[static_cast<std::size_t>(waypoint_)]);
+        if (distance_m(dr_.position(), target) <= plan_.waypoint_radius_m && !list_done()) advance_waypoint();
+        if (list_done()) out.surface_requested = true;
+        out.heading_target_rad = heading_to_waypoint();
+      } else if (std::isfinite(plan_.heading_rad)) {
+        out.heading_target_rad = plan_.heading_rad;
+      }
+      if (plan_.surface_interval_s > 0.0 && hal::to_seconds(in.now_us - dive_us_) >= plan_.surface_interval_s) {
+        out.surface_requested = true;
+      }
+      return out;
+    }
+  }
+  if (state_ == State::kDone) {
+    out.mission_complete = true;
+    return out;
+  }
+
+  // At the surface (launch or between segments).
+  if (!in.segment_complete) return out;  // still finishing the climb, or aborting
+  if (fix_is_fresh(in.fix, surfaced_us_)) {
+    fix_this_surfacing_ = true;
+    on_fix(in.fix, out);
+  }
+  const double at_surface_s = hal::to_seconds(in.now_us - surfaced_us_);
+  const bool dwelt = at_surface_s >= plan_.surface_dwell_s;
+  const bool gave_up = at_surface_s >= std::max(plan_.gps_wait_s, plan_.surface_dwell_s);
+  if (!((fix_this_surfacing_ && dwelt) || gave_up)) return out;
+  if (list_done()) {
+    state_ = State::kDone;
+    out.mission_complete = true;
+    return out;
+  }
+  // Without any fix ever, waypoints cannot be flown: stay up and keep
+  // listening (safe, and visible) rather than dive blind.
+  if (plan_.waypoint_count > 0 && !have_origin_) return out;
+  dr_error_pending_ = false;
+  dr_.reset(position_);
+  dive_us_ = in.now_us;
+  state_ = State::kUnderWater;
+  ++segments_;
+  out.start_segment = true;
+  return out;
+}
+
+}  // namespace glider::fw

@@ -1,0 +1,117 @@
+// glider-heading-study: the heading autopilot in SIL against the real
+// comet logs (docs/heading-control.md). Measures the real gliders' heading
+// oscillation and roll-offset error, then flies the same vehicle in SIL with
+// paper 001's P law and Slocum's law while the fin's dead time grows, and
+// the compensated law on the worst case. Prints one line per case.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "glider/firmware/mission_file/mission_loader.hpp"
+#include "glider/flightlog/flight_log.hpp"
+#include "glider/model/vehicle_file.hpp"
+#include "glider/sil/mission_setup.hpp"
+#include "glider/sil/scenario.hpp"
+#include "glider/units.hpp"
+#include "heading_metrics.hpp"
+
+namespace {
+
+using glider::heading_study::HeadingMetrics;
+
+struct Case {
+  std::string name;
+  glider::fw::HeadingLaw law;
+  double roll_deg;
+  double delay_s;
+};
+
+const char* law_name(glider::fw::HeadingLaw law) {
+  switch (law) {
+    case glider::fw::HeadingLaw::kProportional: return "P (paper 001, kp 0.5)";
+    case glider::fw::HeadingLaw::kSlocum: return "Slocum (1.5, 0.02, -4)";
+    case glider::fw::HeadingLaw::kCompensated: return "compensated";
+  }
+  return "?";
+}
+
+// Flies the heading-hold mission; nullopt-like empty name on failure.
+bool fly(const std::string& source, const std::string& out_dir, const Case& c, HeadingMetrics& metrics) {
+  glider::model::VehicleParams vehicle =
+      glider::model::load_vehicle_file(source + "/boards/vehicles/slocum_comet.toml");
+  vehicle.heading.roll_offset_rad = glider::deg_to_rad(c.roll_deg);
+  vehicle.heading.fin_delay_s = c.delay_s;
+  glider::fw::FlightSoftwareConfig base;
+  base.heading.law = c.law;
+  base.heading.delay_s = c.delay_s;  // the compensated law is told the fin's dead time (bench-measured)
+  const auto loaded = glider::fw::mission_file::load_mission_file(
+      source + "/boards/missions/heading_hold.mi", glider::sil::mission_vehicle(vehicle, 102.0), base);
+  if (!loaded.config) {
+    for (const auto& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.text().c_str());
+    return false;
+  }
+  glider::sil::ScenarioOptions options;
+  options.log_path = out_dir + "/" + c.name + ".csv";
+  const glider::sil::ScenarioResult r = glider::sil::run_scenario(vehicle, *loaded.config, options);
+  if (!r.error.empty() || !r.completed) {
+    std::fprintf(stderr, "glider-heading-study: %s: %s\n", c.name.c_str(),
+                 r.error.empty() ? "mission did not complete" : r.error.c_str());
+    return false;
+  }
+  metrics = glider::heading_study::heading_metrics(glider::flightlog::read_flight_log(options.log_path), 900.0);
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Heading autopilot study: real comet logs vs SIL with fin dead time, before and after the fix"};
+  std::string source = ".";
+  std::string out_dir = "build/heading_study";
+  std::vector<double> delays{0.0, 5.0, 10.0, 15.0, 20.0};
+  app.add_option("--source", source, "repository root (boards/, tests/data/real)")->capture_default_str();
+  app.add_option("--out", out_dir, "where the SIL logs go")->capture_default_str();
+  app.add_option("--delays", delays, "fin dead times to fly (s)")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  std::filesystem::create_directories(out_dir);
+
+  glider::flightlog::ReadOptions real;
+  real.columns = {"m_heading", "c_heading", "m_depth_state", "c_fin"};
+  std::printf("Real comet logs (glides with a heading command):\n");
+  for (const char* log : {"comet-2016-174-05", "comet-2019-222-02-154", "comet-2019-222-02-156"}) {
+    const auto data = glider::flightlog::read_flight_log(source + "/tests/data/real/" + log + ".csv", real);
+    std::printf("  %-24s %s\n", log, glider::heading_study::format(glider::heading_study::heading_metrics(data, 0.0)).c_str());
+  }
+
+  int failures = 0;
+  auto run = [&](const Case& c) {
+    HeadingMetrics m;
+    if (!fly(source, out_dir, c, m)) {
+      ++failures;
+      return;
+    }
+    std::printf("  %-24s roll %+5.1f deg, fin dead time %4.1f s: %s\n", law_name(c.law), c.roll_deg, c.delay_s,
+                glider::heading_study::format(m).c_str());
+  };
+  std::printf("SIL, comet vehicle, roll +3.7 deg (comet 2016), fin 0.1 rad/s:\n");
+  for (const double delay : delays) {
+    for (const auto law : {glider::fw::HeadingLaw::kProportional, glider::fw::HeadingLaw::kSlocum,
+                           glider::fw::HeadingLaw::kCompensated}) {
+      char name[64];
+      std::snprintf(name, sizeof(name), "roll4_law%d_delay%02.0f", static_cast<int>(law), delay);
+      run({name, law, 3.7, delay});
+    }
+  }
+  std::printf("SIL, comet vehicle, roll -10 deg (comet 2019), fin 0.1 rad/s:\n");
+  for (const double delay : {0.0, delays.back()}) {
+    for (const auto law : {glider::fw::HeadingLaw::kProportional, glider::fw::HeadingLaw::kSlocum,
+                           glider::fw::HeadingLaw::kCompensated}) {
+      char name[64];
+      std::snprintf(name, sizeof(name), "roll10_law%d_delay%02.0f", static_cast<int>(law), delay);
+      run({name, law, -10.0, delay});
+    }
+  }
+  return failures == 0 ? 0 : 1;
+}
