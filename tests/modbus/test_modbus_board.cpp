@@ -2,6 +2,7 @@
 // file, line and problem.
 #include <CppUTest/TestHarness.h>
 
+#include "../unit/config_error.hpp"
 #include "glider/config/toml_document.hpp"
 #include "glider/hal_linux/modbus_board.hpp"
 
@@ -33,17 +34,10 @@ max_rate_in_s = 0.1
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    hal_linux::parse_modbus_board(text, "board.toml");
-  } catch (const config::ConfigError& error) {
-    return error.what();
-  }
-  return "";
+  return test::config_error_of([&] { hal_linux::parse_modbus_board(text, "board.toml"); });
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  return text.replace(text.find(from), from.size(), to);
-}
+using test::replaced;
 
 }  // namespace
 
