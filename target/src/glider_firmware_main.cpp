@@ -26,20 +26,23 @@ namespace {
 using namespace glider;
 
 // The platform's part of each cycle, before the flight software: fresh
-// Modbus budgets, and the GPS drained so its counters and fix stay current
-// while the firmware does not read it yet (issue 7 adds that).
+// Modbus budgets; the GPS drained so its counters and fix stay current, and
+// the battery read so its charge integrates, while the firmware does not read
+// them yet (issue 7 adds that; reading them twice a cycle is harmless).
 class PlatformCycle final : public fw::PeriodicTask {
  public:
   explicit PlatformCycle(target::LinuxHal& hal) : hal_(hal) {}
   void run(hal::Micros) override {
     hal_.begin_cycle();
     fix_ = hal_.gps().read();
+    if (hal::PowerMonitor* power = hal_.power()) power_ = power->read();
   }
   const hal::GpsFix& fix() const { return fix_; }
 
  private:
   target::LinuxHal& hal_;
   hal::GpsFix fix_;
+  hal::PowerSample power_;
 };
 
 // Start-up check: the flight software aborts on a sensor that has never
@@ -75,8 +78,8 @@ std::string default_log_name(const std::filesystem::path& directory) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Glider flight software on the Linux target"};
-  std::string board_path = "/etc/glider/board.toml";
-  std::string mission_path = "/etc/glider/mission.toml";
+  std::string board_path = "/etc/glider/target/board.toml";
+  std::string mission_path = "/etc/glider/missions/mission.toml";
   std::string log_path;
   std::string actuators_tcp;
   std::uint64_t max_cycles = 0;

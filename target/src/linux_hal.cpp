@@ -59,6 +59,16 @@ std::unique_ptr<LinuxHal> LinuxHal::build(const TargetBoard& board, const LinuxH
   h->slide_axis_ = std::make_unique<hal_linux::ModbusAxis>(*h->actuator_link_, h->actuator_board_.slide);
   h->pump_ = std::make_unique<hal_linux::ModbusBuoyancyPump>(*h->pump_axis_, h->clock_);
   h->slide_ = std::make_unique<hal_linux::ModbusBatterySlide>(*h->slide_axis_, h->clock_);
+  if (h->actuator_board_.rudder) {
+    h->rudder_axis_ = std::make_unique<hal_linux::ModbusAxis>(*h->actuator_link_, *h->actuator_board_.rudder);
+    h->rudder_ = std::make_unique<hal_linux::ModbusRudder>(*h->rudder_axis_, h->clock_);
+  }
+  if (board.power) {
+    h->power_ = hal_linux::HwmonPowerMonitor::open(*board.power, h->clock_);
+  } else {
+    std::fprintf(log, "glider-firmware: %s: no [power] monitor: no battery voltage or charge readings\n",
+                 board.source.c_str());
+  }
   h->depth_link_ = open_link(board.depth.bus, "depth transmitter", log);
   h->depth_ = std::make_unique<hal_linux::KellerDepthSensor>(*h->depth_link_, board.depth.keller, h->clock_);
   h->gps_ =
@@ -100,6 +110,12 @@ void LinuxHal::print_statistics(std::FILE* out) const {
                  hal_linux::describe(link->bus()).c_str(), static_cast<unsigned long long>(s.transactions),
                  static_cast<unsigned long long>(s.failed), static_cast<unsigned long long>(s.budget_refusals),
                  static_cast<unsigned long long>(s.reconnects));
+  }
+  if (power_) {
+    const auto& p = power_->stats();
+    std::fprintf(out, "glider-firmware: power %s: %llu reads; rejected: %llu errors, %llu out of range\n",
+                 power_->device().c_str(), static_cast<unsigned long long>(p.reads),
+                 static_cast<unsigned long long>(p.errors), static_cast<unsigned long long>(p.out_of_range));
   }
   std::fprintf(out, "glider-firmware: log: %llu rows written, %llu refused (ring full)\n",
                static_cast<unsigned long long>(log_->rows_written()),

@@ -70,6 +70,17 @@ DepthConfig read_depth(const TomlDocument& doc) {
   return depth;
 }
 
+hal_linux::PowerMonitorConfig read_power(const TomlDocument& doc) {
+  hal_linux::PowerMonitorConfig power;
+  power.hwmon_name = doc.string_or("power.hwmon_name", power.hwmon_name);
+  power.charge_used_at_start_amphr = doc.number_or("power.charge_used_at_start_amphr", 0.0);
+  if (power.charge_used_at_start_amphr < 0.0) doc.fail("power.charge_used_at_start_amphr", "must not be negative");
+  power.min_voltage_v = positive(doc, "power.min_voltage_v", power.min_voltage_v);
+  power.max_voltage_v = positive(doc, "power.max_voltage_v", power.max_voltage_v);
+  if (power.min_voltage_v >= power.max_voltage_v) doc.fail("power.max_voltage_v", "must be above min_voltage_v");
+  return power;
+}
+
 TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& relative_to) {
   TargetBoard board;
   board.source = doc.source();
@@ -84,6 +95,7 @@ TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& rel
   board.gps = read_serial(doc, "gps", 9600, 5.0);
   board.compass = read_serial(doc, "compass", 19200, 3.0);
   board.depth = read_depth(doc);
+  if (doc.has("power")) board.power = read_power(doc);
   board.log_directory = doc.string_or("log.directory", board.log_directory.string());
   doc.reject_unknown_keys();
   return board;

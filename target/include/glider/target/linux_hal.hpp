@@ -7,6 +7,7 @@
 
 #include "glider/hal/hal.hpp"
 #include "glider/hal_linux/gpio_lines.hpp"
+#include "glider/hal_linux/hwmon_power.hpp"
 #include "glider/hal_linux/keller_depth.hpp"
 #include "glider/hal_linux/modbus_actuators.hpp"
 #include "glider/hal_linux/modbus_link.hpp"
@@ -32,8 +33,10 @@ class LinuxHal {
   void begin_cycle() noexcept;
 
   hal::GpsReceiver& gps() { return *gps_; }
-  hal::DigitalInput* leak();          // null without a GPIO board
-  hal::DigitalOutput* drop_weight();  // null without a GPIO board
+  hal::DigitalInput* leak();                           // null without a GPIO board
+  hal::DigitalOutput* drop_weight();                   // null without a GPIO board
+  hal::Rudder* rudder() { return rudder_.get(); }      // null without [rudder] on the actuator board
+  hal::PowerMonitor* power() { return power_.get(); }  // null without [power]
   RingBufferLog& log() { return *log_; }
 
   // Every driver's counters, one line each, for the log at the end.
@@ -49,6 +52,9 @@ class LinuxHal {
   std::unique_ptr<hal_linux::ModbusAxis> slide_axis_;
   std::unique_ptr<hal_linux::ModbusBuoyancyPump> pump_;
   std::unique_ptr<hal_linux::ModbusBatterySlide> slide_;
+  std::unique_ptr<hal_linux::ModbusAxis> rudder_axis_;
+  std::unique_ptr<hal_linux::ModbusRudder> rudder_;
+  std::unique_ptr<hal_linux::HwmonPowerMonitor> power_;
   std::unique_ptr<hal_linux::ModbusLink> depth_link_;
   std::unique_ptr<hal_linux::KellerDepthSensor> depth_;
   std::unique_ptr<hal_linux::NmeaGpsReceiver> gps_;

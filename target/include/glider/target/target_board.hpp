@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "glider/hal_linux/hwmon_power.hpp"
 #include "glider/hal_linux/keller_depth.hpp"
 #include "glider/hal_linux/modbus_board.hpp"
 #include "glider/target/realtime_loop.hpp"
@@ -32,6 +33,7 @@ struct TargetBoard {
   SerialSensorConfig gps;
   SerialSensorConfig compass;
   DepthConfig depth;
+  std::optional<hal_linux::PowerMonitorConfig> power;  // absent: no battery readings (bench only)
   std::filesystem::path log_directory = "/var/lib/glider/logs";
 };
 
