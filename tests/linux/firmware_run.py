@@ -6,6 +6,10 @@ mission, gets SIGTERM, must stop cleanly (exit 0) with its flight log, its
 loop jitter figures and every sensor's counters.
 
   firmware_run.py BUILD_DIR SOURCE_DIR
+
+GLIDER_FIRMWARE (a binary) and GLIDER_FIRMWARE_PREFIX (a command before it,
+e.g. "qemu-aarch64 -L /usr/aarch64-linux-gnu") run another
+build of the firmware the same way (the arm64 one, for its memory figures).
 """
 import os
 import re
@@ -63,7 +67,8 @@ def feeder(device, sentences, stop):
 
 def main():
     build, source = sys.argv[1], sys.argv[2]
-    firmware = os.path.join(build, "target", "glider-firmware")
+    firmware = os.environ.get("GLIDER_FIRMWARE", os.path.join(build, "target", "glider-firmware"))
+    prefix = os.environ.get("GLIDER_FIRMWARE_PREFIX", "").split()
     with tempfile.TemporaryDirectory() as tmp:
         sim = start([os.path.join(build, "tools", "actuator_sim", "glider-actuator-sim"), "--tcp", "127.0.0.1:0"],
                     stdout=subprocess.PIPE, text=True)
@@ -109,10 +114,16 @@ def main():
         env = dict(os.environ, NOTIFY_SOCKET=os.path.join(tmp, "notify"), WATCHDOG_USEC="2000000")
         log = os.path.join(tmp, "flight.csv")
         started = time.monotonic()
-        fw = start([firmware, "--board", board, "--mission", os.path.join(source, "boards/missions/demo_yo.toml"),
+        fw = start(prefix + [firmware, "--board", board, "--mission", os.path.join(source, "boards/missions/demo_yo.toml"),
                     "--actuators-tcp", "127.0.0.1:" + port.group(1), "--log", log],
                    stderr=subprocess.PIPE, text=True, env=env)
         time.sleep(5.0)
+        if fw.poll() is not None:
+            print(fw.stderr.read(), end="")
+            fail("glider-firmware exited (status %d) before SIGTERM" % fw.returncode)
+        with open("/proc/%d/status" % fw.pid) as f:
+            memory = dict(line.split(":", 1) for line in f if line.startswith(("VmHWM", "VmRSS")))
+        print("firmware memory after 5 s: peak RSS %s, RSS %s" % (memory["VmHWM"].strip(), memory["VmRSS"].strip()))
         fw.send_signal(signal.SIGTERM)
         try:
             _, err = fw.communicate(timeout=5)
