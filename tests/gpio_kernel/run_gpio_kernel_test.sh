@@ -5,6 +5,9 @@
 #
 #   run_gpio_kernel_test.sh ARCH CACHE_DIR TEST_BINARY BOARD_TEMPLATE
 #
+# ARCH x86_64: the installed Debian kernel; aarch64: the same Debian kernel
+# version for arm64 (downloaded into the cache), qemu-system-aarch64 -M virt.
+#
 # Debian builds its kernels without gpio-sim, so its source (and irq_sim's)
 # is taken from the linux-source tarball and built out of tree against the
 # installed headers, once per kernel version (cached in CACHE_DIR). One
@@ -17,23 +20,54 @@ fail() { echo "GPIO-KERNEL-TEST-ERROR: $*" >&2; exit 1; }
 
 [ $# -eq 4 ] || fail "usage: $0 ARCH CACHE_DIR TEST_BINARY BOARD_TEMPLATE"
 ARCH="$1" CACHE="$2" TEST_BINARY="$3" BOARD="$4"
-[ "$ARCH" = x86_64 ] || fail "only x86_64 guests are set up (asked for $ARCH)"
+case "$ARCH" in x86_64|aarch64) ;; *) fail "no guest set up for $ARCH (x86_64, aarch64)" ;; esac
 BOOT_TIMEOUT_S="${GPIO_KERNEL_TIMEOUT_S:-240}"
 
-# The newest installed kernel that has its headers (never a hard-coded version).
-KVER=""
+# The newest installed (amd64) kernel that has its headers (never a
+# hard-coded version); the arm64 guest runs the same Debian kernel ABI.
+HOST_KVER=""
 for image in $(ls -1 /boot/vmlinuz-* 2>/dev/null | sort -rV); do
   candidate="${image#/boot/vmlinuz-}"
-  if [ -d "/lib/modules/$candidate/build" ]; then KVER="$candidate"; break; fi
+  if [ -d "/lib/modules/$candidate/build" ]; then HOST_KVER="$candidate"; break; fi
 done
-[ -n "$KVER" ] || fail "no kernel image with headers: install linux-image-amd64 and linux-headers-amd64 (./glider installs them)"
-KIMAGE="/boot/vmlinuz-$KVER"
-[ -r "$KIMAGE" ] || fail "$KIMAGE is not readable"
+[ -n "$HOST_KVER" ] || fail "no kernel image with headers: install linux-image-amd64 and linux-headers-amd64 (./glider installs them)"
 SOURCE_TARBALL="$(ls -1 /usr/src/linux-source-*.tar.xz 2>/dev/null | sort -rV | head -n 1 || true)"
-command -v qemu-system-x86_64 >/dev/null || fail "qemu-system-x86_64 missing (package qemu-system-x86)"
-BUSYBOX=/bin/busybox  # busybox-static's: the guest has no C library
+
+if [ "$ARCH" = x86_64 ]; then
+  KVER="$HOST_KVER"
+  KIMAGE="/boot/vmlinuz-$KVER"
+  KBUILD="/lib/modules/$KVER/build"
+  MAKE_ARGS=()
+  BUSYBOX=/bin/busybox  # busybox-static's: the guest has no C library
+  MODULE_TREE="/lib/modules/$KVER"
+  QEMU=(qemu-system-x86_64 -accel tcg -m 512 -smp 1)
+  CONSOLE=ttyS0
+else
+  # Debian's arm64 kernel, its headers (cross-building modules works with the
+  # build machine's linux-kbuild, Multi-Arch: foreign) and busybox: the
+  # packages are downloaded and unpacked into the cache, not installed.
+  KVER="${HOST_KVER%-amd64}-arm64"
+  DEBS="$CACHE/$KVER/debs"
+  if [ ! -f "$DEBS/root/boot/vmlinuz-$KVER" ]; then
+    mkdir -p "$DEBS" && rm -rf "$DEBS/root"
+    (cd "$DEBS" && apt-get download "linux-image-$KVER:arm64" "linux-headers-$KVER:arm64" busybox-static:arm64) ||
+      fail "apt-get download of the arm64 kernel, headers and busybox failed (dpkg --add-architecture arm64?)"
+    for deb in "$DEBS"/*.deb; do dpkg -x "$deb" "$DEBS/root"; done
+  fi
+  KIMAGE="$DEBS/root/boot/vmlinuz-$KVER"
+  KBUILD="$DEBS/root/usr/src/linux-headers-$KVER"
+  # Its scripts link is relative to /usr: point it at the build machine's kbuild.
+  ln -sfn "$(ls -d /usr/lib/linux-kbuild-*/scripts | sort -rV | head -n 1)" "$KBUILD/scripts"
+  MAKE_ARGS=(ARCH=arm64 CROSS_COMPILE=aarch64-linux-gnu-)
+  BUSYBOX="$DEBS/root/bin/busybox"
+  MODULE_TREE="$DEBS/root/lib/modules/$KVER"
+  QEMU=(qemu-system-aarch64 -M virt -cpu cortex-a72 -accel tcg -m 512 -smp 1)
+  CONSOLE=ttyAMA0
+fi
+[ -r "$KIMAGE" ] || fail "$KIMAGE is not readable"
+command -v "${QEMU[0]}" >/dev/null || fail "${QEMU[0]} missing (package qemu-system-x86 / qemu-system-arm)"
 [ -x "$BUSYBOX" ] || fail "$BUSYBOX missing (package busybox-static)"
-CONFIGFS="$(find "/lib/modules/$KVER/kernel/fs/configfs" -name 'configfs.ko*' 2>/dev/null | head -n 1 || true)"
+CONFIGFS="$(find "$MODULE_TREE/kernel/fs/configfs" -name 'configfs.ko*' 2>/dev/null | head -n 1 || true)"
 
 MODULES="$CACHE/$KVER/modules"
 mkdir -p "$MODULES"
@@ -54,7 +88,7 @@ if [ ! -f "$MODULES/gpio-sim.ko" ] || [ ! -f "$MODULES/irq_sim.ko" ]; then
   grep -q MODULE_LICENSE "$work/irq_sim.c" ||
     printf '\n#include <linux/module.h>\nMODULE_LICENSE("GPL");\nMODULE_DESCRIPTION("irq_sim as a module");\n' >> "$work/irq_sim.c"
   echo 'obj-m := gpio-sim.o irq_sim.o' > "$work/Kbuild"
-  make -s -C "/lib/modules/$KVER/build" M="$work" modules 2>&1 | grep -v 'Skipping BTF' || true
+  make -s -C "$KBUILD" M="$work" "${MAKE_ARGS[@]}" modules 2>&1 | grep -v 'Skipping BTF' || true
   [ -f "$work/gpio-sim.ko" ] && [ -f "$work/irq_sim.ko" ] || fail "building the gpio-sim modules failed"
   cp "$work/gpio-sim.ko" "$work/irq_sim.ko" "$MODULES/"
 fi
@@ -66,7 +100,7 @@ mkdir -p "$ROOTFS"/{bin,proc,sys,dev,tmp,config,test} "$ROOTFS/lib/modules/$KVER
 cp "$BUSYBOX" "$ROOTFS/bin/busybox"
 cp "$MODULES"/*.ko "$ROOTFS/lib/modules/$KVER/extra/"
 [ -n "$CONFIGFS" ] && cp "$CONFIGFS" "$ROOTFS/lib/modules/$KVER/extra/"
-cp "/lib/modules/$KVER"/modules.builtin* "$ROOTFS/lib/modules/$KVER/" 2>/dev/null || true
+cp "$MODULE_TREE"/modules.builtin* "$ROOTFS/lib/modules/$KVER/" 2>/dev/null || true
 depmod -b "$ROOTFS" "$KVER"
 cp "$TEST_BINARY" "$ROOTFS/test/gpio_kernel_test"
 cp "$BOARD" "$ROOTFS/test/gpio_sim.toml"
@@ -76,11 +110,11 @@ INITRD="$CACHE/$KVER/initramfs.cpio.gz"
 (cd "$ROOTFS" && find . | cpio -o -H newc --quiet | gzip -1 > "$INITRD")
 
 LOG="$CACHE/$KVER/guest.log"
-echo "booting $KIMAGE in qemu (TCG), guest log in $LOG"
+echo "booting $KIMAGE in ${QEMU[0]} (TCG), guest log in $LOG"
 start_ms=$(($(date +%s%N) / 1000000))
 set +e
-timeout --kill-after=10 "$BOOT_TIMEOUT_S" qemu-system-x86_64 -accel tcg -m 512 -smp 1 -nographic -no-reboot \
-  -kernel "$KIMAGE" -initrd "$INITRD" -append "console=ttyS0 panic=-1 quiet" > "$LOG" 2>&1
+timeout --kill-after=10 "$BOOT_TIMEOUT_S" "${QEMU[@]}" -nographic -no-reboot \
+  -kernel "$KIMAGE" -initrd "$INITRD" -append "console=$CONSOLE panic=-1 quiet" > "$LOG" 2>&1
 status=$?
 set -e
 elapsed_ms=$(($(date +%s%N) / 1000000 - start_ms))
