@@ -65,10 +65,13 @@ TomlDocument TomlDocument::parse(std::string_view text, const std::string& sourc
   }
 }
 
-void TomlDocument::fail(std::string_view dotted_key, const std::string& message) const {
+std::string TomlDocument::where(std::string_view dotted_key) const {
   const auto node = impl_->table.at_path(dotted_key);
-  const std::string where = node ? location(source_, node.node()->source()) : source_;
-  throw ConfigError(where + ": " + std::string(dotted_key) + ": " + message);
+  return node ? location(source_, node.node()->source()) : source_;
+}
+
+void TomlDocument::fail(std::string_view dotted_key, const std::string& message) const {
+  throw ConfigError(where(dotted_key) + ": " + std::string(dotted_key) + ": " + message);
 }
 
 bool TomlDocument::has(std::string_view dotted_key) const {
@@ -127,6 +130,14 @@ std::vector<double> TomlDocument::numbers_or_empty(std::string_view dotted_key) 
     out.push_back(*value);
   }
   return out;
+}
+
+bool TomlDocument::boolean_or(std::string_view dotted_key, bool fallback) const {
+  const auto node = impl_->table.at_path(dotted_key);
+  if (!node) return fallback;
+  used_.emplace(dotted_key);
+  if (!node.is_boolean()) fail(dotted_key, "expected true or false");
+  return *node.value<bool>();
 }
 
 std::string TomlDocument::string(std::string_view dotted_key) const {

@@ -2,6 +2,7 @@
 // file, line and problem.
 #include <CppUTest/TestHarness.h>
 
+#include "../unit/config_error.hpp"
 #include "glider/config/toml_document.hpp"
 #include "glider/hal_linux/modbus_board.hpp"
 
@@ -33,17 +34,10 @@ max_rate_in_s = 0.1
 )";
 
 std::string error_of(const std::string& text) {
-  try {
-    hal_linux::parse_modbus_board(text, "board.toml");
-  } catch (const config::ConfigError& error) {
-    return error.what();
-  }
-  return "";
+  return test::config_error_of([&] { hal_linux::parse_modbus_board(text, "board.toml"); });
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  return text.replace(text.find(from), from.size(), to);
-}
+using test::replaced;
 
 }  // namespace
 
@@ -77,4 +71,17 @@ TEST(ModbusBoardFile, EndpointOverrides) {
   STRCMP_EQUAL("tcp 10.0.0.7:502", hal_linux::describe(bus).c_str());
   CHECK_THROWS(config::ConfigError, hal_linux::use_tcp_endpoint(bus, "10.0.0.7"));
   CHECK_THROWS(config::ConfigError, hal_linux::use_tcp_endpoint(bus, "host:99999"));
+}
+
+TEST(ModbusBoardFile, AnOptionalRudderAxis) {
+  CHECK_FALSE(hal_linux::parse_modbus_board(kValid, "b").rudder.has_value());
+  const std::string rudder = "[rudder]\nslave = 2\ncounts_per_unit = 10\ntravel_min_deg = -30.0\n"
+                             "travel_max_deg = 30.0\nmin_deg = -25.0\nmax_deg = 25.0\nrate_deg_s = 10.0\n"
+                             "max_rate_deg_s = 20.0\n";
+  const auto board = hal_linux::parse_modbus_board(kValid + rudder, "b");
+  CHECK_TRUE(board.rudder.has_value());
+  STRCMP_EQUAL("deg", board.rudder->unit.c_str());
+  DOUBLES_EQUAL(25.0, board.rudder->max, 0.0);
+  STRCMP_CONTAINS("rudder.base_address: overlaps the pump's registers on the same slave",
+                  error_of(kValid + replaced(rudder, "slave = 2", "slave = 1")).c_str());
 }

@@ -98,9 +98,15 @@ ModbusBoard read_board(const TomlDocument& doc) {
   board.bus = read_bus(doc);
   board.pump = read_axis(doc, "pump", "cc");
   board.slide = read_axis(doc, "slide", "in");
+  if (doc.has("rudder")) board.rudder = read_axis(doc, "rudder", "deg");
   doc.reject_unknown_keys();  // a misspelt key first: it explains what follows
   if (board.pump.slave == board.slide.slave && board.pump.base_address == board.slide.base_address) {
     doc.fail("slide.base_address", "overlaps the pump's registers on the same slave");
+  }
+  for (const AxisConfig* other : {&board.pump, &board.slide}) {
+    if (board.rudder && board.rudder->slave == other->slave && board.rudder->base_address == other->base_address) {
+      doc.fail("rudder.base_address", "overlaps the " + other->name + "'s registers on the same slave");
+    }
   }
   return board;
 }

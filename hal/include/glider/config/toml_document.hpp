@@ -37,12 +37,16 @@ class TomlDocument {
   std::int64_t integer_or(std::string_view dotted_key, std::int64_t fallback) const;
   // An array of numbers (integers accepted); empty if the key is absent.
   std::vector<double> numbers_or_empty(std::string_view dotted_key) const;
+  bool boolean_or(std::string_view dotted_key, bool fallback) const;
   std::string string(std::string_view dotted_key) const;
   std::string string_or(std::string_view dotted_key, std::string fallback) const;
 
   // Every leaf key of the document that no accessor has asked for is a typo
   // or an unsupported setting: report the first one with its line.
   void reject_unknown_keys() const;
+
+  // "file:line:col" of the key's value (the file alone when the key is absent).
+  std::string where(std::string_view dotted_key) const;
 
   // "file:line:col: message" for the key's value (or the file alone).
   [[noreturn]] void fail(std::string_view dotted_key, const std::string& message) const;

@@ -2,6 +2,7 @@
 // What a Modbus board file says (boards/modbus_actuators.md): the bus, its
 // timing budget and, per actuator axis, where it lives and how it scales.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace glider::hal_linux {
@@ -52,6 +53,7 @@ struct ModbusBoard {
   BusConfig bus;
   AxisConfig pump;
   AxisConfig slide;
+  std::optional<AxisConfig> rudder;  // [rudder], deg, + turns clockwise; absent on boards without a fin drive
 };
 
 // Init-time only: throws config::ConfigError naming file, line and problem.
