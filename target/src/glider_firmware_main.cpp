@@ -26,23 +26,15 @@ namespace {
 using namespace glider;
 
 // The platform's part of each cycle, before the flight software: fresh
-// Modbus budgets; the GPS drained so its counters and fix stay current, and
-// the battery read so its charge integrates, while the firmware does not read
-// them yet (issue 7 adds that; reading them twice a cycle is harmless).
+// blocking budgets on the Modbus buses. (The flight software reads every
+// device itself, GPS and power included.)
 class PlatformCycle final : public fw::PeriodicTask {
  public:
   explicit PlatformCycle(target::LinuxHal& hal) : hal_(hal) {}
-  void run(hal::Micros) override {
-    hal_.begin_cycle();
-    fix_ = hal_.gps().read();
-    if (hal::PowerMonitor* power = hal_.power()) power_ = power->read();
-  }
-  const hal::GpsFix& fix() const { return fix_; }
+  void run(hal::Micros) override { hal_.begin_cycle(); }
 
  private:
   target::LinuxHal& hal_;
-  hal::GpsFix fix_;
-  hal::PowerSample power_;
 };
 
 // Start-up check: the flight software aborts on a sensor that has never
