@@ -34,9 +34,8 @@ void BM_SimulatorStep(benchmark::State& state) {
     sim.advance(GliderSimulator::kDefaultStepS);
     benchmark::DoNotOptimize(sim.state());
   }
-  state.counters["sim_s_per_wall_s"] =
-      benchmark::Counter(GliderSimulator::kDefaultStepS * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate);
+  state.counters["sim_s_per_wall_s"] = benchmark::Counter(
+      GliderSimulator::kDefaultStepS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SimulatorStep);
 

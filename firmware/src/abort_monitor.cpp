@@ -36,7 +36,7 @@ AbortCause AbortMonitor::check_stalled(const AbortMonitorInputs& in) {
     stall_start_us_ = in.now_us;
   }
   return hal::to_seconds(in.now_us - stall_start_us_) > limits_.stalled_for_s ? AbortCause::kStalled
-                                                                             : AbortCause::kNone;
+                                                                              : AbortCause::kNone;
 }
 
 AbortCause AbortMonitor::check(const AbortMonitorInputs& in) {

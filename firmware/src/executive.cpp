@@ -4,15 +4,13 @@
 
 namespace glider::fw {
 
-Executive::Executive(const hal::Clock& clock, std::span<const TaskSlot> tasks,
-                     hal::Micros period_us)
+Executive::Executive(const hal::Clock& clock, std::span<const TaskSlot> tasks, hal::Micros period_us)
     : clock_(clock),
       tasks_(tasks),
       period_us_(period_us),
       valid_(period_us > 0 && tasks.size() <= kMaxTasks &&
-             std::all_of(tasks.begin(), tasks.end(), [](const TaskSlot& slot) {
-               return slot.task != nullptr && slot.every_n_cycles > 0;
-             })) {}
+             std::all_of(tasks.begin(), tasks.end(),
+                         [](const TaskSlot& slot) { return slot.task != nullptr && slot.every_n_cycles > 0; })) {}
 
 hal::Micros Executive::step() {
   const hal::Micros start = clock_.now_us();

@@ -59,8 +59,8 @@ FlightSoftware::FlightSoftware(const hal::Hal& hal, const FlightSoftwareConfig& 
       navigator_(config.plan, config.dead_reckoning, config.aborts.max_wpt_distance_m),
       abort_monitor_(config.aborts),
       heading_(config.heading),
-      pitch_servo_(PiGains{config.pitch_kp_in_per_rad, config.pitch_ki_in_per_rad_s,
-                           config.limits.battery_min_in, config.limits.battery_max_in}),
+      pitch_servo_(PiGains{config.pitch_kp_in_per_rad, config.pitch_ki_in_per_rad_s, config.limits.battery_min_in,
+                           config.limits.battery_max_in}),
       dive_trim_in_(config.dive_battpos_in),
       climb_trim_in_(config.climb_battpos_in) {}
 
@@ -80,8 +80,8 @@ void FlightSoftware::update_depth_rate(const hal::DepthSample& depth) {
   prev_depth_time_us_ = depth.time_us;
 }
 
-double FlightSoftware::battery_command(const MissionOutputs& mission, double pitch_rad,
-                                       double ballast_cc, double dt_s) {
+double FlightSoftware::battery_command(const MissionOutputs& mission, double pitch_rad, double ballast_cc,
+                                       double dt_s) {
   const bool diving = mission.phase == Phase::kDive;
   if (mission.phase == Phase::kAbort) {
     return config_.limits.battery_min_in;  // full aft: nose up
@@ -144,8 +144,8 @@ void FlightSoftware::run(hal::Micros now_us) {
     have_depth_ = true;
   }
   const hal::AttitudeSample attitude = hal_.attitude.read();
-  const bool attitude_valid = attitude.valid && std::isfinite(attitude.pitch_rad) &&
-                              std::isfinite(attitude.roll_rad) && std::isfinite(attitude.heading_rad);
+  const bool attitude_valid = attitude.valid && std::isfinite(attitude.pitch_rad) && std::isfinite(attitude.roll_rad) &&
+                              std::isfinite(attitude.heading_rad);
   if (attitude_valid) {
     attitude_ = attitude;
     have_attitude_ = true;

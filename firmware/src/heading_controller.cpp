@@ -52,8 +52,8 @@ double HeadingController::update_compensated(double heading_rad, double target_r
   const double step = config_.igain * error * dt_s;
   // Anti-windup: while saturated, the integrator may only move the fin back
   // inside its travel.
-  const bool pushes_out = (unsaturated >= config_.fin_max_rad && step > 0.0) ||
-                          (unsaturated <= -config_.fin_max_rad && step < 0.0);
+  const bool pushes_out =
+      (unsaturated >= config_.fin_max_rad && step > 0.0) || (unsaturated <= -config_.fin_max_rad && step < 0.0);
   if (!pushes_out) integrator_ = clamp_fin(integrator_ + step);
   const double wanted = clamp_fin(config_.gain * error + integrator_ + damping);
   if (std::fabs(wanted - fin_) < config_.fin_deadband_rad) return fin_;

@@ -4,9 +4,7 @@
 
 namespace glider::fw {
 
-double PiController::clamp(double value) const {
-  return std::clamp(value, gains_.out_min, gains_.out_max);
-}
+double PiController::clamp(double value) const { return std::clamp(value, gains_.out_min, gains_.out_max); }
 
 void PiController::reset(double output) {
   integrator_ = clamp(output);

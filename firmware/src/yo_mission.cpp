@@ -6,27 +6,42 @@ namespace glider::fw {
 
 const char* to_string(Phase phase) {
   switch (phase) {
-    case Phase::kSurface: return "surface";
-    case Phase::kDive: return "dive";
-    case Phase::kClimb: return "climb";
-    case Phase::kAbort: return "abort";
+    case Phase::kSurface:
+      return "surface";
+    case Phase::kDive:
+      return "dive";
+    case Phase::kClimb:
+      return "climb";
+    case Phase::kAbort:
+      return "abort";
   }
   return "?";
 }
 
 const char* to_string(AbortCause cause) {
   switch (cause) {
-    case AbortCause::kNone: return "none";
-    case AbortCause::kOverdepth: return "overdepth";
-    case AbortCause::kOvertime: return "overtime";
-    case AbortCause::kDepthSensor: return "depth sensor invalid or stale";
-    case AbortCause::kAttitudeSensor: return "attitude sensor invalid or stale";
-    case AbortCause::kActuatorFault: return "actuator fault";
-    case AbortCause::kLeak: return "leak detected";
-    case AbortCause::kLowBattery: return "low battery (remaining charge)";
-    case AbortCause::kSameDepth: return "stuck at the same depth";
-    case AbortCause::kStalled: return "stalled";
-    case AbortCause::kWaypointTooFar: return "waypoint too far";
+    case AbortCause::kNone:
+      return "none";
+    case AbortCause::kOverdepth:
+      return "overdepth";
+    case AbortCause::kOvertime:
+      return "overtime";
+    case AbortCause::kDepthSensor:
+      return "depth sensor invalid or stale";
+    case AbortCause::kAttitudeSensor:
+      return "attitude sensor invalid or stale";
+    case AbortCause::kActuatorFault:
+      return "actuator fault";
+    case AbortCause::kLeak:
+      return "leak detected";
+    case AbortCause::kLowBattery:
+      return "low battery (remaining charge)";
+    case AbortCause::kSameDepth:
+      return "stuck at the same depth";
+    case AbortCause::kStalled:
+      return "stalled";
+    case AbortCause::kWaypointTooFar:
+      return "waypoint too far";
   }
   return "?";
 }

@@ -1,8 +1,8 @@
 #include "glider/config/toml_document.hpp"
 
+#include <toml++/toml.h>
 #include <cmath>
 #include <sstream>
-#include <toml++/toml.h>
 
 namespace glider::config {
 

@@ -1,8 +1,8 @@
 #include "glider/model/dynamics.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <Eigen/Dense>
 
 #include "glider/model/hydrodynamics.hpp"
 
@@ -29,8 +29,7 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
 GliderDynamics::GliderDynamics(const VehicleParams& vehicle, const Environment& environment)
     : vehicle_(vehicle), environment_(environment), nominal_volume_m3_(model::displaced_volume_m3(vehicle)) {}
 
-GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses,
-                                                               double water_density) const {
+GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses, double water_density) const {
   const VehicleParams& v = vehicle_;
   // Pumping water out (positive volume) is modelled, as in Leonard-Graver, as
   // a negative point mass at the engine: same force and moment as the volume.
@@ -57,7 +56,7 @@ GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs&
   // T = 1/2 xi^T A xi + xi^T b + ..., xi = (v1, v3, q). For a point mass at
   // r = (x, z): its velocity is v + Omega x r + rdot, Omega x r = (q z, -q x).
   p.a << p.total_kg + v.added_mass_x_kg, 0.0, p.first_z,  //
-      0.0, p.total_kg + v.added_mass_z_kg, -p.first_x,     //
+      0.0, p.total_kg + v.added_mass_z_kg, -p.first_x,    //
       p.first_z, -p.first_x, inertia;
   // The moving masses slide along x: rdot = (rate, 0); angular part z * rate.
   const double m1 = v.battery.mass_kg * masses.battery_rate_m_s;

@@ -23,8 +23,7 @@ Environment read(const TomlDocument& doc) {
     std::vector<double> values = doc.numbers_or_empty(key);
     if (values.empty()) return std::vector<double>(depth.size(), fallback);
     if (values.size() != depth.size()) {
-      doc.fail(key, "has " + std::to_string(values.size()) + " values for " + std::to_string(depth.size()) +
-                        " depths");
+      doc.fail(key, "has " + std::to_string(values.size()) + " values for " + std::to_string(depth.size()) + " depths");
     }
     return values;
   };
@@ -32,8 +31,9 @@ Environment read(const TomlDocument& doc) {
   // from T, S and depth, so stating a density as well could only contradict it.
   const bool has_salinity = !doc.numbers_or_empty("profile.practical_salinity").empty();
   if (has_salinity && !doc.numbers_or_empty("profile.density_kg_m3").empty()) {
-    doc.fail("profile.density_kg_m3", "give density_kg_m3 or practical_salinity, not both (TEOS-10 computes the "
-                                      "density from temperature and salinity)");
+    doc.fail("profile.density_kg_m3",
+             "give density_kg_m3 or practical_salinity, not both (TEOS-10 computes the "
+             "density from temperature and salinity)");
   }
   if (has_salinity && doc.numbers_or_empty("profile.temperature_c").empty()) {
     doc.fail("profile.practical_salinity", "needs temperature_c at the same depths");

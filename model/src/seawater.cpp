@@ -46,20 +46,12 @@ constexpr double d1 = 3.426e-2, d2 = 4.464e-4, d3 = 4.215e-1, d4 = -3.107e-3;
 constexpr double e1 = 2.070e-5, e2 = -6.370e-10, e3 = 3.989e-15;
 constexpr double k = 0.0162;
 
-bool finite(double a, double b, double c) {
-  return std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
-}
-bool in(double x, double lo, double hi) {
-  return x >= lo && x <= hi;
-}
+bool finite(double a, double b, double c) { return std::isfinite(a) && std::isfinite(b) && std::isfinite(c); }
+bool in(double x, double lo, double hi) { return x >= lo && x <= hi; }
 
 // PSS-78 works in IPTS-68 temperature; this is its temperature factor.
-double t68_from_t90(double t90) {
-  return t90 * 1.00024;
-}
-double ft68_of(double t68) {
-  return (t68 - 15.0) / (1.0 + k * (t68 - 15.0));
-}
+double t68_from_t90(double t90) { return t90 * 1.00024; }
+double ft68_of(double t68) { return (t68 - 15.0) / (1.0 + k * (t68 - 15.0)); }
 
 double pss78_salinity(double rtx, double ft68) {
   return a0 + (a1 + (a2 + (a3 + (a4 + a5 * rtx) * rtx) * rtx) * rtx) * rtx +

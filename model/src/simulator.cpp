@@ -4,14 +4,14 @@
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <cmath>
 
-#include "glider/model/first_order_lag.hpp"
 #include <numbers>
+#include "glider/model/first_order_lag.hpp"
 
 namespace glider::model {
 namespace {
 
-using Stepper = boost::numeric::odeint::runge_kutta4<State, double, State, double,
-                                                     boost::numeric::odeint::vector_space_algebra>;
+using Stepper =
+    boost::numeric::odeint::runge_kutta4<State, double, State, double, boost::numeric::odeint::vector_space_algebra>;
 
 RateLimitedServo make_slide(const SlidingMass& m, double initial) {
   // An absent second mass still gets a (motionless) servo.

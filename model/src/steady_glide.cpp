@@ -60,8 +60,8 @@ SteadyGlide glide_at(const Branch& branch, double t, double density, double grav
   const double alpha = branch.alpha(t);
   const ForceCoefficients c = force_coefficients(branch.h, alpha);
   const double gamma = std::atan(branch.tan_gamma(t));
-  const double speed = std::sqrt(2.0 * std::abs(m0) * gravity /
-                                 (density * branch.h.reference_area_m2 * std::hypot(c.lift, c.drag)));
+  const double speed =
+      std::sqrt(2.0 * std::abs(m0) * gravity / (density * branch.h.reference_area_m2 * std::hypot(c.lift, c.drag)));
   SteadyGlide g;
   g.glide_path_rad = -branch.direction * gamma;
   g.alpha_rad = alpha;
@@ -171,7 +171,9 @@ SteadyGlideResult solve_equilibrium(const GliderDynamics& dyn, const MassInputs&
   const double density = dyn.environment().water.at(depth_m, 0.0).density_kg_m3;
   const double gravity = dyn.environment().gravity_m_s2;
   const Branch branch = make_branch(h, m0 > 0.0 ? 1 : -1);
-  auto residual = [&](double t) { return pitch_moment(dyn, masses, depth_m, glide_at(branch, t, density, gravity, m0)); };
+  auto residual = [&](double t) {
+    return pitch_moment(dyn, masses, depth_m, glide_at(branch, t, density, gravity, m0));
+  };
   // Walk along the branch from the zero-lift angle to the best glide ratio;
   // a moment balance there is the glide the vehicle flies. Beyond the best
   // glide (the back side of the polar) the SIL dynamics do not settle: the
@@ -216,8 +218,8 @@ double battery_for_glide(const GliderDynamics& dyn, const SteadyGlide& glide, Ma
 TrimResult solve_trim(const GliderDynamics& dyn, double glide_path_deg, double net_buoyancy_kg, double depth_m) {
   TrimResult result;
   const double density = dyn.environment().water.at(depth_m, 0.0).density_kg_m3;
-  const SteadyGlideResult steady = steady_glide_for_path(dyn.vehicle().hydro, density, glide_path_deg,
-                                                         net_buoyancy_kg, dyn.environment().gravity_m_s2);
+  const SteadyGlideResult steady = steady_glide_for_path(dyn.vehicle().hydro, density, glide_path_deg, net_buoyancy_kg,
+                                                         dyn.environment().gravity_m_s2);
   if (!steady.glide) {
     result.error = steady.error;
     return result;

@@ -21,7 +21,8 @@ std::string validate(const VehicleParams& v) {
   if (!(v.battery.mass_kg > 0.0)) return "battery.mass_kg must be positive";
   if (!(v.battery.travel_min_m < v.battery.travel_max_m)) return "battery travel: min must be below max";
   if (!(v.battery.rate_m_s > 0.0)) return "battery.rate_m_s must be positive";
-  if (has_second_mass(v) && !(v.second_mass.travel_min_m < v.second_mass.travel_max_m && v.second_mass.rate_m_s > 0.0)) {
+  if (has_second_mass(v) &&
+      !(v.second_mass.travel_min_m < v.second_mass.travel_max_m && v.second_mass.rate_m_s > 0.0)) {
     return "second_mass: need travel_min_m < travel_max_m and a positive rate";
   }
   if (!(v.hull_compressibility_per_pa >= 0.0 && v.hull_compressibility_per_pa < 1e-8)) {

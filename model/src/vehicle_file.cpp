@@ -98,9 +98,7 @@ std::string format_number(double value) {
 
 }  // namespace
 
-VehicleParams load_vehicle_file(const std::filesystem::path& path) {
-  return read(TomlDocument::load(path));
-}
+VehicleParams load_vehicle_file(const std::filesystem::path& path) { return read(TomlDocument::load(path)); }
 
 VehicleParams parse_vehicle_text(const std::string& text, const std::string& source_name) {
   return read(TomlDocument::parse(text, source_name));

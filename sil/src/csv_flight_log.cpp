@@ -50,17 +50,23 @@ const char* CsvFlightLog::header() {
   return "m_present_time,m_depth,m_depth_rate,m_pitch,m_roll,m_heading,m_ballast_pumped,c_ballast_pumped,"
          "m_battpos,c_battpos,c_pitch,m_depth_state,x_yo_count,x_abort_cause,x_loop_overruns,"
          "c_heading,m_fin,c_fin,m_gps_lat,m_gps_lon,m_lat,m_lon,m_water_vx,m_water_vy,m_leakdetect,"
-         "m_coulomb_amphr_total,m_battery,x_waypoint,x_waypoints_reached,x_segment,x_dr_error_m,x_dr_distance_m,x_mission_complete,"
+         "m_coulomb_amphr_total,m_battery,x_waypoint,x_waypoints_reached,x_segment,x_dr_error_m,x_dr_distance_m,x_"
+         "mission_complete,"
          "sci_water_temp,sci_water_cond,sci_water_pressure,"
          "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
          "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
-         "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_yaw_rate_rad_s,sim_density_kg_m3,sim_u_water_m_s,sim_v_water_m_s,"
+         "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_yaw_rate_rad_s,sim_density_kg_m3,sim_u_water_m_s,sim_v_"
+         "water_m_s,"
          "sim_w_water_m_s,sim_temperature_c,sim_practical_salinity";
 }
 
 CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
                            const SimCtd& ctd, const LogGaps& gaps, std::uint64_t gap_seed)
-    : path_(path), out_(path, std::ios::out | std::ios::trunc), sim_(sim), ctd_(ctd), gaps_(gaps),
+    : path_(path),
+      out_(path, std::ios::out | std::ios::trunc),
+      sim_(sim),
+      ctd_(ctd),
+      gaps_(gaps),
       gap_random_(gap_seed) {
   if (!out_) {
     ok_ = false;

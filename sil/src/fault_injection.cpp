@@ -22,18 +22,30 @@ const std::vector<std::pair<std::string, std::string>>& fault_names() {
 }
 
 bool apply_fault(const std::string& name, FaultInjection& f) {
-  if (name == "depth_invalid") f.depth_invalid = true;
-  else if (name == "depth_frozen") f.depth_frozen = true;
-  else if (name == "attitude_invalid") f.attitude_invalid = true;
-  else if (name == "attitude_frozen") f.attitude_frozen = true;
-  else if (name == "pump_fault") f.pump_fault = true;
-  else if (name == "pump_stuck") f.pump_stuck = true;
-  else if (name == "battery_fault") f.battery_fault = true;
-  else if (name == "fin_fault") f.fin_fault = true;
-  else if (name == "leak") f.leak = true;
-  else if (name == "gps_dead") f.gps_dead = true;
-  else if (name == "power_drain") f.extra_load_w = 200.0;
-  else return false;
+  if (name == "depth_invalid")
+    f.depth_invalid = true;
+  else if (name == "depth_frozen")
+    f.depth_frozen = true;
+  else if (name == "attitude_invalid")
+    f.attitude_invalid = true;
+  else if (name == "attitude_frozen")
+    f.attitude_frozen = true;
+  else if (name == "pump_fault")
+    f.pump_fault = true;
+  else if (name == "pump_stuck")
+    f.pump_stuck = true;
+  else if (name == "battery_fault")
+    f.battery_fault = true;
+  else if (name == "fin_fault")
+    f.fin_fault = true;
+  else if (name == "leak")
+    f.leak = true;
+  else if (name == "gps_dead")
+    f.gps_dead = true;
+  else if (name == "power_drain")
+    f.extra_load_w = 200.0;
+  else
+    return false;
   return true;
 }
 

@@ -30,8 +30,7 @@ bool FlightStats::write(const hal::FlightLogRecord& r) {
     extreme_depth_ = phase_ == dive ? std::max(extreme_depth_, r.m_depth) : std::min(extreme_depth_, r.m_depth);
   }
   const bool settled = hal::to_seconds(r.time_us - phase_start_us_) >= settle_s_;
-  if (settled && (phase_ == dive || phase_ == climb) && std::isfinite(r.m_pitch) &&
-      std::isfinite(r.m_depth_rate)) {
+  if (settled && (phase_ == dive || phase_ == climb) && std::isfinite(r.m_pitch) && std::isfinite(r.m_depth_rate)) {
     GlideStats& s = phase_ == dive ? dives_ : climbs_;
     ++s.samples;
     s.pitch_sum_rad += r.m_pitch;

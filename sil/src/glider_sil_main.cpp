@@ -55,10 +55,10 @@ void print_surfacings(const std::vector<glider::sil::SurfacingStats>& surfacings
     distance_sum += s.dr_distance_m;
     worst = std::max(worst, s.dr_error_m);
     if (i < 12) {
-      std::printf("    surfacing %2zu at %8.0f s: DR error %7.1f m over %6.0f m (%5.1f m/km); current %+.3f %+.3f m/s\n",
-                  i + 1, s.time_s, s.dr_error_m, s.dr_distance_m,
-                  s.dr_distance_m > 0.0 ? 1000.0 * s.dr_error_m / s.dr_distance_m : 0.0, s.water_vx_m_s,
-                  s.water_vy_m_s);
+      std::printf(
+          "    surfacing %2zu at %8.0f s: DR error %7.1f m over %6.0f m (%5.1f m/km); current %+.3f %+.3f m/s\n", i + 1,
+          s.time_s, s.dr_error_m, s.dr_distance_m,
+          s.dr_distance_m > 0.0 ? 1000.0 * s.dr_error_m / s.dr_distance_m : 0.0, s.water_vx_m_s, s.water_vy_m_s);
     }
   }
   if (surfacings.size() > 12) std::printf("    ... %zu surfacings in all\n", surfacings.size());
@@ -103,12 +103,14 @@ int main(int argc, char** argv) {
   app.add_option("--heading-law", heading_law, "fin autopilot: proportional (paper 001), slocum, compensated")
       ->check(CLI::IsMember({"proportional", "slocum", "compensated"}))
       ->capture_default_str();
-  app.add_option("--dr", dr_method, "dead reckoning: assumed (constant angle of attack, Slocum) or model (flight model)")
+  app.add_option("--dr", dr_method,
+                 "dead reckoning: assumed (constant angle of attack, Slocum) or model (flight model)")
       ->check(CLI::IsMember({"assumed", "model"}))
       ->capture_default_str();
-  app.add_option("--fault", fault_texts, "inject NAME@TIME (s, m or h), e.g. leak@1200s; repeatable; "
-                                         "names: depth_invalid depth_frozen attitude_invalid attitude_frozen "
-                                         "pump_fault pump_stuck battery_fault fin_fault leak gps_dead power_drain");
+  app.add_option("--fault", fault_texts,
+                 "inject NAME@TIME (s, m or h), e.g. leak@1200s; repeatable; "
+                 "names: depth_invalid depth_frozen attitude_invalid attitude_frozen "
+                 "pump_fault pump_stuck battery_fault fin_fault leak gps_dead power_drain");
   app.add_option("--launch-lat", launch_lat, "launch latitude, decimal degrees (default: comet 2019's first fix)");
   app.add_option("--launch-lon", launch_lon, "launch longitude, decimal degrees");
   app.add_flag("--quiet", quiet, "print nothing but errors");
@@ -177,15 +179,16 @@ int main(int argc, char** argv) {
   options.seed = seed;
   options.heading_deg = heading_deg;
   options.log_path = out_path;
-  options.metadata = {{"source", "glider SIL (firmware + vehicle model in lockstep)"},
-                      {"mission_file", std::filesystem::path(mission_path).filename().string()},
-                      {"vehicle_file", std::filesystem::path(vehicle_path).filename().string()},
-                      {"environment_file", env_path.empty() ? std::string("none (still water at the vehicle's trim density)")
-                                                            : std::filesystem::path(env_path).filename().string()},
-                      {"heading_law", heading_law},
-                      {"dead_reckoning", dr_method},
-                      {"time", "m_present_time is seconds since the start of the mission"},
-                      {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
+  options.metadata = {
+      {"source", "glider SIL (firmware + vehicle model in lockstep)"},
+      {"mission_file", std::filesystem::path(mission_path).filename().string()},
+      {"vehicle_file", std::filesystem::path(vehicle_path).filename().string()},
+      {"environment_file", env_path.empty() ? std::string("none (still water at the vehicle's trim density)")
+                                            : std::filesystem::path(env_path).filename().string()},
+      {"heading_law", heading_law},
+      {"dead_reckoning", dr_method},
+      {"time", "m_present_time is seconds since the start of the mission"},
+      {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
 
   const auto wall_start = std::chrono::steady_clock::now();
   const glider::sil::ScenarioResult result = glider::sil::run_scenario(vehicle, config, options);
@@ -203,7 +206,8 @@ int main(int argc, char** argv) {
     if (aborted) {
       std::printf("  result  : ABORTED (%s) at %.0f s", glider::fw::to_string(result.abort_cause), result.abort_time_s);
       if (result.abort_surfaced_s >= 0.0) {
-        std::printf(", at the surface %.0f s later (truth: antenna out)", result.abort_surfaced_s - result.abort_time_s);
+        std::printf(", at the surface %.0f s later (truth: antenna out)",
+                    result.abort_surfaced_s - result.abort_time_s);
       } else {
         std::printf(", NOT at the surface");
       }

@@ -73,9 +73,17 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
   TeeLogSink log(file_sink, result.stats);
 
-  const hal::Hal hal{.clock = clock, .depth = sim_hal.depth(), .attitude = sim_hal.attitude(), .pump = sim_hal,
-                     .battery = sim_hal, .log = log, .rudder = sim_hal.rudder(), .gps = sim_hal.gps(),
-                     .leak = sim_hal.leak(), .drop_weight = sim_hal.drop_weight(), .power = sim_hal.power()};
+  const hal::Hal hal{.clock = clock,
+                     .depth = sim_hal.depth(),
+                     .attitude = sim_hal.attitude(),
+                     .pump = sim_hal,
+                     .battery = sim_hal,
+                     .log = log,
+                     .rudder = sim_hal.rudder(),
+                     .gps = sim_hal.gps(),
+                     .leak = sim_hal.leak(),
+                     .drop_weight = sim_hal.drop_weight(),
+                     .power = sim_hal.power()};
   fw::FlightSoftware flight(hal, config);
   const std::array<fw::TaskSlot, 1> tasks{{{"flight", &flight, 1, options.period_us / 2}}};
   fw::Executive executive(clock, tasks, options.period_us);

@@ -15,7 +15,10 @@ constexpr std::uint64_t kGpsStream = 3;
 
 SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
                const PeripheralModels& peripherals)
-    : sim_(sim), clock_(clock), noise_(noise), random_(seed),
+    : sim_(sim),
+      clock_(clock),
+      noise_(noise),
+      random_(seed),
       gps_(sim, clock, faults_, peripherals.gps, derived_seed(seed, kGpsStream)),
       leak_(clock, faults_),
       drop_weight_(clock),

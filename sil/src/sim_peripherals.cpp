@@ -49,10 +49,15 @@ bool SimDropWeight::set(bool active) {
   return true;
 }
 
-SimPowerMonitor::SimPowerMonitor(const model::GliderSimulator& sim, const SimClock& clock,
-                                 const FaultInjection& faults, const PowerModel& model)
-    : sim_(sim), clock_(clock), faults_(faults), model_(model), last_us_(clock.now_us()),
-      last_pump_m3_(sim.pump().position()), last_battery_m_(sim.battery().position()),
+SimPowerMonitor::SimPowerMonitor(const model::GliderSimulator& sim, const SimClock& clock, const FaultInjection& faults,
+                                 const PowerModel& model)
+    : sim_(sim),
+      clock_(clock),
+      faults_(faults),
+      model_(model),
+      last_us_(clock.now_us()),
+      last_pump_m3_(sim.pump().position()),
+      last_battery_m_(sim.battery().position()),
       last_fin_rad_(sim.fin().position()) {}
 
 hal::PowerSample SimPowerMonitor::read() {
@@ -70,7 +75,8 @@ hal::PowerSample SimPowerMonitor::read() {
   joules += std::fabs(fin - last_fin_rad_) * model_.fin_j_per_rad;
   energy_j_ += joules;
   const double used_fraction = charge_amphr_ / model_.capacity_amphr;
-  const double volts = model_.voltage_full_v - (model_.voltage_full_v - model_.voltage_empty_v) * std::min(used_fraction, 1.0);
+  const double volts =
+      model_.voltage_full_v - (model_.voltage_full_v - model_.voltage_empty_v) * std::min(used_fraction, 1.0);
   charge_amphr_ += joules / volts / 3600.0;
   last_us_ = now;
   last_pump_m3_ = pump;

@@ -102,9 +102,7 @@ void LinuxHal::begin_cycle() noexcept {
   depth_link_->begin_cycle();
 }
 
-hal::DigitalInput* LinuxHal::leak() {
-  return gpio_ ? gpio_->input(hal_linux::LineRole::kLeak) : nullptr;
-}
+hal::DigitalInput* LinuxHal::leak() { return gpio_ ? gpio_->input(hal_linux::LineRole::kLeak) : nullptr; }
 hal::DigitalOutput* LinuxHal::drop_weight() {
   return gpio_ ? gpio_->output(hal_linux::LineRole::kDropWeight) : nullptr;
 }

@@ -24,9 +24,7 @@ hal::Micros monotonic_now_us() {
   return static_cast<hal::Micros>(t.tv_sec) * hal::kMicrosPerSecond + t.tv_nsec / 1000;
 }
 
-std::string errno_text() {
-  return std::strerror(errno);
-}
+std::string errno_text() { return std::strerror(errno); }
 
 }  // namespace
 

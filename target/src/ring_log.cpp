@@ -29,9 +29,7 @@ RingBufferLog::RingBufferLog(const std::string& path) : file_(std::fopen(path.c_
   writer_ = std::thread([this] { writer_main(); });
 }
 
-RingBufferLog::~RingBufferLog() {
-  close();
-}
+RingBufferLog::~RingBufferLog() { close(); }
 
 bool RingBufferLog::write(const hal::FlightLogRecord& record) {
   const std::size_t head = head_.load(std::memory_order_relaxed);

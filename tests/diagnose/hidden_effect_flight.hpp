@@ -38,8 +38,8 @@ struct FlightSetup {
 // diagnoses the CSV alone.
 inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water,
                                 const std::string& name, const FlightSetup& setup) {
-  const model::VehicleParams nominal = setup.logged.value_or(
-      model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml"));
+  const model::VehicleParams nominal =
+      setup.logged.value_or(model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml"));
   fw::FlightSoftwareConfig config =
       fw::read_flight_config(config::TomlDocument::load(GLIDER_SOURCE_DIR "/boards/missions/demo_yo.toml"));
   config.mission.yos = 6;

@@ -159,7 +159,7 @@ TEST(DiagnoseHiddenEffects, PumpLag) {
   const flightlog::FlightLog log = flightlog::read_flight_log(o.log_path);
   std::vector<std::pair<std::string, std::string>> entries;
   for (const auto& m : log.vehicle_metadata()) entries.emplace_back(m.key, m.value);
-  const diagnose::Diagnosis d =
-      diagnose::diagnose(model::vehicle_from_metadata(entries, o.log_path), diagnose::prepare_observations(log), steady);
+  const diagnose::Diagnosis d = diagnose::diagnose(model::vehicle_from_metadata(entries, o.log_path),
+                                                   diagnose::prepare_observations(log), steady);
   for (const auto& finding : d.findings) CHECK(finding.effect != diagnose::Effect::kPumpLag);
 }

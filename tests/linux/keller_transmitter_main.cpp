@@ -10,9 +10,7 @@
 
 namespace {
 volatile std::sig_atomic_t g_stop = 0;
-void request_stop(int) {
-  g_stop = 1;
-}
+void request_stop(int) { g_stop = 1; }
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -18,9 +18,7 @@ class ManualClock final : public hal::Clock {
   hal::Micros now = 0;
 };
 
-void write(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void write(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
 
 }  // namespace
 

@@ -26,9 +26,7 @@ std::vector<std::string> frame(const std::string& bytes, hal_linux::NmeaFramer& 
   return lines;
 }
 
-std::string without_line_end(std::string sentence) {
-  return sentence.substr(0, sentence.size() - 2);
-}
+std::string without_line_end(std::string sentence) { return sentence.substr(0, sentence.size() - 2); }
 
 }  // namespace
 
@@ -87,9 +85,7 @@ TEST(Nmea, NumbersAndCoordinates) {
 
 TEST_GROUP(NmeaGps) {
   hal_linux::NmeaGpsDecoder gps;
-  void feed(const std::string& sentence, hal::Micros at) {
-    gps.decode(without_line_end(sentence), at);
-  }
+  void feed(const std::string& sentence, hal::Micros at) { gps.decode(without_line_end(sentence), at); }
 };
 
 TEST(NmeaGps, GgaGivesTheFixAndRmcRefreshesIt) {
@@ -152,9 +148,7 @@ TEST(NmeaGps, BadSentencesAreCountedAndNeverUsed) {
 
 TEST_GROUP(Compass) {
   hal_linux::CompassDecoder compass;
-  void feed(const std::string& sentence, hal::Micros at) {
-    compass.decode(without_line_end(sentence), at);
-  }
+  void feed(const std::string& sentence, hal::Micros at) { compass.decode(without_line_end(sentence), at); }
 };
 
 TEST(Compass, HeadingPitchRollInRadians) {

@@ -53,9 +53,7 @@ auto read_until(Sensor& sensor, Done&& done) {
 
 }  // namespace
 
-TEST_GROUP(SerialSensors) {
-  ManualClock clock;
-};
+TEST_GROUP(SerialSensors) { ManualClock clock; };
 
 TEST(SerialSensors, GpsOverAPtyUsesOnlyGoodSentences) {
   test::PtyPair cable;

@@ -75,9 +75,10 @@ TEST(ModbusBoardFile, EndpointOverrides) {
 
 TEST(ModbusBoardFile, AnOptionalRudderAxis) {
   CHECK_FALSE(hal_linux::parse_modbus_board(kValid, "b").rudder.has_value());
-  const std::string rudder = "[rudder]\nslave = 2\ncounts_per_unit = 10\ntravel_min_deg = -30.0\n"
-                             "travel_max_deg = 30.0\nmin_deg = -25.0\nmax_deg = 25.0\nrate_deg_s = 10.0\n"
-                             "max_rate_deg_s = 20.0\n";
+  const std::string rudder =
+      "[rudder]\nslave = 2\ncounts_per_unit = 10\ntravel_min_deg = -30.0\n"
+      "travel_max_deg = 30.0\nmin_deg = -25.0\nmax_deg = 25.0\nrate_deg_s = 10.0\n"
+      "max_rate_deg_s = 20.0\n";
   const auto board = hal_linux::parse_modbus_board(kValid + rudder, "b");
   CHECK_TRUE(board.rudder.has_value());
   STRCMP_EQUAL("deg", board.rudder->unit.c_str());

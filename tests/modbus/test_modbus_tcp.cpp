@@ -111,7 +111,7 @@ TEST(ModbusTcp, RepliesLaterThanTheTimeoutAreAFaultAndNeverTakenForTheNextAnswer
 TEST(ModbusTcp, ADeviceThatStopsAnsweringMidMoveIsAFault) {
   Simulator sim({"--tcp", "127.0.0.1:0", "--fault", "silent:4"});
   DriverUnderTest d("--tcp", loopback(sim.tcp_port()));
-  CHECK(d.pump->command(200.0));  // request 1
+  CHECK(d.pump->command(200.0));             // request 1
   CHECK_FALSE(d.cycle_read(*d.pump).fault);  // 2
   CHECK_FALSE(d.cycle_read(*d.pump).fault);  // 3
   CHECK_FALSE(d.cycle_read(*d.pump).fault);  // 4

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "glider/config/toml_document.hpp"
-#include "glider/flightlog/flight_log.hpp"
 #include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/flightlog/flight_log.hpp"
 #include "glider/model/environment_file.hpp"
 #include "glider/model/seawater.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -68,8 +68,7 @@ TEST(DemoMission, GlidesSettleAtTheCommandedPitch) {
 
 TEST(DemoMission, TwoRunsWriteByteIdenticalLogs) {
   // Water with a CTD, so its noise is in the log too.
-  options.environment =
-      model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
+  options.environment = model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
   options.log_path = GLIDER_TEST_OUTPUT_DIR "/determinism_a.csv";
   const sil::ScenarioResult a = sil::run_scenario(vehicle, config, options);
   options.log_path = GLIDER_TEST_OUTPUT_DIR "/determinism_b.csv";
@@ -111,8 +110,7 @@ TEST(DemoMission, LogFollowsTheFlightLogContract) {
 }
 
 TEST(DemoMission, CtdMeasuresTheWaterTheVehicleFeels) {
-  options.environment =
-      model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
+  options.environment = model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
   options.log_path = GLIDER_TEST_OUTPUT_DIR "/ctd.csv";
   const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
   CHECK_TRUE(r.completed);
@@ -147,8 +145,7 @@ TEST(DemoMission, CtdMeasuresTheWaterTheVehicleFeels) {
 }
 
 TEST(DemoMission, LogGapsThinTheLogLikeARealSlocumLog) {
-  options.environment =
-      model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
+  options.environment = model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/summer_thermocline.toml");
   options.log_gaps.enabled = true;
   options.log_path = GLIDER_TEST_OUTPUT_DIR "/gaps_a.csv";
   const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);

@@ -137,7 +137,7 @@ TEST_GROUP(SilAborts) {
     LONGS_EQUAL(99, static_cast<int>(state[log.rows() - 1]));
     const auto& pump = log.column("c_ballast_pumped");
     const auto& battery = log.column("c_battpos");
-    DOUBLES_EQUAL(250.0, pump[log.rows() - 1], 1e-9);  // the abort sequence: full buoyancy,
+    DOUBLES_EQUAL(250.0, pump[log.rows() - 1], 1e-9);    // the abort sequence: full buoyancy,
     DOUBLES_EQUAL(-1.0, battery[log.rows() - 1], 1e-9);  // battery full aft
     return r.abort_time_s;
   }
@@ -223,8 +223,7 @@ TEST_GROUP(SilComet){};
 // both, --legs 2), on the comet vehicle (WE01 model, comet's trim, pump,
 // roll and fin limit) in still water: ~64 km, 16 segments, ~2 days.
 TEST(SilComet, Nsb3FlownEndToEnd) {
-  const model::VehicleParams vehicle =
-      model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_comet.toml");
+  const model::VehicleParams vehicle = model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_comet.toml");
   fw::FlightSoftwareConfig config = load("comet-nsb3/missions/nsb3.mi", vehicle, 102.0);
   config.plan.legs_to_run = 2;
   sil::ScenarioOptions options;
@@ -257,8 +256,8 @@ TEST_GROUP(SilDeadReckoning) {
     if (flight_model) {
       base.dead_reckoning = sil::flight_model_dead_reckoning(vehicle, environment.water.at(0.0, 0.0).density_kg_m3);
     }
-    const auto loaded = fw::mission_file::load_mission_file(GLIDER_SOURCE_DIR "/boards/missions/box_current/missions/box.mi",
-                                                            sil::mission_vehicle(vehicle, 200.0), base);
+    const auto loaded = fw::mission_file::load_mission_file(
+        GLIDER_SOURCE_DIR "/boards/missions/box_current/missions/box.mi", sil::mission_vehicle(vehicle, 200.0), base);
     CHECK_TRUE(loaded.config.has_value());
     sil::ScenarioOptions options;
     options.environment = environment;
@@ -283,7 +282,8 @@ TEST(SilDeadReckoning, FlightModelBeatsTheAssumedAngleOfAttack) {
   const model::Environment still = model::still_water(vehicle.trim_density_kg_m3);
   const double slocum_still = metres_per_km(still, false);
   const double model_still = metres_per_km(still, true);
-  CHECK_TEXT(model_still < 0.5 * slocum_still, (std::to_string(model_still) + " vs " + std::to_string(slocum_still)).c_str());
+  CHECK_TEXT(model_still < 0.5 * slocum_still,
+             (std::to_string(model_still) + " vs " + std::to_string(slocum_still)).c_str());
   CHECK(model_still < 25.0);
   const model::Environment current =
       model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/steady_current.toml");

@@ -83,10 +83,18 @@ struct FakeHal final : hal::Clock, hal::DepthSensor, hal::BuoyancyPump, hal::Bat
   hal::Hal hal() { return with_actuators(*this, *this); }
   // The fake's sensors with other pump and slide drivers (e.g. Modbus).
   hal::Hal with_actuators(hal::BuoyancyPump& pump, hal::BatterySlide& slide) {
-    return {.clock = *this, .depth = *this, .attitude = attitude, .pump = pump, .battery = slide, .log = *this,
-            .rudder = rudder, .gps = gps, .leak = leak, .drop_weight = drop_weight, .power = power};
+    return {.clock = *this,
+            .depth = *this,
+            .attitude = attitude,
+            .pump = pump,
+            .battery = slide,
+            .log = *this,
+            .rudder = rudder,
+            .gps = gps,
+            .leak = leak,
+            .drop_weight = drop_weight,
+            .power = power};
   }
 };
-
 
 }  // namespace glider::test

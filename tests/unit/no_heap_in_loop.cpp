@@ -79,7 +79,8 @@ int main() {
     } else {
       nav_depth = 0.2;
     }
-    nav_fake.pump_cc = phase == fw::Phase::kDive ? nav_config.mission.dive_ballast_cc : nav_config.mission.climb_ballast_cc;
+    nav_fake.pump_cc =
+        phase == fw::Phase::kDive ? nav_config.mission.dive_ballast_cc : nav_config.mission.climb_ballast_cc;
     nav_fake.depth = {nav_depth, nav_fake.now, true};
     nav_fake.attitude.sample = {phase == fw::Phase::kClimb ? 0.45 : -0.45, 0.0, 0.0, nav_fake.now, true};
     nav_fake.leak.sample.time_us = nav_fake.now;
@@ -97,8 +98,9 @@ int main() {
   const bool flew = flight.complete() && flight.yos_completed() == config.mission.yos;
   const bool aborted = aborting.phase() == fw::Phase::kAbort;
   const bool navigated_ok = navigated.complete() && navigated.navigator().waypoints_reached() == 2;
-  std::printf("cycles %d, mission complete %d, abort %d, navigated mission complete %d (%d cycles, %d segments), "
-              "heap allocations in the loop: %lu\n",
-              cycles, flew, aborted, navigated_ok, nav_cycles, navigated.navigator().segments(), during);
+  std::printf(
+      "cycles %d, mission complete %d, abort %d, navigated mission complete %d (%d cycles, %d segments), "
+      "heap allocations in the loop: %lu\n",
+      cycles, flew, aborted, navigated_ok, nav_cycles, navigated.navigator().segments(), during);
   return flew && aborted && navigated_ok && during == 0 ? 0 : 1;
 }

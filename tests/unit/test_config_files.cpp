@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -176,8 +176,8 @@ std::string environment_error_of(const std::string& text) {
 TEST(ConfigFiles, EnvironmentFileErrorsNameTheLine) {
   const auto env = glider::model::load_environment_file(GLIDER_SOURCE_DIR "/boards/environments/tidal_shelf.toml");
   DOUBLES_EQUAL(1026.2, env.water.at(30.0, 0.0).density_kg_m3, 1e-12);
-  CHECK(environment_error_of("[profile]\ndepth_m = [0, 10]\ndensity_kg_m3 = [1025]\n")
-            .find("env.toml:3:") == 0);  // one value for two depths
+  CHECK(environment_error_of("[profile]\ndepth_m = [0, 10]\ndensity_kg_m3 = [1025]\n").find("env.toml:3:") ==
+        0);  // one value for two depths
   CHECK(environment_error_of("[profile]\ndepth_m = [10, 0]\n").find("strictly") != std::string::npos);
   CHECK(environment_error_of("[profile]\ndepth_m = [0, \"x\"]\n").find("env.toml:2:") == 0);
   CHECK(environment_error_of("[profile]\ndepth_m = [0]\ncurent_east_m_s = [0.1]\n")
@@ -209,7 +209,7 @@ TEST(ConfigFiles, EnvironmentWithSalinityIsTeos10Water) {
   CHECK(std::isnan(glider::model::still_water(1025.0).water.at(10.0, 0.0).practical_salinity));
 
   CHECK(environment_error_of("[profile]\ndepth_m = [0]\ntemperature_c = [10]\npractical_salinity = [35]\n"
-                 "density_kg_m3 = [1025]\n")
+                             "density_kg_m3 = [1025]\n")
             .find("not both") != std::string::npos);
   CHECK(environment_error_of("[profile]\ndepth_m = [0]\npractical_salinity = [35]\n").find("needs temperature_c") !=
         std::string::npos);

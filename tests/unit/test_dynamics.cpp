@@ -50,9 +50,7 @@ Evaluation glide_at(const GliderDynamics& dyn, const MassInputs& m, double v1 = 
 
 }  // namespace
 
-TEST_GROUP(Dynamics) {
-  VehicleParams v = slocum();
-};
+TEST_GROUP(Dynamics) { VehicleParams v = slocum(); };
 
 TEST(Dynamics, NeutralAndTrimmedStaysAtRest) {
   GliderDynamics dyn(v, Environment{});
@@ -89,8 +87,8 @@ TEST(Dynamics, HeavyAtRestSinksAndBallastPitchesNoseDown) {
   CHECK(dyn.static_pitch_rad(m) < -0.3);
   const Evaluation e = dyn.evaluate(0.0, dyn.make_state(30.0, 0.0, 0.0, 0.0, 0.0, m), m);
   DOUBLES_EQUAL(0.25625, e.net_buoyancy_kg, 1e-9);  // 250 cc of 1025 kg/m^3 water
-  CHECK(e.state_dot[kP3] > 0.0);   // pushed down
-  CHECK(e.state_dot[kPi2] < 0.0);  // nose down
+  CHECK(e.state_dot[kP3] > 0.0);                    // pushed down
+  CHECK(e.state_dot[kPi2] < 0.0);                   // nose down
 }
 
 TEST(Dynamics, HullCompressibilityMakesItHeavierWithDepthExactly) {
@@ -173,8 +171,8 @@ TEST(Dynamics, FinAndRollSetTheYawRate) {
   GliderDynamics dyn(v, Environment{});
   const Evaluation e = glide_at(dyn, finned);
   // Steady yaw rate (state at zero yaw rate: rate of change = target / tau).
-  DOUBLES_EQUAL(v.heading.fin_yaw_gain_per_m * e.speed_m_s * 0.2,
-                e.state_dot[kYawRate] * v.heading.yaw_time_constant_s, 1e-12);
+  DOUBLES_EQUAL(v.heading.fin_yaw_gain_per_m * e.speed_m_s * 0.2, e.state_dot[kYawRate] * v.heading.yaw_time_constant_s,
+                1e-12);
   DOUBLES_EQUAL(0.0, glide_at(dyn, straight).state_dot[kYawRate], 0.0);
   VehicleParams rolled = v;
   rolled.heading.roll_offset_rad = -0.1745;  // comet-2019: port wing down

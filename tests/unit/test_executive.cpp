@@ -38,9 +38,7 @@ constexpr Micros kPeriod = 1'000'000;
 
 }  // namespace
 
-TEST_GROUP(Executive) {
-  ManualClock clock;
-};
+TEST_GROUP(Executive) { ManualClock clock; };
 
 TEST(Executive, RunsEachTaskAtItsRate) {
   WorkTask fast(clock);
@@ -78,8 +76,8 @@ TEST(Executive, LateStartIsCountedAndTheScheduleReanchored) {
   WorkTask task(clock);
   const std::array<TaskSlot, 1> table{{{"work", &task, 1, 1000}}};
   Executive executive(clock, table, kPeriod);
-  clock.now = executive.step();              // deadline for cycle 1: 1 s
-  clock.now = 3 * kPeriod + kPeriod / 2;     // woke up 2.5 periods late
+  clock.now = executive.step();           // deadline for cycle 1: 1 s
+  clock.now = 3 * kPeriod + kPeriod / 2;  // woke up 2.5 periods late
   const Micros next = executive.step();
   LONGS_EQUAL(1, executive.stats().late_starts);
   LONGS_EQUAL(2, executive.stats().skipped_cycles);

@@ -66,8 +66,8 @@ const char* kYo =
 TEST_GROUP(MissionFile){};
 
 TEST(MissionFile, TheRealCometNsb3MissionLoads) {
-  const LoadedMission m = fw::mission_file::load_mission_file(
-      GLIDER_SOURCE_DIR "/boards/missions/comet-nsb3/missions/nsb3.mi", comet());
+  const LoadedMission m =
+      fw::mission_file::load_mission_file(GLIDER_SOURCE_DIR "/boards/missions/comet-nsb3/missions/nsb3.mi", comet());
   CHECK_TEXT(m.config.has_value(), all_text(m).c_str());
   const fw::FlightSoftwareConfig& c = *m.config;
   LONGS_EQUAL(2, c.plan.waypoint_count);
@@ -131,8 +131,7 @@ TEST(MissionFile, SyntaxErrorsNameFileAndLine) {
                refusal("syntax1", "behavior: abend\n  b_arg: overdepth 60\n").c_str());
   STRCMP_EQUAL("m.mi:3: error: value of overtime is not a number: 'ten'",
                refusal("syntax2", "behavior: abend\n# comment\n  b_arg: overtime(s) ten\n").c_str());
-  STRCMP_EQUAL("m.mi:1: error: b_arg outside a behavior block",
-               refusal("syntax3", "b_arg: overtime(s) 10\n").c_str());
+  STRCMP_EQUAL("m.mi:1: error: b_arg outside a behavior block", refusal("syntax3", "b_arg: overtime(s) 10\n").c_str());
   STRCMP_EQUAL("m.mi:1: error: expected 'behavior:', 'b_arg:' or 'sensor:', got 'hello world'",
                refusal("syntax4", "hello world\n").c_str());
 }
@@ -152,8 +151,7 @@ TEST(MissionFile, ArgumentFileProblemsNameTheirOwnLine) {
   too_few.ma("goto_l10.ma",
              "behavior_name=goto_list\n<start:b_arg>\nb_arg: num_waypoints(nodim) 3\n<end:b_arg>\n"
              "<start:waypoints>\n713.000 5433.500\n<end:waypoints>\n");
-  STRCMP_EQUAL("m.mi:12: error: goto_list: num_waypoints 3 but 1 waypoints listed",
-               refusal(too_few, mi).c_str());
+  STRCMP_EQUAL("m.mi:12: error: goto_list: num_waypoints 3 but 1 waypoints listed", refusal(too_few, mi).c_str());
 
   MissionDir no_list("ma_no_waypoints");
   no_list.ma("goto_l10.ma", "behavior_name=goto_list\n<start:b_arg>\nb_arg: num_waypoints(nodim) 1\n<end:b_arg>\n");
@@ -181,9 +179,10 @@ TEST(MissionFile, UnsafeMissionsAreRefusedBeforeLaunch) {
   CHECK(refusal("tight", tight).find("m.mi:4: error: dive target 40.000000 m leaves less than 5") == 0);
   STRCMP_EQUAL("m.mi:12: error: behavior goto_wpt is not supported: a mission that needs it is refused",
                refusal("unknown", std::string(kAbend) + kYo + "behavior: goto_wpt\n").c_str());
-  STRCMP_EQUAL("m.mi:4: error: abend: vacuum_min refused: no vacuum sensor in the HAL: the vacuum abort cannot be "
-               "honoured",
-               refusal("vacuum", std::string(kAbend) + "  b_arg: vacuum_min(inHg) 6\n" + kYo).c_str());
+  STRCMP_EQUAL(
+      "m.mi:4: error: abend: vacuum_min refused: no vacuum sensor in the HAL: the vacuum abort cannot be "
+      "honoured",
+      refusal("vacuum", std::string(kAbend) + "  b_arg: vacuum_min(inHg) 6\n" + kYo).c_str());
   STRCMP_EQUAL("m.mi:4: error: abend: argument max_speed is not supported (an abort limit the firmware cannot honour)",
                refusal("abend_unknown", std::string(kAbend) + "  b_arg: max_speed(m/s) 1\n" + kYo).c_str());
   std::string forever = std::string(kAbend) + kYo;
@@ -196,15 +195,17 @@ TEST(MissionFile, UnsafeMissionsAreRefusedBeforeLaunch) {
   far_battery.replace(far_battery.find("d_use_pitch(enum) 3\n  b_arg: d_pitch_value(X) -0.45"), 50,
                       "d_use_pitch(enum) 1\n  b_arg: d_pitch_value(X) 2.50");
   CHECK(refusal("battery", far_battery).find("m.mi:9: error: yo d_pitch_value 2.5") == 0);
-  STRCMP_EQUAL("m.mi:12: error: surface: start_when 7 is not supported (1 stack idle, 9 every when_secs, 12 no comms "
-               "for when_secs are)",
-               refusal("surface", std::string(kAbend) + kYo + "behavior: surface\n b_arg: start_when(enum) 7\n").c_str());
+  STRCMP_EQUAL(
+      "m.mi:12: error: surface: start_when 7 is not supported (1 stack idle, 9 every when_secs, 12 no comms "
+      "for when_secs are)",
+      refusal("surface", std::string(kAbend) + kYo + "behavior: surface\n b_arg: start_when(enum) 7\n").c_str());
 }
 
 TEST(MissionFile, HarmlessExtrasAreWarningsNotRefusals) {
-  const LoadedMission m = MissionDir("harmless").load(std::string(kAbend) + kYo +
-                                                      "behavior: sample\n  b_arg: intersample_time(s) 0\n"
-                                                      "sensor: c_science_all_on_enabled(bool) 0\n");
+  const LoadedMission m = MissionDir("harmless")
+                              .load(std::string(kAbend) + kYo +
+                                    "behavior: sample\n  b_arg: intersample_time(s) 0\n"
+                                    "sensor: c_science_all_on_enabled(bool) 0\n");
   CHECK_TEXT(m.config.has_value(), all_text(m).c_str());
   const std::string text = all_text(m);
   CHECK(text.find("m.mi:12: warning: behavior sample") != std::string::npos);

@@ -79,8 +79,8 @@ TEST(DeadReckoning, SpeedFromDepthRateAndPitchPlusAlpha) {
   DeadReckoning dr(c);
   // Diving at -25 deg pitch, 0.2 m/s: glide path 28 deg.
   DOUBLES_EQUAL(0.2 / std::tan(deg_to_rad(28.0)), dr.horizontal_speed(deg_to_rad(-25.0), 0.2), 1e-12);
-  DOUBLES_EQUAL(0.0, dr.horizontal_speed(deg_to_rad(-5.0), 0.2), 0.0);    // inflecting
-  DOUBLES_EQUAL(0.0, dr.horizontal_speed(deg_to_rad(25.0), 0.2), 0.0);    // nose up but sinking
+  DOUBLES_EQUAL(0.0, dr.horizontal_speed(deg_to_rad(-5.0), 0.2), 0.0);  // inflecting
+  DOUBLES_EQUAL(0.0, dr.horizontal_speed(deg_to_rad(25.0), 0.2), 0.0);  // nose up but sinking
   dr.reset({100.0, 200.0});
   dr.update(deg_to_rad(-25.0), std::numbers::pi / 2.0, 0.2, {0.0, 0.1}, 10.0);  // east, current north
   DOUBLES_EQUAL(100.0 + 10.0 * 0.2 / std::tan(deg_to_rad(28.0)), dr.position().east_m, 1e-9);

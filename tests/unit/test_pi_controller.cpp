@@ -5,9 +5,7 @@
 using glider::fw::PiController;
 using glider::fw::PiGains;
 
-TEST_GROUP(PiController) {
-  PiGains gains{2.0, 0.5, -1.0, 1.0};
-};
+TEST_GROUP(PiController) { PiGains gains{2.0, 0.5, -1.0, 1.0}; };
 
 TEST(PiController, ProportionalPlusIntegral) {
   PiController pi(gains);

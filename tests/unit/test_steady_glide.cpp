@@ -34,10 +34,8 @@ TEST(SteadyGlide, SatisfiesTheEquilibriumEquations) {
   const double cd = 0.214 + 32.3 * g.alpha_rad * g.alpha_rad;
   const double w = 0.2 * gravity;
   // 000 eqs. 4-5 at theta = xi + alpha.
-  DOUBLES_EQUAL(0.0, q * cl * std::sin(g.alpha_rad) - q * cd * std::cos(g.alpha_rad) - w * std::sin(g.pitch_rad),
-                1e-9);
-  DOUBLES_EQUAL(0.0, q * cl * std::cos(g.alpha_rad) + q * cd * std::sin(g.alpha_rad) - w * std::cos(g.pitch_rad),
-                1e-9);
+  DOUBLES_EQUAL(0.0, q * cl * std::sin(g.alpha_rad) - q * cd * std::cos(g.alpha_rad) - w * std::sin(g.pitch_rad), 1e-9);
+  DOUBLES_EQUAL(0.0, q * cl * std::cos(g.alpha_rad) + q * cd * std::sin(g.alpha_rad) - w * std::cos(g.pitch_rad), 1e-9);
 }
 
 TEST(SteadyGlide, ClimbMirrorsDive) {
@@ -61,8 +59,8 @@ TEST(SteadyGlide, TooShallowIsRefused) {
 
 TEST(SteadyGlide, EquilibriumMatchesTheDynamicsAtRest) {
   // Flyable trims: pitch steeper than the best glide (~19 deg for WE01).
-  const std::array<std::array<double, 2>, 5> cases{{{-250e-6, 0.0}, {-250e-6, 0.008}, {-150e-6, 0.004},
-                                                    {200e-6, -0.005}, {250e-6, -0.01}}};
+  const std::array<std::array<double, 2>, 5> cases{
+      {{-250e-6, 0.0}, {-250e-6, 0.008}, {-150e-6, 0.004}, {200e-6, -0.005}, {250e-6, -0.01}}};
   for (const auto& [pumped, battery] : cases) {
     {
       GliderSimulator sim(v, Environment{});

@@ -48,9 +48,7 @@ std::vector<std::map<std::string, std::string>> read_table(const std::string& pa
   return rows;
 }
 
-double number(const std::map<std::string, std::string>& row, const std::string& key) {
-  return std::stod(row.at(key));
-}
+double number(const std::map<std::string, std::string>& row, const std::string& key) { return std::stod(row.at(key)); }
 
 // Paper 000 Table 1. Ballast m_b is printed in cc, + heavier (1 cc ~ 1 g);
 // battery position in cm.
@@ -64,9 +62,7 @@ std::vector<SteadyGlideSample> graver_table1() {
 }
 
 // Half the last printed digit, as a uniform error's standard deviation.
-double printed_sd(double half_step) {
-  return half_step / std::sqrt(3.0);
-}
+double printed_sd(double half_step) { return half_step / std::sqrt(3.0); }
 
 // The hidden truth of the synthetic glides: WE01 flying 40 g light, 17 %
 // more profile drag than identified in paper 000, and its battery 0.1 in
@@ -106,9 +102,7 @@ Synthetic synthetic_glides() {
   return s;
 }
 
-double larger(double a, double b) {
-  return std::isnan(a) ? b : (std::isnan(b) ? a : std::max(a, b));
-}
+double larger(double a, double b) { return std::isnan(a) ? b : (std::isnan(b) ? a : std::max(a, b)); }
 
 }  // namespace
 

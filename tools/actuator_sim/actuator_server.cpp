@@ -26,9 +26,7 @@ double monotonic_s() {
 
 int word_at(const std::uint8_t* p) { return (p[0] << 8) | p[1]; }
 
-bool is_read_only(int offset) {
-  return offset == regs::kIdent || offset == regs::kVersion || offset >= regs::kActual;
-}
+bool is_read_only(int offset) { return offset == regs::kIdent || offset == regs::kVersion || offset >= regs::kActual; }
 
 }  // namespace
 
@@ -135,8 +133,8 @@ void ActuatorServer::handle(const std::uint8_t* query, int length) {
       modbus_reply_exception(context_, query, MODBUS_EXCEPTION_SLAVE_OR_SERVER_FAILURE);
       return;
     case ReplyAction::kGarbled: {
-      const auto frame = garbled_reply(query, header, listen_socket_ == -1, mapping->tab_registers,
-                                       mapping->nb_registers);
+      const auto frame =
+          garbled_reply(query, header, listen_socket_ == -1, mapping->tab_registers, mapping->nb_registers);
       if (write(modbus_get_socket(context_), frame.data(), frame.size()) < 0) return;
       return;
     }

@@ -9,7 +9,8 @@ std::uint16_t crc16_modbus(const std::vector<std::uint8_t>& bytes) {
   std::uint16_t crc = 0xFFFF;
   for (const std::uint8_t byte : bytes) {
     crc ^= byte;
-    for (int bit = 0; bit < 8; ++bit) crc = (crc & 1u) != 0 ? static_cast<std::uint16_t>((crc >> 1) ^ 0xA001u) : crc >> 1;
+    for (int bit = 0; bit < 8; ++bit)
+      crc = (crc & 1u) != 0 ? static_cast<std::uint16_t>((crc >> 1) ^ 0xA001u) : crc >> 1;
   }
   return crc;
 }
@@ -44,7 +45,7 @@ std::vector<std::uint8_t> garbled_reply(const std::uint8_t* query, int header_le
   } else {
     const int length = static_cast<int>(reply_pdu.size()) + 1;
     frame = {static_cast<std::uint8_t>(query[0] ^ 0x5A), query[1], 0, 0, static_cast<std::uint8_t>(length >> 8),
-             static_cast<std::uint8_t>(length & 0xFF), query[6]};
+             static_cast<std::uint8_t>(length & 0xFF),   query[6]};
     for (const std::uint8_t byte : reply_pdu) frame.push_back(byte);
   }
   return frame;

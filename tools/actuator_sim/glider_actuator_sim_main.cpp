@@ -25,8 +25,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> faults;
   double time_scale = 1.0;
   app.add_option("--board", board_file, "board file (bus settings, axes)")->check(CLI::ExistingFile);
-  auto* tcp_option = app.add_option("--tcp", tcp, "serve Modbus TCP on HOST:PORT (port 0: any free port); "
-                                                  "default 127.0.0.1 and the board's port");
+  auto* tcp_option = app.add_option("--tcp", tcp,
+                                    "serve Modbus TCP on HOST:PORT (port 0: any free port); "
+                                    "default 127.0.0.1 and the board's port");
   app.add_option("--rtu", rtu, "serve Modbus RTU on this serial device (e.g. one end of a socat pty pair)")
       ->excludes(tcp_option);
   app.add_option("--fault", faults, "inject a fault: stall:S, silent:N, noise:N, exception:N, slow:MS (repeatable)");
@@ -55,9 +56,10 @@ int main(int argc, char** argv) {
     std::signal(SIGPIPE, SIG_IGN);  // a client that vanished mid-reply
     glider::sim_tools::ActuatorServer server(options);
     const auto& board = options.board;
-    std::printf("actuator-sim: serving %s (pump: slave %d at register %d, slide: slave %d at register %d; faults: %s)\n",
-                server.endpoint().c_str(), board.pump.slave, board.pump.base_address, board.slide.slave,
-                board.slide.base_address, options.faults.describe().c_str());
+    std::printf(
+        "actuator-sim: serving %s (pump: slave %d at register %d, slide: slave %d at register %d; faults: %s)\n",
+        server.endpoint().c_str(), board.pump.slave, board.pump.base_address, board.slide.slave,
+        board.slide.base_address, options.faults.describe().c_str());
     if (!server.warning().empty()) std::printf("actuator-sim: warning: %s\n", server.warning().c_str());
     std::fflush(stdout);
     server.run(g_stop);

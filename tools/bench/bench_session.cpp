@@ -16,9 +16,7 @@ using Clock = std::chrono::steady_clock;
 constexpr auto kPollPeriod = std::chrono::milliseconds(100);
 constexpr int kMissedAnswersAllowed = 3;
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 }  // namespace
 
@@ -109,8 +107,8 @@ std::string describe_status(const hal_linux::AxisStatus& s, const std::string& u
   std::snprintf(text, sizeof text, "%+.3f %s, speed %+.3f %s/s", s.position, unit.c_str(), s.speed, unit.c_str());
   std::string out = text;
   const std::pair<std::uint16_t, const char*> bits[] = {
-      {regs::kEnabled, "enabled"},     {regs::kMoving, "moving"},        {regs::kInPosition, "in-position"},
-      {regs::kHomed, "homed"},         {regs::kLimitMin, "limit-min"},   {regs::kLimitMax, "limit-max"},
+      {regs::kEnabled, "enabled"}, {regs::kMoving, "moving"},      {regs::kInPosition, "in-position"},
+      {regs::kHomed, "homed"},     {regs::kLimitMin, "limit-min"}, {regs::kLimitMax, "limit-max"},
       {regs::kFault, "FAULT"}};
   for (const auto& [bit, name] : bits) {
     if (s.has(bit)) out += std::string(", ") + name;

@@ -94,11 +94,12 @@ int cmd_status(BenchSession& s) {
 void report_move(const char* what, const glider::bench::MoveOutcome& m, const AxisConfig& c, double start,
                  double target) {
   const auto metrics = glider::bench::measure_move(m.samples, start, target);
-  std::printf("%s %s %+.3f -> %+.3f %s: %s; travel %.1f s, rate %.3f %s/s, rise (10-90 %%) %.1f s, overshoot %.1f %%, "
-              "settled %.1f s\n",
-              c.name.c_str(), what, start, target, c.unit.c_str(), m.arrived ? "arrived" : m.problem.c_str(),
-              metrics.travel_time_s, metrics.mean_rate, c.unit.c_str(), metrics.rise_time_s, metrics.overshoot_pct,
-              metrics.settle_time_s);
+  std::printf(
+      "%s %s %+.3f -> %+.3f %s: %s; travel %.1f s, rate %.3f %s/s, rise (10-90 %%) %.1f s, overshoot %.1f %%, "
+      "settled %.1f s\n",
+      c.name.c_str(), what, start, target, c.unit.c_str(), m.arrived ? "arrived" : m.problem.c_str(),
+      metrics.travel_time_s, metrics.mean_rate, c.unit.c_str(), metrics.rise_time_s, metrics.overshoot_pct,
+      metrics.settle_time_s);
   if (!m.arrived) throw std::runtime_error(c.name + ": " + m.problem);
 }
 

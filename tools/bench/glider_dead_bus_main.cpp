@@ -57,13 +57,14 @@ int main(int argc, char** argv) {
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     const auto& st = link->stats();
-    std::printf("%-34s %s: worst %.1f ms, mean %.1f ms per cycle over %d cycles (budget %d ms, timeout %d+%d ms, "
-                "retries %d); faults reported in %d/%d cycles; %llu attempts, %llu refused by the budget; last "
-                "error: %s\n",
-                label.c_str(), describe(board.bus).c_str(), worst_ms, total_ms / cycles, cycles,
-                board.bus.cycle_budget_ms, board.bus.response_timeout_ms, board.bus.byte_timeout_ms, board.bus.retries,
-                faults, cycles, static_cast<unsigned long long>(st.attempts),
-                static_cast<unsigned long long>(st.budget_refusals), link->last_error());
+    std::printf(
+        "%-34s %s: worst %.1f ms, mean %.1f ms per cycle over %d cycles (budget %d ms, timeout %d+%d ms, "
+        "retries %d); faults reported in %d/%d cycles; %llu attempts, %llu refused by the budget; last "
+        "error: %s\n",
+        label.c_str(), describe(board.bus).c_str(), worst_ms, total_ms / cycles, cycles, board.bus.cycle_budget_ms,
+        board.bus.response_timeout_ms, board.bus.byte_timeout_ms, board.bus.retries, faults, cycles,
+        static_cast<unsigned long long>(st.attempts), static_cast<unsigned long long>(st.budget_refusals),
+        link->last_error());
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "glider-dead-bus: %s\n", e.what());

@@ -30,9 +30,12 @@ struct Case {
 
 const char* law_name(glider::fw::HeadingLaw law) {
   switch (law) {
-    case glider::fw::HeadingLaw::kProportional: return "P (paper 001, kp 0.5)";
-    case glider::fw::HeadingLaw::kSlocum: return "Slocum (1.5, 0.02, -4)";
-    case glider::fw::HeadingLaw::kCompensated: return "compensated";
+    case glider::fw::HeadingLaw::kProportional:
+      return "P (paper 001, kp 0.5)";
+    case glider::fw::HeadingLaw::kSlocum:
+      return "Slocum (1.5, 0.02, -4)";
+    case glider::fw::HeadingLaw::kCompensated:
+      return "compensated";
   }
   return "?";
 }
@@ -46,8 +49,8 @@ bool fly(const std::string& source, const std::string& out_dir, const Case& c, H
   glider::fw::FlightSoftwareConfig base;
   base.heading.law = c.law;
   base.heading.delay_s = c.delay_s;  // the compensated law is told the fin's dead time (bench-measured)
-  const auto loaded = glider::fw::mission_file::load_mission_file(
-      source + "/boards/missions/heading_hold.mi", glider::sil::mission_vehicle(vehicle, 102.0), base);
+  const auto loaded = glider::fw::mission_file::load_mission_file(source + "/boards/missions/heading_hold.mi",
+                                                                  glider::sil::mission_vehicle(vehicle, 102.0), base);
   if (!loaded.config) {
     for (const auto& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.text().c_str());
     return false;
@@ -82,7 +85,8 @@ int main(int argc, char** argv) {
   std::printf("Real comet logs (glides with a heading command):\n");
   for (const char* log : {"comet-2016-174-05", "comet-2019-222-02-154", "comet-2019-222-02-156"}) {
     const auto data = glider::flightlog::read_flight_log(source + "/tests/data/real/" + log + ".csv", real);
-    std::printf("  %-24s %s\n", log, glider::heading_study::format(glider::heading_study::heading_metrics(data, 0.0)).c_str());
+    std::printf("  %-24s %s\n", log,
+                glider::heading_study::format(glider::heading_study::heading_metrics(data, 0.0)).c_str());
   }
 
   int failures = 0;

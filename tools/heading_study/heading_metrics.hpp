@@ -10,7 +10,7 @@ namespace glider::heading_study {
 
 struct HeadingMetrics {
   std::size_t samples = 0;
-  double dive_error_deg = 0.0;   // median m_heading - c_heading on dives (+ = clockwise of the command)
+  double dive_error_deg = 0.0;  // median m_heading - c_heading on dives (+ = clockwise of the command)
   double climb_error_deg = 0.0;
   double rms_error_deg = 0.0;
   double oscillation_amplitude_deg = 0.0;  // median over glides of sqrt(2) * std about the glide's mean

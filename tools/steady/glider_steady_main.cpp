@@ -133,8 +133,7 @@ int main(int argc, char** argv) {
     }
   } else {
     report.mode = "inverse: glide path and net buoyancy given";
-    const auto result =
-        glider::model::solve_trim(dynamics, std::abs(glide_path_deg), net_buoyancy_g / 1000.0, depth_m);
+    const auto result = glider::model::solve_trim(dynamics, std::abs(glide_path_deg), net_buoyancy_g / 1000.0, depth_m);
     if (!result.trim) return fail(json, result.error);
     report.glide = result.trim->glide;
     report.ballast_cc = glider::m3_to_cc(result.trim->pumped_volume_m3);

@@ -11,9 +11,9 @@
 #include "glider/identification/steady_identification.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/units.hpp"
 #include "sections.hpp"
 #include "table_file.hpp"
-#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
@@ -25,13 +25,9 @@ constexpr double kInch = 0.0254;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 // Half the last printed digit, as a uniform error's standard deviation.
-double printed_sd(double half_step) {
-  return half_step / std::sqrt(3.0);
-}
+double printed_sd(double half_step) { return half_step / std::sqrt(3.0); }
 
-double larger(double a, double b) {
-  return std::isnan(a) ? b : (std::isnan(b) ? a : std::max(a, b));
-}
+double larger(double a, double b) { return std::isnan(a) ? b : (std::isnan(b) ? a : std::max(a, b)); }
 
 std::string with_error(double value, double error, int decimals) {
   if (!std::isfinite(error)) return fixed(value, decimals);

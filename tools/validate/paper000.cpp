@@ -6,9 +6,9 @@
 #include "glider/identification/lift_glide.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/units.hpp"
 #include "sections.hpp"
 #include "table_file.hpp"
-#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
@@ -28,7 +28,8 @@ void paper000(Report& r, const Inputs& in) {
     << "### Fig. 13: 250 g net buoyancy on a 25 deg glide path\n";
   const model::SteadyGlide g = *model::steady_glide_for_path(v.hydro, rho, 25.0, 0.25).glide;
   r.table({"", "paper (Fig. 13)", "model", "difference"},
-          {{"depth rate (m/s)", "~0.20", fixed(g.depth_rate_m_s, 3), fixed(100.0 * (g.depth_rate_m_s / 0.20 - 1.0), 1) + " %"},
+          {{"depth rate (m/s)", "~0.20", fixed(g.depth_rate_m_s, 3),
+            fixed(100.0 * (g.depth_rate_m_s / 0.20 - 1.0), 1) + " %"},
            {"horizontal speed (m/s)", "~0.42", fixed(g.horizontal_speed_m_s, 3),
             fixed(100.0 * (g.horizontal_speed_m_s / 0.42 - 1.0), 1) + " %"},
            {"speed (m/s)", "-", fixed(g.speed_m_s, 3), ""},
@@ -49,11 +50,14 @@ void paper000(Report& r, const Inputs& in) {
     vertical.push_back(s.glide->depth_rate_m_s);
   }
   r.data("fig13.dat", {"glide_path_deg", "V", "Vx", "Vz"}, {path, speed, horizontal, vertical});
-  r.plot("fig13", "Steady glide speeds of the WE01 model at m0 = 250 g (paper 000 Fig. 13); points: the paper's reading at 25 deg",
-         "set xlabel 'glide path angle (deg)'\nset ylabel 'm/s'\nset key top center\n"
-         "set arrow from -25,0 to -25,0.7 nohead dt 2\n"
-         "plot 'fig13.dat' u 1:2 w l lw 2 t 'V', '' u 1:3 w l lw 2 t 'Vx horizontal', '' u 1:4 w l lw 2 t 'Vz depth rate', "
-         "'-' u 1:2 w p pt 7 ps 1.5 t 'paper: 0.42 / 0.20'\n-25 0.42\n-25 0.20\ne");
+  r.plot(
+      "fig13",
+      "Steady glide speeds of the WE01 model at m0 = 250 g (paper 000 Fig. 13); points: the paper's reading at 25 deg",
+      "set xlabel 'glide path angle (deg)'\nset ylabel 'm/s'\nset key top center\n"
+      "set arrow from -25,0 to -25,0.7 nohead dt 2\n"
+      "plot 'fig13.dat' u 1:2 w l lw 2 t 'V', '' u 1:3 w l lw 2 t 'Vx horizontal', '' u 1:4 w l lw 2 t 'Vz depth "
+      "rate', "
+      "'-' u 1:2 w p pt 7 ps 1.5 t 'paper: 0.42 / 0.20'\n-25 0.42\n-25 0.20\ne");
 
   t << "\n### Table 1: angle of attack and speed from measured pitch and depth rate\n\n"
        "From each measured steady glide (pitch, depth rate, ballast) the lift equation gives the angle of "

@@ -5,9 +5,9 @@
 
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/units.hpp"
 #include "sections.hpp"
 #include "table_file.hpp"
-#include "glider/units.hpp"
 
 namespace glider::validate {
 namespace {
@@ -61,8 +61,8 @@ void paper001(Report& r, const Inputs& in) {
   for (const TableRow& row : read_table(in.papers / "stante2008_steady_climbs_dives.csv")) {
     if (row.text("kind") != "sim") continue;
     rows.push_back({row.text("case") + " (authors' simulation)", row.text("xcg_mm"),
-                    fixed(row.number("dBu_kg") * 1000.0, 0), row.text("pitch_deg"), row.text("rate_m_s"), "", "",
-                    "", ""});
+                    fixed(row.number("dBu_kg") * 1000.0, 0), row.text("pitch_deg"), row.text("rate_m_s"), "", "", "",
+                    ""});
   }
   r.table({"case", "x_CG (mm)", "ballast (g, + buoyant)", "pitch (deg)", "rate (m/s)", "WE01 model pitch",
            "WE01 model rate", "Stante-trim model pitch", "Stante-trim model rate"},

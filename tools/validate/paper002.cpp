@@ -6,8 +6,8 @@
 #include "glider/model/simulator.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
-#include "sections.hpp"
 #include "glider/units.hpp"
+#include "sections.hpp"
 
 namespace glider::validate {
 namespace {
@@ -62,8 +62,10 @@ void paper002(Report& r, const Inputs& in) {
     }
     const Descent d = descend_to_4m(v, db);
     rows.push_back({fixed(db, 1), fixed(paper_u[i], 3), at37.glide ? fixed(at37.glide->speed_m_s, 3) : "no glide",
-                    at37.glide ? fixed(at37.glide->alpha_rad / kDeg, 2) : "-", at26.glide ? fixed(at26.glide->speed_m_s, 3) : "no glide",
-                    fixed(paper_t[i], 1) + " / " + fixed(d.time_s, 1), fixed(paper_d[i], 1) + " / " + fixed(d.distance_m, 1)});
+                    at37.glide ? fixed(at37.glide->alpha_rad / kDeg, 2) : "-",
+                    at26.glide ? fixed(at26.glide->speed_m_s, 3) : "no glide",
+                    fixed(paper_t[i], 1) + " / " + fixed(d.time_s, 1),
+                    fixed(paper_d[i], 1) + " / " + fixed(d.distance_m, 1)});
   }
   r.table({"Delta B (kg)", "paper U at 37 deg (m/s)", "model U at 37 deg", "model a at 37 deg (deg; paper 1.06)",
            "model U at 26 deg", "time to 4 m paper / model (s)", "distance paper / model (m)"},
@@ -77,9 +79,11 @@ void paper002(Report& r, const Inputs& in) {
        "speeds. Forces of C 1/2 rho S_ref U^2 with C = K and S_ref ~ 0.25 m^2 (about the wings' planform) would "
        "fit; the paper's coefficients as printed cannot reproduce its own steady results.\n";
   r.data("iitm_speed_vs_pitch.dat", {"pitch_deg", "U"}, {curves[0], curves[1]});
-  r.plot("iitm_speed_vs_pitch", "IIT Madras glider model: steady speed against pitch at Delta B = 0.3 kg; point: paper's 0.198 m/s at 37 deg",
+  r.plot("iitm_speed_vs_pitch",
+         "IIT Madras glider model: steady speed against pitch at Delta B = 0.3 kg; point: paper's 0.198 m/s at 37 deg",
          "set xlabel 'pitch (deg)'\nset ylabel 'speed through water (m/s)'\n"
-         "plot 'iitm_speed_vs_pitch.dat' u 1:2 w l lw 2 t 'model, Delta B = 0.3 kg', '-' u 1:2 w p pt 7 ps 1.5 t 'paper'\n-37 0.198\ne");
+         "plot 'iitm_speed_vs_pitch.dat' u 1:2 w l lw 2 t 'model, Delta B = 0.3 kg', '-' u 1:2 w p pt 7 ps 1.5 t "
+         "'paper'\n-37 0.198\ne");
 }
 
 }  // namespace glider::validate

@@ -10,8 +10,8 @@
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
-#include "sections.hpp"
 #include "glider/units.hpp"
+#include "sections.hpp"
 
 namespace glider::validate {
 namespace {
@@ -27,9 +27,15 @@ struct Score {
     sum_model += model;
     ++n;
   }
-  double rms() const { return n ? std::sqrt(sum_sq / static_cast<double>(n)) : std::numeric_limits<double>::quiet_NaN(); }
-  double mean_measured() const { return n ? sum_measured / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN(); }
-  double mean_model() const { return n ? sum_model / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN(); }
+  double rms() const {
+    return n ? std::sqrt(sum_sq / static_cast<double>(n)) : std::numeric_limits<double>::quiet_NaN();
+  }
+  double mean_measured() const {
+    return n ? sum_measured / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN();
+  }
+  double mean_model() const {
+    return n ? sum_model / static_cast<double>(n) : std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 // Depth rate from depth by a centred difference over +-half_window samples.
@@ -137,7 +143,9 @@ void real_data(Report& r, const Inputs& in) {
        "with drag and mass fitted on gliderflight-adcp.csv, reaches 3.92 cm/s RMS vertical-velocity misfit "
        "(the anchor measured for the diagnose issue).\n";
   r.data("real_depth_rate.dat", {"minutes", "measured", "model"}, {plot_t, plot_measured, plot_model});
-  r.plot("real_depth_rate", "comet-2019-222-02-154: measured depth rate and the nominal model's (steady glide at the logged pitch and ballast)",
+  r.plot("real_depth_rate",
+         "comet-2019-222-02-154: measured depth rate and the nominal model's (steady glide at the logged pitch and "
+         "ballast)",
          "set xlabel 'minutes into the log'\nset ylabel 'depth rate (m/s, + down)'\n"
          "plot 'real_depth_rate.dat' u 1:2 w p pt 7 ps 0.4 t 'measured', '' u 1:3 w p pt 7 ps 0.4 t 'nominal model'");
 }

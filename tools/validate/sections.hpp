@@ -5,13 +5,13 @@
 #include "glider/report/report.hpp"
 
 namespace glider::validate {
-using report::Report;
 using report::fixed;
+using report::Report;
 
 struct Inputs {
-  std::filesystem::path boards;      // boards/vehicles
-  std::filesystem::path papers;      // tests/data/papers
-  std::filesystem::path real_data;   // tests/data/real
+  std::filesystem::path boards;     // boards/vehicles
+  std::filesystem::path papers;     // tests/data/papers
+  std::filesystem::path real_data;  // tests/data/real
 };
 
 // Paper 001 gives the CG position (from the battery through its CAD model),

@@ -91,41 +91,41 @@ struct Reader {
     const std::string file = path.filename().string();
     enum class Section { kNone, kArgs, kWaypoints } section = Section::kNone;
     bool named = false;
-    const int lines = for_each_line(in, file, [&](const SourceLocation& at, const std::string& line,
-                                                  const std::string& key) {
-      if (key.rfind("behavior_name", 0) == 0) {
-        const auto eq = line.find('=');
-        const std::string name = eq == std::string::npos ? "" : lower(trim(line.substr(eq + 1)));
-        if (name != behavior.name) {
-          error(at, "argument file is for behavior '" + name + "', included by '" + behavior.name + "' at " +
-                        included_at.file + ":" + std::to_string(included_at.line));
-        }
-        named = true;
-      } else if (key == "<start:b_arg>") {
-        section = Section::kArgs;
-      } else if (key == "<start:waypoints>") {
-        section = Section::kWaypoints;
-        behavior.has_waypoint_section = true;
-      } else if (key == "<end:b_arg>" || key == "<end:waypoints>") {
-        section = Section::kNone;
-      } else if (section == Section::kArgs && key.rfind("b_arg:", 0) == 0) {
-        MiArg arg;
-        if (parse_arg(trim(line.substr(6)), at, arg)) behavior.args.push_back(arg);
-      } else if (section == Section::kWaypoints) {
-        std::istringstream fields(line);
-        std::string lon, lat, extra;
-        MiWaypoint w;
-        fields >> lon >> lat;
-        if (!parse_number(lon, w.lon_nmea) || !parse_number(lat, w.lat_nmea) || (fields >> extra)) {
-          error(at, "waypoint must be 'lon lat' in NMEA ddmm.mmm, got '" + line + "'");
-          return;
-        }
-        w.where = at;
-        behavior.waypoints.push_back(w);
-      } else {
-        error(at, "unexpected line in argument file: '" + line + "'");
-      }
-    });
+    const int lines =
+        for_each_line(in, file, [&](const SourceLocation& at, const std::string& line, const std::string& key) {
+          if (key.rfind("behavior_name", 0) == 0) {
+            const auto eq = line.find('=');
+            const std::string name = eq == std::string::npos ? "" : lower(trim(line.substr(eq + 1)));
+            if (name != behavior.name) {
+              error(at, "argument file is for behavior '" + name + "', included by '" + behavior.name + "' at " +
+                            included_at.file + ":" + std::to_string(included_at.line));
+            }
+            named = true;
+          } else if (key == "<start:b_arg>") {
+            section = Section::kArgs;
+          } else if (key == "<start:waypoints>") {
+            section = Section::kWaypoints;
+            behavior.has_waypoint_section = true;
+          } else if (key == "<end:b_arg>" || key == "<end:waypoints>") {
+            section = Section::kNone;
+          } else if (section == Section::kArgs && key.rfind("b_arg:", 0) == 0) {
+            MiArg arg;
+            if (parse_arg(trim(line.substr(6)), at, arg)) behavior.args.push_back(arg);
+          } else if (section == Section::kWaypoints) {
+            std::istringstream fields(line);
+            std::string lon, lat, extra;
+            MiWaypoint w;
+            fields >> lon >> lat;
+            if (!parse_number(lon, w.lon_nmea) || !parse_number(lat, w.lat_nmea) || (fields >> extra)) {
+              error(at, "waypoint must be 'lon lat' in NMEA ddmm.mmm, got '" + line + "'");
+              return;
+            }
+            w.where = at;
+            behavior.waypoints.push_back(w);
+          } else {
+            error(at, "unexpected line in argument file: '" + line + "'");
+          }
+        });
     if (!named) error({file, 0}, "argument file has no behavior_name= line");
     if (section != Section::kNone) error({file, lines}, "section not closed with <end:...>");
   }
@@ -142,8 +142,8 @@ struct Reader {
         return;
       }
     }
-    error(arg.where, "argument file " + file + " not found (looked in mafiles/ and ../mafiles/ of " +
-                         dir.string() + ")");
+    error(arg.where,
+          "argument file " + file + " not found (looked in mafiles/ and ../mafiles/ of " + dir.string() + ")");
   }
 
   void read_mi(std::istream& in, const std::string& file, const std::filesystem::path& dir) {

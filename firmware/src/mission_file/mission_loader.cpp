@@ -18,9 +18,9 @@ constexpr double kOvershootMarginM = 5.0;
 
 // What the loader does with an argument it meets.
 enum class Use {
-  kUsed,      // flown
-  kIgnored,   // harmless to leave out: a warning
-  kRefused,   // would change how safely the vehicle flies: an error if set
+  kUsed,     // flown
+  kIgnored,  // harmless to leave out: a warning
+  kRefused,  // would change how safely the vehicle flies: an error if set
 };
 
 struct ArgRule {
@@ -44,7 +44,8 @@ const Rules& abend_rules() {
       {"no_cop_tickle_for", {Use::kIgnored, "no COP watchdog in this firmware (the executive counts overruns)"}},
       {"no_cop_tickle_percent", {Use::kIgnored, "no COP watchdog in this firmware"}},
       {"reqd_spare_heap", {Use::kIgnored, "the firmware allocates nothing after start-up"}},
-      {"chk_sensor_reasonableness", {Use::kIgnored, "every sensor value is always checked (validity, finiteness, age)"}},
+      {"chk_sensor_reasonableness",
+       {Use::kIgnored, "every sensor value is always checked (validity, finiteness, age)"}},
       {"leakdetect_sample_time", {Use::kIgnored, "the leak detector is read every control cycle"}},
       {"vacuum_min", {Use::kRefused, "no vacuum sensor in the HAL: the vacuum abort cannot be honoured"}},
       {"vacuum_max", {Use::kRefused, "no vacuum sensor in the HAL: the vacuum abort cannot be honoured"}},
@@ -76,12 +77,8 @@ const Rules& surface_rules() {
 
 const Rules& goto_rules() {
   static const Rules rules{
-      {"start_when", {Use::kUsed, ""}},
-      {"list_stop_when", {Use::kUsed, ""}},
-      {"list_when_wpt_dist", {Use::kUsed, ""}},
-      {"initial_wpt", {Use::kUsed, ""}},
-      {"num_waypoints", {Use::kUsed, ""}},
-      {"num_legs_to_run", {Use::kUsed, ""}},
+      {"start_when", {Use::kUsed, ""}},  {"list_stop_when", {Use::kUsed, ""}}, {"list_when_wpt_dist", {Use::kUsed, ""}},
+      {"initial_wpt", {Use::kUsed, ""}}, {"num_waypoints", {Use::kUsed, ""}},  {"num_legs_to_run", {Use::kUsed, ""}},
   };
   return rules;
 }
@@ -196,7 +193,8 @@ void Loader::check_args(const MiBehavior& b, const Rules& rules, bool strict, bo
     const auto rule = rules.find(key);
     if (rule == rules.end()) {
       if (strict) {
-        fail(a.where, b.name + ": argument " + a.name + " is not supported (an abort limit the firmware cannot honour)");
+        fail(a.where,
+             b.name + ": argument " + a.name + " is not supported (an abort limit the firmware cannot honour)");
       } else {
         warn(a.where, b.name + ": argument " + a.name + " is not supported and is ignored");
       }
@@ -285,8 +283,8 @@ void Loader::read_goto(const MiBehavior& b) {
   }
   const auto count = static_cast<std::size_t>(declared);
   if (count < b.waypoints.size()) {
-    warn(b.waypoints[count].where, "goto_list: waypoints after the first num_waypoints (" + std::to_string(count) +
-                                       ") are not flown");
+    warn(b.waypoints[count].where,
+         "goto_list: waypoints after the first num_waypoints (" + std::to_string(count) + ") are not flown");
   }
   for (std::size_t i = 0; i < count; ++i) {
     const MiWaypoint& w = b.waypoints[i];
@@ -327,8 +325,8 @@ void Loader::read_glide(const MiBehavior& b, const std::string& prefix, bool div
   (dive ? m.dive_to_m : m.climb_to_m) = depth;
   const MiArg* altitude = find(b, prefix + "target_altitude");
   if (altitude != nullptr && altitude->value > 0.0) {
-    warn(altitude->where, what + "target_altitude ignored: no altimeter in the HAL, the glide turns at " +
-                              prefix + "target_depth only (keep it above the bottom)");
+    warn(altitude->where, what + "target_altitude ignored: no altimeter in the HAL, the glide turns at " + prefix +
+                              "target_depth only (keep it above the bottom)");
   }
   const int use_bpump = static_cast<int>(value(b, prefix + "use_bpump", 2.0));
   if (use_bpump != 2) fail(b.where, what + "use_bpump must be 2 (absolute cc)");
@@ -372,8 +370,8 @@ void Loader::read_yo(const MiBehavior& b) {
     half_cycles_ = static_cast<std::int32_t>(half);
     config_.mission.yos = (half_cycles_ + 1) / 2;
     if (half_cycles_ % 2 != 0) {
-      warn(find(b, "num_half_cycles_to_do")->where, "yo: an odd num_half_cycles_to_do is flown as " +
-                                                        std::to_string(config_.mission.yos) + " whole yos");
+      warn(find(b, "num_half_cycles_to_do")->where,
+           "yo: an odd num_half_cycles_to_do is flown as " + std::to_string(config_.mission.yos) + " whole yos");
     }
   } else {
     fail(b.where, "yo: num_half_cycles_to_do must be -1 or a positive count");
@@ -417,8 +415,8 @@ void Loader::check_safety(const SourceLocation& mission) {
     fail(mission, "no abend behavior: a mission without abort limits is refused");
   }
   // Overdepth: the abend limit where given, never deeper than the rating.
-  m.max_depth_m = overdepth_m_ > 0.0 ? std::min(overdepth_m_, vehicle_.max_working_depth_m)
-                                     : vehicle_.max_working_depth_m;
+  m.max_depth_m =
+      overdepth_m_ > 0.0 ? std::min(overdepth_m_, vehicle_.max_working_depth_m) : vehicle_.max_working_depth_m;
   if (overdepth_m_ > vehicle_.max_working_depth_m) {
     warn(mission, "abend overdepth " + std::to_string(overdepth_m_) + " m is beyond the vehicle's rating: " +
                       std::to_string(vehicle_.max_working_depth_m) + " m applies");
@@ -429,14 +427,15 @@ void Loader::check_safety(const SourceLocation& mission) {
                      std::to_string(vehicle_.max_working_depth_m) + " m)");
   } else if (m.dive_to_m > m.max_depth_m - kOvershootMarginM) {
     fail(yo_at_, "dive target " + std::to_string(m.dive_to_m) + " m leaves less than " +
-                     std::to_string(kOvershootMarginM) + " m to the overdepth limit (" +
-                     std::to_string(m.max_depth_m) + " m)");
+                     std::to_string(kOvershootMarginM) + " m to the overdepth limit (" + std::to_string(m.max_depth_m) +
+                     " m)");
   }
   const bool surfaces_by_count = half_cycles_ > 0;
   const bool surfaces_by_time = config_.plan.surface_interval_s > 0.0;
   if (!surfaces_by_count && !surfaces_by_time) {
-    fail(yo_at_, "the yos never end (num_half_cycles_to_do -1) and no surface behavior brings the glider up "
-                 "by time: it would never surface");
+    fail(yo_at_,
+         "the yos never end (num_half_cycles_to_do -1) and no surface behavior brings the glider up "
+         "by time: it would never surface");
   }
   if (have_set_heading_ && have_goto_) {
     warn(mission, "set_heading and goto_list both given: the waypoints are flown");

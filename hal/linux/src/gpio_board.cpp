@@ -110,9 +110,7 @@ const LineConfig* GpioBoard::find(LineRole role) const {
   return nullptr;
 }
 
-GpioBoard load_gpio_board(const std::filesystem::path& path) {
-  return read_board(TomlDocument::load(path));
-}
+GpioBoard load_gpio_board(const std::filesystem::path& path) { return read_board(TomlDocument::load(path)); }
 
 GpioBoard parse_gpio_board(const std::string& text, const std::string& source_name) {
   return read_board(TomlDocument::parse(text, source_name));

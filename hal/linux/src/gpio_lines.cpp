@@ -151,11 +151,7 @@ std::unique_ptr<GpioLines> GpioLines::open(const GpioBoard& board, const hal::Cl
   return lines;
 }
 
-GpioInput* GpioLines::input(LineRole role) {
-  return inputs_[static_cast<std::size_t>(role)].get();
-}
-GpioOutput* GpioLines::output(LineRole role) {
-  return outputs_[static_cast<std::size_t>(role)].get();
-}
+GpioInput* GpioLines::input(LineRole role) { return inputs_[static_cast<std::size_t>(role)].get(); }
+GpioOutput* GpioLines::output(LineRole role) { return outputs_[static_cast<std::size_t>(role)].get(); }
 
 }  // namespace glider::hal_linux

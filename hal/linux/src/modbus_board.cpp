@@ -51,8 +51,8 @@ BusConfig read_bus(const TomlDocument& doc) {
   bus.cycle_period_ms = integer_in(doc, "bus.cycle_period_ms", bus.cycle_period_ms, 1, 3'600'000);
   bus.cycle_budget_ms = integer_in(doc, "bus.cycle_budget_ms", bus.cycle_budget_ms, 1, bus.cycle_period_ms);
   if (bus.cycle_budget_ms < bus.response_timeout_ms) {
-    doc.fail("bus.cycle_budget_ms", "must allow at least one response timeout (" +
-                                        std::to_string(bus.response_timeout_ms) + " ms)");
+    doc.fail("bus.cycle_budget_ms",
+             "must allow at least one response timeout (" + std::to_string(bus.response_timeout_ms) + " ms)");
   }
   return bus;
 }

@@ -13,9 +13,7 @@ std::optional<int> hex_digit(char c) {
   return std::nullopt;
 }
 
-bool printable(char c) {
-  return c >= 0x20 && c <= 0x7e;
-}
+bool printable(char c) { return c >= 0x20 && c <= 0x7e; }
 
 }  // namespace
 

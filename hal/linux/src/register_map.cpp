@@ -4,11 +4,16 @@ namespace glider::hal_linux::regs {
 
 const char* fault_name(std::uint16_t code) {
   switch (code) {
-    case kNoFault: return "none";
-    case kStall: return "stall";
-    case kOverTravel: return "over-travel";
-    case kDriveFault: return "drive fault";
-    default: return "unknown fault code";
+    case kNoFault:
+      return "none";
+    case kStall:
+      return "stall";
+    case kOverTravel:
+      return "over-travel";
+    case kDriveFault:
+      return "drive fault";
+    default:
+      return "unknown fault code";
   }
 }
 

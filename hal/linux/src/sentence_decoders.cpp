@@ -28,9 +28,7 @@ bool checked(std::string_view line, NmeaSentence& sentence, SentenceStats& stats
 
 // GGA fix qualities that are a measured position (1 GPS, 2 DGPS, 3 PPS,
 // 4 RTK, 5 float RTK); 6 is dead reckoning, 7 manual input, 8 simulation.
-bool measured_quality(int quality) {
-  return quality >= 1 && quality <= 5;
-}
+bool measured_quality(int quality) { return quality >= 1 && quality <= 5; }
 
 }  // namespace
 

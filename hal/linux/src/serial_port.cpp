@@ -55,9 +55,7 @@ std::optional<speed_t> speed_of(int baud) {
 
 }  // namespace
 
-bool supported_baud(int baud) {
-  return speed_of(baud).has_value();
-}
+bool supported_baud(int baud) { return speed_of(baud).has_value(); }
 
 std::unique_ptr<SerialPort> SerialPort::open(const std::string& device, int baud) {
   const auto speed = speed_of(baud);
@@ -88,9 +86,7 @@ std::unique_ptr<SerialPort> SerialPort::open(const std::string& device, int baud
   return std::unique_ptr<SerialPort>(new SerialPort(fd, device));
 }
 
-SerialPort::~SerialPort() {
-  ::close(fd_);
-}
+SerialPort::~SerialPort() { ::close(fd_); }
 
 long SerialPort::read_some(char* buffer, std::size_t size) noexcept {
   const ssize_t n = ::read(fd_, buffer, size);

@@ -26,9 +26,7 @@ struct Symmetry {
   int dof = 0;
 };
 
-bool is_dive(const SteadyGlideSample& s) {
-  return s.depth_rate_m_s > 0.0;
-}
+bool is_dive(const SteadyGlideSample& s) { return s.depth_rate_m_s > 0.0; }
 
 std::optional<Symmetry> symmetry_at(const LiftModel& lift, std::span<const SteadyGlideSample> samples,
                                     const BuoyancyOffsetOptions& options, double offset_kg) {

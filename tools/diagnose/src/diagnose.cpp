@@ -1,12 +1,12 @@
 #include "glider/diagnose/diagnose.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
-#include <Eigen/Dense>
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
@@ -43,8 +43,8 @@ struct SampleSet {
 struct Layout {
   std::vector<std::size_t> offset;  // into p, per fitted effect
   std::size_t size = 0;
-  VerticalVelocityProfile bins;     // the bin geometry (values filled per evaluation)
-  std::vector<double> bin_weight;   // fraction of the fitted samples in each bin
+  VerticalVelocityProfile bins;    // the bin geometry (values filled per evaluation)
+  std::vector<double> bin_weight;  // fraction of the fitted samples in each bin
 };
 
 Layout make_layout(const Candidate& c, const SampleSet& obs, std::span<const std::size_t> train) {
@@ -207,8 +207,8 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
         const auto bins = static_cast<Eigen::Index>(layout.bin_weight.size());
         for (Eigen::Index a = 0; a < bins; ++a) {
           for (Eigen::Index b = 0; b < bins; ++b) {
-            var_value += layout.bin_weight[static_cast<std::size_t>(a)] * layout.bin_weight[static_cast<std::size_t>(b)] *
-                         cov(o + a, o + b);
+            var_value += layout.bin_weight[static_cast<std::size_t>(a)] *
+                         layout.bin_weight[static_cast<std::size_t>(b)] * cov(o + a, o + b);
           }
         }
       } else {
@@ -385,9 +385,8 @@ bool interval_excludes_nominal(const Candidate& c, const FitResult& f, Effect e)
 // each one is worth (the held-out error without it, largest first), and each
 // gets the held-out error and gain of the model with it and those ranked
 // above it.
-void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
-                       std::span<const std::size_t> heldout, const DiagnoseOptions& options, Candidate& current,
-                       FitResult& current_fit, Diagnosis& d) {
+void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train, std::span<const std::size_t> heldout,
+                       const DiagnoseOptions& options, Candidate& current, FitResult& current_fit, Diagnosis& d) {
   std::vector<std::pair<Effect, double>> worth;  // held-out RMS without the effect
   for (;;) {
     worth.clear();
@@ -428,8 +427,8 @@ void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
     } else {
       cumulative.fitted.push_back(finding.effect);
     }
-    const double rms = k + 1 == d.findings.size() ? current_fit.heldout_rms
-                                                  : fit(set, cumulative, train, heldout).heldout_rms;
+    const double rms =
+        k + 1 == d.findings.size() ? current_fit.heldout_rms : fit(set, cumulative, train, heldout).heldout_rms;
     finding.heldout_rms_m_s = rms;
     finding.gain = 1.0 - rms / d.baseline.heldout_rms_m_s;
   }
@@ -650,7 +649,9 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   d.extended_all = rms_where(r_ext, all);
   d.extended_heldout_rms_m_s = current_fit.heldout_rms;
   d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
-  if (dynamic) d.speed_through_water = score_speed(dynamic_model, obs.track, all, heldout, current_fit.parameters, current.ctd_density);
+  if (dynamic)
+    d.speed_through_water =
+        score_speed(dynamic_model, obs.track, all, heldout, current_fit.parameters, current.ctd_density);
   // Pitch trim last, on the steady glides: it is judged with the depth-rate
   // effects already found.
   std::vector<std::size_t> steady_samples(obs.size()), steady_train, steady_heldout;
@@ -667,8 +668,8 @@ Predictions predict_all(const model::VehicleParams& nominal, const Observations&
                         const DiagnoseOptions& options) {
   const FlightModel steady_model(nominal, obs);
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
-  const SampleSet set = d.model == FlightModelKind::kDynamic ? dynamic_set(dynamic_model, obs.track)
-                                                             : steady_set(steady_model, obs);
+  const SampleSet set =
+      d.model == FlightModelKind::kDynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
   Predictions p;
   for (std::size_t i : set.usable) {
     p.time_s.push_back(set.time_s[i]);

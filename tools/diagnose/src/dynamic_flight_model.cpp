@@ -140,8 +140,8 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     // spin-up, which is never scored; the guess is the steady glide at the
     // first pitch, scaled to the measured depth rate.
     double v1 = 0.0, v3 = 0.0;
-    const auto steady = model::steady_glide_for_pitch(v.hydro, in0.density_kg_m3, in0.theta_rad,
-                                                      dynamics.net_buoyancy_kg(in0));
+    const auto steady =
+        model::steady_glide_for_pitch(v.hydro, in0.density_kg_m3, in0.theta_rad, dynamics.net_buoyancy_kg(in0));
     if (steady.glide) {
       v1 = steady.glide->speed_m_s * std::cos(steady.glide->alpha_rad);
       v3 = steady.glide->speed_m_s * std::sin(steady.glide->alpha_rad);
@@ -206,9 +206,9 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     std::vector<double>& u = speed_buffer_;
     const std::size_t flown = fly_run(v1, v3, last_needed, z, speed != nullptr ? &u : nullptr);
     const std::size_t count = flown - first + 1;
-    const flightlog::Column rate = depth_rate_estimate(std::span(t.time_s).subspan(first, count),
-                                                       std::span<const double>(z).first(count),
-                                                       t.rate_half_window_s, t.max_gap_s);
+    const flightlog::Column rate =
+        depth_rate_estimate(std::span(t.time_s).subspan(first, count), std::span<const double>(z).first(count),
+                            t.rate_half_window_s, t.max_gap_s);
     for (; next < samples.size() && samples[next] < end; ++next) {
       const std::size_t k = samples[next];
       if (k > flown) continue;

@@ -78,10 +78,9 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const std::size_t i = samples[k];
     model::WaterSample water;
-    water.density_kg_m3 = use_ctd_density && std::isfinite(obs_.density_kg_m3[i]) ? obs_.density_kg_m3[i]
-                                                                                  : v.trim_density_kg_m3 + x[5];
-    water.temperature_c =
-        std::isfinite(obs_.temperature_c[i]) ? obs_.temperature_c[i] : v.hull_reference_temperature_c;
+    water.density_kg_m3 =
+        use_ctd_density && std::isfinite(obs_.density_kg_m3[i]) ? obs_.density_kg_m3[i] : v.trim_density_kg_m3 + x[5];
+    water.temperature_c = std::isfinite(obs_.temperature_c[i]) ? obs_.temperature_c[i] : v.hull_reference_temperature_c;
     model::MassInputs masses;
     masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
     const double m0 = dynamics.net_buoyancy_kg(obs_.depth_m[i], water, masses);

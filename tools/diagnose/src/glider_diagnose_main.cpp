@@ -36,8 +36,9 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source, doub
   if (d.retrimmed_to_kg_m3) {
     j["trim_density_kg_m3"] = {{"vehicle", *d.retrimmed_from_kg_m3},
                                {"used", *d.retrimmed_to_kg_m3},
-                               {"note", "the log's water is far from the vehicle's trim density: the vehicle is taken "
-                                        "as ballasted for the log's median measured density"}};
+                               {"note",
+                                "the log's water is far from the vehicle's trim density: the vehicle is taken "
+                                "as ballasted for the log's median measured density"}};
   }
   j["samples_used"] = d.samples_used;
   j["train_samples"] = d.train_samples;
@@ -56,7 +57,9 @@ ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source, doub
                                                         {"note", "turns are not scored by the steady model"}}}};
   ordered_json depth = ordered_json::array();
   for (const auto& bin : d.baseline.by_depth) {
-    depth.push_back({{"from_m", bin.from_m}, {"to_m", bin.to_m}, {"rms_depth_rate_m_s", number_or_null(bin.rms.depth_rate_m_s)},
+    depth.push_back({{"from_m", bin.from_m},
+                     {"to_m", bin.to_m},
+                     {"rms_depth_rate_m_s", number_or_null(bin.rms.depth_rate_m_s)},
                      {"samples", bin.rms.samples}});
   }
   base["by_depth"] = depth;
@@ -101,37 +104,43 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
   std::printf("Diagnosis of %s\n  vehicle: %s (%s)\n", log.c_str(), d.vehicle.c_str(), vehicle_source.c_str());
   const bool dynamic = d.model == glider::diagnose::FlightModelKind::kDynamic;
   if (d.retrimmed_to_kg_m3) {
-    std::printf("  trim density: the vehicle's %.1f kg/m^3 is far from this log's water: taken as ballasted for the "
-                "log's median measured density, %.2f kg/m^3\n",
-                *d.retrimmed_from_kg_m3, *d.retrimmed_to_kg_m3);
+    std::printf(
+        "  trim density: the vehicle's %.1f kg/m^3 is far from this log's water: taken as ballasted for the "
+        "log's median measured density, %.2f kg/m^3\n",
+        *d.retrimmed_from_kg_m3, *d.retrimmed_to_kg_m3);
   }
-  std::printf("  flight model: %s\n", dynamic ? "dynamic (the project's dynamics driven by the measured pitch, turns included)"
-                                             : "steady (steady glides at the measured pitch)");
+  std::printf("  flight model: %s\n",
+              dynamic ? "dynamic (the project's dynamics driven by the measured pitch, turns included)"
+                      : "steady (steady glides at the measured pitch)");
   std::printf("  samples: %zu %s (%zu to fit, %zu held out: alternate yos)\n", d.samples_used,
               dynamic ? "scored" : "in steady glides", d.train_samples, d.heldout_samples);
-  std::printf("  baseline (nominal model): depth rate RMS %.4f m/s (dives %.4f, climbs %.4f", d.baseline.all.depth_rate_m_s,
-              d.baseline.dives.depth_rate_m_s, d.baseline.climbs.depth_rate_m_s);
+  std::printf("  baseline (nominal model): depth rate RMS %.4f m/s (dives %.4f, climbs %.4f",
+              d.baseline.all.depth_rate_m_s, d.baseline.dives.depth_rate_m_s, d.baseline.climbs.depth_rate_m_s);
   if (dynamic && d.baseline.inflections.samples > 0) std::printf(", turns %.4f", d.baseline.inflections.depth_rate_m_s);
   std::printf(")");
   if (d.baseline.rms_pitch_deg) std::printf(", pitch RMS %.2f deg", *d.baseline.rms_pitch_deg);
   if (d.baseline.rms_battpos_in) std::printf(", battery RMS %.3f in", *d.baseline.rms_battpos_in);
   std::printf("\n  by depth:");
-  for (const auto& bin : d.baseline.by_depth) std::printf(" %.0f-%.0f m %.4f;", bin.from_m, bin.to_m, bin.rms.depth_rate_m_s);
+  for (const auto& bin : d.baseline.by_depth)
+    std::printf(" %.0f-%.0f m %.4f;", bin.from_m, bin.to_m, bin.rms.depth_rate_m_s);
   std::printf("\n  findings (strongest first):\n");
   if (d.findings.empty()) std::printf("    none: the nominal model explains the data within noise\n");
   for (const auto& f : d.findings) {
     std::printf("    %-24s %+.4g %s  (95%% CI %.4g .. %.4g)  held-out RMS %.4f m/s, gain %.0f %%\n", info(f.effect).id,
                 f.value, info(f.effect).unit, f.ci95_low, f.ci95_high, f.heldout_rms_m_s, 100.0 * f.gain);
   }
-  std::printf("  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f %%\n",
-              d.cause.c_str(), d.extended_all.depth_rate_m_s, d.extended_heldout_rms_m_s, d.baseline.heldout_rms_m_s,
-              100.0 * d.gain);
+  std::printf(
+      "  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f "
+      "%%\n",
+      d.cause.c_str(), d.extended_all.depth_rate_m_s, d.extended_heldout_rms_m_s, d.baseline.heldout_rms_m_s,
+      100.0 * d.gain);
   if (d.speed_through_water) {
     const auto& u = *d.speed_through_water;
-    std::printf("  speed through water vs measured (%zu samples, mean %.3f m/s; never fitted): RMS nominal %.4f, "
-                "extended %.4f m/s; held-out yos (%zu): nominal %.4f, extended %.4f m/s\n",
-                u.samples, u.measured_mean_m_s, u.nominal_rms_m_s, u.extended_rms_m_s, u.heldout_samples,
-                u.heldout_nominal_rms_m_s, u.heldout_extended_rms_m_s);
+    std::printf(
+        "  speed through water vs measured (%zu samples, mean %.3f m/s; never fitted): RMS nominal %.4f, "
+        "extended %.4f m/s; held-out yos (%zu): nominal %.4f, extended %.4f m/s\n",
+        u.samples, u.measured_mean_m_s, u.nominal_rms_m_s, u.extended_rms_m_s, u.heldout_samples,
+        u.heldout_nominal_rms_m_s, u.heldout_extended_rms_m_s);
   }
   std::printf("  wall time: %.2f s (reading the log excluded)\n", wall_s);
 }
@@ -150,10 +159,11 @@ void write_plots(const std::string& dir, const glider::model::VehicleParams& veh
     after[i] = p.extended_m_s[i] - p.measured_m_s[i];
   }
   glider::report::Report report(dir);
-  report.text() << "# Diagnosis of " << std::filesystem::path(log_path).filename().string() << "\n\nCause: **" << d.cause
-                << "**, held-out gain " << glider::report::fixed(100.0 * d.gain, 0)
+  report.text() << "# Diagnosis of " << std::filesystem::path(log_path).filename().string() << "\n\nCause: **"
+                << d.cause << "**, held-out gain " << glider::report::fixed(100.0 * d.gain, 0)
                 << " %. Numbers: diagnosis.json; extended vehicle: extended_vehicle.toml.\n";
-  report.data("samples.dat", {"minutes", "depth_m", "measured", "nominal", "extended", "residual_before", "residual_after"},
+  report.data("samples.dat",
+              {"minutes", "depth_m", "measured", "nominal", "extended", "residual_before", "residual_after"},
               {minutes, p.depth_m, p.measured_m_s, p.nominal_m_s, p.extended_m_s, before, after});
   report.plot("depth_rate_time", "Depth rate over time: measured, nominal model, extended model",
               "set xlabel 'minutes'\nset ylabel 'depth rate (m/s, + down)'\n"
@@ -163,9 +173,10 @@ void write_plots(const std::string& dir, const glider::model::VehicleParams& veh
               "set xlabel 'depth rate (m/s, + down)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
               "plot 'samples.dat' u 3:2 w p pt 7 ps 0.3 t 'measured', '' u 4:2 w p pt 7 ps 0.3 t 'nominal', "
               "'' u 5:2 w p pt 7 ps 0.3 t 'extended'");
-  report.plot("residuals", "Depth-rate residual (model - measured) against depth, before and after",
-              "set xlabel 'residual (m/s)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
-              "plot 'samples.dat' u 6:2 w p pt 7 ps 0.3 t 'nominal model', '' u 7:2 w p pt 7 ps 0.3 t 'extended model'");
+  report.plot(
+      "residuals", "Depth-rate residual (model - measured) against depth, before and after",
+      "set xlabel 'residual (m/s)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
+      "plot 'samples.dat' u 6:2 w p pt 7 ps 0.3 t 'nominal model', '' u 7:2 w p pt 7 ps 0.3 t 'extended model'");
   if (!p.pitch_time_s.empty()) {
     std::vector<double> pitch_minutes, measured, nominal, extended;
     for (std::size_t i = 0; i < p.pitch_time_s.size(); ++i) {
@@ -203,7 +214,8 @@ int main(int argc, char** argv) {
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
   app.add_option("LOG", log_path, "flight log (CSV, docs/flight-log.md)")->required();
-  app.add_option("--vehicle", vehicle_path, "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
+  app.add_option("--vehicle", vehicle_path,
+                 "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
       ->check(CLI::ExistingFile);
   app.add_option("--default-vehicle", default_vehicle, "vehicle used when neither --vehicle nor metadata give one")
       ->check(CLI::ExistingFile);
@@ -214,7 +226,8 @@ int main(int argc, char** argv) {
                  "flight model fitted: dynamic (the project's dynamics driven by the measured pitch, turns "
                  "included) or steady (steady glides at the measured pitch; faster, blind to turns)")
       ->check(CLI::IsMember({"dynamic", "steady"}));
-  app.add_option("--fit", fit_only, "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
+  app.add_option("--fit", fit_only,
+                 "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
       ->delimiter(',');
   app.add_option("--window-m", window, "score and fit only samples between these depths (m): --window-m 10,35")
       ->delimiter(',')
@@ -273,8 +286,8 @@ int main(int argc, char** argv) {
       vehicle_source = "the log's vehicle.* metadata";
     } else if (!default_vehicle.empty()) {
       vehicle = glider::model::load_vehicle_file(default_vehicle);
-      vehicle_source = "default vehicle " + std::filesystem::path(default_vehicle).filename().string() +
-                       " (the log states none)";
+      vehicle_source =
+          "default vehicle " + std::filesystem::path(default_vehicle).filename().string() + " (the log states none)";
     } else {
       throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
     }
@@ -290,8 +303,8 @@ int main(int argc, char** argv) {
     if (!report_dir.empty()) {
       std::filesystem::create_directories(report_dir);
       write_plots(report_dir, vehicle, obs, d, log_path, options);
-      std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << to_json(d, vehicle_source, wall_s).dump(2)
-                                                                          << '\n';
+      std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json")
+          << to_json(d, vehicle_source, wall_s).dump(2) << '\n';
       glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
       extended.name = vehicle.name + "_extended";
       extended.description = "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();

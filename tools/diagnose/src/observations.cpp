@@ -20,7 +20,8 @@ flightlog::Column filled_or_empty(const flightlog::FlightLog& log, const char* n
 Observations prepare_observations(const flightlog::FlightLog& log, const ObservationOptions& options) {
   const auto depth_source = flightlog::depth_series(log);
   if (!depth_source) {
-    throw flightlog::FlightLogError(log.source(), 0, "m_depth", 0, "the log has no depth (m_depth or sci_water_pressure)");
+    throw flightlog::FlightLogError(log.source(), 0, "m_depth", 0,
+                                    "the log has no depth (m_depth or sci_water_pressure)");
   }
   const auto& time = log.time();
   const flightlog::Column depth = flightlog::interpolate_linear(time, depth_source->depth_m, 30.0);

@@ -24,8 +24,8 @@ flightlog::Column interpolated_or_empty(const flightlog::FlightLog& log, const c
 }
 
 // A straight line fitted to the samples within +-half_window_s of each
-// sample (no gap longer than max_gap_s inside): its slope at the centre. For a smooth signal both are exact up to the curvature's (a
-// parabola's slope is exact), and the sensor's noise is averaged down (1 Hz,
+// sample (no gap longer than max_gap_s inside): its slope at the centre. For a smooth signal both are exact up to the
+// curvature's (a parabola's slope is exact), and the sensor's noise is averaged down (1 Hz,
 // +-5 s: ~10x less than a centred difference). Where the window holds no
 // sample on one side, `fallback` is kept.
 // The samples within +-half_window_s of sample i, with finite values and no
@@ -133,8 +133,8 @@ flightlog::Column pchip_slopes(std::span<const double> time, std::span<const dou
 
 }  // namespace
 
-flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth,
-                                      double half_window_s, double max_gap_s) {
+flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth, double half_window_s,
+                                      double max_gap_s) {
   return local_slope(time, depth, half_window_s, max_gap_s, flightlog::derive_depth_rate(time, depth, max_gap_s));
 }
 
@@ -196,9 +196,10 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
     track.ballast_cc.push_back(ballast[i]);
     track.battpos_in.push_back(battpos[i]);
     track.temperature_c.push_back(temperature[i]);
-    track.density_kg_m3.push_back(std::isfinite(logged_density[i]) ? logged_density[i]
-                                                                   : model::seawater::density_from_ctd(
-                                                                         conductivity[i], temperature[i], 10.0 * pressure[i]));
+    track.density_kg_m3.push_back(
+        std::isfinite(logged_density[i])
+            ? logged_density[i]
+            : model::seawater::density_from_ctd(conductivity[i], temperature[i], 10.0 * pressure[i]));
     track.speed_through_water_m_s.push_back(speed[i]);
     track.phase.push_back(phases[i]);
     track.yo.push_back(yo[i]);

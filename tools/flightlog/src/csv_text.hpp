@@ -22,9 +22,7 @@ inline std::string_view trim(std::string_view s) {
   return s;
 }
 
-inline bool is_blank(std::string_view line) {
-  return trim(line).empty();
-}
+inline bool is_blank(std::string_view line) { return trim(line).empty(); }
 
 // Lines ended by \n or \r\n (files written on Windows), numbered from 1.
 class LineReader {

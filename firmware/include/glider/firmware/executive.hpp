@@ -51,8 +51,7 @@ class Executive {
   static constexpr hal::Micros kDefaultPeriodUs = 1'000'000;
 
   // `tasks` must outlive the executive and hold at most kMaxTasks rows.
-  Executive(const hal::Clock& clock, std::span<const TaskSlot> tasks,
-            hal::Micros period_us = kDefaultPeriodUs);
+  Executive(const hal::Clock& clock, std::span<const TaskSlot> tasks, hal::Micros period_us = kDefaultPeriodUs);
 
   bool valid() const { return valid_; }
 

@@ -25,8 +25,8 @@ struct ActuatorLimits {
 
 struct FlightSoftwareConfig {
   YoMissionConfig mission;
-  MissionPlan plan;      // waypoints and segments (none: a yo-only mission)
-  AbortLimits aborts;    // abend limits beyond the yo's envelope
+  MissionPlan plan;    // waypoints and segments (none: a yo-only mission)
+  AbortLimits aborts;  // abend limits beyond the yo's envelope
   HeadingControlConfig heading;
   DeadReckoningConfig dead_reckoning;
   ActuatorLimits limits;
@@ -73,8 +73,7 @@ class FlightSoftware final : public PeriodicTask {
  private:
   void update_depth_rate(const hal::DepthSample& depth);
   double fin_command(const NavigatorOutputs& nav, double dt_s);
-  double battery_command(const MissionOutputs& mission, double pitch_rad, double ballast_cc,
-                         double dt_s);
+  double battery_command(const MissionOutputs& mission, double pitch_rad, double ballast_cc, double dt_s);
 
   hal::Hal hal_;
   FlightSoftwareConfig config_;

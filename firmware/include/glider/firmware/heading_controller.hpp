@@ -24,19 +24,19 @@ enum class HeadingLaw : std::int32_t { kProportional = 0, kSlocum = 1, kCompensa
 
 struct HeadingControlConfig {
   HeadingLaw law = HeadingLaw::kCompensated;
-  double kp = 0.5;                    // kProportional, rad/rad (paper 001)
-  double gain = 1.5;                  // u_hd_fin_ap_gain, rad of fin per rad of error
-  double igain = 0.02;                // u_hd_fin_ap_igain, rad per rad s
-  double dgain = -4.0;                // u_hd_fin_ap_dgain, rad per rad/s of heading rate
+  double kp = 0.5;                      // kProportional, rad/rad (paper 001)
+  double gain = 1.5;                    // u_hd_fin_ap_gain, rad of fin per rad of error
+  double igain = 0.02;                  // u_hd_fin_ap_igain, rad per rad s
+  double dgain = -4.0;                  // u_hd_fin_ap_dgain, rad per rad/s of heading rate
   double rate_deadband_rad_s = 0.0087;  // u_heading_rate_deadband
-  double fin_max_rad = 0.25;          // f_fin_safety_max (comet 2019)
+  double fin_max_rad = 0.25;            // f_fin_safety_max (comet 2019)
   // kCompensated only:
-  double fin_rate_rad_s = 0.1;        // the servo's speed (the vehicle file's fin_rate_rad_s)
-  double delay_s = 0.0;               // the fin's dead time to predict over
-  double error_deadband_rad = 0.0087; // no correction inside +-0.5 deg
-  double rate_filter_s = 3.0;         // first-order filter of the heading rate (compass noise)
-  double disturbance_filter_s = 30.0; // filter of the turn rate the fin does not explain
-  double fin_deadband_rad = 0.02;     // smaller moves are not made (each one costs energy)
+  double fin_rate_rad_s = 0.1;         // the servo's speed (the vehicle file's fin_rate_rad_s)
+  double delay_s = 0.0;                // the fin's dead time to predict over
+  double error_deadband_rad = 0.0087;  // no correction inside +-0.5 deg
+  double rate_filter_s = 3.0;          // first-order filter of the heading rate (compass noise)
+  double disturbance_filter_s = 30.0;  // filter of the turn rate the fin does not explain
+  double fin_deadband_rad = 0.02;      // smaller moves are not made (each one costs energy)
   // Yaw rate per fin angle per speed through the water (the vehicle's
   // fin_yaw_gain_per_m), for the predictor's pending-fin term; 0 = rate only.
   double yaw_gain_per_m = 0.0;
@@ -85,7 +85,7 @@ class HeadingController {
   std::size_t history_next_ = 0;
 
   HeadingControlConfig config_;
-  double integrator_ = 0.0;  // rad of fin
+  double integrator_ = 0.0;        // rad of fin
   double other_integrator_ = 0.0;  // kCompensated: the other glide direction's
   bool diving_ = true;
   double filtered_rate_ = 0.0;

@@ -41,11 +41,11 @@ struct MissionPlan {
 // Abort limits of the abend behaviour; <= 0 disables a limit (as in Slocum),
 // except the overdepth and overtime limits, which live in YoMissionConfig.
 struct AbortLimits {
-  double samedepth_for_s = 0.0;       // depth stays within samedepth_band_m this long under water
-  double samedepth_band_m = 1.0;      // (not a Slocum argument; documented in docs/missions.md)
-  double stalled_for_s = 0.0;         // gliding slower than stalled_depth_rate_m_s this long
+  double samedepth_for_s = 0.0;   // depth stays within samedepth_band_m this long under water
+  double samedepth_band_m = 1.0;  // (not a Slocum argument; documented in docs/missions.md)
+  double stalled_for_s = 0.0;     // gliding slower than stalled_depth_rate_m_s this long
   double stalled_depth_rate_m_s = 0.03;
-  double max_wpt_distance_m = 0.0;    // a GPS fix farther than this from the active waypoint
+  double max_wpt_distance_m = 0.0;  // a GPS fix farther than this from the active waypoint
   double remaining_charge_min_pct = 0.0;
   double battery_capacity_amphr = 150.0;  // for the remaining charge (f_coulomb_battery_capacity)
   bool drop_weight_fitted = false;

@@ -27,8 +27,8 @@ struct NavigatorInputs {
 // What one surfacing's fix said about the dead reckoning.
 struct SurfacingReport {
   bool valid = false;
-  double dr_error_m = 0.0;               // |fix - DR position|
-  double distance_through_water_m = 0.0; // the segment's DR distance
+  double dr_error_m = 0.0;                // |fix - DR position|
+  double distance_through_water_m = 0.0;  // the segment's DR distance
   double under_water_s = 0.0;
 };
 
@@ -38,7 +38,7 @@ struct NavigatorOutputs {
   bool surface_requested = false;
   bool mission_complete = false;
   AbortCause abort = AbortCause::kNone;
-  bool new_fix = false;  // a fresh, checked fix this cycle (logged)
+  bool new_fix = false;         // a fresh, checked fix this cycle (logged)
   SurfacingReport surfacing{};  // valid on the cycle of the first fix after a segment
 };
 

@@ -32,10 +32,10 @@ const char* to_string(Phase phase);
 const char* to_string(AbortCause cause);
 
 struct YoMissionConfig {
-  double dive_to_m = 50.0;       // inflect to climb at this depth
-  double climb_to_m = 5.0;       // inflect to dive at this depth
-  std::int32_t yos = 3;          // dive+climb cycles per segment, then surface
-  double surfaced_depth_m = 1.0; // shallower than this counts as surfaced
+  double dive_to_m = 50.0;        // inflect to climb at this depth
+  double climb_to_m = 5.0;        // inflect to dive at this depth
+  std::int32_t yos = 3;           // dive+climb cycles per segment, then surface
+  double surfaced_depth_m = 1.0;  // shallower than this counts as surfaced
   double dive_ballast_cc = -250.0;
   double climb_ballast_cc = 250.0;
   double dive_pitch_rad = -0.4537856;  // -26 deg
@@ -58,13 +58,13 @@ const char* validate(const YoMissionConfig& config);
 
 struct MissionInputs {
   hal::Micros now_us = 0;
-  double depth_m = 0.0;  // last valid depth
+  double depth_m = 0.0;      // last valid depth
   bool depth_ok = false;     // valid and not stale
   bool attitude_ok = false;  // valid and not stale
   bool actuator_fault = false;
   AbortCause external_abort = AbortCause::kNone;  // from the abort monitor or navigation
-  bool surface_requested = false;  // end the segment: finish with a climb to the surface
-  bool mission_over = false;       // navigation has ended the mission (no more checks at the surface)
+  bool surface_requested = false;                 // end the segment: finish with a climb to the surface
+  bool mission_over = false;                      // navigation has ended the mission (no more checks at the surface)
 };
 
 struct MissionOutputs {
@@ -72,12 +72,12 @@ struct MissionOutputs {
   AbortCause abort_cause = AbortCause::kNone;
   double ballast_cc = 0.0;
   double pitch_target_rad = 0.0;
-  bool pitch_control = false;  // false: hold the battery where it is told
+  bool pitch_control = false;                                    // false: hold the battery where it is told
   double battery_in = std::numeric_limits<double>::quiet_NaN();  // fixed battery (pump-only pitch), NaN = none
-  bool phase_changed = false;  // true on the cycle a new phase begins
-  bool complete = false;       // mission over (surfaced or aborted and up)
-  std::int32_t yos_completed = 0;  // in the whole mission
-  bool segment_complete = false;   // surfaced normally, ready for start_segment()
+  bool phase_changed = false;                                    // true on the cycle a new phase begins
+  bool complete = false;                                         // mission over (surfaced or aborted and up)
+  std::int32_t yos_completed = 0;                                // in the whole mission
+  bool segment_complete = false;                                 // surfaced normally, ready for start_segment()
 };
 
 // The yo mission as a pure state machine: inputs in, set-points out.

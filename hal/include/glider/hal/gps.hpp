@@ -12,7 +12,7 @@ struct GpsFix {
   int quality = 0;             // NMEA GGA fix quality: 0 none, 1 GPS, 2 DGPS, ...
   int satellites = 0;
   double hdop = 0.0;
-  Micros time_us = 0;          // HAL clock time the fix was received
+  Micros time_us = 0;  // HAL clock time the fix was received
   bool valid = false;
 };
 

@@ -9,34 +9,34 @@ namespace glider::hal {
 // units (see docs/flight-log.md). A field the firmware has no valid value for
 // this cycle is NaN and is written as an empty CSV field.
 struct FlightLogRecord {
-  Micros time_us = 0;            // m_present_time (mission clock)
-  double m_depth = 0.0;          // m
-  double m_depth_rate = 0.0;     // m/s, + descending
-  double m_pitch = 0.0;          // rad
-  double m_roll = 0.0;           // rad
-  double m_heading = 0.0;        // rad
-  double m_ballast_pumped = 0.0; // cc
-  double c_ballast_pumped = 0.0; // cc
-  double m_battpos = 0.0;        // in
-  double c_battpos = 0.0;        // in
-  double c_pitch = 0.0;          // rad, pitch target of the battery servo
-  std::int32_t m_depth_state = 0;   // 1 dive, 2 climb, 3 hover, 0 surface, 99 abort
-  std::int32_t x_yo_count = 0;      // completed yos in this mission
-  std::int32_t x_abort_cause = 0;   // fw::AbortCause, 0 = none
+  Micros time_us = 0;                 // m_present_time (mission clock)
+  double m_depth = 0.0;               // m
+  double m_depth_rate = 0.0;          // m/s, + descending
+  double m_pitch = 0.0;               // rad
+  double m_roll = 0.0;                // rad
+  double m_heading = 0.0;             // rad
+  double m_ballast_pumped = 0.0;      // cc
+  double c_ballast_pumped = 0.0;      // cc
+  double m_battpos = 0.0;             // in
+  double c_battpos = 0.0;             // in
+  double c_pitch = 0.0;               // rad, pitch target of the battery servo
+  std::int32_t m_depth_state = 0;     // 1 dive, 2 climb, 3 hover, 0 surface, 99 abort
+  std::int32_t x_yo_count = 0;        // completed yos in this mission
+  std::int32_t x_abort_cause = 0;     // fw::AbortCause, 0 = none
   std::uint32_t x_loop_overruns = 0;  // executive cycles over budget, cumulative
-  double c_heading = 0.0;        // rad, heading target (NaN: no heading control)
-  double m_fin = 0.0;            // rad
-  double c_fin = 0.0;            // rad
-  double m_gps_lat = 0.0;        // NMEA ddmm.mmm, a fresh fix this cycle only
+  double c_heading = 0.0;             // rad, heading target (NaN: no heading control)
+  double m_fin = 0.0;                 // rad
+  double c_fin = 0.0;                 // rad
+  double m_gps_lat = 0.0;             // NMEA ddmm.mmm, a fresh fix this cycle only
   double m_gps_lon = 0.0;
-  double m_lat = 0.0;            // NMEA, dead-reckoned (last fix at the surface)
+  double m_lat = 0.0;  // NMEA, dead-reckoned (last fix at the surface)
   double m_lon = 0.0;
-  double m_water_vx = 0.0;       // m/s east, depth-averaged current estimate
-  double m_water_vy = 0.0;       // m/s north
-  std::int32_t m_leakdetect = 0; // 1 leak, 0 dry, -1 no valid reading
+  double m_water_vx = 0.0;             // m/s east, depth-averaged current estimate
+  double m_water_vy = 0.0;             // m/s north
+  std::int32_t m_leakdetect = 0;       // 1 leak, 0 dry, -1 no valid reading
   double m_coulomb_amphr_total = 0.0;  // Ah used
-  double m_battery = 0.0;        // V
-  std::int32_t x_waypoint = 0;   // index of the active waypoint
+  double m_battery = 0.0;              // V
+  std::int32_t x_waypoint = 0;         // index of the active waypoint
   std::int32_t x_waypoints_reached = 0;
   std::int32_t x_segment = 0;    // segments started
   double x_dr_error_m = 0.0;     // |GPS - DR| at the first fix after a segment (NaN otherwise)

@@ -55,7 +55,7 @@ struct MassInputs {
   double battery_rate_m_s = 0.0;  // slide speed
   double second_pos_m = 0.0;      // second moving mass, if the vehicle has one
   double second_rate_m_s = 0.0;
-  double fin_rad = 0.0;           // rudder angle, + turns clockwise
+  double fin_rad = 0.0;  // rudder angle, + turns clockwise
 };
 
 // Body-frame velocities relative to the water and everything derived.
@@ -81,19 +81,19 @@ struct FlowForces {
   double speed_m_s = 0.0, alpha_rad = 0.0;
   double lift_coefficient = 0.0;
   double lift_n = 0.0, drag_n = 0.0;
-  double f1 = 0.0, f3 = 0.0;      // body x and z components of lift + drag
-  double moment_nm = 0.0;         // viscous moment (no damping, no Munk)
+  double f1 = 0.0, f3 = 0.0;  // body x and z components of lift + drag
+  double moment_nm = 0.0;     // viscous moment (no damping, no Munk)
 };
 FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3);
 
 class GliderDynamics {
  public:
   struct MassProperties {
-    Eigen::Matrix3d a;        // generalized mass matrix
-    Eigen::Vector3d b;        // impulse of the moving battery relative to the hull
-    double total_kg = 0.0;    // all rigid masses (no added mass)
-    double first_x = 0.0;     // sum m x
-    double first_z = 0.0;     // sum m z
+    Eigen::Matrix3d a;      // generalized mass matrix
+    Eigen::Vector3d b;      // impulse of the moving battery relative to the hull
+    double total_kg = 0.0;  // all rigid masses (no added mass)
+    double first_x = 0.0;   // sum m x
+    double first_z = 0.0;   // sum m z
   };
 
   GliderDynamics(const VehicleParams& vehicle, const Environment& environment);
@@ -129,7 +129,6 @@ class GliderDynamics {
   const Environment& environment() const { return environment_; }
 
  private:
-
   VehicleParams vehicle_;
   Environment environment_;
   double nominal_volume_m3_;

@@ -23,7 +23,7 @@ struct PrescribedPitchInputs {
   double q_rad_s = 0.0;           // its rate
   double pumped_volume_m3 = 0.0;  // the volume really displaced (after any pump lag)
   double battery_pos_m = 0.0;
-  double depth_m = 0.0;           // measured depth (hydrostatics)
+  double depth_m = 0.0;  // measured depth (hydrostatics)
   double density_kg_m3 = 1025.0;
   double temperature_c = 10.0;
 };

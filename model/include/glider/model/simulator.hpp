@@ -9,7 +9,7 @@ namespace glider::model {
 // What the simulation knows that a real glider does not (the sim_ columns).
 struct Truth {
   double time_s = 0.0;
-  double east_m = 0.0;   // position relative to the start
+  double east_m = 0.0;  // position relative to the start
   double north_m = 0.0;
   double depth_m = 0.0;
   double heading_rad = 0.0;  // wrapped to [0, 2 pi)
@@ -18,9 +18,9 @@ struct Truth {
   double pitch_rate_rad_s = 0.0;
   double speed_m_s = 0.0;  // through the water
   double alpha_rad = 0.0;
-  double glide_path_rad = 0.0;       // pitch - alpha
-  double horizontal_speed_m_s = 0.0; // through the water, along the heading
-  double depth_rate_m_s = 0.0;       // + descending, over ground (includes water w)
+  double glide_path_rad = 0.0;        // pitch - alpha
+  double horizontal_speed_m_s = 0.0;  // through the water, along the heading
+  double depth_rate_m_s = 0.0;        // + descending, over ground (includes water w)
   double net_buoyancy_kg = 0.0;
   double pumped_volume_m3 = 0.0;
   double battery_pos_m = 0.0;
@@ -40,8 +40,7 @@ class GliderSimulator {
   // eigenvalues of the linearized model against this.
   static constexpr double kDefaultStepS = 0.1;
 
-  GliderSimulator(const VehicleParams& vehicle, const Environment& environment,
-                  double step_s = kDefaultStepS);
+  GliderSimulator(const VehicleParams& vehicle, const Environment& environment, double step_s = kDefaultStepS);
 
   // Floating at rest at the surface, servos at the given positions.
   void reset_at_surface(double pumped_volume_m3, double battery_pos_m, double heading_rad = 0.0);

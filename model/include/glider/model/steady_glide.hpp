@@ -20,9 +20,9 @@ struct SteadyGlide {
   double alpha_rad = 0.0;
   double pitch_rad = 0.0;
   double speed_m_s = 0.0;
-  double depth_rate_m_s = 0.0;        // + descending
+  double depth_rate_m_s = 0.0;  // + descending
   double horizontal_speed_m_s = 0.0;
-  double net_buoyancy_kg = 0.0;       // + heavy
+  double net_buoyancy_kg = 0.0;  // + heavy
 };
 
 struct SteadyGlideResult {

@@ -20,7 +20,7 @@ struct SlidingMass {
   double z_m = 0.0;
   double travel_min_m = 0.0;  // slide position limits (m_battpos / 39.37)
   double travel_max_m = 0.0;
-  double rate_m_s = 0.0;      // slide speed
+  double rate_m_s = 0.0;  // slide speed
 };
 
 // The buoyancy engine: pumped volume at a point of the body (SLOCUM: nose).
@@ -41,10 +41,10 @@ struct BuoyancyEngine {
 // L = q A C_L(a), D = q A C_D(a), M = q A C_M(a) + damping, q = rho V^2 / 2.
 struct Hydrodynamics {
   double reference_area_m2 = 0.0;
-  double cl0 = 0.0;                 // C_L = cl0 + cl_alpha a + cl_alpha_abs_alpha a|a|
+  double cl0 = 0.0;  // C_L = cl0 + cl_alpha a + cl_alpha_abs_alpha a|a|
   double cl_alpha = 0.0;
   double cl_alpha_abs_alpha = 0.0;
-  double cd0 = 0.0;                 // C_D = cd0 + cd_alpha2 a^2
+  double cd0 = 0.0;  // C_D = cd0 + cd_alpha2 a^2
   double cd_alpha2 = 0.0;
   double cm0_m = 0.0;               // viscous moment only: the Munk moment comes
   double cm_alpha_m = 0.0;          //   from the added masses in the dynamics
@@ -61,24 +61,24 @@ struct HeadingModel {
   double fin_yaw_gain_per_m = 0.0;   // yaw rate = gain * V * fin (+ fin turns clockwise)
   double roll_yaw_gain_per_m = 0.0;  // yaw rate = gain * V * a_eff * sin(roll) (a_eff = C_L / cl_alpha)
   double yaw_time_constant_s = 0.0;
-  double roll_offset_rad = 0.0;      // static roll (+ starboard wing down)
-  double fin_max_rad = 0.0;          // fin servo travel (+-)
-  double fin_rate_rad_s = 0.0;       // fin servo speed
-  double fin_delay_s = 0.0;          // dead time between a fin command and the servo starting to move
+  double roll_offset_rad = 0.0;  // static roll (+ starboard wing down)
+  double fin_max_rad = 0.0;      // fin servo travel (+-)
+  double fin_rate_rad_s = 0.0;   // fin servo speed
+  double fin_delay_s = 0.0;      // dead time between a fin command and the servo starting to move
 };
 
 struct VehicleParams {
   std::string name;
   std::string description;
-  double hull_mass_kg = 0.0;         // uniformly distributed: at the CB
-  double hull_inertia_kg_m2 = 0.0;   // pitch inertia of the hull mass about the CB
-  double hull_diameter_m = 0.0;      // for the surface (partial immersion) model
+  double hull_mass_kg = 0.0;        // uniformly distributed: at the CB
+  double hull_inertia_kg_m2 = 0.0;  // pitch inertia of the hull mass about the CB
+  double hull_diameter_m = 0.0;     // for the surface (partial immersion) model
   // Displaced volume V = V0 (1 - compressibility p + thermal_expansion (T - T0)),
   // p gauge pressure in Pa. Nominal 0 (rigid hull) unless the file says otherwise.
   double hull_compressibility_per_pa = 0.0;
   double hull_thermal_expansion_per_k = 0.0;
   double hull_reference_temperature_c = 10.0;
-  PointMass offset;                  // fixed trim mass m_w at r_w
+  PointMass offset;  // fixed trim mass m_w at r_w
   SlidingMass battery;
   // A second moving mass (the IIT Madras lab glider of paper 002 has two);
   // mass 0 = absent.
@@ -89,8 +89,8 @@ struct VehicleParams {
   double added_mass_z_kg = 0.0;      // m_f3
   double added_inertia_kg_m2 = 0.0;  // J_f2
   Hydrodynamics hydro;
-  double trim_density_kg_m3 = 0.0;   // water density at which the net buoyancy below holds
-  double buoyancy_offset_kg = 0.0;   // net weight at zero ballast and that density (- = light)
+  double trim_density_kg_m3 = 0.0;  // water density at which the net buoyancy below holds
+  double buoyancy_offset_kg = 0.0;  // net weight at zero ballast and that density (- = light)
 };
 
 bool has_second_mass(const VehicleParams& v);

@@ -37,8 +37,8 @@ struct LogGaps {
 // bytes; a value the firmware did not have (NaN) is an empty field.
 class CsvFlightLog final : public hal::LogSink {
  public:
-  CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
-               const SimCtd& ctd, const LogGaps& gaps = {}, std::uint64_t gap_seed = 0);
+  CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim, const SimCtd& ctd,
+               const LogGaps& gaps = {}, std::uint64_t gap_seed = 0);
 
   bool write(const hal::FlightLogRecord& record) override;
 

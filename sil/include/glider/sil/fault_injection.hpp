@@ -10,17 +10,17 @@
 namespace glider::sil {
 
 struct FaultInjection {
-  bool depth_invalid = false;     // the pressure sensor reports no valid reading
-  bool depth_frozen = false;      // readings stop updating (stale time stamp)
+  bool depth_invalid = false;  // the pressure sensor reports no valid reading
+  bool depth_frozen = false;   // readings stop updating (stale time stamp)
   bool attitude_invalid = false;
   bool attitude_frozen = false;
-  bool pump_fault = false;        // the pump driver reports a fault
-  bool pump_stuck = false;        // the pump silently stops moving (no fault flag)
+  bool pump_fault = false;  // the pump driver reports a fault
+  bool pump_stuck = false;  // the pump silently stops moving (no fault flag)
   bool battery_fault = false;
   bool fin_fault = false;
-  bool leak = false;              // the leak detector asserts
-  bool gps_dead = false;          // no fixes at all
-  double extra_load_w = 0.0;      // a short or a stuck heater: drains the battery
+  bool leak = false;          // the leak detector asserts
+  bool gps_dead = false;      // no fixes at all
+  double extra_load_w = 0.0;  // a short or a stuck heater: drains the battery
 };
 
 // One scheduled fault: switched on at `at_s` of simulated time, stays on.

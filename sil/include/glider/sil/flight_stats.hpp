@@ -12,9 +12,7 @@ struct GlideStats {
   double depth_rate_sum_m_s = 0.0;
   double max_pitch_error_rad = 0.0;  // |m_pitch - c_pitch| on settled samples
   double mean_pitch_rad() const { return samples ? pitch_sum_rad / static_cast<double>(samples) : 0.0; }
-  double mean_depth_rate_m_s() const {
-    return samples ? depth_rate_sum_m_s / static_cast<double>(samples) : 0.0;
-  }
+  double mean_depth_rate_m_s() const { return samples ? depth_rate_sum_m_s / static_cast<double>(samples) : 0.0; }
 };
 
 // The first GPS fix after a segment: how far the dead reckoning was off.

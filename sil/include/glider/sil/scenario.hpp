@@ -45,7 +45,7 @@ struct ScenarioOptions {
 struct WaypointEvent {
   std::int32_t reached = 0;  // count after this one
   double time_s = 0.0;
-  double east_m = 0.0;       // truth, from the launch point
+  double east_m = 0.0;  // truth, from the launch point
   double north_m = 0.0;
 };
 
@@ -62,8 +62,8 @@ struct ScenarioResult {
   std::uint64_t log_rows_lost = 0;
   bool drop_weight_released = false;
   std::vector<WaypointEvent> waypoints;
-  double abort_time_s = -1.0;     // first cycle in the abort phase
-  double abort_surfaced_s = -1.0; // first time after it that the antenna was truly out of the water
+  double abort_time_s = -1.0;      // first cycle in the abort phase
+  double abort_surfaced_s = -1.0;  // first time after it that the antenna was truly out of the water
   double energy_used_j = 0.0;
   double charge_used_amphr = 0.0;
   std::string error;  // set when the run could not start or the log failed

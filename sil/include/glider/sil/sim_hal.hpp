@@ -36,9 +36,7 @@ struct PeripheralModels {
 // The HAL implemented on the vehicle model. Deterministic: the noise comes
 // from a seeded PortableRandom (the GPS from its own stream), so logs are
 // bit-identical across runs and machines.
-class SimHal final : public hal::DepthSensor,
-                     public hal::BuoyancyPump,
-                     public hal::BatterySlide {
+class SimHal final : public hal::DepthSensor, public hal::BuoyancyPump, public hal::BatterySlide {
  public:
   SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
          const PeripheralModels& peripherals = {});
@@ -93,7 +91,7 @@ class SimHal final : public hal::DepthSensor,
   SensorNoise noise_;
   PortableRandom random_;
   FaultInjection faults_{};
-  hal::DepthSample last_depth_{};        // what a frozen sensor keeps returning
+  hal::DepthSample last_depth_{};  // what a frozen sensor keeps returning
   hal::AttitudeSample last_attitude_{};
   AttitudePort attitude_port_{*this};
   RudderPort rudder_port_{*this};

@@ -19,8 +19,9 @@ namespace glider::sil {
 // while the glider floats at the surface. Figures are those of a small
 // receiver after a dive (warm start, then 1 Hz fixes).
 struct GpsModel {
-  fw::LatLon launch{54.3161, 7.4098};  // where the simulated start (east 0, north 0) is; default: comet-2019's first fix
-  double antenna_out_depth_m = 0.3;    // vehicle depth (hull centre) shallower than this: antenna in the air
+  fw::LatLon launch{54.3161,
+                    7.4098};         // where the simulated start (east 0, north 0) is; default: comet-2019's first fix
+  double antenna_out_depth_m = 0.3;  // vehicle depth (hull centre) shallower than this: antenna in the air
   double time_to_first_fix_min_s = 20.0;
   double time_to_first_fix_max_s = 60.0;
   double fix_interval_s = 1.0;
@@ -32,20 +33,20 @@ struct GpsModel {
 // at over its efficiency plus a fixed cost per cc, the slide and fin motors
 // per unit of travel. Only pumping out (more buoyant) costs hydraulic work.
 struct PowerModel {
-  double capacity_amphr = 150.0;   // order of a Slocum lithium primary pack
+  double capacity_amphr = 150.0;  // order of a Slocum lithium primary pack
   double voltage_full_v = 15.0;
   double voltage_empty_v = 10.5;
   double hotel_w = 0.6;
-  double pump_efficiency = 0.5;    // piston pump and motor
+  double pump_efficiency = 0.5;  // piston pump and motor
   double pump_fixed_j_per_cc = 0.5;
-  double slide_j_per_in = 60.0;    // ~3 W at 0.05 in/s
+  double slide_j_per_in = 60.0;  // ~3 W at 0.05 in/s
   double fin_j_per_rad = 5.0;
 };
 
 class SimGps final : public hal::GpsReceiver {
  public:
-  SimGps(const model::GliderSimulator& sim, const SimClock& clock, const FaultInjection& faults,
-         const GpsModel& model, std::uint64_t seed);
+  SimGps(const model::GliderSimulator& sim, const SimClock& clock, const FaultInjection& faults, const GpsModel& model,
+         std::uint64_t seed);
   hal::GpsFix read() override;
   const fw::LocalFrame& frame() const { return frame_; }
 

@@ -6,13 +6,13 @@
 #include <memory>
 
 #include "glider/hal/hal.hpp"
-#include "glider/target/absent_devices.hpp"
 #include "glider/hal_linux/gpio_lines.hpp"
 #include "glider/hal_linux/hwmon_power.hpp"
 #include "glider/hal_linux/keller_depth.hpp"
 #include "glider/hal_linux/modbus_actuators.hpp"
 #include "glider/hal_linux/modbus_link.hpp"
 #include "glider/hal_linux/serial_sensors.hpp"
+#include "glider/target/absent_devices.hpp"
 #include "glider/target/ring_log.hpp"
 #include "glider/target/target_board.hpp"
 

@@ -20,19 +20,18 @@ struct MissionVehicle {
   ActuatorLimits limits{};             // pump and slide travel the firmware may use
   double fin_max_rad = 0.25;           // f_fin_safety_max
   double fin_rate_rad_s = 0.1;
-  double yaw_gain_per_m = 0.0;         // yaw rate per fin per speed (heading predictor; 0 = unknown)
+  double yaw_gain_per_m = 0.0;  // yaw rate per fin per speed (heading predictor; 0 = unknown)
   bool drop_weight_fitted = false;
 };
 
 struct LoadedMission {
   std::optional<FlightSoftwareConfig> config;  // empty: refused
-  std::vector<Diagnostic> diagnostics;          // warnings (and errors when refused)
+  std::vector<Diagnostic> diagnostics;         // warnings (and errors when refused)
 };
 
 // `base` supplies what a Slocum mission does not say (pitch servo gains,
 // sensor timeouts, heading and DR settings); the mission overrides the rest.
-LoadedMission load_mission(const MiDocument& doc, const MissionVehicle& vehicle,
-                           const FlightSoftwareConfig& base = {});
+LoadedMission load_mission(const MiDocument& doc, const MissionVehicle& vehicle, const FlightSoftwareConfig& base = {});
 
 LoadedMission load_mission_file(const std::filesystem::path& path, const MissionVehicle& vehicle,
                                 const FlightSoftwareConfig& base = {});

@@ -5,8 +5,8 @@
 #include "glider/hal/buoyancy_pump.hpp"
 #include "glider/hal/clock.hpp"
 #include "glider/hal/rudder.hpp"
-#include "glider/units.hpp"
 #include "glider/hal_linux/modbus_axis.hpp"
+#include "glider/units.hpp"
 
 namespace glider::hal_linux {
 

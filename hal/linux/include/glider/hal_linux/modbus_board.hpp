@@ -40,12 +40,12 @@ struct AxisConfig {
   int slave = 1;
   int base_address = 0;
   double counts_per_unit = 1.0;
-  double min = 0.0;         // command limits (software)
+  double min = 0.0;  // command limits (software)
   double max = 0.0;
   double rate = 0.0;        // commanded speed, unit/s
   double travel_min = 0.0;  // limit switches (mechanical travel)
   double travel_max = 0.0;
-  double max_rate = 0.0;    // fastest the mechanism can move, unit/s
+  double max_rate = 0.0;  // fastest the mechanism can move, unit/s
 };
 
 struct ModbusBoard {

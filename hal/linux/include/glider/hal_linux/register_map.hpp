@@ -43,16 +43,16 @@ enum StatusBit : std::uint16_t {
   kMoving = 1u << 1,
   kInPosition = 1u << 2,  // |actual - target| within one count and not moving
   kHomed = 1u << 3,
-  kLimitMin = 1u << 4,    // minimum limit switch closed
-  kLimitMax = 1u << 5,    // maximum limit switch closed
-  kFault = 1u << 6,       // latched; kFaultCode says why; the axis will not move
+  kLimitMin = 1u << 4,  // minimum limit switch closed
+  kLimitMax = 1u << 5,  // maximum limit switch closed
+  kFault = 1u << 6,     // latched; kFaultCode says why; the axis will not move
 };
 
 enum FaultCode : std::uint16_t {
   kNoFault = 0,
-  kStall = 1,         // commanded to move, did not move (jammed, motor or drive)
-  kOverTravel = 2,    // target beyond the travel: stopped at the limit switch
-  kDriveFault = 3,    // drive electronics (over-current, over-temperature)
+  kStall = 1,       // commanded to move, did not move (jammed, motor or drive)
+  kOverTravel = 2,  // target beyond the travel: stopped at the limit switch
+  kDriveFault = 3,  // drive electronics (over-current, over-temperature)
 };
 
 const char* fault_name(std::uint16_t code);

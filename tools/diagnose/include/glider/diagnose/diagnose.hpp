@@ -24,21 +24,21 @@ struct DepthBin {
 
 struct Baseline {
   Rms all, dives, climbs;
-  Rms inflections;                      // the dynamic model only (the steady one does not fly turns)
-  std::optional<double> rms_pitch_deg;  // forward equilibrium vs logged pitch (needs m_battpos)
-  std::optional<double> rms_battpos_in; // logged battery vs the one the model needs for the logged pitch
-  std::size_t inflection_samples = 0;   // scored by the dynamic model, not by the steady one
+  Rms inflections;                       // the dynamic model only (the steady one does not fly turns)
+  std::optional<double> rms_pitch_deg;   // forward equilibrium vs logged pitch (needs m_battpos)
+  std::optional<double> rms_battpos_in;  // logged battery vs the one the model needs for the logged pitch
+  std::size_t inflection_samples = 0;    // scored by the dynamic model, not by the steady one
   std::vector<DepthBin> by_depth;
-  double heldout_rms_m_s = 0.0;         // on the held-out yos: the reference of the gain
+  double heldout_rms_m_s = 0.0;  // on the held-out yos: the reference of the gain
 };
 
 struct Finding {
   Effect effect = Effect::kBuoyancyOffset;
   double value = 0.0;
   double ci95_low = 0.0, ci95_high = 0.0;
-  double heldout_rms_m_s = 0.0;  // of the model with this and the stronger findings
-  double gain = 0.0;             // fraction of the baseline held-out error removed so far
-  bool fitted = true;            // false: a measured input (CTD density), not a fitted number
+  double heldout_rms_m_s = 0.0;                  // of the model with this and the stronger findings
+  double gain = 0.0;                             // fraction of the baseline held-out error removed so far
+  bool fitted = true;                            // false: a measured input (CTD density), not a fitted number
   std::optional<double> heldout_rms_battpos_in;  // pitch_trim_offset: what it explains
 };
 
@@ -69,7 +69,7 @@ struct Diagnosis {
   EffectValues extended = nominal_values();
   std::optional<VerticalVelocityProfile> extended_profile;  // when the vertical velocity was fitted
   bool extended_uses_ctd_density = false;
-  Rms extended_all;                // the extended model over all samples
+  Rms extended_all;  // the extended model over all samples
   double extended_heldout_rms_m_s = 0.0;
   double gain = 0.0;
   std::vector<std::string> candidates_tried;

@@ -28,10 +28,10 @@ enum class Effect : int {
 constexpr std::size_t kEffectCount = static_cast<std::size_t>(Effect::kCount);
 
 struct EffectInfo {
-  const char* id;     // the vocabulary's id
-  const char* unit;   // of the reported value
-  double nominal;     // the value that means "no effect"
-  double scale;       // typical size, for the optimiser's conditioning
+  const char* id;                       // the vocabulary's id
+  const char* unit;                     // of the reported value
+  double nominal;                       // the value that means "no effect"
+  double scale;                         // typical size, for the optimiser's conditioning
   double plausible_min, plausible_max;  // a fit outside is a model-structure artefact, not this effect
 };
 
@@ -49,8 +49,8 @@ EffectValues nominal_values();
 // a symmetric yo (both shift dives and climbs alike); a profile can.
 struct VerticalVelocityProfile {
   double bin_m = 10.0;
-  double first_m = 0.0;          // top of the first bin
-  std::vector<double> w_m_s;     // per bin, + down
+  double first_m = 0.0;       // top of the first bin
+  std::vector<double> w_m_s;  // per bin, + down
   double at(double depth_m) const;
 };
 

@@ -4,8 +4,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "glider/flightlog/flight_log.hpp"
 #include "glider/diagnose/track.hpp"
+#include "glider/flightlog/flight_log.hpp"
 #include "glider/flightlog/phases.hpp"
 
 namespace glider::diagnose {
@@ -16,20 +16,20 @@ struct Observations {
   std::vector<double> temperature_c;  // NaN where the log has none
   std::vector<double> density_kg_m3;  // TEOS-10 from the CTD; NaN where not available
   std::vector<bool> diving;
-  std::vector<int> yo;                // yo number (a dive and the climb after it)
+  std::vector<int> yo;  // yo number (a dive and the climb after it)
   bool has_battpos = false, has_temperature = false, has_ctd = false;
-  std::size_t glides = 0;             // dives + climbs found
-  std::size_t inflection_samples = 0; // samples in turns (not modelled by the steady model)
-  Track track;                        // the whole log, for the dynamic model
+  std::size_t glides = 0;              // dives + climbs found
+  std::size_t inflection_samples = 0;  // samples in turns (not modelled by the steady model)
+  Track track;                         // the whole log, for the dynamic model
   std::size_t size() const { return time_s.size(); }
 };
 
 struct ObservationOptions {
-  double min_depth_m = 2.0;          // below the surface layer
-  double min_pitch_rad = 0.1745;     // 10 deg: flatter is not a steady glide
-  double settle_s = 30.0;            // skip the start of each glide (the pump and pitch settle)
-  double max_fill_age_s = 60.0;      // forward fill of sparse columns
-  TrackOptions track;                // the whole log, for the dynamic model
+  double min_depth_m = 2.0;       // below the surface layer
+  double min_pitch_rad = 0.1745;  // 10 deg: flatter is not a steady glide
+  double settle_s = 30.0;         // skip the start of each glide (the pump and pitch settle)
+  double max_fill_age_s = 60.0;   // forward fill of sparse columns
+  TrackOptions track;             // the whole log, for the dynamic model
 };
 
 // Throws flightlog::FlightLogError (file, line, column) when the log has no

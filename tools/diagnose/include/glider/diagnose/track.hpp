@@ -15,13 +15,13 @@ namespace glider::diagnose {
 struct Track {
   // One entry per sample of a run (samples outside runs are dropped).
   std::vector<double> time_s, depth_m, depth_rate_m_s, pitch_rad, ballast_cc, battpos_in;
-  std::vector<double> pitch_slope_rad_s;  // the pitch between samples is a monotone cubic with these slopes
+  std::vector<double> pitch_slope_rad_s;             // the pitch between samples is a monotone cubic with these slopes
   std::vector<double> temperature_c, density_kg_m3;  // NaN where the log has none
   std::vector<double> speed_through_water_m_s;       // measured (a DVL's), NaN where none
   std::vector<flightlog::Phase> phase;
-  std::vector<int> yo;                  // a dive and what follows it up to the next dive; -1 before the first
-  std::vector<std::size_t> run_first;   // first sample of each run; a run ends where the next begins
-  std::vector<std::size_t> scored;      // samples whose depth rate the fit compares (sorted)
+  std::vector<int> yo;                 // a dive and what follows it up to the next dive; -1 before the first
+  std::vector<std::size_t> run_first;  // first sample of each run; a run ends where the next begins
+  std::vector<std::size_t> scored;     // samples whose depth rate the fit compares (sorted)
   double rate_half_window_s = 0.0, max_gap_s = 0.0;  // how depth_rate_m_s was estimated
   double spin_up_s = 0.0;  // from the start of each run: not scored (the model's start state is fitted there)
   std::size_t size() const { return time_s.size(); }
@@ -29,7 +29,7 @@ struct Track {
 };
 
 struct TrackOptions {
-  double max_gap_s = 30.0;   // a longer gap (surface dialog, lost data) ends a run
+  double max_gap_s = 30.0;  // a longer gap (surface dialog, lost data) ends a run
   // Runs stay below this depth: at the surface the measured depth (waves,
   // partial immersion of the 0.2 m hull) says nothing about the buoyancy.
   double run_min_depth_m = 1.0;
@@ -39,15 +39,15 @@ struct TrackOptions {
   double rate_half_window_s = 5.0;
   // The measured pitch (the model's input) is smoothed by a parabola over +-this.
   double pitch_half_window_s = 5.0;
-  double spin_up_s = 60.0;   // not scored after a run starts: the model's start state is fitted there
+  double spin_up_s = 60.0;  // not scored after a run starts: the model's start state is fitted there
 };
 
 // The depth rate estimator used for the measured depth (and for the
 // modelled one, so that the two are compared through the same filter): the
 // slope of a straight line fitted to the depth within +-half_window_s (no gap
 // longer than max_gap_s inside), else a centred / one-sided difference.
-flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth,
-                                      double half_window_s, double max_gap_s);
+flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth, double half_window_s,
+                                      double max_gap_s);
 
 // Runs need pitch, ballast and depth; battery, temperature and CTD density
 // are used where the log has them. Two optional columns beyond Slocum's:
