@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Flight-log reader speed, in rows/s: a 24 h, 1 Hz SIL-like log (86 400 rows
 // x 30 columns, numbers at full double precision as the SIL writes them, some
 // empty fields) and the largest dbd-derived real log.

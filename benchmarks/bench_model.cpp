@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Speed of the vehicle model: one RK4 step of the full dynamics, one
 // derivative evaluation, and the steady-glide solvers. Run:
 //   build/release/benchmarks/bench_model

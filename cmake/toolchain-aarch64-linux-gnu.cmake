@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cross build for the glider's arm64 Linux computer on a Debian 12 build
 # machine (multiarch): crossbuild-essential-arm64 and the :arm64 -dev
 # packages (./glider cross installs them). CTest runs the arm64 test

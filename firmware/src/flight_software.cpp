@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/flight_software.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/yo_mission.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/config/toml_document.hpp"
 
 #include <toml++/toml.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/model/prescribed_pitch.hpp"
 
 #include <cmath>

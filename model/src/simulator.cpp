@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/model/simulator.hpp"
 
 #include <boost/numeric/odeint/external/eigen/eigen_algebra.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/sil/csv_flight_log.hpp"
 
 #include <charconv>

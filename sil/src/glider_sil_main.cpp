@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-sil: fly a mission in SIL and print a summary. A mission is either
 // a Slocum .mi file (with its .ma files; docs/missions.md) or one of the
 // project's TOML yo missions (boards/README.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-firmware: the flight software on the glider's Linux computer. Reads
 // the target board file (devices) and the mission file (mission, limits,
 // servo, safety), opens every device, then runs FlightSoftware through the

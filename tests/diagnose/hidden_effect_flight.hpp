@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What every hidden-effect test does: fly the project's model in SIL with an
 // effect the logged (nominal) vehicle does not know about, write the CSV, and

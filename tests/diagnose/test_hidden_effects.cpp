@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hide an effect in SIL-made data, hand only the CSV to the diagnosis, and
 // require it to name the effect, recover its size and gain on held-out yos.
 // Magnitudes are drawn from realistic ranges by a seeded generator.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hidden effects that need the CTD: SIL water given by temperature and
 // salinity (its density is TEOS-10's, the same the diagnosis computes from
 // the logged sci_water_temp/cond/pressure), a vehicle that does not know about

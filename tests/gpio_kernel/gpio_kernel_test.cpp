@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The project's GPIO driver against a real kernel: run inside the qemu guest
 // of run_gpio_kernel_test.sh, on a gpio-sim bank whose lines are named like
 // boards/gpio/gpio_sim.toml says. The simulated chip shows what the driver

@@ -1,4 +1,5 @@
 #!/bin/busybox sh
+# SPDX-License-Identifier: Apache-2.0
 # /init of the kernel GPIO test's guest: mount what the test needs, create a
 # gpio-sim bank with named lines through configfs, run the test program and
 # power off. The host script looks for the program's pass marker.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs the GPIO driver's test program on a real Linux kernel: a qemu guest
 # (TCG) booting the installed Debian kernel with an initramfs of busybox,
 # configfs, the gpio-sim and irq_sim modules and the static test binary.

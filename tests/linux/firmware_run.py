@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """glider-firmware end to end on the build machine: the Modbus actuator
 simulator (TCP), a Keller transmitter, GPS and compass on socat pty pairs fed
 with good and bad sentences; the firmware runs a few seconds on the demo

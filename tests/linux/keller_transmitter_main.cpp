@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A Keller transmitter for end-to-end runs (tests/linux/firmware_run.py):
 // serves P1 = PRESSURE_BAR and TOB1 = 12 degC on DEVICE until SIGTERM.
 #include <unistd.h>

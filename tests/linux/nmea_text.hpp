@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Building NMEA sentences for the tests: the checksum of a body, and a
 // whole sentence with a correct (or deliberately wrong) one.

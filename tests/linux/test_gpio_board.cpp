@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GPIO board files: the shipped ones read, malformed ones are refused at
 // start-up with file, line and problem. (The lines themselves are tested on
 // a real kernel: tests/gpio_kernel.)

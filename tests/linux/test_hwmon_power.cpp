@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hwmon power monitor on a directory shaped like /sys/class/hwmon (the
 // ina2xx driver's files): found by name, voltage and current read, charge
 // integrated, bad values rejected and counted.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Depth from a Keller Series 30 class transmitter over Modbus RTU: the
 // driver through ModbusLink on one end of a socat pty pair, a libmodbus
 // RTU server holding the transmitter's registers on the other.

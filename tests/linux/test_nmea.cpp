@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // NMEA framing, checksums and the GPS and compass sentences: every kind of
 // bad input is rejected and counted, never used.
 #include <CppUTest/TestHarness.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The target's flight log: rows handed over by the loop come out in the
 // CSV file, in order, with the docs/flight-log.md columns; a value the
 // firmware did not have (NaN) is an empty field.

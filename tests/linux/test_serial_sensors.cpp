@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GPS and compass drivers on real pseudo-terminals (a socat pty pair
 // stands for the serial cable): a writer feeds good, bad and partial
 // sentences in pieces; the driver reads without blocking, uses the good

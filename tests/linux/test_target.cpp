@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The target's loop statistics and its board file.
 #include <CppUTest/TestHarness.h>
 

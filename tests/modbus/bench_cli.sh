@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # glider-bench end to end against glider-actuator-sim (TCP loopback, a free
 # port): status, a refused target, no confirmation, a move with CSV log, a
 # step response, and the error when no device answers.

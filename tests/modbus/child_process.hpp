@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A helper process for the tests that talk to real peers (the actuator
 // simulator, socat): started with fork/exec, killed with the test (and with

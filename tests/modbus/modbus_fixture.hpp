@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The driver side of the Modbus tests: the default board's link and axes,
 // pointed at a real peer.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """The Modbus code against third-party peers from Debian.
 
   mbpoll-tcp | mbpoll-rtu        mbpoll (client) against glider-actuator-sim

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Modbus board files: the default one reads, malformed ones are refused with
 // file, line and problem.
 #include <CppUTest/TestHarness.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The flight software on the Modbus pump and slide: a device that stops
 // answering mid-dive ends in the actuator-fault abort.
 #include <CppUTest/TestHarness.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The driver against the actuator simulator over Modbus RTU on a socat pty
 // pair (the glider's end and the device's end of an RS-485 bus).
 #include <CppUTest/TestHarness.h>

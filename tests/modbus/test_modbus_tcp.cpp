@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The driver against the actuator simulator over Modbus TCP on loopback
 // (an ephemeral port per test), fault by fault.
 #include <CppUTest/TestHarness.h>

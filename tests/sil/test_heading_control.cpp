@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The heading-control study as a regression test (docs/heading-control.md):
 // Slocum's autopilot gains on a fin with a 20 s dead time swing like the
 // real comet 2016 (+-13 deg, ~100 s); paper 001's P law holds a steady

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Flight test cards in SIL: a Slocum mission with waypoints in a current,
 // every abort cause injected, and the real comet-nsb3 mission end to end.
 // The envelopes are stated next to each assertion; the figures they were

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Live cross-check of the C++ seawater chain against python3-gsw.
 
 Draws a seeded random set of CTD samples (C, t, p), runs them through

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Write tests/data/seawater_reference.csv: TEOS-10 values from Debian's
 python3-gsw (which wraps GSW-C) for test_seawater.cpp to check the C++
 seawater functions against.

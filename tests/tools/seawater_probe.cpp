@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // seawater_probe: the C++ seawater chain as a filter, for
 // check_seawater_vs_gsw.py to compare with python3-gsw.
 // Reads lines "C T P" (conductivity [S/m], in-situ temperature [degC],

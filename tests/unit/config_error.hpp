@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers for the tests of configuration readers: the error a reader gives
 // (empty when the text reads), and a text with one part replaced.

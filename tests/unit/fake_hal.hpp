@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A scripted HAL for firmware tests: tests set what the sensors say and read
 // back what the firmware commanded and logged.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The firmware allocates nothing after start-up: every global operator new in
 // this program is counted, and the flight software flies a whole scripted
 // mission (dive, climbs, yos, surfacing), a navigated mission (GPS fixes,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The flight-log reader against the contract (docs/flight-log.md): values,
 // empty fields, metadata, every error with its exact message, and the real
 // Slocum logs in tests/data/real (facts from their README).
@@ -231,7 +232,7 @@ TEST(FlightLogReader, ReadsEveryRealDbdLog) {
     std::size_t water_velocity_values;  // once per surfacing
   };
   for (const Expected& e : {Expected{"comet-2016-174-05.csv", 3043, 4.13, 3043, 12},
-                            Expected{"amadeus-2014-204-05-000.csv", 897, 1.20, 897, 3},
+                            Expected{"gpl-3.0-or-later/amadeus-2014-204-05-000.csv", 897, 1.20, 897, 3},
                             Expected{"comet-2019-222-02-154.csv", 2243, 2.83, 2242, 2},
                             Expected{"comet-2019-222-02-156.csv", 2263, 2.86, 2263, 2}}) {
     const FlightLog log = read_flight_log(kRealDir + e.file);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gap handling of sparse log columns: forward fill with a maximum age, linear
 // interpolation with a maximum gap, depth rate from depth; depth from the CTD.
 #include <CppUTest/TestHarness.h>
@@ -92,7 +93,8 @@ TEST(FlightLogGaps, GpsFixesAreNotCarriedDownADive) {
 }
 
 TEST(FlightLogGaps, DerivedDepthRateAgreesWithTheGlidersOwn) {
-  for (const char* file : {"comet-2016-174-05.csv", "amadeus-2014-204-05-000.csv", "comet-2019-222-02-156.csv"}) {
+  for (const char* file :
+       {"comet-2016-174-05.csv", "gpl-3.0-or-later/amadeus-2014-204-05-000.csv", "comet-2019-222-02-156.csv"}) {
     const FlightLog log = read_flight_log(kRealDir + file);
     const Column rate = derive_depth_rate(log.time(), log.column("m_depth"), 30.0);
     const Column& logged = log.column("m_depth_rate");
@@ -108,8 +110,8 @@ TEST(FlightLogGaps, DerivedDepthRateAgreesWithTheGlidersOwn) {
 TEST(FlightLogGaps, DepthFromPressureMatchesMDepth) {
   // 10 m per bar; the real logs' CTD lags m_depth by ~1.4 s, so the median
   // difference over dives and climbs is a few decimetres at most.
-  for (const char* file : {"comet-2016-174-05.csv", "amadeus-2014-204-05-000.csv", "comet-2019-222-02-154.csv",
-                           "comet-2019-222-02-156.csv"}) {
+  for (const char* file : {"comet-2016-174-05.csv", "gpl-3.0-or-later/amadeus-2014-204-05-000.csv",
+                           "comet-2019-222-02-154.csv", "comet-2019-222-02-156.csv"}) {
     ReadOptions options;
     options.columns = {"m_depth", "sci_water_pressure"};
     const FlightLog log = read_flight_log(kRealDir + file, options);

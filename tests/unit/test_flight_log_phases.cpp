@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Dive / climb / inflection / surface segmentation: the rules on made-up
 // samples, then the real logs (dive counts checked against their depth
 // records), the gliderflight CTD log and a SIL log.
@@ -105,8 +106,9 @@ TEST(FlightLogPhases, RealLogsHaveTheirYos) {
   };
   // comet-2016: 18 full yos to ~41 m, plus a 0.3 m bob at the end that is
   // not counted; the others as their README and depth records show.
-  for (const Expected& e : {Expected{"comet-2016-174-05.csv", 18}, Expected{"amadeus-2014-204-05-000.csv", 6},
-                            Expected{"comet-2019-222-02-154.csv", 17}, Expected{"comet-2019-222-02-156.csv", 20}}) {
+  for (const Expected& e :
+       {Expected{"comet-2016-174-05.csv", 18}, Expected{"gpl-3.0-or-later/amadeus-2014-204-05-000.csv", 6},
+        Expected{"comet-2019-222-02-154.csv", 17}, Expected{"comet-2019-222-02-156.csv", 20}}) {
     const FlightLog log = read_flight_log(kRealDir + e.file);
     const std::vector<Phase> phases = classify_phases(log);
     const std::vector<Segment> segments = find_segments(log.time(), log.column("m_depth"), phases);

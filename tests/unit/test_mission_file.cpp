@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Slocum mission files: the real comet-nsb3 mission loads; malformed and
 // unsafe missions are refused with file:line, before launch.
 #include <CppUTest/TestHarness.h>

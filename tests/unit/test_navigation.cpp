@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fin autopilot, dead reckoning, the navigator and the abort monitor,
 // each on scripted inputs.
 #include <CppUTest/TestHarness.h>

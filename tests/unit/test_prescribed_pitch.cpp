@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The prescribed-pitch model (the diagnosis's dynamic flight model) against
 // the full dynamics: fed the full model's own pitch, pump and battery through
 // a turn, it must fly the same depth rate. And the first-order pump lag of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Steady-glide identification (paper 000 sec. 3): on glides made by the
 // project's own steady solver with hidden trim errors, and on the papers'
 // tables (tests/data/papers).

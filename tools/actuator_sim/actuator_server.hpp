@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The actuator simulator's Modbus server (libmodbus): the board's axes
 // behind the default register map, on TCP (many clients) or on a serial

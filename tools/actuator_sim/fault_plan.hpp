@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The faults the simulator injects (--fault SPEC, repeatable), and what it
 // does with each request because of them. Deterministic (counts, not dice),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "garbled_reply.hpp"
 
 #include <modbus/modbus.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A reply that is wrong on purpose (line noise): the right length and
 // header, so the client reads all of it, but a bad RTU CRC or, on TCP, a

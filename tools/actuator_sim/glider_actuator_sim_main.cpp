@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-actuator-sim: a Modbus server that behaves like the board's pump
 // and slide controller (default register map, rate and travel limits,
 // limit switches, injectable faults). For the tests, the bench tool's demo

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One simulated actuator axis behind the default register map: a
 // rate-limited position servo with limit switches, homing and latched

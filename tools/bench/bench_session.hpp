@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A bench session: one bus, the board's two axes, moves watched with
 // progress on stderr and every sample logged to an optional CSV file.

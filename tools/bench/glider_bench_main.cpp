@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-bench: bench tests of the buoyancy pump and the battery slide over
 // Modbus, before the glider goes in the water. Same driver as the flight
 // HAL; refuses targets outside the board's limits; asks before it moves

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-dead-bus: how long the flight loop blocks per cycle when the
 // actuator bus is dead. Each cycle does the most Modbus work a firmware
 // cycle can do (FlightSoftware::run: read pump, read slide, command pump,

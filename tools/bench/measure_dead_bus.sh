@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Worst-case blocking of one control cycle on a dead actuator bus, on the
 # three dead buses that matter: TCP to a closed port, TCP to a device that
 # stopped answering, RTU on a pty with nobody on the other end.

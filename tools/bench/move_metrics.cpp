@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "move_metrics.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a bench move measured: from the sampled positions of one move,
 // rise time, overshoot, settling time and rate. Pure computation.

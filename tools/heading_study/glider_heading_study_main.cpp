@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-heading-study: the heading autopilot in SIL against the real
 // comet logs (docs/heading-control.md). Measures the real gliders' heading
 // oscillation and roll-offset error, then flies the same vehicle in SIL with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Heading-control figures of a flight log: steady error per glide
 // direction, the oscillation about it (amplitude and period), RMS error and

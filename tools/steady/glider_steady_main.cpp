@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-steady: steady glides of a vehicle file, forward (ballast and
 // battery -> glide) and inverse (glide path and net buoyancy -> ballast and
 // battery).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-validate: regenerate the model validation report (docs/validation):
 // the papers' published results next to the model's, and the model over the
 // real Slocum data.

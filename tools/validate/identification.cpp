@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Steady-glide identification (paper 000 sec. 3, library glider_identification)
 // on the two tables of steady glides the papers print: the buoyancy trim
 // offset, the drag polar and the pitch trim, next to what the papers say.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Paper 000 (Graver et al. 2003): Fig. 13 and Table 1.
 #include <cmath>
 #include <limits>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Paper 001 (Stante et al. 2008): steady climbs and dives, Tables 2-3.
 #include <cmath>
 #include <limits>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Paper 002 (Singh et al. 2017): the IIT Madras lab glider's steady results.
 #include <cmath>
 #include <limits>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The nominal SLOCUM model over the real Slocum logs: the baseline that
 // `./glider diagnose` improves on. The model is the steady glide at the
 // logged pitch and the net buoyancy of the logged ballast (what flight-model
@@ -64,8 +65,8 @@ void real_data(Report& r, const Inputs& in) {
        "is flatter than the model's best glide have no steady solution and are counted apart.\n";
   std::vector<std::vector<std::string>> rows;
   std::vector<double> plot_t, plot_measured, plot_model;
-  for (const char* name : {"comet-2016-174-05.csv", "amadeus-2014-204-05-000.csv", "comet-2019-222-02-154.csv",
-                           "comet-2019-222-02-156.csv"}) {
+  for (const char* name : {"comet-2016-174-05.csv", "gpl-3.0-or-later/amadeus-2014-204-05-000.csv",
+                           "comet-2019-222-02-154.csv", "comet-2019-222-02-156.csv"}) {
     const flightlog::FlightLog log = flightlog::read_flight_log(in.real_data / name);
     const auto& time = log.time();
     const auto& depth = log.column("m_depth");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Small comma-separated tables with `#` comment lines and a header (the
 // papers' numbers in tests/data/papers).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/config/flight_config_file.hpp"
 
 #include "glider/units.hpp"

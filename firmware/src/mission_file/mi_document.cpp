@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/mission_file/mi_document.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The one place where Slocum's units (cc, inches, degrees) meet SI.
 #include <cmath>

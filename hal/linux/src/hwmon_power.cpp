@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/hal_linux/hwmon_power.hpp"
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/hal_linux/modbus_board.hpp"
 
 #include <charconv>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/hal_linux/register_map.hpp"
 
 namespace glider::hal_linux::regs {

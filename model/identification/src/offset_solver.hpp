@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The root of the up/down symmetry criterion alone (no uncertainties, no
 // pairs), for re-estimating the offset under perturbed inputs. Private.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/identification/pitch_trim.hpp"
 
 #include <Eigen/Core>

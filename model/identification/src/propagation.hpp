@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Central-difference propagation of independent input errors (one standard
 // deviation per input, the same for every sample) through an estimator:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/diagnose.hpp"
 
 #include <Eigen/Dense>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-diagnose: what the simulation gets wrong in a flight log, the named
 // cause, the fitted effect and the gain on held-out yos.
 #include <CLI/CLI.hpp>

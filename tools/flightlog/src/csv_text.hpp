@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Text-level pieces of the flight-log reader: lines, fields, numbers,
 // metadata. Internal to glider_flightlog.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // glider-log-info: what is in a flight log (docs/flight-log.md): rows, time
 // span, sampling, columns with their fill, metadata, dives and climbs. Reads
 // the log exactly as the analysis tools do, so it also checks a log.

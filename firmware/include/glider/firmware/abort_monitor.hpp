@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The abend checks beyond the yo's own envelope (overdepth, overtime and
 // sensor/actuator validity live in YoMission): leak, low battery, stuck at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Under-water position the Slocum way (paper 000): the horizontal speed
 // through the water from the depth rate and the pitch, with an angle of

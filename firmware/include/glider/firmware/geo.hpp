@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Positions: Slocum's NMEA ddmm.mmm angles, decimal degrees, and a local
 // east/north plane in metres. Glider legs are tens of km, where the flat-earth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Rudder (fin) autopilot. Three laws, so SIL can compare them on the same
 // vehicle (docs/heading-control.md):

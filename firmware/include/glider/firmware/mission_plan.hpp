@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a mission file becomes: the horizontal plan (waypoints, segments,
 // surfacing) and the abort limits beyond the yo's own envelope. Fixed size,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The mission above the yo: segments, GPS at the surface, dead reckoning
 // under water, the depth-averaged current from each surfacing's DR error,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading the project's TOML configuration files (vehicles, missions, boards)
 // with errors that name the file, the line and the problem. Init-time only:

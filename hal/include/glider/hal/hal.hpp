@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The set of hardware services the flight software is built against.
 #include "glider/hal/attitude_sensor.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Time in the firmware is an integer count of microseconds from the HAL clock.
 // Integers (not doubles) so that SIL runs are bit-for-bit reproducible and a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A water column from CTD samples (a glider's own casts, or a ship's): the
 // in-situ density of every sample by TEOS-10 (seawater.hpp), averaged in

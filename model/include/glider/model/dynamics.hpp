@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Vertical-plane Leonard-Graver glider dynamics in momentum (Kirchhoff) form.
 //

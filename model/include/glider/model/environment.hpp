@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The water the glider flies in: density, temperature, salinity and water
 // velocity as functions of depth (a piecewise-linear profile) and time (an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The environment file (TOML, keys in boards/README.md): the water the SIL
 // flies in. Init-time only; throws config::ConfigError with file and line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A first-order lag y' = (u - y) / tau, advanced exactly over an interval in
 // which the input moves linearly (a rate-limited servo, or a log linearly

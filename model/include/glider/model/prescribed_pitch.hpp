@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The translational half of the vertical-plane dynamics (dynamics.hpp) with
 // the pitch PRESCRIBED, for flight-model identification from logs: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 
 // Seawater density from what a glider CTD measures, with TEOS-10 (the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Steady (equilibrium) glides of the vertical-plane model, paper 000 eqs.
 // (1)-(6): in a steady straight glide lift and drag balance the net weight,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Vehicle parameters of the vertical-plane Leonard-Graver glider model, in SI
 // units. Body frame: origin at the centre of buoyancy (CB), x forward along the

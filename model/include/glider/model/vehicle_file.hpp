@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The vehicle parameter file (TOML, SI units, keys documented in
 // boards/README.md). Init-time only: throws config::ConfigError naming the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Faults the SIL can inject into the simulated HAL, to exercise the
 // firmware's abort paths. Tests set them directly (SimHal::faults()); the

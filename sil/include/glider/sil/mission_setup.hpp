@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a mission needs from the vehicle model before launch: the limits a
 // Slocum mission is checked against, and the flight model's angle-of-attack

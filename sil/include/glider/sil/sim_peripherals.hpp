@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The simulated GPS, leak detector, drop weight and power monitor: the HAL
 // devices that are not part of the flight dynamics. Deterministic (seeded),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Stand-ins for devices a target board does not have, so that the firmware
 // always gets a complete hal::Hal. Each says plainly what it is: a fixed fin

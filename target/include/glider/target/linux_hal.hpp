@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The flight HAL of the Linux target, built from a target board file: every
 // device opened and checked at start-up (a missing one is an error naming

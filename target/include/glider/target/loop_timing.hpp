@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Wake-up jitter and overrun statistics of the fixed-step loop: fixed-size
 // (a log2 histogram), no allocation, printable as one line for the log.

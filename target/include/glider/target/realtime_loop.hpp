@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The fixed-step loop on Linux: the Executive's cycles at absolute
 // deadlines on CLOCK_MONOTONIC (a timerfd armed with TFD_TIMER_ABSTIME, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The flight log on the target: the loop hands rows to a fixed ring buffer
 // (single producer, single consumer, no lock, no allocation) and a writer

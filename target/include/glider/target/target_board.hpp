@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The board file of the firmware on the Linux target (boards/target/): which
 // devices the glider has and where, and how the loop runs. Paths to the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The flight software's configuration file (TOML; keys in boards/README.md).
 // Init-time only: throws config::ConfigError naming file, line and problem;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Slocum mission files, read as text: a `.mi` file of `sensor:` lines and
 // `behavior:` blocks of `b_arg: name(unit) value` lines, and the `.ma`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A Slocum mission (MiDocument) becomes the configuration the flight
 // software flies, or is refused before launch. The supported subset and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a GPIO board file says (boards/gpio/README.md): for each digital line
 // the glider uses, the chip and the line NAME it has on this board (never an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The board's digital lines through libgpiod (1.6 C++ binding, the kernel's
 // GPIO character device). Every line of the board file is looked up by name

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The main battery through a Linux hwmon power monitor (INA219/INA226 class:
 // the kernel's ina2xx driver, /sys/class/hwmon/hwmonN with name "ina219"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Depth from a Keller Series 30 class pressure transmitter (e.g. PA-33X)
 // over Modbus RTU, through the project's bounded ModbusLink. Registers used

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The flight HAL's buoyancy pump and battery slide on Modbus axes. Thin:
 // the axis does the work; these only tie it to the HAL interfaces and clock.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One position-controlled actuator axis behind the default register map
 // (register_map.hpp), in engineering units (cc or in). Used by the flight

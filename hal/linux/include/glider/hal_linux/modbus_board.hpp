@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a Modbus board file says (boards/modbus_actuators.md): the bus, its
 // timing budget and, per actuator axis, where it lives and how it scales.

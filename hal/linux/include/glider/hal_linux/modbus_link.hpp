@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One Modbus bus (RTU serial line or TCP connection) shared by the actuator
 // axes on it, with the flight loop's timing guarantees: every transaction is

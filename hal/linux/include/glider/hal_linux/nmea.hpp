@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // NMEA 0183 framing and sentence checks, shared by the GPS and the compass.
 // Pure code (no I/O), fixed buffers, no allocation: the serial drivers feed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The default register map of a position-controlled actuator axis
 // (boards/modbus_actuators.md is the documentation of this file). Shared by

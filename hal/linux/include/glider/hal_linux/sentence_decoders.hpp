@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the serial sensors' sentences mean: NMEA 0183 GGA and RMC for the
 // GPS, $PTNTHPR for the compass (docs in boards/serial_sensors.md). Pure code

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A serial line opened raw and non-blocking (termios, O_NONBLOCK): the
 // sensors' drivers take what has arrived and never wait for more.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The GPS and the compass on serial lines: each read() takes the bytes that
 // have arrived (bounded, non-blocking), decodes the complete sentences and

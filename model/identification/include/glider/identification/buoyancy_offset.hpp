@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Paper 000 sec. 3.2: the buoyancy trim offset Delta m0 (the vehicle's net
 // weight at zero ballast; - = light) from steady glides up and down.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Paper 000 sec. 3.2, eq. (14): the drag polar C_D = cd0 + cd_alpha2 a^2
 // (even in a: the vehicle is symmetric top to bottom) fitted by linear least

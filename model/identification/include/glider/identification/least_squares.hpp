@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Ordinary linear least squares with the textbook parameter covariance
 // sigma^2 (X^T X)^-1, sigma^2 = RSS / (n - p). The regressors are taken as

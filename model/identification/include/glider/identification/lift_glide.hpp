@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Paper 000 sec. 3.1: a measured steady glide (pitch, depth rate, net
 // buoyancy) read through a known lift curve. Eliminating the drag from the

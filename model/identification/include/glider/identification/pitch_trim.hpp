@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Paper 000 sec. 3.3: the steady pitching moment and the static pitch trim.
 //

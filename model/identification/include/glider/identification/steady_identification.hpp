@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Paper 000 sec. 3 in one call, in the paper's order: the buoyancy trim
 // offset (3.2), the drag polar with it (eq. 14), then the pitch moment and

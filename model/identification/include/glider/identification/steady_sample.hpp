@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Inputs of the steady-glide identification of paper 000 (Graver et al.
 // 2003, sec. 3): one steady glide averaged over its interval (as in the

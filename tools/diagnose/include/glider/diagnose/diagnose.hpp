@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The science loop on one log: the nominal model's error (baseline), each
 // candidate effect fitted on half of the yos and scored on the other half,

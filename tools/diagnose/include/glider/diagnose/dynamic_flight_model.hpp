@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The dynamic flight model of the diagnosis: the project's vertical-plane
 // dynamics with the measured pitch prescribed (model/prescribed_pitch.hpp),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The nominal flight model extended by the effects of the vocabulary
 // (docs/model-discrepancy.md): for each steady-glide sample, the steady glide

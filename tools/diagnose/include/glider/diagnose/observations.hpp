@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the model-discrepancy analysis works on: the log's steady glides as
 // flat arrays, with the gaps filled by documented rules (flightlog/gaps.hpp).

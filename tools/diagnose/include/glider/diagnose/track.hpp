@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The whole log for the dynamic flight model: every sample, turns and all,
 // grouped in continuous runs, with the inputs interpolated between the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the flight-log contract (docs/flight-log.md) says about its columns,
 // and the depth series every analysis starts from.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading flight-log CSV files (the project's interchange format, see
 // docs/flight-log.md): `# key: value` metadata, one header line, one row per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Explicit gap handling for log columns. An empty sample (NaN) means the
 // glider logged no new value in that cycle; what a tool may put there depends

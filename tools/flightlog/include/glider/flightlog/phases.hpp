@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Which part of a yo each sample belongs to, from depth and depth rate, with
 // m_depth_state (1 dive, 2 climb, 3 hover, 0 surface) as a hint when the log

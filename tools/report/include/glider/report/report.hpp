@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A validation report: Markdown text, data files and gnuplot scripts in one
 // directory; the plots are rendered by gnuplot (PNG).
