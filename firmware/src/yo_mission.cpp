@@ -19,6 +19,34 @@ const char* to_string(Phase phase) {
   return "?";
 }
 
+const char* cause_id(AbortCause cause) {
+  switch (cause) {
+    case AbortCause::kNone:
+      return "none";
+    case AbortCause::kOverdepth:
+      return "overdepth";
+    case AbortCause::kOvertime:
+      return "overtime";
+    case AbortCause::kDepthSensor:
+      return "depth_sensor";
+    case AbortCause::kAttitudeSensor:
+      return "attitude_sensor";
+    case AbortCause::kActuatorFault:
+      return "actuator_fault";
+    case AbortCause::kLeak:
+      return "leak";
+    case AbortCause::kLowBattery:
+      return "low_battery";
+    case AbortCause::kSameDepth:
+      return "samedepth";
+    case AbortCause::kStalled:
+      return "stalled";
+    case AbortCause::kWaypointTooFar:
+      return "waypoint_too_far";
+  }
+  return "unknown";
+}
+
 const char* to_string(AbortCause cause) {
   switch (cause) {
     case AbortCause::kNone:
