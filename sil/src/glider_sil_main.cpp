@@ -15,8 +15,7 @@
 
 #include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
-#include "glider/firmware/config/flight_config_file.hpp"
-#include "glider/firmware/mission_file/mission_loader.hpp"
+#include "glider/firmware/app/mission_setup.hpp"
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/flight_summary.hpp"
@@ -120,55 +119,48 @@ int main(int argc, char** argv) {
   app.add_option("--launch-lat", launch_lat, "launch latitude, decimal degrees (default: comet 2019's first fix)");
   app.add_option("--launch-lon", launch_lon, "launch longitude, decimal degrees");
   app.add_flag("--quiet", quiet, "print nothing but errors");
+  bool check_mission = false;
+  app.add_flag("--check-mission", check_mission, "read the vehicle and the mission, report, exit (nothing flown)");
   app.add_option("--summary-json", summary_json_path,
                  "also write the run's summary as JSON to this file (keys: docs/sil-summary.md)");
   return tool.run(argc, argv, [&]() -> int {
     glider::model::VehicleParams vehicle;
-    glider::fw::FlightSoftwareConfig config;
     glider::sil::ScenarioOptions options;
-    const bool slocum_mission = std::filesystem::path(mission_path).extension() == ".mi";
     try {
       vehicle = glider::model::load_vehicle_file(vehicle_path);
+      options.fitted = glider::sil::load_fitted_devices(vehicle_path);
       options.environment = env_path.empty() ? glider::model::still_water(vehicle.trim_density_kg_m3)
                                              : glider::model::load_environment_file(env_path);
-      if (!slocum_mission) {
-        const auto mission = glider::config::TomlDocument::load(mission_path);
-        config = glider::fw::read_flight_config(mission);
-        options.max_sim_time_s = mission.number_or("sil.max_sim_time_s", options.max_sim_time_s);
-        mission.reject_unknown_keys();
-      }
     } catch (const glider::config::ConfigError& error) {
       return tool.fail(glider::cli::kError, error.what());
     }
-    glider::fw::FlightSoftwareConfig base;
-    base.heading.law = heading_law == "proportional" ? glider::fw::HeadingLaw::kProportional
-                       : heading_law == "slocum"     ? glider::fw::HeadingLaw::kSlocum
-                                                     : glider::fw::HeadingLaw::kCompensated;
-    base.heading.delay_s = vehicle.heading.fin_delay_s;
-    if (dr_method == "model") {
-      base.dead_reckoning =
-          glider::sil::flight_model_dead_reckoning(vehicle, options.environment.water.at(0.0, 0.0).density_kg_m3);
+    // The flight application's own mission setup, as glider-firmware does it;
+    // only where the vehicle data comes from differs (the model here, the board file there).
+    glider::fw::app::VehicleSetup setup =
+        glider::sil::vehicle_setup(vehicle, options.fitted, max_working_depth_m, dr_method == "model",
+                                   options.environment.water.at(0.0, 0.0).density_kg_m3);
+    setup.source = vehicle_path;
+    glider::fw::app::MissionOptions mission_options;
+    mission_options.heading_law = *glider::fw::app::heading_law_from_name(heading_law);
+    mission_options.flight_model_dr = dr_method == "model";
+    mission_options.legs = legs;
+    const glider::fw::app::PreparedMission prepared =
+        glider::fw::app::prepare_mission(mission_path, setup, mission_options);
+    const std::vector<std::string> messages = glider::fw::app::mission_messages(prepared, quiet);
+    for (std::size_t i = 0; i + (prepared.config ? 0 : 1) < messages.size(); ++i) {
+      std::fprintf(stderr, "%s\n", messages[i].c_str());
     }
-    if (slocum_mission) {
-      const auto loaded = glider::fw::mission_file::load_mission_file(
-          mission_path, glider::sil::mission_vehicle(vehicle, max_working_depth_m), base);
-      for (const auto& d : loaded.diagnostics) {
-        if (!quiet || d.severity == glider::fw::mission_file::Severity::kError) {
-          std::fprintf(stderr, "%s\n", d.text().c_str());
-        }
-      }
-      if (!loaded.config) {
-        return tool.fail(glider::cli::kError, mission_path + ": mission refused before launch");
-      }
-      config = *loaded.config;
-      if (legs != 0) config.plan.legs_to_run = legs;
+    if (!prepared.config) return tool.fail(glider::cli::kError, prepared.refusal);
+    if (check_mission) {
+      std::fprintf(stderr, "glider-sil: %s: mission accepted for vehicle %s\n", mission_path.c_str(),
+                   vehicle.name.c_str());
+      return glider::cli::kOk;
+    }
+    const glider::fw::FlightSoftwareConfig& config = *prepared.config;
+    if (prepared.slocum) {
       options.max_sim_time_s = 60.0 * 86400.0;  // the mission's own limits end it
-    } else {
-      config.heading = base.heading;
-      config.heading.fin_max_rad = vehicle.heading.fin_max_rad;
-      config.heading.fin_rate_rad_s = vehicle.heading.fin_rate_rad_s;
-      config.heading.yaw_gain_per_m = vehicle.heading.fin_yaw_gain_per_m;
-      config.dead_reckoning = base.dead_reckoning;
+    } else if (prepared.sil_max_sim_time_s > 0.0) {
+      options.max_sim_time_s = prepared.sil_max_sim_time_s;
     }
     if (max_sim_time_s > 0.0) options.max_sim_time_s = max_sim_time_s;
     for (const std::string& text : fault_texts) {
