@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Stand-ins for devices a target board does not have, so that the firmware
-// always gets a complete hal::Hal. Each says plainly what it is: a fixed fin
+// Stand-ins for devices a vehicle does not have (not fitted: the board file on
+// the target, the vehicle file in SIL), so that the flight software always
+// gets a complete hal::Hal. Each says plainly what it is: a fixed fin
 // (a glider without a rudder axis flies with its fin locked at zero, which
 // is a valid, known position), and a leak detector, drop weight and power
 // monitor that never have a reading (the firmware logs them as missing; the
@@ -11,7 +12,7 @@
 #include "glider/hal/power_monitor.hpp"
 #include "glider/hal/rudder.hpp"
 
-namespace glider::target {
+namespace glider::fw::app {
 
 class FixedRudder final : public hal::Rudder {
  public:
@@ -38,4 +39,4 @@ class NoPowerMonitor final : public hal::PowerMonitor {
   hal::PowerSample read() override { return {}; }
 };
 
-}  // namespace glider::target
+}  // namespace glider::fw::app

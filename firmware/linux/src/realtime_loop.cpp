@@ -19,12 +19,6 @@
 namespace glider::target {
 namespace {
 
-hal::Micros monotonic_now_us() {
-  timespec t{};
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return static_cast<hal::Micros>(t.tv_sec) * hal::kMicrosPerSecond + t.tv_nsec / 1000;
-}
-
 std::string errno_text() { return std::strerror(errno); }
 
 }  // namespace
@@ -58,8 +52,9 @@ void block_stop_signals() {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 }
 
-RealtimeLoop::RealtimeLoop(fw::Executive& executive, const RealtimeOptions& options, std::FILE* log)
-    : executive_(executive), options_(options), log_(log) {
+RealtimeLoop::RealtimeLoop(fw::Executive& executive, const LoopClock& clock, const RealtimeOptions& options,
+                           std::FILE* log)
+    : executive_(executive), clock_(clock), options_(options), log_(log) {
   const sigset_t stop_signals = stop_signal_set();
   if (pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr) != 0) throw std::runtime_error("pthread_sigmask failed");
   signal_fd_ = signalfd(-1, &stop_signals, SFD_NONBLOCK | SFD_CLOEXEC);
@@ -105,12 +100,14 @@ bool RealtimeLoop::wait_until(hal::Micros deadline_us, bool& signalled) {
 StopReason RealtimeLoop::run(const std::function<bool()>& done, const std::function<bool()>& healthy,
                              std::uint64_t max_cycles) {
   sd_notify(0, "READY=1\nSTATUS=flying");
-  const hal::Micros period = executive_.period_us();
+  // Timing is measured on CLOCK_MONOTONIC; the executive's deadlines are loop
+  // time (the same unless --time-scale).
+  const hal::Micros period = static_cast<hal::Micros>(static_cast<double>(executive_.period_us()) / clock_.scale());
   hal::Micros deadline = monotonic_now_us();
   hal::Micros next_stats = deadline + options_.stats_every_us;
   hal::Micros last_ping = 0;
   char line[256];
-  StopReason reason = StopReason::kDone;
+  StopReason reason = StopReason::kCycleLimit;  // unless done, signalled or failed first
   for (std::uint64_t cycle = 0; max_cycles == 0 || cycle < max_cycles; ++cycle) {
     const hal::Micros woke = monotonic_now_us();
     const hal::Micros next_deadline = executive_.step();
@@ -127,8 +124,11 @@ StopReason RealtimeLoop::run(const std::function<bool()>& done, const std::funct
       std::fflush(log_);
       next_stats += options_.stats_every_us;
     }
-    if (done()) break;
-    deadline = next_deadline;
+    if (done()) {
+      reason = StopReason::kDone;
+      break;
+    }
+    deadline = clock_.to_monotonic_us(next_deadline);
     bool signalled = false;
     if (!wait_until(deadline, signalled)) {
       std::fprintf(log_, "glider-firmware: loop: timer failed (%s), stopping\n", errno_text().c_str());

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/app/vehicle_setup.hpp"
 #include "glider/hal_linux/hwmon_power.hpp"
 #include "glider/hal_linux/keller_depth.hpp"
 #include "glider/hal_linux/modbus_board.hpp"
@@ -36,6 +38,13 @@ struct TargetBoard {
   DepthConfig depth;
   std::optional<hal_linux::PowerMonitorConfig> power;  // absent: no battery readings (bench only)
   std::filesystem::path log_directory = "/var/lib/glider/logs";
+  // What the flight application needs of the vehicle ([vehicle]); its fitted
+  // devices are the ones this board configures: [gpio] (leak line and drop
+  // weight), [power], a [rudder] axis on the actuator board.
+  fw::app::VehicleSetup vehicle;
+  fw::app::MissionOptions mission_options;  // vehicle.heading_law, vehicle.dead_reckoning
+  // A bench or HIL rig, not a vehicle: test options (--time-scale) are allowed.
+  bool bench = false;
 };
 
 // Init-time only: throws config::ConfigError naming file, line and problem.

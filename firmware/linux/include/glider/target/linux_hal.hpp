@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "glider/firmware/app/absent_devices.hpp"
 #include "glider/hal/hal.hpp"
 #include "glider/hal_linux/gpio_lines.hpp"
 #include "glider/hal_linux/hwmon_power.hpp"
@@ -13,7 +14,7 @@
 #include "glider/hal_linux/modbus_actuators.hpp"
 #include "glider/hal_linux/modbus_link.hpp"
 #include "glider/hal_linux/serial_sensors.hpp"
-#include "glider/target/absent_devices.hpp"
+#include "glider/target/loop_clock.hpp"
 #include "glider/target/ring_log.hpp"
 #include "glider/target/target_board.hpp"
 
@@ -22,6 +23,7 @@ namespace glider::target {
 struct LinuxHalOptions {
   std::string actuators_tcp;  // "HOST:PORT": override the actuator board's bus (bench, tests)
   std::string log_path;       // the flight log file
+  double time_scale = 1.0;    // the loop clock's rate (bench/HIL only; loop_clock.hpp)
 };
 
 class LinuxHal {
@@ -40,6 +42,7 @@ class LinuxHal {
   hal::Rudder* rudder() { return rudder_.get(); }      // null without [rudder] on the actuator board
   hal::PowerMonitor* power() { return power_.get(); }  // null without [power]
   RingBufferLog& log() { return *log_; }
+  const LoopClock& clock() const { return clock_; }
 
   // Every driver's counters, one line each, for the log at the end.
   void print_statistics(std::FILE* out) const;
@@ -47,12 +50,12 @@ class LinuxHal {
  private:
   LinuxHal() = default;
 
-  hal_linux::MonotonicClock clock_;
+  LoopClock clock_;
   // Stand-ins for what the board does not have (absent_devices.hpp).
-  FixedRudder fixed_rudder_{clock_};
-  NoDigitalInput no_leak_;
-  NoDigitalOutput no_drop_weight_;
-  NoPowerMonitor no_power_;
+  fw::app::FixedRudder fixed_rudder_{clock_};
+  fw::app::NoDigitalInput no_leak_;
+  fw::app::NoDigitalOutput no_drop_weight_;
+  fw::app::NoPowerMonitor no_power_;
   hal_linux::ModbusBoard actuator_board_;
   std::unique_ptr<hal_linux::ModbusLink> actuator_link_;
   std::unique_ptr<hal_linux::ModbusAxis> pump_axis_;

@@ -46,6 +46,7 @@ void print_sentences(std::FILE* out, const char* name, const hal_linux::Sentence
 
 std::unique_ptr<LinuxHal> LinuxHal::build(const TargetBoard& board, const LinuxHalOptions& options, std::FILE* log) {
   std::unique_ptr<LinuxHal> h(new LinuxHal());
+  h->clock_ = LoopClock(options.time_scale);  // before any device holds it
   // GPIO first: a wrong board file is the quickest thing to find out.
   if (board.gpio_board) {
     h->gpio_ = hal_linux::GpioLines::open(hal_linux::load_gpio_board(*board.gpio_board), h->clock_);

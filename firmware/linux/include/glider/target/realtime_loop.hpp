@@ -12,6 +12,7 @@
 #include <string>
 
 #include "glider/firmware/executive.hpp"
+#include "glider/target/loop_clock.hpp"
 #include "glider/target/loop_timing.hpp"
 
 namespace glider::target {
@@ -32,13 +33,14 @@ std::string apply_realtime(const RealtimeOptions& options);
 // main(), before any thread exists (the flight log's writer is one).
 void block_stop_signals();
 
-enum class StopReason { kSignal, kDone, kError };
+enum class StopReason { kSignal, kDone, kError, kCycleLimit };
 
 class RealtimeLoop {
  public:
   // Start-up: blocks SIGTERM and SIGINT for signalfd, creates the timerfd.
   // Throws std::runtime_error when the kernel refuses.
-  RealtimeLoop(fw::Executive& executive, const RealtimeOptions& options, std::FILE* log);
+  // `clock` is the executive's: its deadlines are converted to CLOCK_MONOTONIC.
+  RealtimeLoop(fw::Executive& executive, const LoopClock& clock, const RealtimeOptions& options, std::FILE* log);
   ~RealtimeLoop();
   RealtimeLoop(const RealtimeLoop&) = delete;
   RealtimeLoop& operator=(const RealtimeLoop&) = delete;
@@ -56,6 +58,7 @@ class RealtimeLoop {
   bool wait_until(hal::Micros deadline_us, bool& signalled);
 
   fw::Executive& executive_;
+  const LoopClock& clock_;
   RealtimeOptions options_;
   std::FILE* log_;
   int timer_fd_ = -1;

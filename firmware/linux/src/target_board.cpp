@@ -98,6 +98,22 @@ TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& rel
   board.depth = read_depth(doc);
   if (doc.has("power")) board.power = read_power(doc);
   board.log_directory = doc.string_or("log.directory", board.log_directory.string());
+  board.bench = doc.boolean_or("bench", false);
+  fw::app::FittedDevices fitted;
+  fitted.drop_weight = fitted.leak_detector = board.gpio_board.has_value();
+  fitted.power_monitor = board.power.has_value();
+  fitted.rudder = hal_linux::load_modbus_board(board.actuators_board).rudder.has_value();
+  board.vehicle = fw::app::read_vehicle_setup(doc, fitted);
+  const std::string law = doc.string_or("vehicle.heading_law", "compensated");
+  const auto heading_law = fw::app::heading_law_from_name(law);
+  if (!heading_law) doc.fail("vehicle.heading_law", "must be proportional, slocum or compensated");
+  board.mission_options.heading_law = *heading_law;
+  const std::string dr = doc.string_or("vehicle.dead_reckoning", board.vehicle.flight_model_dr ? "model" : "assumed");
+  if (dr != "assumed" && dr != "model") doc.fail("vehicle.dead_reckoning", "must be assumed or model");
+  if (dr == "model" && !board.vehicle.flight_model_dr) {
+    doc.fail("vehicle.dead_reckoning", "model needs vehicle.dr_dive_alpha_deg and vehicle.dr_climb_alpha_deg");
+  }
+  board.mission_options.flight_model_dr = dr == "model";
   doc.reject_unknown_keys();
   return board;
 }
