@@ -128,7 +128,8 @@ int main(int argc, char** argv) {
     if (!slocum_mission) {
       const auto mission = glider::config::TomlDocument::load(mission_path);
       config = glider::fw::read_flight_config(mission);
-      options.max_sim_time_s = mission.number_or("sil.max_sim_time_s", options.max_sim_time_s);
+      options.max_sim_time_s =
+          mission.number_or("sil.max_sim_time_s", options.max_sim_time_s, {1.0, 2.0 * 366.0 * 86400.0, "s"});
       mission.reject_unknown_keys();
     }
   } catch (const glider::config::ConfigError& error) {
