@@ -1,0 +1,235 @@
+# SPDX-License-Identifier: Apache-2.0
+"""One SIL flight: per-run vehicle/environment files, the glider-sil
+subprocess, and its result as a flat dictionary of metrics.
+
+Cards, campaigns and Slurm shards all fly through fly(): the real
+glider-sil binary, as a user's CI would run it. The metrics come from the
+summary glider-sil prints (parse_summary_text); the names below are the
+contract every other module uses (docs/campaigns.md lists them)."""
+
+import math
+import os
+import re
+import subprocess
+import tempfile
+import time
+import tomllib
+
+import tomli_w
+
+# Short, stable names of the firmware's abort causes (fw::to_string texts).
+ABORT_CAUSES = {
+    "overdepth": "overdepth",
+    "overtime": "overtime",
+    "depth sensor invalid or stale": "depth_sensor",
+    "attitude sensor invalid or stale": "attitude_sensor",
+    "actuator fault": "actuator_fault",
+    "leak detected": "leak",
+    "low battery (remaining charge)": "low_battery",
+    "stuck at the same depth": "same_depth",
+    "stalled": "stalled",
+    "waypoint too far": "waypoint_too_far",
+}
+
+# Parameters that are not a vehicle-file key: the environment's current as a
+# depth-uniform speed and direction (towards, degrees clockwise from north),
+# or a scale on the file's own current profile; `env.KEY` sets any other
+# environment key, `mission.KEY` a key of a TOML mission.
+CURRENT_KEYS = ("current.speed_m_s", "current.direction_deg", "current.scale")
+
+
+class RunError(Exception):
+    """A run that could not be set up (bad parameter, bad file)."""
+
+
+def _set_dotted(table, dotted, value, what):
+    parts = dotted.split(".")
+    node = table
+    for part in parts[:-1]:
+        child = node.setdefault(part, {})
+        if not isinstance(child, dict):
+            raise RunError(f"{what}: '{dotted}': '{part}' is not a table")
+        node = child
+    node[parts[-1]] = value
+
+
+def _load_toml(path):
+    try:
+        with open(path, "rb") as f:
+            return tomllib.load(f)
+    except (OSError, tomllib.TOMLDecodeError) as error:
+        raise RunError(f"{path}: {error}") from error
+
+
+def _apply_current(env, params, env_path):
+    speed = params.get("current.speed_m_s")
+    direction = params.get("current.direction_deg")
+    scale = params.get("current.scale")
+    if speed is None and direction is None and scale is None:
+        return
+    profile = env.setdefault("profile", {"depth_m": [0.0]})
+    depths = profile.get("depth_m", [0.0])
+    if speed is not None or direction is not None:
+        if speed is None or direction is None:
+            raise RunError("current.speed_m_s and current.direction_deg go together")
+        if not (speed >= 0.0 and math.isfinite(speed)):
+            raise RunError(f"current.speed_m_s = {speed}: must be >= 0")
+        east = speed * math.sin(math.radians(direction))
+        north = speed * math.cos(math.radians(direction))
+        profile["current_east_m_s"] = [east] * len(depths)
+        profile["current_north_m_s"] = [north] * len(depths)
+    if scale is not None:
+        for key in ("current_east_m_s", "current_north_m_s"):
+            if key in profile:
+                profile[key] = [scale * v for v in profile[key]]
+        if "current_east_m_s" not in profile and "current_north_m_s" not in profile:
+            raise RunError(f"current.scale: {env_path or 'still water'} has no current to scale")
+
+
+def write_run_files(setup, params, workdir):
+    """Writes the vehicle (and environment, mission) files of one run with
+    `params` applied; returns their paths (base paths when unchanged)."""
+    vehicle_params, env_params, mission_params = {}, {}, {}
+    for name, value in params.items():
+        if name in CURRENT_KEYS:
+            continue
+        if name.startswith("env."):
+            env_params[name[4:]] = value
+        elif name.startswith("mission."):
+            mission_params[name[8:]] = value
+        elif name.startswith("fault."):
+            continue  # fault times: handled by fault_arguments
+        else:
+            vehicle_params[name] = value
+    paths = {"vehicle": setup["vehicle"], "environment": setup.get("environment"), "mission": setup["mission"]}
+    if vehicle_params:
+        vehicle = _load_toml(setup["vehicle"])
+        for name, value in vehicle_params.items():
+            _set_dotted(vehicle, name, value, setup["vehicle"])
+        paths["vehicle"] = os.path.join(workdir, "vehicle.toml")
+        with open(paths["vehicle"], "wb") as f:
+            tomli_w.dump(vehicle, f)
+    if env_params or any(k in params for k in CURRENT_KEYS):
+        env = _load_toml(setup["environment"]) if setup.get("environment") else {}
+        if not env:  # still water at the vehicle's trim density, as glider-sil's default
+            trim = _load_toml(setup["vehicle"]).get("buoyancy", {}).get("trim_density_kg_m3", 1025.0)
+            env = {"profile": {"depth_m": [0.0], "density_kg_m3": [trim]}}
+        for name, value in env_params.items():
+            _set_dotted(env, name, value, setup.get("environment") or "environment")
+        _apply_current(env, params, setup.get("environment"))
+        paths["environment"] = os.path.join(workdir, "environment.toml")
+        with open(paths["environment"], "wb") as f:
+            tomli_w.dump(env, f)
+    if mission_params:
+        if not setup["mission"].endswith(".toml"):
+            raise RunError(f"mission.* parameters need a TOML mission, not {setup['mission']}")
+        mission = _load_toml(setup["mission"])
+        for name, value in mission_params.items():
+            _set_dotted(mission, name, value, setup["mission"])
+        paths["mission"] = os.path.join(workdir, "mission.toml")
+        with open(paths["mission"], "wb") as f:
+            tomli_w.dump(mission, f)
+    return paths
+
+
+def fault_arguments(faults, params):
+    """--fault NAME@TIMEs for each fault; `fault.NAME.at_s` in params moves it."""
+    args = []
+    for fault in faults:
+        at_s = params.get(f"fault.{fault['name']}.at_s", fault["at_s"])
+        args += ["--fault", f"{fault['name']}@{at_s!r}s"]
+    return args
+
+
+def command(sil_binary, setup, paths, seed, params):
+    cmd = [sil_binary, "--mission", paths["mission"], "--vehicle", paths["vehicle"], "--seed", str(seed)]
+    if paths.get("environment"):
+        cmd += ["--env", paths["environment"]]
+    for key, flag in (("max_sim_time_s", "--max-sim-time-s"), ("max_working_depth_m", "--max-working-depth-m"),
+                      ("legs", "--legs"), ("heading_law", "--heading-law"), ("dr", "--dr"),
+                      ("heading_deg", "--heading-deg")):
+        if setup.get(key) is not None:
+            cmd += [flag, str(setup[key])]
+    cmd += fault_arguments(setup.get("faults", []), params)
+    return cmd
+
+
+_NUMBER = r"([-+]?[0-9.]+(?:e[-+]?[0-9]+)?)"
+
+
+def parse_summary_text(text):
+    """The metrics from glider-sil's printed summary."""
+    m = {}
+    line = re.search(r"^  result  : (.*)$", text, re.M)
+    if not line:
+        raise RunError("glider-sil printed no result line")
+    result = line.group(1)
+    if result.startswith("ABORTED"):
+        m["result"] = "aborted"
+        a = re.match(r"ABORTED \((.*)\) at " + _NUMBER + " s", result)
+        m["abort.cause"] = ABORT_CAUSES.get(a.group(1), a.group(1))
+        m["abort.time_s"] = float(a.group(2))
+        s = re.search(r"at the surface " + _NUMBER + " s later", result)
+        m["abort.surfaced_after_s"] = float(s.group(1)) if s else math.inf
+    else:
+        m["result"] = "complete" if result.startswith("mission complete") else "time_limit"
+        m["abort.cause"] = "none"
+    yos = re.search(r"^  yos     : (\d+) flown \(inflections at (.*)\)$", text, re.M)
+    m["yos"] = int(yos.group(1))
+    depths = [float(x) for x in re.findall(_NUMBER, re.sub(r"(\d)-(\d)", r"\1 \2", yos.group(2)))]
+    # The deepest inflection (the summary JSON will give the deepest sample).
+    m["max_depth_m"] = max(depths) if depths else 0.0
+    errors = [float(x) for x in re.findall(r"max pitch error " + _NUMBER + " deg", text)]
+    m["pitch_error_deg"] = max(errors) if errors else 0.0
+    pitch = re.findall(r"^  (dives|climbs) +settled: pitch +" + _NUMBER + " deg, depth rate " + _NUMBER +
+                       r" m/s +\((\d+) samples", text, re.M)
+    for kind, deg, rate, samples in pitch:
+        m[f"{kind}.pitch_deg"] = float(deg)
+        m[f"{kind}.depth_rate_m_s"] = float(rate)
+        m[f"{kind}.samples"] = int(samples)
+    seg = re.search(r"^  segments       : (\d+); waypoints reached (\d+)", text, re.M)
+    m["segments"] = int(seg.group(1)) if seg else 1
+    m["waypoints.reached"] = int(seg.group(2)) if seg else 0
+    for n, (index, at, dist) in enumerate(
+            re.findall(r"waypoint (\d+) counted at +" + _NUMBER + " s, true distance +" + _NUMBER, text), 1):
+        m[f"waypoint.{n}.index"] = int(index)
+        m[f"waypoint.{n}.reached_s"] = float(at)
+        m[f"waypoint.{n}.distance_m"] = float(dist)
+    surfacings = re.findall(r"surfacing +(\d+) at +" + _NUMBER + r" s: DR error +" + _NUMBER, text)
+    for n, at, err in surfacings:
+        m[f"surfacing.{n}.time_s"] = float(at)
+        m[f"surfacing.{n}.dr_error_m"] = float(err)
+    many = re.search(r"\.\.\. (\d+) surfacings in all", text)
+    m["surfacings"] = int(many.group(1)) if many else len(surfacings)
+    dr = re.search(r"DR error       : " + _NUMBER + " m/km travelled .*worst " + _NUMBER + " m", text)
+    m["dr_error_m_per_km"] = float(dr.group(1)) if dr else 0.0
+    m["dr_error_m"] = float(dr.group(2)) if dr else 0.0
+    m["distance_km"] = float(re.search(r"distance       : " + _NUMBER + " km", text).group(1))
+    energy = re.search(r"energy         : " + _NUMBER + " kJ, " + _NUMBER + " Ah", text)
+    m["energy_kj"] = float(energy.group(1))
+    m["charge_ah"] = float(energy.group(2))
+    m["sim_time_s"] = float(re.search(r"simulated time : " + _NUMBER + " s", text).group(1))
+    return m
+
+
+def fly(sil_binary, setup, params, seed, timeout_s=3600.0):
+    """Flies one run; returns (metrics, wall_s, error text or "")."""
+    start = time.monotonic()
+    with tempfile.TemporaryDirectory(prefix="glider-run-") as workdir:
+        try:
+            paths = write_run_files(setup, params, workdir)
+        except RunError as error:
+            return {"result": "error"}, 0.0, str(error)
+        cmd = command(sil_binary, setup, paths, seed, params)
+        try:
+            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout_s, check=False)
+        except subprocess.TimeoutExpired:
+            return {"result": "error"}, time.monotonic() - start, f"glider-sil ran longer than {timeout_s} s"
+    wall_s = time.monotonic() - start
+    if proc.returncode not in (0, 2, 3):
+        why = proc.stderr.strip().replace(workdir + "/", "") or f"exit status {proc.returncode}"
+        return {"result": "error"}, wall_s, why
+    try:
+        return parse_summary_text(proc.stdout), wall_s, ""
+    except (RunError, AttributeError, ValueError) as error:
+        return {"result": "error"}, wall_s, f"cannot read glider-sil's summary: {error}"
