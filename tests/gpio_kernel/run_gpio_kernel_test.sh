@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Runs the GPIO driver's test program on a real Linux kernel: a qemu guest
-# (TCG) booting the installed Debian kernel with an initramfs of busybox,
+# (TCG) booting Debian's kernel (downloaded into the cache, not installed) with an initramfs of busybox,
 # configfs, the gpio-sim and irq_sim modules and the static test binary.
 #
 #   run_gpio_kernel_test.sh ARCH CACHE_DIR TEST_BINARY BOARD_TEMPLATE
 #
-# ARCH x86_64: the installed Debian kernel; aarch64: the same Debian kernel
-# version for arm64 (downloaded into the cache), qemu-system-aarch64 -M virt.
+# ARCH x86_64: Debian's amd64 kernel, qemu-system-x86_64; aarch64: the same
+# Debian kernel version for arm64, qemu-system-aarch64 -M virt.
 #
 # Debian builds its kernels without gpio-sim, so its source (and irq_sim's)
 # is taken from the linux-source tarball and built out of tree against the
-# installed headers, once per kernel version (cached in CACHE_DIR). One
+# downloaded headers, once per kernel version (cached in CACHE_DIR). One
 # change is needed: irq_to_desc() is not exported to modules, so irq_sim's
 # handle_simple_irq(irq_to_desc(n)) becomes generic_handle_irq(n).
 # Exit 0 only when the guest printed the test program's pass marker.
@@ -24,44 +24,62 @@ ARCH="$1" CACHE="$2" TEST_BINARY="$3" BOARD="$4"
 case "$ARCH" in x86_64|aarch64) ;; *) fail "no guest set up for $ARCH (x86_64, aarch64)" ;; esac
 BOOT_TIMEOUT_S="${GPIO_KERNEL_TIMEOUT_S:-240}"
 
-# The newest installed (amd64) kernel that has its headers (never a
-# hard-coded version); the arm64 guest runs the same Debian kernel ABI.
-HOST_KVER=""
-for image in $(ls -1 /boot/vmlinuz-* 2>/dev/null | sort -rV); do
-  candidate="${image#/boot/vmlinuz-}"
-  if [ -d "/lib/modules/$candidate/build" ]; then HOST_KVER="$candidate"; break; fi
-done
-[ -n "$HOST_KVER" ] || fail "no kernel image with headers: install linux-image-amd64 and linux-headers-amd64 (./glider installs them)"
-SOURCE_TARBALL="$(ls -1 /usr/src/linux-source-*.tar.xz 2>/dev/null | sort -rV | head -n 1 || true)"
+# Debian's current kernel (the version linux-image-amd64 points at), never a
+# hard-coded one. Nothing is installed on the host: the kernel image, its
+# headers, kbuild, the kernel source and busybox are downloaded with
+# `apt-get download` and unpacked with `dpkg-deb -x` into the cache, once
+# per kernel version. (A developer's /boot is none of this test's business.)
+if [ -n "${GPIO_KERNEL_VERSION:-}" ]; then
+  KBASE="$GPIO_KERNEL_VERSION"
+else
+  KBASE="$(apt-cache depends linux-image-amd64 2>/dev/null | sed -n 's/.*Depends: linux-image-\(.*\)-amd64$/\1/p' | head -n 1)"
+fi
+[ -n "$KBASE" ] || fail "apt-cache knows no linux-image-amd64 (run apt-get update), or set GPIO_KERNEL_VERSION=6.1.0-NN"
+KSERIES="${KBASE%%-*}"; KSERIES="${KSERIES%.*}"   # 6.1.0-56 -> 6.1
+if [ "$ARCH" = x86_64 ]; then DEBARCH=amd64; else DEBARCH=arm64; fi
+KVER="$KBASE-$DEBARCH"
+DEBS="$CACHE/$KVER/debs"
+ROOT="$DEBS/root"
 
+fetch() {  # fetch PACKAGE... : apt-get download into $DEBS (update the lists once if asked to)
+  (cd "$DEBS" && apt-get download "$@" >/dev/null 2>&1) && return 0
+  if [ "$(id -u)" -eq 0 ]; then apt-get update -qq >/dev/null 2>&1 || true; fi
+  (cd "$DEBS" && apt-get download "$@") || fail "apt-get download $* failed (apt lists, network, multiarch for :arm64?)"
+}
+if [ ! -f "$DEBS/unpacked" ]; then
+  rm -rf "$DEBS" && mkdir -p "$DEBS"
+  echo "downloading Debian's $KVER kernel, headers, kbuild, source and busybox into $DEBS (once)"
+  if [ "$ARCH" = x86_64 ]; then
+    fetch "linux-image-$KVER" "linux-headers-$KVER" busybox-static
+  else
+    fetch "linux-image-$KVER:arm64" "linux-headers-$KVER:arm64" busybox-static:arm64
+  fi
+  # Architecture-independent parts and the build machine's kbuild (Multi-Arch: foreign).
+  fetch "linux-headers-$KBASE-common" "linux-kbuild-$KSERIES" "linux-source-$KSERIES"
+  for deb in "$DEBS"/*.deb; do dpkg-deb -x "$deb" "$ROOT"; done
+  rm -f "$DEBS"/*.deb
+  touch "$DEBS/unpacked"
+fi
+KIMAGE="$ROOT/boot/vmlinuz-$KVER"
+KBUILD="$ROOT/usr/src/linux-headers-$KVER"
+# The headers' Makefile includes the common headers by absolute path, and its
+# scripts/tools links are relative to /usr/src: point all three into the cache.
+sed -i "s|^include /usr/src/|include $ROOT/usr/src/|" "$KBUILD/Makefile"
+ln -sfn "$ROOT/usr/lib/linux-kbuild-$KSERIES/scripts" "$KBUILD/scripts"
+ln -sfn "$ROOT/usr/lib/linux-kbuild-$KSERIES/tools" "$KBUILD/tools"
+for common_link in scripts tools; do
+  [ -L "$ROOT/usr/src/linux-headers-$KBASE-common/$common_link" ] &&
+    ln -sfn "$ROOT/usr/lib/linux-kbuild-$KSERIES/$common_link" "$ROOT/usr/src/linux-headers-$KBASE-common/$common_link"
+done
+SOURCE_TARBALL="$(ls -1 "$ROOT"/usr/src/linux-source-*.tar.xz 2>/dev/null | sort -rV | head -n 1 || true)"
+BUSYBOX="$ROOT/bin/busybox"  # busybox-static's: the guest has no C library
+MODULE_TREE="$ROOT/lib/modules/$KVER"
 if [ "$ARCH" = x86_64 ]; then
-  KVER="$HOST_KVER"
-  KIMAGE="/boot/vmlinuz-$KVER"
-  KBUILD="/lib/modules/$KVER/build"
   MAKE_ARGS=()
-  BUSYBOX=/bin/busybox  # busybox-static's: the guest has no C library
-  MODULE_TREE="/lib/modules/$KVER"
   QEMU=(qemu-system-x86_64 -accel tcg -m 512 -smp 1)
   CONSOLE=ttyS0
 else
-  # Debian's arm64 kernel, its headers (cross-building modules works with the
-  # build machine's linux-kbuild, Multi-Arch: foreign) and busybox: the
-  # packages are downloaded and unpacked into the cache, not installed.
-  KVER="${HOST_KVER%-amd64}-arm64"
-  DEBS="$CACHE/$KVER/debs"
-  if [ ! -f "$DEBS/root/boot/vmlinuz-$KVER" ]; then
-    mkdir -p "$DEBS" && rm -rf "$DEBS/root"
-    (cd "$DEBS" && apt-get download "linux-image-$KVER:arm64" "linux-headers-$KVER:arm64" busybox-static:arm64) ||
-      fail "apt-get download of the arm64 kernel, headers and busybox failed (dpkg --add-architecture arm64?)"
-    for deb in "$DEBS"/*.deb; do dpkg -x "$deb" "$DEBS/root"; done
-  fi
-  KIMAGE="$DEBS/root/boot/vmlinuz-$KVER"
-  KBUILD="$DEBS/root/usr/src/linux-headers-$KVER"
-  # Its scripts link is relative to /usr: point it at the build machine's kbuild.
-  ln -sfn "$(ls -d /usr/lib/linux-kbuild-*/scripts | sort -rV | head -n 1)" "$KBUILD/scripts"
   MAKE_ARGS=(ARCH=arm64 CROSS_COMPILE=aarch64-linux-gnu-)
-  BUSYBOX="$DEBS/root/bin/busybox"
-  MODULE_TREE="$DEBS/root/lib/modules/$KVER"
   QEMU=(qemu-system-aarch64 -M virt -cpu cortex-a72 -accel tcg -m 512 -smp 1)
   CONSOLE=ttyAMA0
 fi
@@ -73,7 +91,7 @@ CONFIGFS="$(find "$MODULE_TREE/kernel/fs/configfs" -name 'configfs.ko*' 2>/dev/n
 MODULES="$CACHE/$KVER/modules"
 mkdir -p "$MODULES"
 if [ ! -f "$MODULES/gpio-sim.ko" ] || [ ! -f "$MODULES/irq_sim.ko" ]; then
-  [ -n "$SOURCE_TARBALL" ] || fail "no /usr/src/linux-source-*.tar.xz (package linux-source)"
+  [ -n "$SOURCE_TARBALL" ] || fail "no linux-source-*.tar.xz in $ROOT/usr/src (package linux-source-$KSERIES)"
   echo "building gpio-sim and irq_sim for $KVER from $SOURCE_TARBALL (cached in $MODULES)"
   work="$CACHE/$KVER/src"
   rm -rf "$work" && mkdir -p "$work"

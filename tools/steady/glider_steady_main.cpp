@@ -2,13 +2,13 @@
 // glider-steady: steady glides of a vehicle file, forward (ballast and
 // battery -> glide) and inverse (glide path and net buoyancy -> ballast and
 // battery).
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 
+#include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -65,87 +65,77 @@ void print_text(const Report& r) {
   if (!r.within_limits) std::printf("  WARNING: %s\n", r.note.c_str());
 }
 
-int fail(bool json, const std::string& message) {
-  if (json) {
-    std::printf("%s\n", nlohmann::json{{"error", message}}.dump().c_str());
-  } else {
-    std::fprintf(stderr, "glider-steady: %s\n", message.c_str());
-  }
-  return 1;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Steady glides of a glider vehicle model (forward and inverse)"};
+  glider::cli::Tool tool("glider-steady", "Steady glides of a glider vehicle model (forward and inverse)");
+  CLI::App& app = tool.app();
   std::string vehicle_path;
   double ballast_cc = NAN, battpos_in = NAN, glide_path_deg = NAN, net_buoyancy_g = NAN;
   double depth_m = 100.0;
   double density = NAN;
   bool json = false;
-  app.add_option("--vehicle", vehicle_path, "vehicle parameter file (TOML)")->required()->check(CLI::ExistingFile);
+  tool.add_vehicle_option(vehicle_path);
   auto* ballast = app.add_option("--ballast-cc", ballast_cc, "pumped volume, cc (+ = more buoyant)");
   auto* battery = app.add_option("--battpos-in", battpos_in, "battery position, in (+ = forward)");
   auto* path = app.add_option("--glide-path-deg", glide_path_deg, "glide path angle magnitude, deg");
   auto* buoyancy = app.add_option("--net-buoyancy-g", net_buoyancy_g, "net buoyancy, g (+ heavy: descending)");
   app.add_option("--depth-m", depth_m, "depth of the glide (compressibility)")->capture_default_str();
   app.add_option("--density", density, "water density, kg/m^3 (default: the vehicle's trim density)");
-  app.add_flag("--json", json, "one JSON object on stdout");
+  tool.add_json_flag(json);
   ballast->needs(battery);
   battery->needs(ballast);
   path->needs(buoyancy);
   buoyancy->needs(path);
   ballast->excludes(path);
   path->excludes(ballast);
-  CLI11_PARSE(app, argc, argv);
-  const bool forward = !std::isnan(ballast_cc);
-  if (!forward && std::isnan(glide_path_deg)) {
-    return fail(json, "give either --ballast-cc and --battpos-in, or --glide-path-deg and --net-buoyancy-g");
-  }
-
-  glider::model::VehicleParams vehicle;
-  try {
-    vehicle = glider::model::load_vehicle_file(vehicle_path);
-  } catch (const glider::config::ConfigError& error) {
-    return fail(json, error.what());
-  }
-  if (std::isnan(density)) density = vehicle.trim_density_kg_m3;
-  const glider::model::GliderDynamics dynamics(vehicle, glider::model::still_water(density));
-
-  Report report;
-  report.vehicle = vehicle.name;
-  report.depth_m = depth_m;
-  report.density = density;
-  if (forward) {
-    report.mode = "forward: ballast and battery given";
-    glider::model::MassInputs masses;
-    masses.pumped_volume_m3 = glider::cc_to_m3(ballast_cc);
-    masses.battery_pos_m = glider::in_to_m(battpos_in);
-    const auto result = glider::model::solve_equilibrium(dynamics, masses, depth_m);
-    if (!result.glide) return fail(json, result.error);
-    report.glide = *result.glide;
-    report.ballast_cc = ballast_cc;
-    report.battpos_in = battpos_in;
-    const auto& v = vehicle;
-    if (masses.pumped_volume_m3 < v.ballast.volume_min_m3 || masses.pumped_volume_m3 > v.ballast.volume_max_m3 ||
-        masses.battery_pos_m < v.battery.travel_min_m || masses.battery_pos_m > v.battery.travel_max_m) {
-      report.within_limits = false;
-      report.note = "inputs outside the vehicle's pump range or slide travel";
+  return tool.run(argc, argv, [&] {
+    const bool forward = !std::isnan(ballast_cc);
+    if (!forward && std::isnan(glide_path_deg)) {
+      return tool.fail(glider::cli::kUsage,
+                       "give either --ballast-cc and --battpos-in, or --glide-path-deg and --net-buoyancy-g");
     }
-  } else {
-    report.mode = "inverse: glide path and net buoyancy given";
-    const auto result = glider::model::solve_trim(dynamics, std::abs(glide_path_deg), net_buoyancy_g / 1000.0, depth_m);
-    if (!result.trim) return fail(json, result.error);
-    report.glide = result.trim->glide;
-    report.ballast_cc = glider::m3_to_cc(result.trim->pumped_volume_m3);
-    report.battpos_in = glider::m_to_in(result.trim->battery_pos_m);
-    report.within_limits = result.trim->within_limits;
-    report.note = result.trim->note;
-  }
-  if (json) {
-    std::printf("%s\n", to_json(report).dump().c_str());
-  } else {
-    print_text(report);
-  }
-  return 0;
+
+    const glider::model::VehicleParams vehicle = glider::model::load_vehicle_file(vehicle_path);
+    if (std::isnan(density)) density = vehicle.trim_density_kg_m3;
+    const glider::model::GliderDynamics dynamics(vehicle, glider::model::still_water(density));
+
+    Report report;
+    report.vehicle = vehicle.name;
+    report.depth_m = depth_m;
+    report.density = density;
+    if (forward) {
+      report.mode = "forward: ballast and battery given";
+      glider::model::MassInputs masses;
+      masses.pumped_volume_m3 = glider::cc_to_m3(ballast_cc);
+      masses.battery_pos_m = glider::in_to_m(battpos_in);
+      const auto result = glider::model::solve_equilibrium(dynamics, masses, depth_m);
+      if (!result.glide) return tool.fail(glider::cli::kError, result.error);
+      report.glide = *result.glide;
+      report.ballast_cc = ballast_cc;
+      report.battpos_in = battpos_in;
+      const auto& v = vehicle;
+      if (masses.pumped_volume_m3 < v.ballast.volume_min_m3 || masses.pumped_volume_m3 > v.ballast.volume_max_m3 ||
+          masses.battery_pos_m < v.battery.travel_min_m || masses.battery_pos_m > v.battery.travel_max_m) {
+        report.within_limits = false;
+        report.note = "inputs outside the vehicle's pump range or slide travel";
+      }
+    } else {
+      report.mode = "inverse: glide path and net buoyancy given";
+      const auto result =
+          glider::model::solve_trim(dynamics, std::abs(glide_path_deg), net_buoyancy_g / 1000.0, depth_m);
+      if (!result.trim) return tool.fail(glider::cli::kError, result.error);
+      report.glide = result.trim->glide;
+      report.ballast_cc = glider::m3_to_cc(result.trim->pumped_volume_m3);
+      report.battpos_in = glider::m_to_in(result.trim->battery_pos_m);
+      report.within_limits = result.trim->within_limits;
+      report.note = result.trim->note;
+    }
+    if (json) {
+      std::printf("%s\n", to_json(report).dump().c_str());
+    } else {
+      print_text(report);
+    }
+    return static_cast<int>(glider::cli::kOk);
+  });
 }
