@@ -19,7 +19,6 @@ using namespace glider;
 
 namespace {
 
-
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
