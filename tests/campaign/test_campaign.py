@@ -155,16 +155,19 @@ class Cards(InTemporaryDirectory):
                     f'vehicle = "{ROOT}/boards/vehicles/slocum_we01.toml"\n{extra}\n[expect]\n{expect}\n')
         return path
 
+    def regress(self, *paths):
+        """./glider regress of the cards: (process, JUnit testsuite element)."""
+        junit = os.path.join(self.dir, "junit.xml")
+        return tool("regress", *paths, "--junit", junit), ET.parse(junit).getroot()
+
     def test_a_failing_expectation_fails_the_run_with_its_measured_value(self):
         good = self.card("good", 'result = "complete"\nyos = 3')
         bad = self.card("bad", 'result = "complete"\nenergy.max_kj = 0.5\nwaypoint.1.reached_before_s = 10')
-        junit = os.path.join(self.dir, "junit.xml")
-        proc = tool("regress", good, bad, "--junit", junit)
+        proc, suite = self.regress(good, bad)
         self.assertEqual(proc.returncode, 1)
         self.assertRegex(proc.stdout, r"bad +energy.max_kj = 0.5 +energy_kj = [0-9.]+ +FAIL")
         self.assertRegex(proc.stdout, r"bad +waypoint.1.reached_before_s = 10 +waypoint.1.reached_s: not reached +FAIL")
         self.assertRegex(proc.stdout, r"good +yos = 3 +yos = 3 +pass")
-        suite = ET.parse(junit).getroot()
         self.assertEqual((suite.get("tests"), suite.get("failures"), suite.get("errors")), ("5", "2", "0"))
         failure = suite.find(".//testcase[@name='energy.max_kj = 0.5']/failure")
         self.assertIn("energy_kj = ", failure.get("message"))
@@ -178,12 +181,11 @@ class Cards(InTemporaryDirectory):
     def test_a_bad_card_is_refused_with_file_and_key(self):
         typo = self.card("typo", "depth.maxm = 3")
         bad_result = self.card("result", 'result = "finished"')
-        junit = os.path.join(self.dir, "junit.xml")
-        proc = tool("regress", typo, bad_result, "--junit", junit)
+        proc, suite = self.regress(typo, bad_result)
         self.assertEqual(proc.returncode, 1)
         self.assertIn(f"{typo}: [expect] depth.maxm: unknown metric 'depth.maxm'", proc.stderr)
         self.assertIn("result = 'finished': allowed complete, aborted, stopped", proc.stderr)
-        self.assertEqual(ET.parse(junit).getroot().get("errors"), "2")
+        self.assertEqual(suite.get("errors"), "2")
 
 
 if __name__ == "__main__":

@@ -10,11 +10,11 @@ import tomllib
 
 # Metric names a card may expect (sil_run.parse_summary_text makes them).
 METRICS = {"result", "abort.cause", "abort.time_s", "abort.surfaced_after_s", "yos", "max_depth_m",
-           "pitch_error_deg", "dives.pitch_deg", "climbs.pitch_deg", "dives.depth_rate_m_s",
+           "pitch_error_deg", "pitch_error_rms_deg", "dives.pitch_deg", "climbs.pitch_deg", "dives.depth_rate_m_s",
            "climbs.depth_rate_m_s", "dives.samples", "climbs.samples", "segments", "waypoints.reached", "surfacings", "dr_error_m_per_km",
            "dr_error_m", "distance_km", "energy_kj", "charge_ah", "sim_time_s"}
 INDEXED_METRICS = re.compile(r"^(waypoint\.\d+\.(reached_s|distance_m|index)|surfacing\.\d+\.(time_s|dr_error_m))$")
-RESULTS = ("complete", "aborted", "time_limit")
+RESULTS = ("complete", "aborted", "stopped")  # stopped: by the run's time limit
 # The phrasing of some bounds, as (metric, bound).
 SUGAR = {"abort.surfaced_within_s": ("abort.surfaced_after_s", "max"), "depth.max_m": ("max_depth_m", "max"),
          "energy.max_kj": ("energy_kj", "max")}

@@ -149,7 +149,7 @@ def _markdown(manifest, done_shards, records, ranking, plots, missing):
         by_result.setdefault(r["metrics"].get("result", "error"), []).append(r["run"])
     passed = sum(1 for r in records if r["passed"])
     lines += ["## Outcome", "", "| result | runs | share | run ids |", "|---|---|---|---|"]
-    for result in ("complete", "aborted", "time_limit", "error"):
+    for result in ("complete", "aborted", "stopped", "error"):
         ids = by_result.get(result, [])
         if ids:
             lines.append(f"| {result} | {len(ids)} | {100.0 * len(ids) / runs_done:.1f} % | {_ids(ids)} |")

@@ -3,10 +3,13 @@
 subprocess, and its result as a flat dictionary of metrics.
 
 Cards, campaigns and Slurm shards all fly through fly(): the real
-glider-sil binary, as a user's CI would run it. The metrics come from the
-summary glider-sil prints (parse_summary_text); the names below are the
-contract every other module uses (docs/campaigns.md lists them)."""
+glider-sil binary, as a user's CI would run it. The metrics come from its
+--summary-json file (docs/sil-summary.md; metrics_from_summary), or, from a
+glider-sil without that option, from the summary it prints
+(parse_summary_text). The metric names are the contract every other module
+uses (docs/campaigns.md lists them)."""
 
+import json
 import math
 import os
 import re
@@ -26,7 +29,7 @@ ABORT_CAUSES = {
     "actuator fault": "actuator_fault",
     "leak detected": "leak",
     "low battery (remaining charge)": "low_battery",
-    "stuck at the same depth": "same_depth",
+    "stuck at the same depth": "samedepth",
     "stalled": "stalled",
     "waypoint too far": "waypoint_too_far",
 }
@@ -172,7 +175,7 @@ def parse_summary_text(text):
         s = re.search(r"at the surface " + _NUMBER + " s later", result)
         m["abort.surfaced_after_s"] = float(s.group(1)) if s else math.inf
     else:
-        m["result"] = "complete" if result.startswith("mission complete") else "time_limit"
+        m["result"] = "complete" if result.startswith("mission complete") else "stopped"
         m["abort.cause"] = "none"
     yos = re.search(r"^  yos     : (\d+) flown \(inflections at (.*)\)$", text, re.M)
     m["yos"] = int(yos.group(1))
@@ -202,14 +205,61 @@ def parse_summary_text(text):
     many = re.search(r"\.\.\. (\d+) surfacings in all", text)
     m["surfacings"] = int(many.group(1)) if many else len(surfacings)
     dr = re.search(r"DR error       : " + _NUMBER + " m/km travelled .*worst " + _NUMBER + " m", text)
-    m["dr_error_m_per_km"] = float(dr.group(1)) if dr else 0.0
-    m["dr_error_m"] = float(dr.group(2)) if dr else 0.0
+    if dr:
+        m["dr_error_m_per_km"] = float(dr.group(1))
+        m["dr_error_m"] = float(dr.group(2))
     m["distance_km"] = float(re.search(r"distance       : " + _NUMBER + " km", text).group(1))
     energy = re.search(r"energy         : " + _NUMBER + " kJ, " + _NUMBER + " Ah", text)
     m["energy_kj"] = float(energy.group(1))
     m["charge_ah"] = float(energy.group(2))
     m["sim_time_s"] = float(re.search(r"simulated time : " + _NUMBER + " s", text).group(1))
     return m
+
+
+def metrics_from_summary(j):
+    """The metrics from glider-sil's summary JSON (schema glider-sil-summary/1)."""
+    if j.get("schema") != "glider-sil-summary/1":
+        raise RunError(f"summary schema {j.get('schema')!r}, expected glider-sil-summary/1")
+    m = {"result": j["result"], "abort.cause": "none"}
+    if j["abort"]:
+        a = j["abort"]
+        m["abort.cause"] = a["cause"]
+        m["abort.time_s"] = a["time_s"]
+        m["abort.surfaced_after_s"] = math.inf if a["surfaced_after_s"] is None else a["surfaced_after_s"]
+    for key in ("yos", "max_depth_m", "segments", "energy_kj", "charge_ah", "distance_km", "sim_time_s"):
+        m[key] = j[key]
+    m["waypoints.reached"] = j["waypoints_reached"]
+    for n, w in enumerate(j["waypoints"], 1):
+        m[f"waypoint.{n}.reached_s"] = w["time_s"]
+        if "index" in w:
+            m[f"waypoint.{n}.index"] = w["index"]
+            m[f"waypoint.{n}.distance_m"] = w["true_distance_m"]
+    m["surfacings"] = len(j["surfacings"])
+    for n, s in enumerate(j["surfacings"], 1):
+        m[f"surfacing.{n}.time_s"] = s["time_s"]
+        m[f"surfacing.{n}.dr_error_m"] = s["dr_error_m"]
+    if j["dr_error_m_per_km"] is not None:
+        m["dr_error_m_per_km"] = j["dr_error_m_per_km"]
+        m["dr_error_m"] = j["dr_error_max_m"]
+    for kind in ("dives", "climbs"):
+        g = j[kind]
+        m[f"{kind}.pitch_deg"] = g["mean_pitch_deg"]
+        m[f"{kind}.depth_rate_m_s"] = g["mean_depth_rate_m_s"]
+        m[f"{kind}.samples"] = g["settled_samples"]
+    m["pitch_error_deg"] = max(j["dives"]["max_pitch_error_deg"], j["climbs"]["max_pitch_error_deg"])
+    m["pitch_error_rms_deg"] = max(j["dives"]["rms_pitch_error_deg"], j["climbs"]["rms_pitch_error_deg"])
+    return m
+
+
+_HAS_SUMMARY_JSON = {}
+
+
+def has_summary_json(sil_binary):
+    """Whether this glider-sil writes --summary-json (asked once per binary)."""
+    if sil_binary not in _HAS_SUMMARY_JSON:
+        proc = subprocess.run([sil_binary, "--help"], capture_output=True, text=True, timeout=60, check=False)
+        _HAS_SUMMARY_JSON[sil_binary] = "--summary-json" in proc.stdout
+    return _HAS_SUMMARY_JSON[sil_binary]
 
 
 def fly(sil_binary, setup, params, seed, timeout_s=3600.0):
@@ -221,15 +271,23 @@ def fly(sil_binary, setup, params, seed, timeout_s=3600.0):
         except RunError as error:
             return {"result": "error"}, 0.0, str(error)
         cmd = command(sil_binary, setup, paths, seed, params)
+        summary_path = os.path.join(workdir, "summary.json")
+        use_json = has_summary_json(sil_binary)
+        if use_json:
+            cmd += ["--quiet", "--summary-json", summary_path]
         try:
             proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout_s, check=False)
         except subprocess.TimeoutExpired:
             return {"result": "error"}, time.monotonic() - start, f"glider-sil ran longer than {timeout_s} s"
-    wall_s = time.monotonic() - start
-    if proc.returncode not in (0, 2, 3):
+        wall_s = time.monotonic() - start
+        try:
+            if use_json:
+                if os.path.exists(summary_path):  # written for every run that flew
+                    with open(summary_path) as f:
+                        return metrics_from_summary(json.load(f)), wall_s, ""
+            elif "  result  : " in proc.stdout:
+                return parse_summary_text(proc.stdout), wall_s, ""
+        except (RunError, AttributeError, KeyError, TypeError, ValueError) as error:
+            return {"result": "error"}, wall_s, f"cannot read glider-sil's summary: {error}"
         why = proc.stderr.strip().replace(workdir + "/", "") or f"exit status {proc.returncode}"
         return {"result": "error"}, wall_s, why
-    try:
-        return parse_summary_text(proc.stdout), wall_s, ""
-    except (RunError, AttributeError, ValueError) as error:
-        return {"result": "error"}, wall_s, f"cannot read glider-sil's summary: {error}"
