@@ -5,7 +5,7 @@ splitmix64's published output and pinned draws, run i independent of the
 sharding, cards that fail and cards that are refused (table, JUnit XML,
 exit status), bad parameters, partial results and the failure ranking.
 
-usage: test_campaign.py GLIDER_SIL [unittest arguments]"""
+usage: test_campaign.py GLIDER_SIL GLIDER_DIAGNOSE [unittest arguments]"""
 
 import json
 import os
@@ -25,11 +25,12 @@ import report  # noqa: E402
 import sampling  # noqa: E402
 
 SIL = None
+DIAGNOSE = None
 DEMO_SMALL = os.path.join(HERE, "demo_small.toml")
 
 
 def tool(*args):
-    return subprocess.run(["/usr/bin/python3", TOOL, "--sil", SIL, *args], capture_output=True, text=True,
+    return subprocess.run(["/usr/bin/python3", TOOL, "--sil", SIL, "--diagnose", DIAGNOSE, *args], capture_output=True, text=True,
                           timeout=600, check=False)
 
 
@@ -147,6 +148,21 @@ class Campaigns(InTemporaryDirectory):
         self.assertLess(ranking[1]["gain_bits"], 0.1)
 
 
+class Fleet(InTemporaryDirectory):
+    def test_two_deployments_of_one_glider_and_a_log_that_cannot_be_read(self):
+        real = os.path.join(ROOT, "tests", "data", "real")
+        logs = [os.path.join(real, f) for f in ("comet-2019-222-02-154.csv", "gliderflight-adcp.csv")]
+        out = os.path.join(self.dir, "fleet")
+        proc = tool("fleet", "run", *logs, "--vehicle", os.path.join(ROOT, "boards", "vehicles", "slocum_we01.toml"),
+                    "--out", out, "--shards", "2")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("| comet | 2 (1 failed) | drag_change x1 |", proc.stdout)
+        self.assertRegex(proc.stdout, r"\| comet \| comet-2019-222-02-154 \| [0-9]+ \| drag_change \| [0-9.]+ \| [0-9.]+ \|")
+        # gliderflight's file needs column renames (./glider diagnose-real gives them): reported, not dropped.
+        self.assertIn("| comet | gliderflight-adcp | | FAILED: glider-diagnose: ", proc.stdout)
+        self.assertTrue(os.path.exists(os.path.join(out, "report", "rms.png")))
+
+
 class Cards(InTemporaryDirectory):
     def card(self, name, expect, extra=""):
         path = os.path.join(self.dir, name + ".toml")
@@ -190,4 +206,5 @@ class Cards(InTemporaryDirectory):
 
 if __name__ == "__main__":
     SIL = os.path.abspath(sys.argv.pop(1))
+    DIAGNOSE = os.path.abspath(sys.argv.pop(1))
     unittest.main()

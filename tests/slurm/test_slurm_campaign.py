@@ -7,24 +7,30 @@ one running array task killed, `status` on the partial results, `submit
 byte with the same campaign run locally in a different number of shards.
 Exit 77 (CTest: skipped) where a cluster cannot be started, with the reason.
 
-usage: test_slurm_campaign.py GLIDER_SIL"""
+Then fleet diagnosis of two real logs as a 2-task array, compared with the
+same diagnosis run locally.
 
+usage: test_slurm_campaign.py GLIDER_SIL GLIDER_DIAGNOSE"""
+
+import json
 import os
 import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import single_node_cluster  # noqa: E402
 
-TOOL = os.path.join(HERE, "..", "..", "tools", "campaign", "glider_campaign.py")
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+TOOL = os.path.join(ROOT, "tools", "campaign", "glider_campaign.py")
+VEHICLE = os.path.join(ROOT, "boards", "vehicles", "slocum_we01.toml")
+LOGS = [os.path.join(ROOT, "tests", "data", "real", f"comet-2019-222-02-{n}.csv") for n in (154, 156)]
 CAMPAIGN = os.path.join(HERE, "box_small.toml")
 SHARDS = 3
 
 
-def tool(cluster, sil, *args, timeout=600):
-    proc = cluster.run(["/usr/bin/python3", TOOL, "--sil", sil, *args], check=False, timeout=timeout)
+def tool(cluster, binaries, *args, timeout=600):
+    proc = cluster.run(["/usr/bin/python3", TOOL, *binaries, *args], check=False, timeout=timeout)
     print(f"$ glider-campaign {' '.join(args)}\n{proc.stdout}{proc.stderr}", flush=True)
     if proc.returncode != 0:
         raise AssertionError(f"glider-campaign {args[0]} exited {proc.returncode}")
@@ -46,7 +52,33 @@ def shard_file(directory, shard):
     return os.path.join(directory, "shards", f"shard-{shard:05d}.json")
 
 
-def main(sil):
+def same_results(a_dir, b_dir, expected_lines):
+    with open(os.path.join(a_dir, "report", "results.jsonl"), "rb") as f:
+        a = f.read()
+    with open(os.path.join(b_dir, "report", "results.jsonl"), "rb") as f:
+        b = f.read()
+    lines = a.count(b"\n")
+    if lines != expected_lines or a != b:
+        raise AssertionError(f"{a_dir} ({lines} lines, {expected_lines} expected) differs from {b_dir}")
+    return len(a)
+
+
+def fleet_on_slurm(cluster, diagnose):
+    slurm_dir, local_dir = cluster.path("fleet-slurm"), cluster.path("fleet-local")
+    tool(cluster, diagnose, "fleet", "submit", *LOGS, "--vehicle", VEHICLE, "--out", slurm_dir, "--shards", "2")
+    wait_queue_empty(cluster, 300)
+    if "2/2 shards" not in tool(cluster, diagnose, "fleet", "status", slurm_dir):
+        raise AssertionError("fleet shards missing after the array job")
+    tool(cluster, diagnose, "fleet", "report", slurm_dir)
+    tool(cluster, diagnose, "fleet", "run", *LOGS, "--vehicle", VEHICLE, "--out", local_dir, "--shards", "1")
+    with open(os.path.join(slurm_dir, "report", "results.jsonl")) as f:
+        records = [json.loads(line) for line in f]
+    if any(r["error"] or r["cause"] != "drag_change" for r in records):
+        raise AssertionError("fleet: a log was not diagnosed (comet 2019: drag_change expected)")
+    return same_results(slurm_dir, local_dir, 2)
+
+
+def main(sil, diagnose):
     try:
         cluster = single_node_cluster.Cluster()
     except single_node_cluster.Unavailable as why:
@@ -89,21 +121,17 @@ def main(sil):
         tool(cluster, sil, "report", slurm_dir)
         local_dir = cluster.path("results-local")
         tool(cluster, sil, "run", CAMPAIGN, "--out", local_dir, "--shards", "2")
-        with open(os.path.join(slurm_dir, "report", "results.jsonl"), "rb") as f:
-            merged = f.read()
-        with open(os.path.join(local_dir, "report", "results.jsonl"), "rb") as f:
-            local = f.read()
-        runs = merged.count(b"\n")
-        if runs != 9 or merged != local:
-            raise AssertionError(f"merged Slurm result ({runs} runs) differs from the local run")
-        print(f"PASS: {runs} runs, Slurm (3 shards, one killed and resubmitted) == local (2 shards), "
-              f"{len(merged)} bytes identical")
+        size = same_results(slurm_dir, local_dir, 9)
+        print(f"campaign: 9 runs, Slurm (3 shards, one killed and resubmitted) == local (2 shards), "
+              f"{size} bytes identical", flush=True)
+        size = fleet_on_slurm(cluster, diagnose)
+        print(f"PASS: campaign as above; fleet diagnosis of 2 logs, Slurm (2 tasks) == local, {size} bytes identical")
         return 0
     finally:
-        subprocess.run(["scancel", "--name", "glider-box_small"], env=cluster.env, capture_output=True,
-                       timeout=30, check=False)
+        for name in ("glider-box_small", "glider-fleet"):
+            subprocess.run(["scancel", "--name", name], env=cluster.env, capture_output=True, timeout=30, check=False)
         cluster.stop()
 
 
 if __name__ == "__main__":
-    sys.exit(main(os.path.abspath(sys.argv[1])))
+    sys.exit(main(["--sil", os.path.abspath(sys.argv[1])], ["--diagnose", os.path.abspath(sys.argv[2])]))

@@ -62,8 +62,12 @@ def main(argv):
     p.add_argument("--vehicle", help="vehicle file for logs without one")
     p.add_argument("--shards", type=int)
     p.add_argument("--shard", type=int, default=int(os.environ.get("SLURM_ARRAY_TASK_ID", "-1")))
+    p.add_argument("--model", choices=["steady", "dynamic"], default="steady",
+                   help="glider-diagnose --model (steady: ~3 s a log, dynamic: ~20 s)")
     p.add_argument("--partition")
-    p.add_argument("--jobs", type=int, default=os.cpu_count())
+    p.add_argument("--jobs", type=int, default=int(os.environ.get("SLURM_CPUS_PER_TASK", os.cpu_count())))
+    p.add_argument("--cpus-per-task", type=int, default=1)
+    p.add_argument("--time", default="04:00:00", help="sbatch --time of one shard")
     p.add_argument("--resubmit", action="store_true")
     p.add_argument("--sbatch-arg", action="append", default=[])
 

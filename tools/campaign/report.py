@@ -6,7 +6,6 @@ parameter that best separates them from the passing runs; Markdown tables
 and gnuplot PNG plots in DIR/report. report/results.jsonl is the merged
 result, one line per run, identical wherever and however it was sharded."""
 
-import json
 import math
 import os
 import shutil
@@ -232,12 +231,7 @@ def _markdown(manifest, done_shards, records, ranking, plots, missing):
 
 
 def write_report(directory, manifest):
-    done = shards.read_shards(directory, manifest)
-    records = sorted((r for payload in done.values() for r in payload["records"]), key=lambda r: r["run"])
-    out = os.path.join(directory, "report")
-    os.makedirs(out, exist_ok=True)
-    shards.write_atomically(os.path.join(out, "results.jsonl"),
-                            "".join(json.dumps(r, sort_keys=True) + "\n" for r in records))
+    done, records, out = shards.merge(directory, manifest, "run")
     ranking = rank_parameters(records)
     plots = _plots(out, records, ranking) if records else []
     missing = slurm.array_spec(shards.missing_shards(directory, manifest))

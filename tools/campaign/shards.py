@@ -68,3 +68,15 @@ def read_shards(directory, manifest):
 
 def missing_shards(directory, manifest):
     return [s for s in range(manifest["shards"]) if not os.path.exists(shard_path(directory, s))]
+
+
+def merge(directory, manifest, key):
+    """The shards written so far, their records sorted by `key`, written to
+    DIR/report/results.jsonl (one JSON line per record: the merged result,
+    the same however the work was sharded); returns (shards, records, report dir)."""
+    done = read_shards(directory, manifest)
+    records = sorted((r for payload in done.values() for r in payload["records"]), key=lambda r: r[key])
+    out = os.path.join(directory, "report")
+    os.makedirs(out, exist_ok=True)
+    write_atomically(os.path.join(out, "results.jsonl"), "".join(json.dumps(r, sort_keys=True) + "\n" for r in records))
+    return done, records, out

@@ -80,7 +80,7 @@ def job_states(directory):
     return lines
 
 
-def write_script(directory, manifest, indices, args, number):
+def write_script(directory, manifest, indices, args, number, command):
     name = f"glider-{manifest['name']}"[:64]
     lines = ["#!/bin/bash", f"# {manifest['name']}: shards {array_spec(indices)} of {manifest['shards']}",
              f"#SBATCH --job-name={name}", f"#SBATCH --array={array_spec(indices)}",
@@ -89,7 +89,7 @@ def write_script(directory, manifest, indices, args, number):
     if args.partition:
         lines.append(f"#SBATCH --partition={args.partition}")
     lines += ["set -euo pipefail",
-              f"exec {shlex.quote(sys.executable)} {shlex.quote(TOOL)} shard {shlex.quote(directory)} "
+              f"exec {shlex.quote(sys.executable)} {shlex.quote(TOOL)} {' '.join(command)} {shlex.quote(directory)} "
               '--shard "$SLURM_ARRAY_TASK_ID" --jobs "${SLURM_CPUS_PER_TASK:-1}"']
     path = os.path.join(directory, "slurm", f"job-{number}.sbatch")
     with open(path, "w") as f:
@@ -97,7 +97,8 @@ def write_script(directory, manifest, indices, args, number):
     return path
 
 
-def submit(directory, manifest, args):
+def submit(directory, manifest, args, command=("shard",)):
+    """Submits the shards not written yet and not queued or running; command: the tool's subcommand a task runs."""
     if not shutil.which("sbatch"):
         raise SlurmError("sbatch not found: Slurm's client commands (Debian: slurm-client) are needed")
     os.makedirs(os.path.join(directory, "slurm"), exist_ok=True)
@@ -109,7 +110,7 @@ def submit(directory, manifest, args):
               f"({array_spec(active) or 'none'})")
         return 0
     submissions = _submissions(directory)
-    script = write_script(directory, manifest, todo, args, len(submissions))
+    script = write_script(directory, manifest, todo, args, len(submissions), command)
     cmd = ["sbatch", "--parsable", *args.sbatch_arg, script]
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=120, check=False)
     if proc.returncode != 0:
