@@ -19,6 +19,7 @@ import xml.etree.ElementTree as ET
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 TOOL = os.path.join(ROOT, "tools", "campaign", "glider_campaign.py")
+sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(TOOL))
 import campaign  # noqa: E402
 import report  # noqa: E402
@@ -117,7 +118,7 @@ class Campaigns(InTemporaryDirectory):
 
     def test_another_campaign_is_not_mixed_into_a_results_directory(self):
         out = os.path.join(self.dir, "mixed")
-        self.assertEqual(tool("run", DEMO_SMALL, "--out", out, "--runs", "0-1").returncode, 0)
+        self.assertEqual(tool("run", DEMO_SMALL, "--out", out, "--first", "2").returncode, 0)
         other = tool("run", DEMO_SMALL, "--out", out, "--shards", "2")
         self.assertEqual(other.returncode, 2)
         self.assertIn("holds results of another campaign or sharding", other.stderr)
@@ -130,7 +131,7 @@ class Campaigns(InTemporaryDirectory):
         with open(path, "w") as f:
             f.write(text)
         out = os.path.join(self.dir, "typo")
-        self.assertEqual(tool("run", path, "--out", out, "--runs", "0").returncode, 0)
+        self.assertEqual(tool("run", path, "--out", out, "--first", "1").returncode, 0)
         with open(os.path.join(out, "report", "results.jsonl")) as f:
             record = json.loads(f.readline())
         self.assertEqual(record["metrics"]["result"], "error")

@@ -73,29 +73,35 @@ def run_one(manifest, run):
     seed = sampling.run_seed(manifest["seed"], run)
     params = dict(setup["set"])
     params.update(sampling.parameters(manifest["vary"], manifest["seed"], run))
-    metrics, wall_s, error = sil_run.fly(manifest["sil"], setup, params, seed)
+    metrics, cost, error = sil_run.fly(manifest["sil"], setup, params, seed)
     rows = cards.check([tuple(e) for e in setup["expect"]], metrics, error)
     failed = [text for text, _, passed in rows if not passed]
     record = {"run": run, "seed": seed, "params": params, "metrics": metrics, "error": error,
               "passed": not failed, "failed": failed}
-    return record, wall_s
+    return record, cost
 
 
-def run_shard(directory, manifest, shard, jobs, on_run=None):
-    first, end = shards.shard_range(manifest, shard)
-    started = time.time()
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(run_one, manifest, run) for run in range(first, end)]
-        results = []
-        for future in futures:
-            results.append(future.result())
-            if on_run:
-                on_run()
+def write_shard(directory, manifest, shard, started, results):
     payload = {"shard": shard, "campaign_sha256": manifest["sha256"], "host": os.uname().nodename,
                "started": started, "wall_s": time.time() - started, "records": [r for r, _ in results],
-               "run_wall_s": [w for _, w in results]}
+               "run_wall_s": [c["wall_s"] for _, c in results], "run_cpu_s": [c["cpu_s"] for _, c in results]}
     shards.write_shard(directory, shard, payload)
     return payload
+
+
+def run_shards(directory, manifest, todo, jobs, on_run=None):
+    """Flies the shards' runs on `jobs` workers, all in one queue; each shard
+    is written as soon as its last run is done."""
+    started = time.time()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        queued = [(shard, [pool.submit(run_one, manifest, run) for run in range(*shards.shard_range(manifest, shard))])
+                  for shard in todo]
+        if on_run:
+            for _, futures in queued:
+                for future in futures:
+                    future.add_done_callback(lambda _: on_run())
+        return [write_shard(directory, manifest, shard, started, [f.result() for f in futures])
+                for shard, futures in queued]
 
 
 class Progress:
@@ -127,12 +133,10 @@ def default_out(manifest):
 
 def cmd_run(args):
     manifest = new_manifest(args.file, args.shards, args.sil)
-    if args.runs:
-        first, _, last = args.runs.partition("-")
-        first, last = int(first), int(last or first)
-        if not 0 <= first <= last < manifest["runs"]:
-            raise CampaignError(f"--runs {args.runs}: must lie in 0-{manifest['runs'] - 1}")
-        manifest["runs"] = last + 1  # the first shards hold runs 0..last, the rest of the campaign not flown
+    if args.first is not None:
+        if not 1 <= args.first <= manifest["runs"]:
+            raise CampaignError(f"--first {args.first}: must be 1..{manifest['runs']}")
+        manifest["runs"] = args.first  # runs 0..N-1, each as in the full campaign
         manifest["shards"] = min(manifest["shards"], manifest["runs"])
     directory = args.out or default_out(manifest)
     directory = _prepare(directory, manifest)
@@ -142,9 +146,7 @@ def cmd_run(args):
           f"{len(todo)} to fly ({total} runs) on {args.jobs} cores -> {directory}", file=sys.stderr)
     progress = Progress(total)
     started = time.monotonic()
-    # Shards one after the other, each on all cores: a shard is written as soon as it is complete.
-    for shard in todo:
-        run_shard(directory, manifest, shard, args.jobs, progress.tick)
+    run_shards(directory, manifest, todo, args.jobs, progress.tick)
     wall = time.monotonic() - started
     print(f"campaign: {total} runs in {wall:.1f} s wall on {args.jobs} cores", file=sys.stderr)
     return report.write_report(directory, manifest)
@@ -168,7 +170,7 @@ def cmd_shard(args):
     manifest = shards.read_manifest(args.dir)
     if not 0 <= args.shard < manifest["shards"]:
         raise CampaignError(f"--shard {args.shard}: must be 0..{manifest['shards'] - 1}")
-    payload = run_shard(args.dir, manifest, args.shard, max(1, args.jobs))
+    payload = run_shards(args.dir, manifest, [args.shard], max(1, args.jobs))[0]
     failed = sum(1 for r in payload["records"] if not r["passed"])
     print(f"shard {args.shard}: {len(payload['records'])} runs, {failed} failing, {payload['wall_s']:.1f} s")
     return 0

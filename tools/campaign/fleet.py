@@ -92,7 +92,8 @@ def run_shard(directory, manifest, shard, jobs):
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         results = list(pool.map(lambda log: diagnose_one(manifest, log), manifest["logs"][first:end]))
     payload = {"shard": shard, "campaign_sha256": manifest["sha256"], "host": os.uname().nodename, "started": started,
-               "wall_s": time.time() - started, "records": [r for r, _ in results], "run_wall_s": [w for _, w in results]}
+               "wall_s": time.time() - started, "records": [r for r, _ in results],
+               "run_wall_s": [w for _, w in results]}
     shards.write_shard(directory, shard, payload)
     return payload
 

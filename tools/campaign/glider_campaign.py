@@ -8,6 +8,7 @@ import argparse
 import os
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree (it may be read-only, or shared by Slurm nodes)
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import campaign  # noqa: E402
@@ -32,7 +33,7 @@ def main(argv):
     p.add_argument("--out", help="results directory (default: build/campaigns/NAME)")
     p.add_argument("--jobs", type=int, default=os.cpu_count())
     p.add_argument("--shards", type=int, help="result files to write (default: one per 50 runs)")
-    p.add_argument("--runs", help="only these runs, e.g. 0-9 (for a quick look)")
+    p.add_argument("--first", type=int, help="fly only runs 0..N-1 (a sample: run i is the same as in the full campaign)")
 
     p = sub.add_parser("submit", help="write and submit an sbatch --array job; --resubmit: the missing shards")
     p.add_argument("file", help="campaign file, or with --resubmit its results directory")

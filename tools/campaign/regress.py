@@ -23,8 +23,9 @@ def find_cards(arguments):
 
 
 def fly_card(sil_binary, card):
-    metrics, wall_s, error = sil_run.fly(sil_binary, card, dict(card["set"]), card["seed"])
-    return {"card": card, "rows": cards.check(card["expect"], metrics, error), "wall_s": wall_s, "error": error}
+    metrics, cost, error = sil_run.fly(sil_binary, card, dict(card["set"]), card["seed"])
+    return {"card": card, "rows": cards.check(card["expect"], metrics, error), "wall_s": cost["wall_s"],
+            "error": error}
 
 
 def write_junit(results, broken, path):

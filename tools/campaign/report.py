@@ -220,13 +220,16 @@ def _markdown(manifest, done_shards, records, ranking, plots, missing):
         if len(failing) > 50:
             lines.append(f"| ... | {len(failing) - 50} more in results.jsonl | |")
         lines.append("")
+    walls = [w for payload in done_shards.values() for w in payload["run_wall_s"]]
+    cpus = [c for payload in done_shards.values() for c in payload.get("run_cpu_s", [])]
+    if walls:
+        hosts = ", ".join(sorted({p["host"] for p in done_shards.values()}))
+        lines += ["## Cost", "",
+                  f"{len(walls)} runs: {sum(cpus):.1f} s of CPU (glider-sil's own user+system time: mean "
+                  f"{sum(cpus) / max(1, len(cpus)):.3f} s, max {max(cpus, default=0.0):.3f} s a run), "
+                  f"{sum(walls):.1f} s of run wall time (mean {sum(walls) / len(walls):.3f} s); shards on {hosts}.", ""]
     if plots:
         lines += ["## Plots", ""] + [f"![{caption}]({png})  \n{caption}" for png, caption in plots] + [""]
-    walls = [w for payload in done_shards.values() for w in payload["run_wall_s"]]
-    if walls:
-        lines += ["## Cost", "",
-                  f"{len(walls)} runs, {sum(walls):.1f} s of run wall time (mean {sum(walls) / len(walls):.3f} s, "
-                  f"max {max(walls):.3f} s per run); shards on {', '.join(sorted({p['host'] for p in done_shards.values()}))}.", ""]
     return lines
 
 

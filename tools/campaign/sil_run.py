@@ -15,6 +15,7 @@ import os
 import re
 import subprocess
 import tempfile
+import threading
 import time
 import tomllib
 
@@ -262,32 +263,50 @@ def has_summary_json(sil_binary):
     return _HAS_SUMMARY_JSON[sil_binary]
 
 
+def run_measured(cmd, workdir, timeout_s):
+    """Runs cmd with its output in files; returns (exit status or None on
+    timeout, stdout, stderr, CPU seconds of the process: wait4's rusage, the
+    cost of the run itself however loaded the machine is)."""
+    out_path, err_path = os.path.join(workdir, "stdout"), os.path.join(workdir, "stderr")
+    with open(out_path, "w") as out, open(err_path, "w") as err:
+        proc = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
+        timer = threading.Timer(timeout_s, proc.kill)
+        timer.start()
+        try:
+            _, status, usage = os.wait4(proc.pid, 0)
+        finally:
+            timer.cancel()
+    proc.returncode = os.waitstatus_to_exitcode(status)  # reaped here: Popen must not wait again
+    killed = proc.returncode == -9 and not timer.is_alive()
+    with open(out_path) as f_out, open(err_path) as f_err:
+        return (None if killed else proc.returncode), f_out.read(), f_err.read(), usage.ru_utime + usage.ru_stime
+
+
 def fly(sil_binary, setup, params, seed, timeout_s=3600.0):
-    """Flies one run; returns (metrics, wall_s, error text or "")."""
+    """Flies one run; returns (metrics, cost {wall_s, cpu_s}, error text or "")."""
     start = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="glider-run-") as workdir:
         try:
             paths = write_run_files(setup, params, workdir)
         except RunError as error:
-            return {"result": "error"}, 0.0, str(error)
+            return {"result": "error"}, {"wall_s": 0.0, "cpu_s": 0.0}, str(error)
         cmd = command(sil_binary, setup, paths, seed, params)
         summary_path = os.path.join(workdir, "summary.json")
         use_json = has_summary_json(sil_binary)
         if use_json:
             cmd += ["--quiet", "--summary-json", summary_path]
-        try:
-            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout_s, check=False)
-        except subprocess.TimeoutExpired:
-            return {"result": "error"}, time.monotonic() - start, f"glider-sil ran longer than {timeout_s} s"
-        wall_s = time.monotonic() - start
+        status, stdout, stderr, cpu_s = run_measured(cmd, workdir, timeout_s)
+        cost = {"wall_s": time.monotonic() - start, "cpu_s": cpu_s}
+        if status is None:
+            return {"result": "error"}, cost, f"glider-sil ran longer than {timeout_s} s"
         try:
             if use_json:
                 if os.path.exists(summary_path):  # written for every run that flew
                     with open(summary_path) as f:
-                        return metrics_from_summary(json.load(f)), wall_s, ""
-            elif "  result  : " in proc.stdout:
-                return parse_summary_text(proc.stdout), wall_s, ""
+                        return metrics_from_summary(json.load(f)), cost, ""
+            elif "  result  : " in stdout:
+                return parse_summary_text(stdout), cost, ""
         except (RunError, AttributeError, KeyError, TypeError, ValueError) as error:
-            return {"result": "error"}, wall_s, f"cannot read glider-sil's summary: {error}"
-        why = proc.stderr.strip().replace(workdir + "/", "") or f"exit status {proc.returncode}"
-        return {"result": "error"}, wall_s, why
+            return {"result": "error"}, cost, f"cannot read glider-sil's summary: {error}"
+        why = stderr.strip().replace(workdir + "/", "") or f"exit status {status}"
+        return {"result": "error"}, cost, why
