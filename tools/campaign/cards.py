@@ -3,6 +3,7 @@
 faults, seed and expectations (docs/campaigns.md). load_card() reads and
 checks one; check() compares a run's metrics with its expectations."""
 
+import json
 import math
 import os
 import re
@@ -46,7 +47,7 @@ def parse_expectations(expect, where):
     """[expect] as a list of (text, metric, bound, value); bound is min, max or equals."""
     out = []
     for path, value in _flatten(expect):
-        text = f"{path} = {value!r}" if isinstance(value, str) else f"{path} = {value}"
+        text = f"{path} = {json.dumps(value)}" if isinstance(value, str) else f"{path} = {value}"  # as in TOML
         if path in SUGAR:
             metric, bound = SUGAR[path]
         elif WAYPOINT_BEFORE.match(path):
