@@ -24,6 +24,7 @@ sys.path.insert(0, os.path.dirname(TOOL))
 import campaign  # noqa: E402
 import report  # noqa: E402
 import sampling  # noqa: E402
+import sil_run  # noqa: E402
 
 SIL = None
 DIAGNOSE = None
@@ -70,6 +71,32 @@ class Generator(unittest.TestCase):
             sampling.check_spec("hydrodynamics.cd0", {"distribution": "uniform", "min": 0.3, "max": 0.2})
         with self.assertRaisesRegex(sampling.SpecError, "x.*allowed uniform, normal"):
             sampling.check_spec("x", {"distribution": "lognormal", "mean": 1})
+
+
+class SummaryJson(unittest.TestCase):
+    def test_metrics_from_the_summary_schema(self):
+        # docs/sil-summary.md (glider-sil-summary/1): an aborted waypoint run.
+        glide = {"settled_samples": 400, "mean_pitch_deg": -26.0, "mean_depth_rate_m_s": 0.23, "pitch_error_samples": 400,
+                 "max_pitch_error_deg": 0.6, "rms_pitch_error_deg": 0.2}
+        summary = {"schema": "glider-sil-summary/1", "result": "aborted", "stop_reason": None,
+                   "abort": {"cause": "leak", "cause_text": "leak detected", "time_s": 600.0, "surfaced_after_s": None,
+                             "firmware_knows_surfaced": False, "drop_weight_released": False},
+                   "yos": 2, "max_depth_m": 41.5, "segments": 2, "waypoint_list_length": 4, "waypoint_radius_m": 150.0,
+                   "waypoints_reached": 1, "waypoints": [{"reached": 1, "time_s": 420.0, "index": 0,
+                                                          "true_distance_m": 152.0}],
+                   "surfacings": [{"time_s": 300.0, "dr_error_m": 12.0, "dr_distance_m": 700.0, "dr_error_m_per_km": 17.1,
+                                   "water_vx_m_s": 0.1, "water_vy_m_s": 0.0}],
+                   "dr_error_m_per_km": 17.1, "dr_error_max_m": 12.0, "dives": glide, "climbs": dict(glide, max_pitch_error_deg=1.5),
+                   "energy_kj": 3.2, "charge_ah": 0.06, "distance_km": 0.5, "sim_time_s": 700.0, "wall_time_s": 0.01,
+                   "cycles": 700, "loop_overruns": 0, "log_rows": 0, "log_rows_lost": 0}
+        m = sil_run.metrics_from_summary(summary)
+        self.assertEqual((m["result"], m["abort.cause"], m["abort.time_s"]), ("aborted", "leak", 600.0))
+        self.assertEqual(m["abort.surfaced_after_s"], float("inf"))  # never surfaced: fails any surfaced_within_s
+        self.assertEqual((m["waypoint.1.reached_s"], m["waypoint.1.distance_m"], m["surfacing.1.dr_error_m"]),
+                         (420.0, 152.0, 12.0))
+        self.assertEqual((m["pitch_error_deg"], m["dives.samples"], m["max_depth_m"]), (1.5, 400, 41.5))
+        with self.assertRaisesRegex(sil_run.RunError, "schema"):
+            sil_run.metrics_from_summary(dict(summary, schema="glider-sil-summary/2"))
 
 
 class InTemporaryDirectory(unittest.TestCase):
