@@ -20,8 +20,6 @@ using namespace glider;
 
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -56,17 +54,7 @@ TEST(DemoMission, CompletesThreeYosBetween5And50m) {
   LONGS_EQUAL(0, r.executive.overruns);
 }
 
-TEST(DemoMission, GlidesSettleAtTheCommandedPitch) {
-  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
-  CHECK(r.stats.dives().samples > 300);
-  CHECK(r.stats.climbs().samples > 300);
-  CHECK(r.stats.dives().max_pitch_error_rad <= 2.0 * kDeg);
-  CHECK(r.stats.climbs().max_pitch_error_rad <= 2.0 * kDeg);
-  DOUBLES_EQUAL(config.mission.dive_pitch_rad, r.stats.dives().mean_pitch_rad(), 0.5 * kDeg);
-  DOUBLES_EQUAL(config.mission.climb_pitch_rad, r.stats.climbs().mean_pitch_rad(), 0.5 * kDeg);
-  CHECK(r.stats.dives().mean_depth_rate_m_s() > 0.1);
-  CHECK(r.stats.climbs().mean_depth_rate_m_s() < -0.1);
-}
+// The settled glides' pitch: the flight test card tests/cards/demo_glides.toml (./glider regress).
 
 TEST(DemoMission, TwoRunsWriteByteIdenticalLogs) {
   // Water with a CTD, so its noise is in the log too.
