@@ -98,7 +98,7 @@ TEST(DemoMission, LogFollowsTheFlightLogContract) {
     saw_vehicle_name |= line == "# vehicle.name: slocum_we01";
   }
   CHECK_TRUE(saw_vehicle_name);
-  STRCMP_EQUAL(sil::CsvFlightLog::header(), line.c_str());
+  STRCMP_EQUAL(sil::CsvFlightLog::header().c_str(), line.c_str());
   double last_time = -1.0;
   std::uint64_t rows = 0;
   while (std::getline(in, line)) {
