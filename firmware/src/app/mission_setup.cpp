@@ -57,8 +57,8 @@ void load_toml(const std::filesystem::path& path, const FlightSoftwareConfig& ba
   try {
     const auto doc = config::TomlDocument::load(path);
     FlightSoftwareConfig config = read_flight_config(doc);
-    out.sil_max_sim_time_s = doc.number_or("sil.max_sim_time_s", 0.0);
-    if (!(out.sil_max_sim_time_s >= 0.0)) doc.fail("sil.max_sim_time_s", "must be >= 0");
+    // 0: not given (the SIL's default); at most two years of simulated flight.
+    out.sil_max_sim_time_s = doc.number_or("sil.max_sim_time_s", 0.0, {0.0, 2.0 * 366.0 * 86400.0, "s"});
     doc.reject_unknown_keys();
     config.heading = base.heading;
     config.dead_reckoning = base.dead_reckoning;

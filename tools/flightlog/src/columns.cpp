@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "glider/hal/log_record.hpp"
+#include "glider/units.hpp"
 
 namespace glider::flightlog {
 namespace {
@@ -37,7 +38,7 @@ std::optional<DepthSeries> depth_series(const FlightLog& log) {
   if (const Column* depth = log.find("m_depth")) return DepthSeries{*depth, "m_depth"};
   if (const Column* pressure = log.find("sci_water_pressure")) {
     DepthSeries series{*pressure, "sci_water_pressure"};
-    for (double& value : series.depth_m) value *= kMetresPerBar;  // NaN stays NaN
+    for (double& value : series.depth_m) value = bar_to_approx_depth_m(value);  // NaN stays NaN
     return series;
   }
   return std::nullopt;

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "glider/config/value_limits.hpp"
+
 namespace glider::config {
 
 // "path:line:column: problem" (line/column omitted when not known).
@@ -38,6 +40,14 @@ class TomlDocument {
   std::int64_t integer_or(std::string_view dotted_key, std::int64_t fallback) const;
   // An array of numbers (integers accepted); empty if the key is absent.
   std::vector<double> numbers_or_empty(std::string_view dotted_key) const;
+  // The same, refused with file:line:column, key, value and range unless
+  // finite and inside `range` (value_limits.hpp). Every number the vehicle
+  // or a tool acts on is read through these.
+  double number(std::string_view dotted_key, const Range& range) const;
+  double number_or(std::string_view dotted_key, double fallback, const Range& range) const;
+  std::int64_t integer(std::string_view dotted_key, std::int64_t min, std::int64_t max) const;
+  std::int64_t integer_or(std::string_view dotted_key, std::int64_t fallback, std::int64_t min, std::int64_t max) const;
+  std::vector<double> numbers_or_empty(std::string_view dotted_key, const Range& range) const;
   bool boolean_or(std::string_view dotted_key, bool fallback) const;
   std::string string(std::string_view dotted_key) const;
   std::string string_or(std::string_view dotted_key, std::string fallback) const;
@@ -59,6 +69,7 @@ class TomlDocument {
  private:
   struct Impl;
   TomlDocument(std::unique_ptr<Impl> impl, std::string source);
+  double raw_number(std::string_view dotted_key) const;  // any double, NaN included
   std::unique_ptr<Impl> impl_;
   std::string source_;
   mutable std::set<std::string, std::less<>> used_;
