@@ -83,6 +83,7 @@ VehicleParams read(const TomlDocument& doc) {
   visit_numbers(v, [&doc](const char* key, double& field, Need need, const config::Range& range) {
     field = need == Need::kRequired ? doc.number(key, range) : doc.number_or(key, field, range);
   });
+  doc.leave_table("fitted");  // the devices fitted: the firmware's (fw::app::read_fitted_devices)
   doc.reject_unknown_keys();
   const std::string problem = validate(v);
   if (!problem.empty()) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/config/toml_document.hpp"
 
+#include <algorithm>
+
 #include <toml++/toml.h>
 #include <cmath>
 #include <limits>
@@ -202,11 +204,15 @@ std::string TomlDocument::string_or(std::string_view dotted_key, std::string fal
   return has(dotted_key) ? string(dotted_key) : std::move(fallback);
 }
 
+void TomlDocument::leave_table(std::string_view table) const { left_tables_.emplace_back(std::string(table) + "."); }
+
 void TomlDocument::reject_unknown_keys() const {
   std::vector<std::pair<std::string, toml::source_region>> leaves;
   collect_leaves(impl_->table, "", leaves);
   for (const auto& [name, region] : leaves) {
-    if (used_.find(name) == used_.end()) {
+    const bool left = std::any_of(left_tables_.begin(), left_tables_.end(),
+                                  [&name](const std::string& prefix) { return name.starts_with(prefix); });
+    if (!left && used_.find(name) == used_.end()) {
       throw ConfigError(location(source_, region) + ": unknown key '" + name + "'");
     }
   }

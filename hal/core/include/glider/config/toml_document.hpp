@@ -55,6 +55,10 @@ class TomlDocument {
   // Every leaf key of the document that no accessor has asked for is a typo
   // or an unsupported setting: report the first one with its line.
   void reject_unknown_keys() const;
+  // Keys under `table.` belong to another reader of the same file (e.g. the
+  // [fitted] table of a vehicle file, read by the firmware): reject_unknown_keys()
+  // leaves them to it.
+  void leave_table(std::string_view table) const;
 
   // "file:line:col" of the key's value (the file alone when the key is absent).
   std::string where(std::string_view dotted_key) const;
@@ -69,6 +73,7 @@ class TomlDocument {
   std::unique_ptr<Impl> impl_;
   std::string source_;
   mutable std::set<std::string, std::less<>> used_;
+  mutable std::vector<std::string> left_tables_;
 };
 
 }  // namespace glider::config
