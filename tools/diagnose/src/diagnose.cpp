@@ -224,6 +224,21 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   return result;
 }
 
+// fit(), announced first to options.progress (one call per model fit: the
+// unit of diagnose's cost, seconds each on a long log).
+FitResult fit_reported(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
+                       std::span<const std::size_t> heldout, const DiagnoseOptions& options) {
+  if (options.progress) {
+    std::string what = candidate.ctd_density ? "ctd_density" : "";
+    for (Effect e : candidate.fitted) {
+      if (!what.empty()) what.push_back('+');
+      what.append(info(e).id);
+    }
+    options.progress(what.empty() ? "nominal" : what);
+  }
+  return fit(set, candidate, train, heldout);
+}
+
 Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx) {
   Rms out;
   double s = 0.0;
@@ -394,7 +409,7 @@ void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
     std::optional<std::pair<Effect, FitResult>> weakest;
     for (const Finding& finding : d.findings) {
       const Effect e = finding.effect;
-      FitResult reduced = fit(set, without(current, e), train, heldout);
+      FitResult reduced = fit_reported(set, without(current, e), train, heldout, options);
       worth.emplace_back(e, reduced.heldout_rms);
       // The CTD's density is measured, not fitted: once it has earned its
       // way in it stays (a fitted effect of the same shape - a mean vertical
@@ -428,8 +443,8 @@ void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
     } else {
       cumulative.fitted.push_back(finding.effect);
     }
-    const double rms =
-        k + 1 == d.findings.size() ? current_fit.heldout_rms : fit(set, cumulative, train, heldout).heldout_rms;
+    const double rms = k + 1 == d.findings.size() ? current_fit.heldout_rms
+                                                  : fit_reported(set, cumulative, train, heldout, options).heldout_rms;
     finding.heldout_rms_m_s = rms;
     finding.gain = 1.0 - rms / d.baseline.heldout_rms_m_s;
   }
@@ -561,7 +576,7 @@ void fit_requested(const SampleSet& set, const Split& s, const DiagnoseOptions& 
       current.fitted.push_back(e);
     }
   }
-  current_fit = fit(set, current, s.train, s.heldout);
+  current_fit = fit_reported(set, current, s.train, s.heldout, options);
   for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
 }
 
@@ -588,7 +603,7 @@ void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions&
       } else {
         trial.fitted.push_back(remaining[c]);
       }
-      FitResult f = fit(set, trial, s.train, s.heldout);
+      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
       if (!best || f.heldout_rms < best->second.heldout_rms) {
         best = std::make_pair(c, f);
         best_candidate = trial;
@@ -691,7 +706,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   const std::vector<Effect> pool = candidate_pool(obs, dynamic);
   for (Effect e : pool) d.candidates_tried.emplace_back(info(e).id);
   Candidate current;
-  FitResult current_fit = fit(set, current, s.train, s.heldout);
+  FitResult current_fit = fit_reported(set, current, s.train, s.heldout, options);
   if (options.fit_only.empty()) {
     forward_select(set, s, options, pool, current, current_fit, d);
     backward_and_rank(set, s.train, s.heldout, options, current, current_fit, d);
