@@ -29,10 +29,11 @@ std::string printable(std::string_view s) {
 // The next line at `pos` (without its newline); `pos` moves past it.
 std::string_view next_line(std::string_view bytes, std::size_t& pos, const std::string& source, const char* what) {
   const std::size_t end = bytes.find('\n', pos);
-  if (end == std::string_view::npos || end - pos > kMaxLine) {
-    throw SlocumError(source, pos,
-                      std::string("no end of line within ") + std::to_string(kMaxLine) + " bytes in the " + what +
-                          (pos >= bytes.size() ? " (end of file)" : ""));
+  if (end == std::string_view::npos) {
+    throw SlocumError(source, pos, std::string("file ends inside the ") + what + " (truncated)");
+  }
+  if (end - pos > kMaxLine) {
+    throw SlocumError(source, pos, "no end of line within " + std::to_string(kMaxLine) + " bytes in the " + what);
   }
   const std::string_view line = bytes.substr(pos, end - pos);
   pos = end + 1;

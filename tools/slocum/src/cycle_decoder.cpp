@@ -236,9 +236,10 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
   }
   for (const auto& [i, record] : non_finite) {
     std::string value = std::isnan(record.first_value) ? "nan" : (record.first_value > 0 ? "inf" : "-inf");
-    out.warnings.push_back({source, record.first_offset,
-                            sensors[i].name + ": " + std::to_string(record.count) +
-                                " non-finite values (first: " + value + ", here), kept as stored"});
+    out.warnings.push_back(
+        {source, record.first_offset,
+         sensors[i].name + ": " + std::to_string(record.count) + " non-finite values (first: " + value + ", here)",
+         sensors[i].name});
   }
   return out;
 }
