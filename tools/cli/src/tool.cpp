@@ -25,7 +25,9 @@ std::string boards_dir() {
   return "/usr/share/glider/boards";
 }
 
-std::string default_vehicle_path() { return (std::filesystem::path(boards_dir()) / "vehicles/slocum_we01.toml").string(); }
+std::string default_vehicle_path() {
+  return (std::filesystem::path(boards_dir()) / "vehicles/slocum_we01.toml").string();
+}
 
 Tool::Tool(std::string name, const std::string& description) : name_(std::move(name)), app_(description, name_) {}
 

@@ -284,6 +284,10 @@ int main(int argc, char** argv) {
     std::vector<glider::slocum::Warning> warnings;
     const glider::flightlog::FlightLog log = glider::slocum::load_flight_log(log_source, read_options, &warnings);
     for (const auto& w : warnings) std::fprintf(stderr, "glider-diagnose: warning: %s\n", w.text().c_str());
+    // A log that did not end cleanly is still diagnosed, but the user is told.
+    if (!log.end().complete()) {
+      std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());
+    }
     glider::model::VehicleParams vehicle;
     std::string vehicle_source;
     const auto metadata = log.vehicle_metadata();

@@ -137,6 +137,7 @@ int main(int argc, char** argv) {
     for (const auto& w : warnings) std::fprintf(stderr, "glider-log-info: warning: %s\n", w.text().c_str());
     std::printf("log      : %s\n", log.source().c_str());
     std::printf("rows     : %zu\n", log.rows());
+    std::printf("end      : %s\n", log.end().describe(log.rows()).c_str());
     print_time(log);
     print_phases(log);
     print_columns(log);

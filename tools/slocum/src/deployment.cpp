@@ -268,8 +268,20 @@ Deployment read_deployment(const std::vector<fs::path>& paths, const DeploymentO
        "empty; sci_* from the science files interpolated onto the flight time between samples < " +
            std::to_string(static_cast<int>(options.science_max_gap_s)) + " s apart"},
       {"units", unit_line}};
+  // The binaries' own end marker stands for the CSV's end trailer: every
+  // file read to its end (none skipped or cut) is a complete log.
+  const bool all_complete =
+      read.size() == paths.size() &&
+      std::all_of(flight.begin(), flight.end(), [](const BinaryFile& f) { return f.complete(); }) &&
+      std::all_of(science.begin(), science.end(), [](const BinaryFile& f) { return f.complete(); });
   Deployment out{flightlog::FlightLog(source, std::move(metadata), std::move(names), std::move(columns), time_slot),
                  std::move(units), std::move(bytes), std::move(read), std::move(warnings)};
+  if (all_complete) {
+    flightlog::LogEnd end;
+    end.state = flightlog::LogEnd::State::kComplete;
+    end.trailer_rows = out.log.rows();
+    out.log.set_end(end);
+  }
   return out;
 }
 
