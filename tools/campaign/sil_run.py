@@ -270,16 +270,17 @@ def run_measured(cmd, workdir, timeout_s):
     out_path, err_path = os.path.join(workdir, "stdout"), os.path.join(workdir, "stderr")
     with open(out_path, "w") as out, open(err_path, "w") as err:
         proc = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
-        timer = threading.Timer(timeout_s, proc.kill)
+        timed_out = threading.Event()
+        timer = threading.Timer(timeout_s, lambda: (timed_out.set(), proc.kill()))
         timer.start()
         try:
             _, status, usage = os.wait4(proc.pid, 0)
         finally:
             timer.cancel()
     proc.returncode = os.waitstatus_to_exitcode(status)  # reaped here: Popen must not wait again
-    killed = proc.returncode == -9 and not timer.is_alive()
     with open(out_path) as f_out, open(err_path) as f_err:
-        return (None if killed else proc.returncode), f_out.read(), f_err.read(), usage.ru_utime + usage.ru_stime
+        code = None if timed_out.is_set() else proc.returncode
+        return code, f_out.read(), f_err.read(), usage.ru_utime + usage.ru_stime
 
 
 def fly(sil_binary, setup, params, seed, timeout_s=3600.0):
