@@ -50,6 +50,18 @@ bool apply_fault(const std::string& name, FaultInjection& f) {
   return true;
 }
 
+std::optional<double> parse_fault_time(std::string time) {
+  double scale = 1.0;
+  if (!time.empty() && (time.back() == 's' || time.back() == 'm' || time.back() == 'h')) {
+    scale = time.back() == 'h' ? 3600.0 : time.back() == 'm' ? 60.0 : 1.0;
+    time.pop_back();
+  }
+  char* end = nullptr;
+  const double at_s = std::strtod(time.c_str(), &end);
+  if (time.empty() || end != time.c_str() + time.size() || !(at_s >= 0.0)) return std::nullopt;
+  return at_s * scale;
+}
+
 std::optional<ScheduledFault> parse_fault(const std::string& text, std::string& error) {
   const auto at = text.find('@');
   const std::string name = text.substr(0, at);
@@ -62,19 +74,12 @@ std::optional<ScheduledFault> parse_fault(const std::string& text, std::string& 
   }
   double at_s = 0.0;
   if (at != std::string::npos) {
-    std::string time = text.substr(at + 1);
-    double scale = 1.0;
-    if (!time.empty() && (time.back() == 's' || time.back() == 'm' || time.back() == 'h')) {
-      scale = time.back() == 'h' ? 3600.0 : time.back() == 'm' ? 60.0 : 1.0;
-      time.pop_back();
-    }
-    char* end = nullptr;
-    at_s = std::strtod(time.c_str(), &end);
-    if (time.empty() || end != time.c_str() + time.size() || !(at_s >= 0.0)) {
+    const auto time = parse_fault_time(text.substr(at + 1));
+    if (!time) {
       error = "fault time in '" + text + "' is not a non-negative number of s, m or h";
       return std::nullopt;
     }
-    at_s *= scale;
+    at_s = *time;
   }
   return ScheduledFault{name, at_s};
 }

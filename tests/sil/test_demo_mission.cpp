@@ -14,6 +14,7 @@
 #include "glider/model/seawater.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
+#include "glider/units.hpp"
 
 using namespace glider;
 
@@ -119,9 +120,9 @@ TEST(DemoMission, CtdMeasuresTheWaterTheVehicleFeels) {
     ++sampled;
     // TEOS-10 of the logged T, C, p is the density the vehicle felt; the
     // CTD's noise (2 mK, 0.3 mS/m, 0.2 dbar) is worth ~0.003 kg/m^3 (1 sigma).
-    const double measured = model::seawater::density_from_ctd(cond[i], temp[i], 10.0 * bar[i]);
+    const double measured = model::seawater::density_from_ctd(cond[i], temp[i], bar_to_dbar(bar[i]));
     worst_rho = std::max(worst_rho, std::abs(measured - rho[i]));
-    worst_p = std::max(worst_p, std::abs(10.0 * bar[i] - model::sea_pressure_dbar(std::max(depth[i], 0.0))));
+    worst_p = std::max(worst_p, std::abs(bar_to_dbar(bar[i]) - model::sea_pressure_dbar(std::max(depth[i], 0.0))));
   }
   CHECK(sampled > 0.9 * static_cast<double>(log.rows()));
   CHECK(worst_rho < 0.015);  // 5 sigma

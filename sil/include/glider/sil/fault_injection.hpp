@@ -37,6 +37,10 @@ const std::vector<std::pair<std::string, std::string>>& fault_names();
 // when the text is not a known fault at a time.
 std::optional<ScheduledFault> parse_fault(const std::string& text, std::string& error);
 
+// "1200s", "1200", "30m", "2h": seconds; nullopt unless a non-negative number
+// with an optional unit (shared with glider-plant's --fault).
+std::optional<double> parse_fault_time(std::string time);
+
 // Switches a named fault on; false if the name is unknown.
 bool apply_fault(const std::string& name, FaultInjection& faults);
 

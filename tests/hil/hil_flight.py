@@ -1,0 +1,314 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
+"""Hardware in the loop: the real glider-firmware binary, started as its
+systemd unit starts it (--board, --mission; plus the bench-only
+--time-scale), flies against glider-plant over its real interfaces; the same
+mission, vehicle, seed (and the matching fault) is flown by glider-sil; the
+two flight logs are compared event by event within stated tolerances
+(docs/hil.md, "Tolerances").
+
+  hil_flight.py BUILD_DIR SOURCE_DIR CASE [--time-scale X] [--keep DIR]
+
+CASE is one of CASES below. Prints the SIL-vs-HIL table and the firmware's
+loop wake-up lateness; "PASS hil CASE" or "FAIL hil CASE: why".
+GLIDER_FIRMWARE / GLIDER_FIRMWARE_PREFIX run another build of the firmware
+(e.g. the arm64 one under "qemu-aarch64 -L /usr/aarch64-linux-gnu").
+"""
+import argparse
+import csv
+import glob
+import math
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+VEHICLE = "boards/vehicles/slocum_we01.toml"
+SEED = 1
+
+# name: mission, plant faults, the matching glider-sil faults, what must happen.
+#   end: "complete" (the firmware finishes and exits by itself) or "abort"
+#   (the firmware aborts; the harness stops it once it has shown the abort)
+CASES = {
+    "yo": dict(mission="tests/hil/short_yo.toml", plant=[], sil=[], end="complete"),
+    # The pump jams just after the first inflection at depth: its drive
+    # reports the stall and it moves no more (SIL: a fault flag and a stuck pump).
+    "pump_stall": dict(mission="tests/hil/short_yo.toml", plant=["pump_stall@125s"],
+                       sil=["pump_fault@125s", "pump_stuck@125s"], end="abort", cause=5),
+    "depth_silent": dict(mission="tests/hil/short_yo.toml", plant=["depth_silent@60s"], sil=["depth_invalid@60s"],
+                         end="abort", cause=3),
+    "compass_silent": dict(mission="tests/hil/short_yo.toml", plant=["compass_silent@60s"],
+                           sil=["attitude_frozen@60s"], end="abort", cause=4),
+    # Power lost mid-flight: every device silent. Not compared with SIL for
+    # its time (the firmware's loop slows to the Modbus timeouts, wall time);
+    # it must abort on an actuator or sensor fault and keep cycling.
+    "plant_silent": dict(mission="tests/hil/short_yo.toml", plant=["plant_silent@60s"], sil=None, end="abort",
+                         cause=(3, 4, 5)),
+}
+
+ABORT_NAMES = {0: "none", 1: "overdepth", 2: "overtime", 3: "depth sensor", 4: "attitude sensor", 5: "actuator fault",
+               6: "leak", 7: "low battery", 8: "samedepth", 9: "stalled", 10: "waypoint too far"}
+PHASE_NAMES = {0: "surface", 1: "dive", 2: "climb", 99: "abort"}
+
+PROCESSES = []
+
+
+def fail(case, message):
+    print("FAIL hil %s: %s" % (case, message))
+    for p in PROCESSES:
+        if p.poll() is None:
+            p.kill()
+    sys.exit(1)
+
+
+def number(text):
+    try:
+        return float(text) if text != "" else None
+    except ValueError:
+        return None
+
+
+def read_log(path):
+    with open(path) as f:
+        lines = [line for line in f if not line.startswith("#")]
+    rows = [{k: number(v) for k, v in row.items()} for row in csv.DictReader(lines)]
+    t0 = rows[0]["m_present_time"]
+    for row in rows:
+        row["t"] = row["m_present_time"] - t0
+    return rows
+
+
+def events(rows):
+    """What the firmware did, from its log: phase changes (time, phase, depth),
+    yo count, abort cause and time, waypoint arrivals, DR errors at surfacings."""
+    e = dict(phases=[], yos=0, abort=0, abort_t=None, waypoints=[], dr=[], end_t=rows[-1]["t"], max_depth=0.0)
+    last_phase = None
+    last_reached = 0
+    for row in rows:
+        phase = int(row["m_depth_state"])
+        if phase != last_phase:
+            e["phases"].append((row["t"], phase, row["m_depth"]))
+            last_phase = phase
+        e["yos"] = int(row["x_yo_count"])
+        if row["x_abort_cause"] and e["abort_t"] is None:
+            e["abort"] = int(row["x_abort_cause"])
+            e["abort_t"] = row["t"]
+        if row["m_depth"] is not None and e["abort_t"] is None:
+            e["max_depth"] = max(e["max_depth"], row["m_depth"])
+        reached = int(row.get("x_waypoints_reached") or 0)
+        if reached > last_reached:
+            e["waypoints"].append(row["t"])
+            last_reached = reached
+        if row.get("x_dr_error_m") is not None:
+            e["dr"].append((row["t"], row["x_dr_error_m"]))
+    return e
+
+
+class Table:
+    def __init__(self):
+        self.rows = []
+        self.failures = []
+
+    def add(self, what, sil, hil, ok, tolerance):
+        self.rows.append((what, sil, hil, tolerance, "ok" if ok else "FAIL"))
+        if not ok:
+            self.failures.append(what)
+
+    def compare(self, what, sil, hil, tolerance, unit=""):
+        if sil is None or hil is None:
+            self.add(what, sil, hil, sil is None and hil is None, "both absent")
+            return
+        self.add(what, "%.1f%s" % (sil, unit), "%.1f%s" % (hil, unit), abs(sil - hil) <= tolerance,
+                 "+-%.1f%s" % (tolerance, unit))
+
+    def print(self):
+        print("| %-28s | %-14s | %-14s | %-12s | %-4s |" % ("", "SIL", "HIL", "tolerance", ""))
+        print("|" + "|".join("-" * n for n in (30, 16, 16, 14, 6)) + "|")
+        for r in self.rows:
+            print("| %-28s | %-14s | %-14s | %-12s | %-4s |" % tuple(str(x) for x in r))
+
+
+def time_tolerance(t):
+    """Event times: the firmware samples the plant at other instants than SIL
+    (serial and Modbus latency, wake-up lateness times the time scale) and its
+    sensor noise is drawn in another order, so a threshold crossing may fall
+    one or two 1 s cycles apart, and a glide's small speed difference grows
+    with time: 3 s plus 2 % of the elapsed time."""
+    return 3.0 + 0.02 * t
+
+
+def compare(sil, hil, case, table):
+    table.add("phase sequence", "-".join(PHASE_NAMES[p] for _, p, _ in sil["phases"]),
+              "-".join(PHASE_NAMES[p] for _, p, _ in hil["phases"]),
+              [p for _, p, _ in sil["phases"]] == [p for _, p, _ in hil["phases"]], "equal")
+    for i, ((ts, ps, ds), (th, ph, dh)) in enumerate(zip(sil["phases"][1:], hil["phases"][1:])):
+        table.compare("%d: %s at, s" % (i + 1, PHASE_NAMES[ps]), ts, th, time_tolerance(ts))
+        if ps in (1, 2) and ds is not None and dh is not None:
+            # Inflection depths: one cycle's travel at ~0.25 m/s, plus the noise.
+            table.compare("%d: %s from depth, m" % (i + 1, PHASE_NAMES[ps]), ds, dh, 0.5)
+    table.add("yos", sil["yos"], hil["yos"], sil["yos"] == hil["yos"], "equal")
+    table.add("abort cause", ABORT_NAMES[sil["abort"]], ABORT_NAMES[hil["abort"]], sil["abort"] == hil["abort"],
+              "equal")
+    if sil["abort_t"] is not None or hil["abort_t"] is not None:
+        table.compare("abort at, s", sil["abort_t"], hil["abort_t"], time_tolerance(sil["abort_t"] or 0.0))
+    table.compare("max depth before abort/end, m", sil["max_depth"], hil["max_depth"], 0.5)
+    table.add("waypoints reached", len(sil["waypoints"]), len(hil["waypoints"]),
+              len(sil["waypoints"]) == len(hil["waypoints"]), "equal")
+    for i, (ts, th) in enumerate(zip(sil["waypoints"], hil["waypoints"])):
+        table.compare("waypoint %d reached at, s" % (i + 1), ts, th, time_tolerance(ts))
+    table.add("surfacings with DR error", len(sil["dr"]), len(hil["dr"]), len(sil["dr"]) == len(hil["dr"]), "equal")
+    for i, ((_, es), (_, eh)) in enumerate(zip(sil["dr"], hil["dr"])):
+        # GPS noise 3 m (1 sigma per axis) on each of the two fixes that bound
+        # the dead-reckoned leg, drawn at other instants in HIL: 4 sigma of
+        # the difference of two such errors, 4 * 3 m * sqrt(2) * sqrt(2) = 24 m.
+        table.compare("surfacing %d DR error, m" % (i + 1), es, eh, 24.0)
+    if case["end"] == "complete":
+        table.compare("mission complete at, s", sil["end_t"], hil["end_t"], time_tolerance(sil["end_t"]))
+
+
+def start(args, **kwargs):
+    p = subprocess.Popen(args, **kwargs)
+    PROCESSES.append(p)
+    return p
+
+
+def run_sil(build, source, case, tmp):
+    log = os.path.join(tmp, "sil.csv")
+    args = [os.path.join(build, "sil", "glider-sil"), "--vehicle", VEHICLE, "--mission", case["mission"],
+            "--seed", str(SEED), "--out", log, "--quiet"]
+    for f in case["sil"]:
+        args += ["--fault", f]
+    result = subprocess.run(args, cwd=source, capture_output=True, text=True, timeout=60)
+    if result.returncode not in (0, 2, 3):
+        raise RuntimeError("glider-sil failed (%d): %s" % (result.returncode, result.stderr))
+    return read_log(log)
+
+
+def firmware_binary(build):
+    for candidate in ("firmware/linux/glider-firmware", "target/glider-firmware"):
+        path = os.path.join(build, candidate)
+        if os.path.exists(path):
+            return path
+    return os.path.join(build, "firmware/linux/glider-firmware")
+
+
+def lateness(stderr):
+    m = re.findall(r"loop: (cycles \d+, wake-up late mean \d+ us, p50 <= \d+ us, p99 <= \d+ us, max \d+ us[^;]*)",
+                   stderr)
+    return m[-1] if m else None
+
+
+def run_hil(build, source, name, case, tmp, scale, stop_s):
+    """Flies the case; the firmware ends by itself or gets SIGTERM at `stop_s`
+    simulated seconds (a wall-time bound with a margin for a loaded machine)."""
+    limit_s = stop_s / scale * 1.3 + 10.0
+    plant_dir = os.path.join(tmp, "plant")
+    plant_args = [os.path.join(build, "tools", "plant", "glider-plant"), "--dir", plant_dir, "--vehicle", VEHICLE,
+                  "--seed", str(SEED), "--time-scale", str(scale), "--duration-s", str((limit_s + 30.0) * scale)]
+    for f in case["plant"]:
+        plant_args += ["--fault", f]
+    plant = start(plant_args, cwd=source, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    ready = plant.stdout.readline()
+    if "glider-plant: ready" not in ready:
+        fail(name, "the plant did not start: " + ready + plant.stdout.read())
+    print(ready, end="")
+    board = os.path.join(plant_dir, "board.toml")
+    # As the systemd unit starts it (firmware/linux/packaging/glider-firmware.service),
+    # plus the bench-only time scale.
+    prefix = os.environ.get("GLIDER_FIRMWARE_PREFIX", "").split()
+    firmware = os.environ.get("GLIDER_FIRMWARE", firmware_binary(build))
+    fw_args = prefix + [firmware, "--board", board, "--mission", os.path.join(source, case["mission"]),
+                        "--time-scale", str(scale)]
+    print("$ " + " ".join(fw_args))
+    started = time.monotonic()
+    fw = start(fw_args, stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
+    stopped_by_us = False
+    while fw.poll() is None:
+        if time.monotonic() - started > limit_s:
+            fw.send_signal(signal.SIGTERM)
+            stopped_by_us = True
+            break
+        time.sleep(0.1)
+    try:
+        _, err = fw.communicate(timeout=10)
+    except subprocess.TimeoutExpired:
+        fail(name, "glider-firmware did not stop within 10 s of SIGTERM (a hang)")
+    wall = time.monotonic() - started
+    plant.send_signal(signal.SIGTERM)
+    plant_out, _ = plant.communicate(timeout=10)
+    print(plant_out, end="")
+    print(err, end="")
+    print("firmware ran %.1f s wall (%s)" % (wall, "stopped by the harness" if stopped_by_us else "exited itself"))
+    if fw.returncode != 0:
+        fail(name, "glider-firmware exit status %d" % fw.returncode)
+    logs = glob.glob(os.path.join(plant_dir, "logs", "flight-*.csv"))
+    if len(logs) != 1:
+        fail(name, "expected one flight log in %s, found %d" % (plant_dir, len(logs)))
+    return read_log(logs[0]), err, stopped_by_us
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("build")
+    parser.add_argument("source")
+    parser.add_argument("case", choices=sorted(CASES))
+    parser.add_argument("--time-scale", type=float, default=20.0)
+    parser.add_argument("--keep", help="keep the logs in this directory")
+    a = parser.parse_args()
+    build, source = os.path.abspath(a.build), os.path.abspath(a.source)
+    case = CASES[a.case]
+    prefix = os.environ.get("GLIDER_FIRMWARE_PREFIX", "").split()
+    firmware = os.environ.get("GLIDER_FIRMWARE", firmware_binary(build))
+    usage = subprocess.run(prefix + [firmware, "--help"], capture_output=True, text=True, timeout=60).stdout
+    if "--time-scale" not in usage:
+        print("SKIP hil %s: %s has no --time-scale (the bench option of issue 12 item 3)" % (a.case, firmware))
+        sys.exit(77)
+    tmp = tempfile.mkdtemp(prefix="hil-")
+    try:
+        sil_rows = run_sil(build, source, case, tmp) if case["sil"] is not None else None
+        sil = events(sil_rows) if sil_rows else None
+        if case["end"] == "complete":
+            stop_s = sil["end_t"]
+        else:  # a minute after the abort, to see the firmware go on cycling
+            fault_s = min(float(f.split("@")[1].rstrip("s")) for f in case["plant"])
+            stop_s = (sil["abort_t"] if sil else fault_s) + 60.0
+        hil_rows, err, stopped = run_hil(build, source, a.case, case, tmp, a.time_scale, stop_s)
+        hil = events(hil_rows)
+        if sil is not None and stopped:
+            # The harness stopped the HIL flight: compare the same stretch of time.
+            sil = events([r for r in sil_rows if r["t"] <= hil["end_t"]])
+        print("loop lateness at time scale %g: %s" % (a.time_scale, lateness(err)))
+        if case["end"] == "complete" and stopped:
+            fail(a.case, "the firmware did not complete the mission within the wall-time bound")
+        if sil is not None:
+            table = Table()
+            compare(sil, hil, case, table)
+            print("SIL vs HIL, case %s (mission %s, vehicle %s, seed %d, time scale %g):" %
+                  (a.case, case["mission"], VEHICLE, SEED, a.time_scale))
+            table.print()
+            if table.failures:
+                fail(a.case, "outside tolerance: " + ", ".join(table.failures))
+        if case["end"] == "abort":
+            causes = case["cause"] if isinstance(case["cause"], tuple) else (case["cause"],)
+            if hil["abort"] not in causes:
+                fail(a.case, "abort cause %s, expected %s" %
+                     (ABORT_NAMES[hil["abort"]], " or ".join(ABORT_NAMES[c] for c in causes)))
+            after = [r for r in hil_rows if r["t"] > hil["abort_t"]]
+            if stopped and len(after) < 3:
+                fail(a.case, "the firmware stopped cycling after the abort (%d rows after it)" % len(after))
+            print("abort %s at %.1f s; %s" % (ABORT_NAMES[hil["abort"]], hil["abort_t"],
+                  "the firmware kept cycling: %d log rows after it" % len(after) if stopped
+                  else "the firmware knew it was up and ended the flight"))
+    finally:
+        if a.keep:
+            shutil.copytree(tmp, a.keep, dirs_exist_ok=True)
+        shutil.rmtree(tmp, ignore_errors=True)
+    print("PASS hil %s" % a.case)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "modbus_tcp_server.hpp"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace glider::plant {
+namespace {
+
+constexpr std::size_t kMbapLength = 7;  // transaction, protocol, length (2 each), unit
+
+int word_at(const std::uint8_t* p) { return (p[0] << 8) | p[1]; }
+
+}  // namespace
+
+ModbusTcpServer::ModbusTcpServer(const TcpServerOptions& options, modbus_mapping_t* mapping, int unit_id,
+                                 WritableCheck writable)
+    : options_(options), mapping_(mapping), unit_id_(unit_id), writable_(std::move(writable)) {
+  context_ = modbus_new_tcp(options.host.c_str(), options.port);
+  if (context_ == nullptr) throw std::runtime_error("modbus tcp " + options.host + ": " + modbus_strerror(errno));
+  listen_fd_ = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+  if (listen_fd_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
+  const int yes = 1;
+  setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(options.port));
+  if (inet_pton(AF_INET, options.host.c_str(), &address.sin_addr) != 1) {
+    throw std::runtime_error("modbus tcp: " + options.host + " is not a numeric IPv4 address");
+  }
+  if (bind(listen_fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(listen_fd_, 128) != 0) {
+    throw std::runtime_error("modbus tcp " + endpoint() + ": " + std::strerror(errno));
+  }
+  socklen_t size = sizeof address;
+  getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&address), &size);
+  port_ = ntohs(address.sin_port);
+  clients_.reserve(static_cast<std::size_t>(options.max_clients));
+}
+
+ModbusTcpServer::~ModbusTcpServer() {
+  for (const Client& client : clients_) close(client.fd);
+  if (listen_fd_ >= 0) close(listen_fd_);
+  modbus_free(context_);
+}
+
+void ModbusTcpServer::append_pollfds(std::vector<pollfd>& fds) const {
+  fds.push_back({listen_fd_, POLLIN, 0});
+  for (const Client& client : clients_) fds.push_back({client.fd, POLLIN, 0});
+}
+
+void ModbusTcpServer::service(const pollfd* fds, std::size_t count, const std::function<void()>& after_write) {
+  if (count == 0) return;
+  // Clients first, from the back, so that closing one keeps the indices of
+  // those not yet seen; new connections after (they are not in `fds`).
+  for (std::size_t i = count - 1; i >= 1; --i) {
+    const std::size_t index = i - 1;
+    if (index >= clients_.size() || fds[i].fd != clients_[index].fd) continue;
+    if ((fds[i].revents & (POLLIN | POLLHUP | POLLERR)) == 0) continue;
+    if (!read_client(clients_[index], after_write)) close_client(index);
+  }
+  if ((fds[0].revents & POLLIN) != 0) accept_all();
+}
+
+void ModbusTcpServer::accept_all() {
+  // Bounded: at most the listen backlog in one call.
+  for (int k = 0; k < 128; ++k) {
+    const int fd = accept4(listen_fd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (fd < 0) return;
+    if (clients_.size() >= static_cast<std::size_t>(options_.max_clients)) {
+      ++stats_.refused;  // a clear refusal: the connection closes at once
+      close(fd);
+      continue;
+    }
+    const int yes = 1;
+    setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+    Client& client = clients_.emplace_back();
+    client.fd = fd;
+    client.last_activity = Clock::now();
+    ++stats_.accepted;
+  }
+}
+
+bool ModbusTcpServer::read_client(Client& client, const std::function<void()>& after_write) {
+  const ssize_t n = read(client.fd, client.buffer + client.length, sizeof client.buffer - client.length);
+  if (n == 0) return false;  // the client closed
+  if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR;
+  const auto now = Clock::now();
+  if (client.length == 0) client.request_started = now;
+  client.last_activity = now;
+  client.length += static_cast<std::size_t>(n);
+  // Every whole request in the buffer, in order (a client may pipeline).
+  while (client.length >= kMbapLength) {
+    const int protocol = word_at(client.buffer + 2);
+    const std::size_t length = static_cast<std::size_t>(word_at(client.buffer + 4));
+    if (protocol != 0 || length < 2 || length > MODBUS_TCP_MAX_ADU_LENGTH - 6) {
+      ++stats_.malformed;
+      return false;
+    }
+    const std::size_t frame = 6 + length;
+    if (client.length < frame) break;
+    if (!answer(client, frame, after_write)) return false;
+    client.length -= frame;
+    std::memmove(client.buffer, client.buffer + frame, client.length);
+    client.request_started = now;
+  }
+  return true;
+}
+
+bool ModbusTcpServer::request_writes_read_only(const std::uint8_t* pdu, std::size_t length) const {
+  const int function = pdu[0];
+  int address = 0;
+  int count = 0;
+  if (function == MODBUS_FC_WRITE_SINGLE_REGISTER && length >= 5) {
+    address = word_at(pdu + 1);
+    count = 1;
+  } else if (function == MODBUS_FC_WRITE_MULTIPLE_REGISTERS && length >= 5) {
+    address = word_at(pdu + 1);
+    count = word_at(pdu + 3);
+  } else if (function == MODBUS_FC_WRITE_AND_READ_REGISTERS && length >= 9) {
+    address = word_at(pdu + 5);
+    count = word_at(pdu + 7);
+  } else {
+    return false;  // not a register write: libmodbus answers (or refuses) it
+  }
+  if (count > 123) return false;  // libmodbus refuses the quantity itself
+  for (int a = address; a < address + count; ++a) {
+    if (!writable_(a)) return true;
+  }
+  return false;
+}
+
+bool ModbusTcpServer::answer(Client& client, std::size_t frame_length, const std::function<void()>& after_write) {
+  ++stats_.requests;
+  if (silent_) {
+    ++stats_.ignored;
+    return true;
+  }
+  const std::uint8_t* frame = client.buffer;
+  const std::uint8_t* pdu = frame + kMbapLength;
+  const std::size_t pdu_length = frame_length - kMbapLength;
+  modbus_set_socket(context_, client.fd);
+  int sent = 0;
+  if (frame[6] != unit_id_ && frame[6] != 0xFF) {
+    ++stats_.exceptions;
+    sent = modbus_reply_exception(context_, frame, MODBUS_EXCEPTION_GATEWAY_TARGET);
+  } else if (request_writes_read_only(pdu, pdu_length)) {
+    ++stats_.exceptions;
+    sent = modbus_reply_exception(context_, frame, MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS);
+  } else {
+    sent = modbus_reply(context_, frame, static_cast<int>(frame_length), mapping_);
+    const int function = pdu[0];
+    if (function == MODBUS_FC_WRITE_SINGLE_REGISTER || function == MODBUS_FC_WRITE_MULTIPLE_REGISTERS ||
+        function == MODBUS_FC_WRITE_AND_READ_REGISTERS) {
+      after_write();
+    }
+  }
+  return sent > 0;  // a client that cannot take its reply is dropped
+}
+
+void ModbusTcpServer::expire(Clock::time_point now) {
+  const auto request_limit = std::chrono::milliseconds(options_.request_timeout_ms);
+  const auto idle_limit = std::chrono::milliseconds(options_.idle_timeout_ms);
+  for (std::size_t i = clients_.size(); i-- > 0;) {
+    const Client& c = clients_[i];
+    if ((c.length > 0 && now - c.request_started > request_limit) || now - c.last_activity > idle_limit) {
+      ++stats_.timed_out;
+      close_client(i);
+    }
+  }
+}
+
+void ModbusTcpServer::close_client(std::size_t index) {
+  close(clients_[index].fd);
+  clients_[index] = clients_.back();  // order does not matter between clients
+  clients_.pop_back();
+}
+
+}  // namespace glider::plant
