@@ -19,32 +19,45 @@ const char* to_string(Phase phase) {
   return "?";
 }
 
-const char* to_string(AbortCause cause) {
-  switch (cause) {
-    case AbortCause::kNone:
-      return "none";
-    case AbortCause::kOverdepth:
-      return "overdepth";
-    case AbortCause::kOvertime:
-      return "overtime";
-    case AbortCause::kDepthSensor:
-      return "depth sensor invalid or stale";
-    case AbortCause::kAttitudeSensor:
-      return "attitude sensor invalid or stale";
-    case AbortCause::kActuatorFault:
-      return "actuator fault";
-    case AbortCause::kLeak:
-      return "leak detected";
-    case AbortCause::kLowBattery:
-      return "low battery (remaining charge)";
-    case AbortCause::kSameDepth:
-      return "stuck at the same depth";
-    case AbortCause::kStalled:
-      return "stalled";
-    case AbortCause::kWaypointTooFar:
-      return "waypoint too far";
+namespace {
+
+struct CauseName {
+  AbortCause cause;
+  const char* id;    // one word: log trailer, summary JSON
+  const char* text;  // for people
+};
+
+constexpr CauseName kCauseNames[] = {
+    {AbortCause::kNone, "none", "none"},
+    {AbortCause::kOverdepth, "overdepth", "overdepth"},
+    {AbortCause::kOvertime, "overtime", "overtime"},
+    {AbortCause::kDepthSensor, "depth_sensor", "depth sensor invalid or stale"},
+    {AbortCause::kAttitudeSensor, "attitude_sensor", "attitude sensor invalid or stale"},
+    {AbortCause::kActuatorFault, "actuator_fault", "actuator fault"},
+    {AbortCause::kLeak, "leak", "leak detected"},
+    {AbortCause::kLowBattery, "low_battery", "low battery (remaining charge)"},
+    {AbortCause::kSameDepth, "samedepth", "stuck at the same depth"},
+    {AbortCause::kStalled, "stalled", "stalled"},
+    {AbortCause::kWaypointTooFar, "waypoint_too_far", "waypoint too far"},
+};
+
+const CauseName* find_cause(AbortCause cause) {
+  for (const CauseName& name : kCauseNames) {
+    if (name.cause == cause) return &name;
   }
-  return "?";
+  return nullptr;
+}
+
+}  // namespace
+
+const char* cause_id(AbortCause cause) {
+  const CauseName* name = find_cause(cause);
+  return name != nullptr ? name->id : "unknown";
+}
+
+const char* to_string(AbortCause cause) {
+  const CauseName* name = find_cause(cause);
+  return name != nullptr ? name->text : "?";
 }
 
 const char* validate(const YoMissionConfig& c) {

@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include <numbers>
+
 #include "glider/model/first_order_lag.hpp"
+#include "glider/model/root_finding.hpp"
 
 namespace glider::model {
 namespace {
@@ -72,15 +74,14 @@ void GliderSimulator::reset_at_surface(double pumped_volume_m3, double battery_p
   reset_at_depth(0.0, pumped_volume_m3, battery_pos_m, heading_rad);
   // Float level: the depth where weight and (partial) buoyancy balance.
   const MassInputs m = masses_after(0.0);
-  double lo = -dynamics_.vehicle().hull_diameter_m;
-  double hi = dynamics_.vehicle().hull_diameter_m;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
+  // Net buoyancy falls with depth there, from + (heavy, in the air) to - (submerged).
+  auto net_buoyancy_at = [&](double z) {
     State probe = state_;
-    probe[kZ] = mid;
-    (dynamics_.evaluate(0.0, probe, m).net_buoyancy_kg > 0.0 ? lo : hi) = mid;
-  }
-  state_[kZ] = 0.5 * (lo + hi);
+    probe[kZ] = z;
+    return dynamics_.evaluate(0.0, probe, m).net_buoyancy_kg;
+  };
+  const double d = dynamics_.vehicle().hull_diameter_m;
+  state_[kZ] = bracketed_root(net_buoyancy_at, -d, d);
 }
 
 void GliderSimulator::step(double h) {

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "glider/model/hydrodynamics.hpp"
+#include "glider/model/root_finding.hpp"
 #include "glider/units.hpp"
 
 namespace glider::model {
@@ -14,13 +15,8 @@ constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
 
 // Angle of zero lift (C_L is increasing through it inside the fit range).
 double zero_lift_alpha(const Hydrodynamics& h) {
-  double lo = -h.fit_valid_to_rad;
-  double hi = h.fit_valid_to_rad;
-  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (force_coefficients(h, mid).lift < 0.0 ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  return bracketed_root([&](double alpha) { return force_coefficients(h, alpha).lift; }, -h.fit_valid_to_rad,
+                        h.fit_valid_to_rad);
 }
 
 // Along the flight branch of one direction (+1 descending: lift must point
@@ -36,21 +32,9 @@ struct Branch {
     const ForceCoefficients c = force_coefficients(h, alpha(t));
     return c.drag / (direction * c.lift);
   }
-  // t of the best glide ratio (golden section: unimodal on the fit range).
+  // t of the best glide ratio (unimodal on the fit range).
   double t_best() const {
-    double lo = 1e-9;
-    double hi = h.fit_valid_to_rad;
-    const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
-    for (int i = 0; i < 200 && hi - lo > 1e-13; ++i) {
-      const double a = hi - ratio * (hi - lo);
-      const double b = lo + ratio * (hi - lo);
-      if (tan_gamma(a) < tan_gamma(b)) {
-        hi = b;
-      } else {
-        lo = a;
-      }
-    }
-    return 0.5 * (lo + hi);
+    return unimodal_minimum([this](double t) { return tan_gamma(t); }, 1e-9, h.fit_valid_to_rad);
   }
 };
 
@@ -110,15 +94,10 @@ SteadyGlideResult steady_glide_for_path(const Hydrodynamics& hydro, double densi
     result.error = "glide path shallower than the vehicle's best glide (" + std::to_string(gamma_min) + " deg)";
     return result;
   }
-  // On (0, t_best] tan(gamma) falls monotonically from +inf: bisect.
+  // On (0, t_best] tan(gamma) falls monotonically from +inf: one root.
   const double target = std::tan(glide_path_deg * kDeg);
-  double lo = 1e-12;
-  double hi = t_best;
-  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (branch.tan_gamma(mid) > target ? lo : hi) = mid;
-  }
-  result.glide = glide_at(branch, 0.5 * (lo + hi), density_kg_m3, gravity_m_s2, net_buoyancy_kg);
+  const double t = bracketed_root([&](double s) { return branch.tan_gamma(s) - target; }, 1e-12, t_best);
+  result.glide = glide_at(branch, t, density_kg_m3, gravity_m_s2, net_buoyancy_kg);
   return result;
 }
 
@@ -138,21 +117,19 @@ SteadyGlideResult PitchGlideSolver::solve(double density_kg_m3, double pitch_rad
   const int direction = net_buoyancy_kg > 0.0 ? 1 : -1;
   const Branch branch{hydro_, direction, alpha0_};
   // Along the branch, |pitch| = gamma - direction * alpha falls from 90 deg
-  // at zero lift to its smallest value at the best glide: bisect.
+  // at zero lift to its smallest value at the best glide: one root.
   const double target = -direction * pitch_rad;  // pitch magnitude in the glide's direction
   auto pitch_magnitude = [&](double t) { return std::atan(branch.tan_gamma(t)) - direction * branch.alpha(t); };
   const double t_best = t_best_[direction > 0 ? 0 : 1];
-  if (!(target < pitch_magnitude(1e-12)) || !(target > pitch_magnitude(t_best))) {
+  const double f_lo = pitch_magnitude(1e-12) - target;
+  const double f_hi = pitch_magnitude(t_best) - target;
+  if (!(f_lo > 0.0) || !(f_hi < 0.0)) {
     result.error = "pitch outside the steady glides of this buoyancy";
     return result;
   }
-  double lo = 1e-12;
-  double hi = t_best;
-  while (hi - lo > 1e-10) {  // ~33 halvings: alpha to 1e-10 rad
-    const double mid = 0.5 * (lo + hi);
-    (pitch_magnitude(mid) > target ? lo : hi) = mid;
-  }
-  result.glide = glide_at(branch, 0.5 * (lo + hi), density_kg_m3, gravity_m_s2, net_buoyancy_kg);
+  // alpha to ~1e-10 rad (34 bits), as the bisection this replaced.
+  const double t = bracketed_root([&](double s) { return pitch_magnitude(s) - target; }, 1e-12, t_best, f_lo, f_hi, 34);
+  result.glide = glide_at(branch, t, density_kg_m3, gravity_m_s2, net_buoyancy_kg);
   return result;
 }
 
@@ -187,14 +164,7 @@ SteadyGlideResult solve_equilibrium(const GliderDynamics& dyn, const MassInputs&
     const double t = t_max * i / steps;
     const double r = residual(t);
     if ((r_prev < 0.0) != (r < 0.0)) {
-      double lo = t_prev;
-      double hi = t;
-      const bool lo_negative = r_prev < 0.0;
-      for (int k = 0; k < 200 && hi - lo > 1e-15; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        ((residual(mid) < 0.0) == lo_negative ? lo : hi) = mid;
-      }
-      result.glide = glide_at(branch, 0.5 * (lo + hi), density, gravity, m0);
+      result.glide = glide_at(branch, bracketed_root(residual, t_prev, t, r_prev, r), density, gravity, m0);
       return result;
     }
     t_prev = t;

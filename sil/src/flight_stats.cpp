@@ -37,7 +37,10 @@ bool FlightStats::write(const hal::FlightLogRecord& r) {
     s.pitch_sum_rad += r.m_pitch;
     s.depth_rate_sum_m_s += r.m_depth_rate;
     if (std::isfinite(r.c_pitch)) {
-      s.max_pitch_error_rad = std::max(s.max_pitch_error_rad, std::abs(r.m_pitch - r.c_pitch));
+      const double error = r.m_pitch - r.c_pitch;
+      s.max_pitch_error_rad = std::max(s.max_pitch_error_rad, std::abs(error));
+      ++s.pitch_error_samples;
+      s.pitch_error_sq_sum_rad2 += error * error;
     }
   }
   return true;

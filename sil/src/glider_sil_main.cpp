@@ -8,15 +8,17 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
-#include "glider/firmware/config/flight_config_file.hpp"
-#include "glider/firmware/mission_file/mission_loader.hpp"
+#include "glider/firmware/app/mission_setup.hpp"
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/sil/flight_summary.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
 #include "glider/units.hpp"
@@ -72,8 +74,10 @@ void print_surfacings(const std::vector<glider::sil::SurfacingStats>& surfacings
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Fly a glider mission (.mi Slocum or .toml) in software-in-the-loop simulation"};
+  glider::cli::Tool tool("glider-sil", "Fly a glider mission (.mi Slocum or .toml) in software-in-the-loop simulation");
+  CLI::App& app = tool.app();
   std::string vehicle_path;
+  std::string summary_json_path;
   std::string mission_path;
   std::string out_path;
   std::string env_path;
@@ -88,7 +92,7 @@ int main(int argc, char** argv) {
   double launch_lat = std::nan("");
   double launch_lon = std::nan("");
   bool quiet = false;
-  app.add_option("--vehicle", vehicle_path, "vehicle parameter file (TOML)")->required()->check(CLI::ExistingFile);
+  tool.add_vehicle_option(vehicle_path);
   app.add_option("--mission,mission", mission_path, "mission file: Slocum .mi, or TOML")
       ->required()
       ->check(CLI::ExistingFile);
@@ -115,140 +119,144 @@ int main(int argc, char** argv) {
   app.add_option("--launch-lat", launch_lat, "launch latitude, decimal degrees (default: comet 2019's first fix)");
   app.add_option("--launch-lon", launch_lon, "launch longitude, decimal degrees");
   app.add_flag("--quiet", quiet, "print nothing but errors");
-  CLI11_PARSE(app, argc, argv);
-
-  glider::model::VehicleParams vehicle;
-  glider::fw::FlightSoftwareConfig config;
-  glider::sil::ScenarioOptions options;
-  const bool slocum_mission = std::filesystem::path(mission_path).extension() == ".mi";
-  try {
-    vehicle = glider::model::load_vehicle_file(vehicle_path);
-    options.environment = env_path.empty() ? glider::model::still_water(vehicle.trim_density_kg_m3)
-                                           : glider::model::load_environment_file(env_path);
-    if (!slocum_mission) {
-      const auto mission = glider::config::TomlDocument::load(mission_path);
-      config = glider::fw::read_flight_config(mission);
-      options.max_sim_time_s = mission.number_or("sil.max_sim_time_s", options.max_sim_time_s);
-      mission.reject_unknown_keys();
+  bool check_mission = false;
+  app.add_flag("--check-mission", check_mission, "read the vehicle and the mission, report, exit (nothing flown)");
+  app.add_option("--summary-json", summary_json_path,
+                 "also write the run's summary as JSON to this file (keys: docs/sil-summary.md)");
+  return tool.run(argc, argv, [&]() -> int {
+    glider::model::VehicleParams vehicle;
+    glider::sil::ScenarioOptions options;
+    try {
+      vehicle = glider::model::load_vehicle_file(vehicle_path);
+      options.fitted = glider::sil::load_fitted_devices(vehicle_path);
+      options.environment = env_path.empty() ? glider::model::still_water(vehicle.trim_density_kg_m3)
+                                             : glider::model::load_environment_file(env_path);
+    } catch (const glider::config::ConfigError& error) {
+      return tool.fail(glider::cli::kError, error.what());
     }
-  } catch (const glider::config::ConfigError& error) {
-    std::fprintf(stderr, "glider-sil: %s\n", error.what());
-    return 1;
-  }
-  glider::fw::FlightSoftwareConfig base;
-  base.heading.law = heading_law == "proportional" ? glider::fw::HeadingLaw::kProportional
-                     : heading_law == "slocum"     ? glider::fw::HeadingLaw::kSlocum
-                                                   : glider::fw::HeadingLaw::kCompensated;
-  base.heading.delay_s = vehicle.heading.fin_delay_s;
-  if (dr_method == "model") {
-    base.dead_reckoning =
-        glider::sil::flight_model_dead_reckoning(vehicle, options.environment.water.at(0.0, 0.0).density_kg_m3);
-  }
-  if (slocum_mission) {
-    const auto loaded = glider::fw::mission_file::load_mission_file(
-        mission_path, glider::sil::mission_vehicle(vehicle, max_working_depth_m), base);
-    for (const auto& d : loaded.diagnostics) {
-      if (!quiet || d.severity == glider::fw::mission_file::Severity::kError) {
-        std::fprintf(stderr, "%s\n", d.text().c_str());
+    // The flight application's own mission setup, as glider-firmware does it;
+    // only where the vehicle data comes from differs (the model here, the board file there).
+    glider::fw::app::VehicleSetup setup =
+        glider::sil::vehicle_setup(vehicle, options.fitted, max_working_depth_m, dr_method == "model",
+                                   options.environment.water.at(0.0, 0.0).density_kg_m3);
+    setup.source = vehicle_path;
+    glider::fw::app::MissionOptions mission_options;
+    mission_options.heading_law = *glider::fw::app::heading_law_from_name(heading_law);
+    mission_options.flight_model_dr = dr_method == "model";
+    mission_options.legs = legs;
+    const glider::fw::app::PreparedMission prepared =
+        glider::fw::app::prepare_mission(mission_path, setup, mission_options);
+    const std::vector<std::string> messages = glider::fw::app::mission_messages(prepared, quiet);
+    for (std::size_t i = 0; i + (prepared.config ? 0 : 1) < messages.size(); ++i) {
+      std::fprintf(stderr, "%s\n", messages[i].c_str());
+    }
+    if (!prepared.config) return tool.fail(glider::cli::kError, prepared.refusal);
+    if (check_mission) {
+      std::fprintf(stderr, "glider-sil: %s: mission accepted for vehicle %s\n", mission_path.c_str(),
+                   vehicle.name.c_str());
+      return glider::cli::kOk;
+    }
+    const glider::fw::FlightSoftwareConfig& config = *prepared.config;
+    if (prepared.slocum) {
+      options.max_sim_time_s = 60.0 * 86400.0;  // the mission's own limits end it
+    } else if (prepared.sil_max_sim_time_s > 0.0) {
+      options.max_sim_time_s = prepared.sil_max_sim_time_s;
+    }
+    if (max_sim_time_s > 0.0) options.max_sim_time_s = max_sim_time_s;
+    for (const std::string& text : fault_texts) {
+      std::string error;
+      const auto fault = glider::sil::parse_fault(text, error);
+      if (!fault) {
+        return tool.fail(glider::cli::kUsage, "--fault: " + error);
       }
+      options.faults.push_back(*fault);
     }
-    if (!loaded.config) {
-      std::fprintf(stderr, "glider-sil: %s: mission refused before launch\n", mission_path.c_str());
-      return 1;
-    }
-    config = *loaded.config;
-    if (legs != 0) config.plan.legs_to_run = legs;
-    options.max_sim_time_s = 60.0 * 86400.0;  // the mission's own limits end it
-  } else {
-    config.heading = base.heading;
-    config.heading.fin_max_rad = vehicle.heading.fin_max_rad;
-    config.heading.fin_rate_rad_s = vehicle.heading.fin_rate_rad_s;
-    config.heading.yaw_gain_per_m = vehicle.heading.fin_yaw_gain_per_m;
-    config.dead_reckoning = base.dead_reckoning;
-  }
-  if (max_sim_time_s > 0.0) options.max_sim_time_s = max_sim_time_s;
-  for (const std::string& text : fault_texts) {
-    std::string error;
-    const auto fault = glider::sil::parse_fault(text, error);
-    if (!fault) {
-      std::fprintf(stderr, "glider-sil: --fault: %s\n", error.c_str());
-      return 1;
-    }
-    options.faults.push_back(*fault);
-  }
-  if (std::isfinite(launch_lat) && std::isfinite(launch_lon)) options.peripherals.gps.launch = {launch_lat, launch_lon};
-  options.seed = seed;
-  options.heading_deg = heading_deg;
-  options.log_path = out_path;
-  options.metadata = {
-      {"source", "glider SIL (firmware + vehicle model in lockstep)"},
-      {"mission_file", std::filesystem::path(mission_path).filename().string()},
-      {"vehicle_file", std::filesystem::path(vehicle_path).filename().string()},
-      {"environment_file", env_path.empty() ? std::string("none (still water at the vehicle's trim density)")
-                                            : std::filesystem::path(env_path).filename().string()},
-      {"heading_law", heading_law},
-      {"dead_reckoning", dr_method},
-      {"time", "m_present_time is seconds since the start of the mission"},
-      {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
+    if (std::isfinite(launch_lat) && std::isfinite(launch_lon))
+      options.peripherals.gps.launch = {launch_lat, launch_lon};
+    options.seed = seed;
+    options.heading_deg = heading_deg;
+    options.log_path = out_path;
+    options.metadata = {
+        {"source", "glider SIL (firmware + vehicle model in lockstep)"},
+        {"mission_file", std::filesystem::path(mission_path).filename().string()},
+        {"vehicle_file", std::filesystem::path(vehicle_path).filename().string()},
+        {"environment_file", env_path.empty() ? std::string("none (still water at the vehicle's trim density)")
+                                              : std::filesystem::path(env_path).filename().string()},
+        {"heading_law", heading_law},
+        {"dead_reckoning", dr_method},
+        {"time", "m_present_time is seconds since the start of the mission"},
+        {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
 
-  const auto wall_start = std::chrono::steady_clock::now();
-  const glider::sil::ScenarioResult result = glider::sil::run_scenario(vehicle, config, options);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    const auto wall_start = std::chrono::steady_clock::now();
+    const glider::sil::ScenarioResult result = glider::sil::run_scenario(vehicle, config, options);
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 
-  if (!result.error.empty()) {
-    std::fprintf(stderr, "glider-sil: %s\n", result.error.c_str());
-    return 1;
-  }
-  const bool aborted = result.final_phase == glider::fw::Phase::kAbort;
-  if (!quiet) {
-    const auto& stats = result.stats;
-    std::printf("SIL flight: %s with vehicle %s (seed %llu)\n", mission_path.c_str(), vehicle.name.c_str(),
-                static_cast<unsigned long long>(seed));
-    if (aborted) {
-      std::printf("  result  : ABORTED (%s) at %.0f s", glider::fw::to_string(result.abort_cause), result.abort_time_s);
-      if (result.abort_surfaced_s >= 0.0) {
-        std::printf(", at the surface %.0f s later (truth: antenna out)",
-                    result.abort_surfaced_s - result.abort_time_s);
+    if (!result.error.empty()) return tool.fail(glider::cli::kError, result.error);
+    if (!summary_json_path.empty()) {
+      glider::sil::SummaryContext context;
+      context.mission_file = mission_path;
+      context.vehicle_file = vehicle_path;
+      context.seed = seed;
+      context.wall_time_s = wall_s;
+      context.launch = options.peripherals.gps.launch;
+      std::ofstream json(summary_json_path, std::ios::out | std::ios::trunc);
+      json << glider::sil::flight_summary(result, config, context).dump(2) << '\n';
+      json.close();
+      if (!json) return tool.fail(glider::cli::kError, summary_json_path + ": cannot write the summary");
+    }
+    const bool aborted = result.final_phase == glider::fw::Phase::kAbort;
+    if (!quiet) {
+      const auto& stats = result.stats;
+      std::printf("SIL flight: %s with vehicle %s (seed %llu)\n", mission_path.c_str(), vehicle.name.c_str(),
+                  static_cast<unsigned long long>(seed));
+      if (aborted) {
+        std::printf("  result  : ABORTED (%s) at %.0f s", glider::fw::to_string(result.abort_cause),
+                    result.abort_time_s);
+        if (result.abort_surfaced_s >= 0.0) {
+          std::printf(", at the surface %.0f s later (truth: antenna out)",
+                      result.abort_surfaced_s - result.abort_time_s);
+        } else {
+          std::printf(", NOT at the surface");
+        }
+        std::printf("%s%s\n",
+                    result.completed ? "; the firmware knows it is up" : "; the firmware cannot tell it is up",
+                    result.drop_weight_released ? "; drop weight released" : "");
       } else {
-        std::printf(", NOT at the surface");
+        std::printf("  result  : %s\n", result.completed ? "mission complete, surfaced" : "NOT complete (time limit)");
       }
-      std::printf("%s%s\n", result.completed ? "; the firmware knows it is up" : "; the firmware cannot tell it is up",
-                  result.drop_weight_released ? "; drop weight released" : "");
-    } else {
-      std::printf("  result  : %s\n", result.completed ? "mission complete, surfaced" : "NOT complete (time limit)");
-    }
-    print_inflections(result.yos, stats.inflection_depths_m());
-    print_glides("dives", stats.dives());
-    print_glides("climbs", stats.climbs());
-    if (config.plan.waypoint_count > 0 || stats.segments() > 1) {
-      std::printf("  segments       : %d; waypoints reached %d (of a list of %d)\n", stats.segments(),
-                  stats.waypoints_reached(), config.plan.waypoint_count);
-      const glider::fw::LocalFrame frame(options.peripherals.gps.launch);
-      for (const auto& w : result.waypoints) {
-        const auto index = static_cast<std::size_t>((w.reached - 1) % config.plan.waypoint_count);
-        const glider::fw::EastNorth target = frame.to_local(config.plan.waypoints[index]);
-        std::printf("    waypoint %zu counted at %8.0f s, true distance %6.0f m (radius %.0f m)\n", index, w.time_s,
-                    std::hypot(w.east_m - target.east_m, w.north_m - target.north_m), config.plan.waypoint_radius_m);
+      print_inflections(result.yos, stats.inflection_depths_m());
+      print_glides("dives", stats.dives());
+      print_glides("climbs", stats.climbs());
+      if (config.plan.waypoint_count > 0 || stats.segments() > 1) {
+        std::printf("  segments       : %d; waypoints reached %d (of a list of %d)\n", stats.segments(),
+                    stats.waypoints_reached(), config.plan.waypoint_count);
+        const glider::fw::LocalFrame frame(options.peripherals.gps.launch);
+        for (const auto& w : result.waypoints) {
+          const auto index = static_cast<std::size_t>((w.reached - 1) % config.plan.waypoint_count);
+          const glider::fw::EastNorth target = frame.to_local(config.plan.waypoints[index]);
+          std::printf("    waypoint %zu counted at %8.0f s, true distance %6.0f m (radius %.0f m)\n", index, w.time_s,
+                      std::hypot(w.east_m - target.east_m, w.north_m - target.north_m), config.plan.waypoint_radius_m);
+        }
+      }
+      print_surfacings(stats.surfacings());
+      std::printf("  distance       : %.2f km over ground (start to end)\n",
+                  std::hypot(result.final_truth.east_m, result.final_truth.north_m) / 1000.0);
+      std::printf("  energy         : %.0f kJ, %.2f Ah\n", result.energy_used_j / 1000.0, result.charge_used_amphr);
+      if (result.sim_time_s < 86400.0) {
+        std::printf("  simulated time : %.0f s (%.1f min)\n", result.sim_time_s, result.sim_time_s / 60.0);
+      } else {
+        std::printf("  simulated time : %.0f s (%.1f days)\n", result.sim_time_s, result.sim_time_s / 86400.0);
+      }
+      std::printf("  wall time      : %.4f s\n", wall_s);
+      std::printf("  real-time factor: %.0fx\n", wall_s > 0.0 ? result.sim_time_s / wall_s : 0.0);
+      std::printf("  loop overruns  : %u (cycles %llu)\n", result.executive.overruns,
+                  static_cast<unsigned long long>(result.executive.cycles));
+      if (!out_path.empty()) {
+        std::printf("  flight log     : %s (%llu rows)\n", out_path.c_str(),
+                    static_cast<unsigned long long>(result.log_rows));
       }
     }
-    print_surfacings(stats.surfacings());
-    std::printf("  distance       : %.2f km over ground (start to end)\n",
-                std::hypot(result.final_truth.east_m, result.final_truth.north_m) / 1000.0);
-    std::printf("  energy         : %.0f kJ, %.2f Ah\n", result.energy_used_j / 1000.0, result.charge_used_amphr);
-    if (result.sim_time_s < 86400.0) {
-      std::printf("  simulated time : %.0f s (%.1f min)\n", result.sim_time_s, result.sim_time_s / 60.0);
-    } else {
-      std::printf("  simulated time : %.0f s (%.1f days)\n", result.sim_time_s, result.sim_time_s / 86400.0);
-    }
-    std::printf("  wall time      : %.4f s\n", wall_s);
-    std::printf("  real-time factor: %.0fx\n", wall_s > 0.0 ? result.sim_time_s / wall_s : 0.0);
-    std::printf("  loop overruns  : %u (cycles %llu)\n", result.executive.overruns,
-                static_cast<unsigned long long>(result.executive.cycles));
-    if (!out_path.empty()) {
-      std::printf("  flight log     : %s (%llu rows)\n", out_path.c_str(),
-                  static_cast<unsigned long long>(result.log_rows));
-    }
-  }
-  if (aborted) return 2;
-  return result.completed ? 0 : 3;
+    // Aborted, or stopped by the time limit before the mission ended.
+    return !aborted && result.completed ? glider::cli::kOk : glider::cli::kStopped;
+  });
 }

@@ -21,6 +21,22 @@ fw::mission_file::MissionVehicle mission_vehicle(const model::VehicleParams& v, 
   return m;
 }
 
+fw::app::VehicleSetup vehicle_setup(const model::VehicleParams& v, const fw::app::FittedDevices& fitted,
+                                    double max_working_depth_m, bool flight_model_dr, double density_kg_m3) {
+  fw::app::VehicleSetup setup;
+  setup.source = "vehicle " + v.name;
+  setup.vehicle = mission_vehicle(v, max_working_depth_m);
+  setup.vehicle.drop_weight_fitted = fitted.drop_weight;
+  setup.fin_delay_s = v.heading.fin_delay_s;
+  setup.fitted = fitted;
+  if (flight_model_dr) setup.flight_model_dr = flight_model_dead_reckoning(v, density_kg_m3);
+  return setup;
+}
+
+fw::app::FittedDevices load_fitted_devices(const std::filesystem::path& vehicle_file) {
+  return fw::app::read_fitted_devices(config::TomlDocument::load(vehicle_file), fw::app::FittedDevices{});
+}
+
 fw::DeadReckoningConfig flight_model_dead_reckoning(const model::VehicleParams& v, double density_kg_m3,
                                                     fw::DeadReckoningConfig dr) {
   dr.method = fw::DrMethod::kFlightModel;

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <optional>
 
+#include "glider/firmware/app/absent_devices.hpp"
+#include "glider/firmware/app/flight_application.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/units.hpp"
@@ -74,21 +76,27 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
   TeeLogSink log(file_sink, result.stats);
 
-  const hal::Hal hal{.clock = clock,
-                     .depth = sim_hal.depth(),
-                     .attitude = sim_hal.attitude(),
-                     .pump = sim_hal,
-                     .battery = sim_hal,
-                     .log = log,
-                     .rudder = sim_hal.rudder(),
-                     .gps = sim_hal.gps(),
-                     .leak = sim_hal.leak(),
-                     .drop_weight = sim_hal.drop_weight(),
-                     .power = sim_hal.power()};
-  fw::FlightSoftware flight(hal, config);
-  const std::array<fw::TaskSlot, 1> tasks{{{"flight", &flight, 1, options.period_us / 2}}};
-  fw::Executive executive(clock, tasks, options.period_us);
-  flight.attach_executive(&executive);
+  // What the vehicle is not fitted with, the firmware gets as absent devices.
+  const fw::app::FittedDevices& fitted = options.fitted;
+  fw::app::FixedRudder fixed_rudder(clock);
+  fw::app::NoDigitalInput no_leak;
+  fw::app::NoDigitalOutput no_drop_weight;
+  fw::app::NoPowerMonitor no_power;
+  const hal::Hal hal{
+      .clock = clock,
+      .depth = sim_hal.depth(),
+      .attitude = sim_hal.attitude(),
+      .pump = sim_hal,
+      .battery = sim_hal,
+      .log = log,
+      .rudder = fitted.rudder ? sim_hal.rudder() : static_cast<hal::Rudder&>(fixed_rudder),
+      .gps = sim_hal.gps(),
+      .leak = fitted.leak_detector ? static_cast<hal::DigitalInput&>(sim_hal.leak()) : no_leak,
+      .drop_weight = fitted.drop_weight ? static_cast<hal::DigitalOutput&>(sim_hal.drop_weight()) : no_drop_weight,
+      .power = fitted.power_monitor ? static_cast<hal::PowerMonitor&>(sim_hal.power()) : no_power};
+  fw::app::FlightApplication app(hal, config, nullptr, options.period_us);
+  fw::Executive& executive = app.executive();
+  const fw::FlightSoftware& flight = app.flight();
 
   const double period_s = hal::to_seconds(options.period_us);
   while (sim.time_s() <= options.max_sim_time_s) {

@@ -68,7 +68,7 @@ def feeder(device, sentences, stop):
 
 def main():
     build, source = sys.argv[1], sys.argv[2]
-    firmware = os.environ.get("GLIDER_FIRMWARE", os.path.join(build, "target", "glider-firmware"))
+    firmware = os.environ.get("GLIDER_FIRMWARE", os.path.join(build, "firmware", "linux", "glider-firmware"))
     prefix = os.environ.get("GLIDER_FIRMWARE_PREFIX", "").split()
     with tempfile.TemporaryDirectory() as tmp:
         sim = start([os.path.join(build, "tools", "actuator_sim", "glider-actuator-sim"), "--tcp", "127.0.0.1:0"],

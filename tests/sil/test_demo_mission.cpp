@@ -14,12 +14,11 @@
 #include "glider/model/seawater.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
+#include "glider/units.hpp"
 
 using namespace glider;
 
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -55,17 +54,7 @@ TEST(DemoMission, CompletesThreeYosBetween5And50m) {
   LONGS_EQUAL(0, r.executive.overruns);
 }
 
-TEST(DemoMission, GlidesSettleAtTheCommandedPitch) {
-  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
-  CHECK(r.stats.dives().samples > 300);
-  CHECK(r.stats.climbs().samples > 300);
-  CHECK(r.stats.dives().max_pitch_error_rad <= 2.0 * kDeg);
-  CHECK(r.stats.climbs().max_pitch_error_rad <= 2.0 * kDeg);
-  DOUBLES_EQUAL(config.mission.dive_pitch_rad, r.stats.dives().mean_pitch_rad(), 0.5 * kDeg);
-  DOUBLES_EQUAL(config.mission.climb_pitch_rad, r.stats.climbs().mean_pitch_rad(), 0.5 * kDeg);
-  CHECK(r.stats.dives().mean_depth_rate_m_s() > 0.1);
-  CHECK(r.stats.climbs().mean_depth_rate_m_s() < -0.1);
-}
+// The settled glides' pitch: the flight test card tests/cards/demo_glides.toml (./glider regress).
 
 TEST(DemoMission, TwoRunsWriteByteIdenticalLogs) {
   // Water with a CTD, so its noise is in the log too.
@@ -131,9 +120,9 @@ TEST(DemoMission, CtdMeasuresTheWaterTheVehicleFeels) {
     ++sampled;
     // TEOS-10 of the logged T, C, p is the density the vehicle felt; the
     // CTD's noise (2 mK, 0.3 mS/m, 0.2 dbar) is worth ~0.003 kg/m^3 (1 sigma).
-    const double measured = model::seawater::density_from_ctd(cond[i], temp[i], 10.0 * bar[i]);
+    const double measured = model::seawater::density_from_ctd(cond[i], temp[i], bar_to_dbar(bar[i]));
     worst_rho = std::max(worst_rho, std::abs(measured - rho[i]));
-    worst_p = std::max(worst_p, std::abs(10.0 * bar[i] - model::sea_pressure_dbar(std::max(depth[i], 0.0))));
+    worst_p = std::max(worst_p, std::abs(bar_to_dbar(bar[i]) - model::sea_pressure_dbar(std::max(depth[i], 0.0))));
   }
   CHECK(sampled > 0.9 * static_cast<double>(log.rows()));
   CHECK(worst_rho < 0.015);  // 5 sigma

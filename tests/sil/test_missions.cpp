@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Flight test cards in SIL: a Slocum mission with waypoints in a current,
-// every abort cause injected, and the real comet-nsb3 mission end to end.
+// every abort cause injected (the real comet-nsb3 mission end to end is the
+// card tests/cards/comet_nsb3.toml).
 // The envelopes are stated next to each assertion; the figures they were
 // set from are in docs/missions.md (measured with ./glider sil).
 #include <CppUTest/TestHarness.h>
@@ -218,34 +219,7 @@ TEST(SilAborts, DropWeightReleasedWhereFitted) {
   CHECK_TRUE(r.drop_weight_released);
 }
 
-TEST_GROUP(SilComet){};
-
-// comet-nsb3 as flown (it loops its two waypoints forever: stopped after
-// both, --legs 2), on the comet vehicle (WE01 model, comet's trim, pump,
-// roll and fin limit) in still water: ~64 km, 16 segments, ~2 days.
-TEST(SilComet, Nsb3FlownEndToEnd) {
-  const model::VehicleParams vehicle = model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_comet.toml");
-  fw::FlightSoftwareConfig config = load("comet-nsb3/missions/nsb3.mi", vehicle, 102.0);
-  config.plan.legs_to_run = 2;
-  sil::ScenarioOptions options;
-  options.max_sim_time_s = 4.0 * 86400.0;
-  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
-  STRCMP_EQUAL("", r.error.c_str());
-  CHECK_TRUE(r.completed);
-  CHECK(r.abort_cause == fw::AbortCause::kNone);
-  LONGS_EQUAL(2, r.waypoints.size());
-  for (const auto& w : r.waypoints) {
-    CHECK(true_distance_to(config, options, w) < 600.0);  // list_when_wpt_dist 500 m, counted by DR
-  }
-  // Surfacing every 3 h (surfac10's when_secs) plus the waits at the top.
-  CHECK(r.stats.segments() >= 14 && r.stats.segments() <= 18);
-  for (const auto& s : r.stats.surfacings()) CHECK(s.dr_error_m < 60.0);  // still water: DR's own error
-  // Pump-only pitch: the battery never left 0.405 in under way, pitch ~21 deg.
-  CHECK(std::fabs(r.stats.dives().mean_pitch_rad() + 0.361) < 0.02);
-  CHECK(std::fabs(r.stats.climbs().mean_pitch_rad() - 0.361) < 0.02);
-  const auto& inflections = r.stats.inflection_depths_m();
-  for (std::size_t i = 0; i < inflections.size(); ++i) CHECK(inflections[i] < 52.0);
-}
+// comet-nsb3 end to end: the flight test card tests/cards/comet_nsb3.toml (./glider regress).
 
 TEST_GROUP(SilDeadReckoning) {
   model::VehicleParams vehicle = model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");

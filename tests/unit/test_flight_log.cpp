@@ -84,13 +84,13 @@ TEST(FlightLogReader, NanInAnySpellingIsAnEmptyField) {
 
 TEST(FlightLogReader, BlanksAroundFieldsCrLfAndBlankLinesAreAccepted) {
   const FlightLog log = parse_flight_log(
-      "# k: v\r\n\r\n m_present_time , m_depth,m_pitch,m_ballast_pumped\r\n1, 2 ,3,4\r\n\r\n", "crlf.csv");
+      "# k: v\r\n\r\n m_present_time , m_depth,m_pitch,m_ballast_pumped\r\n1, 2 ,0.3,4\r\n\r\n", "crlf.csv");
   LONGS_EQUAL(1, log.rows());
   DOUBLES_EQUAL(2.0, log.column("m_depth")[0], 0.0);
   DOUBLES_EQUAL(4.0, log.column("m_ballast_pumped")[0], 0.0);
   STRCMP_EQUAL("v", log.metadata_value("k").value().c_str());
   // A spreadsheet's UTF-8 byte order mark is not part of the first name.
-  CHECK_TRUE(parse_flight_log("\xEF\xBB\xBF" + kHeader.substr(kHeader.find("m_present")) + "1,2,3,4\n", "bom.csv")
+  CHECK_TRUE(parse_flight_log("\xEF\xBB\xBF" + kHeader.substr(kHeader.find("m_present")) + "1,2,0.3,4\n", "bom.csv")
                  .has("m_present_time"));
 }
 
@@ -123,18 +123,18 @@ TEST(FlightLogReader, MissingRequiredColumnNamesIt) {
 }
 
 TEST(FlightLogReader, DepthMayComeFromTheCtdPressureAndPumpFromOilVolume) {
-  STRCMP_EQUAL("", error_of("m_present_time,sci_water_pressure,m_pitch,m_de_oil_vol\n1,2,3,4\n").c_str());
+  STRCMP_EQUAL("", error_of("m_present_time,sci_water_pressure,m_pitch,m_de_oil_vol\n1,2,0.3,4\n").c_str());
 }
 
 TEST(FlightLogReader, TextInANumberNamesLineAndColumn) {
   STRCMP_EQUAL("bad.csv:6:m_pitch: 'abc' is not a number (column 3)",
-               error_of(kHeader + "1,2,3,4\n2,2,abc,4\n").c_str());
+               error_of(kHeader + "1,2,0.3,4\n2,2,abc,4\n").c_str());
   STRCMP_EQUAL("bad.csv:5:m_depth: '1.5m' is not a number (column 2)", error_of(kHeader + "1,1.5m,3,4\n").c_str());
   STRCMP_EQUAL("bad.csv:5:m_depth: '+1.5' is not a number (column 2)", error_of(kHeader + "1,+1.5,3,4\n").c_str());
   STRCMP_EQUAL("bad.csv:5:m_ballast_pumped: '1e999' is out of the range of a double (column 4)",
-               error_of(kHeader + "1,2,3,1e999\n").c_str());
+               error_of(kHeader + "1,2,0.3,1e999\n").c_str());
   STRCMP_EQUAL("bad.csv:5:m_ballast_pumped: 'inf' is not a finite number (column 4)",
-               error_of(kHeader + "1,2,3,inf\n").c_str());
+               error_of(kHeader + "1,2,0.3,inf\n").c_str());
 }
 
 TEST(FlightLogReader, TimeGoingBackwardsOrStandingStillIsAnError) {
@@ -157,9 +157,9 @@ TEST(FlightLogReader, EmptyFileHeaderOnlyAndNoHeaderAreErrors) {
 
 TEST(FlightLogReader, RowWithTooManyOrTooFewFieldsIsAnError) {
   STRCMP_EQUAL("bad.csv:6:(column 5): 5 fields, but the header has 4 columns",
-               error_of(kHeader + "1,2,3,4\n2,2,3,4,\n").c_str());
+               error_of(kHeader + "1,2,0.3,4\n2,2,0.3,4,\n").c_str());
   STRCMP_EQUAL("bad.csv:5:m_ballast_pumped: missing field: the row has 3 fields, the header has 4 columns (column 4)",
-               error_of(kHeader + "1,2,3\n").c_str());
+               error_of(kHeader + "1,2,0.3\n").c_str());
 }
 
 TEST(FlightLogReader, BadHeadersAndLateMetadataAreErrors) {
@@ -167,7 +167,7 @@ TEST(FlightLogReader, BadHeadersAndLateMetadataAreErrors) {
                error_of("m_present_time,m_depth,m_pitch,m_ballast_pumped,m_depth\n1,2,3,4,5\n").c_str());
   STRCMP_EQUAL("bad.csv:1:(column 3): empty column name",
                error_of("m_present_time,m_depth,,m_pitch,m_ballast_pumped\n1,2,3,4,5\n").c_str());
-  STRCMP_EQUAL("bad.csv:6: metadata line after the header", error_of(kHeader + "1,2,3,4\n# late: 1\n").c_str());
+  STRCMP_EQUAL("bad.csv:6: metadata line after the header", error_of(kHeader + "1,2,0.3,4\n# late: 1\n").c_str());
 }
 
 TEST(FlightLogReader, ErrorCarriesItsParts) {
@@ -191,7 +191,7 @@ TEST(FlightLogReader, ErrorCarriesItsParts) {
 
 TEST(FlightLogReader, FileErrorsNameThePath) {
   const std::string path = GLIDER_TEST_OUTPUT_DIR "/flightlog_bad.csv";
-  std::ofstream(path) << kHeader << "1,2,3,4\n0.5,2,3,4\n";
+  std::ofstream(path) << kHeader << "1,2,0.3,4\n0.5,2,0.3,4\n";
   try {
     read_flight_log(path);
     FAIL("no error");

@@ -17,6 +17,7 @@
 #include "glider/flightlog/phases.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
+#include "glider/units.hpp"
 
 using namespace glider::flightlog;
 
@@ -143,7 +144,7 @@ TEST(FlightLogPhases, CtdOnlyLogSegmentsFromPressure) {
   options.required = {{"pressure_bar"}, {"u_adcp_m_s"}};
   const FlightLog log = read_flight_log(kRealDir + "gliderflight-adcp.csv", options);
   Column depth = log.column("pressure_bar");
-  for (double& d : depth) d *= kMetresPerBar;
+  for (double& d : depth) d = glider::bar_to_approx_depth_m(d);
   const Column rate = derive_depth_rate(log.time(), depth, 30.0);
   const std::vector<Phase> phases = classify_phases(log.time(), depth, rate, {});
   const GlideCounts glides = count_glides(find_segments(log.time(), depth, phases));

@@ -130,7 +130,7 @@ std::string refusal(const MissionDir& dir, const std::string& mi) { return first
 TEST(MissionFile, SyntaxErrorsNameFileAndLine) {
   STRCMP_EQUAL("m.mi:2: error: expected 'name(unit) value', got 'overdepth 60'",
                refusal("syntax1", "behavior: abend\n  b_arg: overdepth 60\n").c_str());
-  STRCMP_EQUAL("m.mi:3: error: value of overtime is not a number: 'ten'",
+  STRCMP_EQUAL("m.mi:3: error: value of overtime is not a finite number: 'ten'",
                refusal("syntax2", "behavior: abend\n# comment\n  b_arg: overtime(s) ten\n").c_str());
   STRCMP_EQUAL("m.mi:1: error: b_arg outside a behavior block", refusal("syntax3", "b_arg: overtime(s) 10\n").c_str());
   STRCMP_EQUAL("m.mi:1: error: expected 'behavior:', 'b_arg:' or 'sensor:', got 'hello world'",

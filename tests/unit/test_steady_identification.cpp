@@ -17,6 +17,7 @@
 #include "glider/identification/steady_identification.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/units.hpp"
 
 using namespace glider;
 using namespace glider::identification;
@@ -24,7 +25,6 @@ using namespace glider::identification;
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kInch = 0.0254;
 
 // The papers' small CSV tables: `#` comment lines, a header, numbers.
 std::vector<std::map<std::string, std::string>> read_table(const std::string& path) {
@@ -70,7 +70,7 @@ double printed_sd(double half_step) { return half_step / std::sqrt(3.0); }
 // further forward than the slide reports.
 constexpr double kHiddenOffsetKg = -0.040;
 constexpr double kHiddenCd0 = 0.25;
-constexpr double kHiddenPitchTrimM = 0.1 * kInch;
+constexpr double kHiddenPitchTrimM = 0.1 * kMetresPerInch;
 
 struct Synthetic {
   model::VehicleParams nominal;
@@ -91,7 +91,7 @@ Synthetic synthetic_glides() {
     for (int step = -10; step <= 10; ++step) {
       model::MassInputs m;
       m.pumped_volume_m3 = cc * 1e-6;
-      m.battery_pos_m = step * 0.1 * kInch;
+      m.battery_pos_m = step * 0.1 * kMetresPerInch;
       const auto eq = model::solve_equilibrium(dynamics, m, 100.0);
       if (!eq.glide || std::abs(eq.glide->pitch_rad) < 20.0 * kDeg || std::abs(eq.glide->pitch_rad) > 40.0 * kDeg) {
         continue;
@@ -245,16 +245,17 @@ TEST(SteadyIdentification, RecoversThemFromNoisyGlides) {
         3.0 * larger(id.pitch.pitch_trim_offset_se_m, id.pitch.pitch_trim_offset_input_se_m));
   CHECK(std::abs(id.pitch.cm_alpha_viscous_m - s.nominal.hydro.cm_alpha_m) <
         3.0 * larger(id.pitch.cm_alpha_viscous_se_m, id.pitch.cm_alpha_viscous_input_se_m));
-  UT_PRINT(("synthetic, noisy: offset " + std::to_string(b.offset_kg * 1e3) + " +- " +
-            std::to_string(b.uncertainty_kg * 1e3) + " g, cd0 " + std::to_string(id.drag.cd0) + " +- " +
-            std::to_string(larger(id.drag.cd0_se, id.drag.cd0_input_se)) + ", cd_alpha2 " +
-            std::to_string(id.drag.cd_alpha2_per_rad2) + " +- " +
-            std::to_string(larger(id.drag.cd_alpha2_se_per_rad2, id.drag.cd_alpha2_input_se_per_rad2)) +
-            ", pitch trim " + std::to_string(id.pitch.pitch_trim_offset_in()) + " +- " +
-            std::to_string(larger(id.pitch.pitch_trim_offset_se_m, id.pitch.pitch_trim_offset_input_se_m) / kInch) +
-            " in, cm_alpha viscous " + std::to_string(id.pitch.cm_alpha_viscous_m) + " +- " +
-            std::to_string(larger(id.pitch.cm_alpha_viscous_se_m, id.pitch.cm_alpha_viscous_input_se_m)))
-               .c_str());
+  UT_PRINT(
+      ("synthetic, noisy: offset " + std::to_string(b.offset_kg * 1e3) + " +- " +
+       std::to_string(b.uncertainty_kg * 1e3) + " g, cd0 " + std::to_string(id.drag.cd0) + " +- " +
+       std::to_string(larger(id.drag.cd0_se, id.drag.cd0_input_se)) + ", cd_alpha2 " +
+       std::to_string(id.drag.cd_alpha2_per_rad2) + " +- " +
+       std::to_string(larger(id.drag.cd_alpha2_se_per_rad2, id.drag.cd_alpha2_input_se_per_rad2)) + ", pitch trim " +
+       std::to_string(id.pitch.pitch_trim_offset_in()) + " +- " +
+       std::to_string(larger(id.pitch.pitch_trim_offset_se_m, id.pitch.pitch_trim_offset_input_se_m) / kMetresPerInch) +
+       " in, cm_alpha viscous " + std::to_string(id.pitch.cm_alpha_viscous_m) + " +- " +
+       std::to_string(larger(id.pitch.cm_alpha_viscous_se_m, id.pitch.cm_alpha_viscous_input_se_m)))
+          .c_str());
 }
 
 // Table 1 was computed by the authors WITH their -73 g offset: the lift

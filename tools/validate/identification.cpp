@@ -22,7 +22,6 @@ namespace {
 namespace id = glider::identification;
 
 constexpr double kDeg = kRadPerDeg;  // glider/units.hpp
-constexpr double kInch = 0.0254;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 // Half the last printed digit, as a uniform error's standard deviation.
@@ -87,7 +86,7 @@ LayoutSensitivity drag_and_pitch_tables(Report& r, const model::VehicleParams& v
             fixed(d.residual_sd, 4)},
            {"paper 000 eq. 14", "0.214", "32.3", paper_cd}});
   const id::PitchTrimEstimate& p = result.pitch;
-  const double trim_se_in = larger(p.pitch_trim_offset_se_m, p.pitch_trim_offset_input_se_m) / kInch;
+  const double trim_se_in = larger(p.pitch_trim_offset_se_m, p.pitch_trim_offset_input_se_m) / kMetresPerInch;
   const LayoutSensitivity sens =
       layout_sensitivity(vehicle, lift, samples, result.buoyancy.offset_kg, p.cm_alpha_total_m);
   r.table(
@@ -95,7 +94,8 @@ LayoutSensitivity drag_and_pitch_tables(Report& r, const model::VehicleParams& v
       {{"pitch_trim_offset (in, battery equivalent, + nose heavy)", with_error(p.pitch_trim_offset_in(), trim_se_in, 3),
         "0 (the file is level at m_battpos 0)"},
        {"equivalent offset-mass position r_W1 (m)",
-        with_error(p.offset_mass_x_m, trim_se_in * kInch * vehicle.battery.mass_kg / vehicle.offset.mass_kg, 4),
+        with_error(p.offset_mass_x_m, trim_se_in * kMetresPerInch * vehicle.battery.mass_kg / vehicle.offset.mass_kg,
+                   4),
         paper_pitch},
        {"C_M slope with Munk (m/rad, paper's C_M = K a)",
         with_error(p.cm_alpha_total_m, larger(p.cm_alpha_total_se_m, p.cm_alpha_total_input_se_m), 2), "0.63"},
@@ -223,7 +223,7 @@ void stante(Report& r, const Inputs& in, const model::VehicleParams& we01, const
     const id::GlideFromLift& g = result.buoyancy.glides[i];
     const double polar_cd = we01.hydro.cd0 + we01.hydro.cd_alpha2 * g.alpha_rad * g.alpha_rad;
     glides.push_back({used[i]->text("case"), used[i]->text("pitch_deg"), used[i]->text("rate_m_s"),
-                      fixed(-used[i]->number("dBu_kg") * 1e3, 0), fixed(samples[i].battery_pos_m / kInch, 2),
+                      fixed(-used[i]->number("dBu_kg") * 1e3, 0), fixed(samples[i].battery_pos_m / kMetresPerInch, 2),
                       fixed(g.alpha_rad / kDeg, 2), fixed(g.speed_m_s, 3), fixed(g.drag_coefficient, 3),
                       fixed(polar_cd, 3)});
   }

@@ -114,7 +114,7 @@ void real_data(Report& r, const Inputs& in) {
   const flightlog::FlightLog adcp = flightlog::read_flight_log(in.real_data / "gliderflight-adcp.csv", adcp_options);
   const auto& time = adcp.time();
   std::vector<double> depth(adcp.rows());
-  for (std::size_t i = 0; i < adcp.rows(); ++i) depth[i] = 10.0 * adcp.column("pressure_bar")[i];
+  for (std::size_t i = 0; i < adcp.rows(); ++i) depth[i] = bar_to_approx_depth_m(adcp.column("pressure_bar")[i]);
   const std::vector<double> rate = centred_rate(time, depth, 5);
   const auto& pitch = adcp.column("pitch_rad");
   const auto& ballast = adcp.column("buoyancy_drive_cc");

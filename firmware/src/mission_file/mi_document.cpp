@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+
+#include "glider/config/value_limits.hpp"
 
 namespace glider::fw::mission_file {
 namespace {
@@ -34,7 +37,8 @@ bool parse_number(const std::string& text, double& value) {
   const char* last = text.data() + text.size();
   if (*first == '+') ++first;
   const auto result = std::from_chars(first, last, value);
-  return result.ec == std::errc() && result.ptr == last;
+  // from_chars reads "nan" and "inf": no file value may be either.
+  return result.ec == std::errc() && result.ptr == last && std::isfinite(value);
 }
 
 // Calls fn(where, line, lower-case line) for every line that is not blank
@@ -63,7 +67,7 @@ struct Reader {
     const auto open = body.find('(');
     const auto close = body.find(')', open == std::string::npos ? 0 : open);
     if (open == std::string::npos || close == std::string::npos) {
-      error(at, "expected 'name(unit) value', got '" + body + "'");
+      error(at, "expected 'name(unit) value', got '" + config::shorten(body) + "'");
       return false;
     }
     arg.name = lower(trim(body.substr(0, open)));
@@ -74,7 +78,7 @@ struct Reader {
       return false;
     }
     if (!parse_number(value, arg.value)) {
-      error(at, "value of " + arg.name + " is not a number: '" + value + "'");
+      error(at, "value of " + config::shorten(arg.name) + " is not a finite number: '" + config::shorten(value) + "'");
       return false;
     }
     arg.where = at;
@@ -98,8 +102,8 @@ struct Reader {
             const auto eq = line.find('=');
             const std::string name = eq == std::string::npos ? "" : lower(trim(line.substr(eq + 1)));
             if (name != behavior.name) {
-              error(at, "argument file is for behavior '" + name + "', included by '" + behavior.name + "' at " +
-                            included_at.file + ":" + std::to_string(included_at.line));
+              error(at, "argument file is for behavior '" + config::shorten(name) + "', included by '" + behavior.name +
+                            "' at " + included_at.file + ":" + std::to_string(included_at.line));
             }
             named = true;
           } else if (key == "<start:b_arg>") {
@@ -118,13 +122,14 @@ struct Reader {
             MiWaypoint w;
             fields >> lon >> lat;
             if (!parse_number(lon, w.lon_nmea) || !parse_number(lat, w.lat_nmea) || (fields >> extra)) {
-              error(at, "waypoint must be 'lon lat' in NMEA ddmm.mmm, got '" + line + "'");
+              error(at, "waypoint must be 'lon lat' (finite numbers) in NMEA ddmm.mmm, got '" + config::shorten(line) +
+                            "'");
               return;
             }
             w.where = at;
             behavior.waypoints.push_back(w);
           } else {
-            error(at, "unexpected line in argument file: '" + line + "'");
+            error(at, "unexpected line in argument file: '" + config::shorten(line) + "'");
           }
         });
     if (!named) error({file, 0}, "argument file has no behavior_name= line");
@@ -133,8 +138,14 @@ struct Reader {
 
   void include(const std::filesystem::path& dir, MiBehavior& behavior, const MiArg& arg) {
     if (arg.value < 0.0) return;  // < 0: arguments from this file only (Slocum)
+    const std::optional<std::int64_t> index = config::whole_number(arg.value, 0, 99);
+    if (!index) {
+      error(arg.where, "args_from_file: value " + config::show_value(arg.value) +
+                           " is outside the allowed range [0, 99] (a whole number: NN of the .ma file)");
+      return;
+    }
     char number[16];
-    std::snprintf(number, sizeof(number), "%02d", static_cast<int>(arg.value));
+    std::snprintf(number, sizeof(number), "%02d", static_cast<int>(*index));
     const std::string file = behavior.name.substr(0, 6) + number + ".ma";
     for (const auto& candidate : {dir / "mafiles" / file, dir / ".." / "mafiles" / file, dir / file}) {
       std::error_code ec;
@@ -170,7 +181,7 @@ struct Reader {
         MiArg arg;
         if (parse_arg(trim(line.substr(7)), at, arg)) doc.sensors.push_back(arg);
       } else {
-        error(at, "expected 'behavior:', 'b_arg:' or 'sensor:', got '" + line + "'");
+        error(at, "expected 'behavior:', 'b_arg:' or 'sensor:', got '" + config::shorten(line) + "'");
       }
     });
   }

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 
+#include "glider/config/value_limits.hpp"
 #include "glider/firmware/geo.hpp"
 
 namespace glider::fw::mission_file {
@@ -26,101 +28,107 @@ enum class Use {
 
 struct ArgRule {
   Use use;
-  const char* why;  // for kIgnored / kRefused
+  const char* why;      // for kIgnored / kRefused
+  config::Range range;  // for kUsed: anything else is refused with its line
 };
+
+// Ranges in Slocum's units; -1 is Slocum's "off" where the range starts there.
+ArgRule used(double min, double max, const char* unit) { return {Use::kUsed, "", {min, max, unit}}; }
+ArgRule ignored(const char* why) { return {Use::kIgnored, why, {0.0, 0.0, ""}}; }
+ArgRule refused(const char* why) { return {Use::kRefused, why, {0.0, 0.0, ""}}; }
 
 using Rules = std::map<std::string, ArgRule>;
 
 const Rules& abend_rules() {
   static const Rules rules{
-      {"overdepth", {Use::kUsed, ""}},
-      {"overtime", {Use::kUsed, ""}},
-      {"samedepth_for", {Use::kUsed, ""}},
-      {"stalled_for", {Use::kUsed, ""}},
-      {"max_wpt_distance", {Use::kUsed, ""}},
-      {"remaining_charge_min", {Use::kUsed, ""}},
-      {"overdepth_sample_time", {Use::kIgnored, "checked every control cycle (1 s), not sampled"}},
-      {"samedepth_for_sample_time", {Use::kIgnored, "checked every control cycle (1 s), not sampled"}},
-      {"stalled_for_sample_time", {Use::kIgnored, "checked every control cycle (1 s), not sampled"}},
-      {"no_cop_tickle_for", {Use::kIgnored, "no COP watchdog in this firmware (the executive counts overruns)"}},
-      {"no_cop_tickle_percent", {Use::kIgnored, "no COP watchdog in this firmware"}},
-      {"reqd_spare_heap", {Use::kIgnored, "the firmware allocates nothing after start-up"}},
-      {"chk_sensor_reasonableness",
-       {Use::kIgnored, "every sensor value is always checked (validity, finiteness, age)"}},
-      {"leakdetect_sample_time", {Use::kIgnored, "the leak detector is read every control cycle"}},
-      {"vacuum_min", {Use::kRefused, "no vacuum sensor in the HAL: the vacuum abort cannot be honoured"}},
-      {"vacuum_max", {Use::kRefused, "no vacuum sensor in the HAL: the vacuum abort cannot be honoured"}},
+      {"overdepth", used(-1.0, 1500.0, "m")},
+      {"overtime", used(-1.0, 2.0 * 366.0 * 86400.0, "s")},
+      {"samedepth_for", used(-1.0, 2.0 * 366.0 * 86400.0, "s")},
+      {"stalled_for", used(-1.0, 2.0 * 366.0 * 86400.0, "s")},
+      {"max_wpt_distance", used(-1.0, 2e7, "m")},
+      {"remaining_charge_min", used(0.0, 100.0, "%")},
+      {"overdepth_sample_time", ignored("checked every control cycle (1 s), not sampled")},
+      {"samedepth_for_sample_time", ignored("checked every control cycle (1 s), not sampled")},
+      {"stalled_for_sample_time", ignored("checked every control cycle (1 s), not sampled")},
+      {"no_cop_tickle_for", ignored("no COP watchdog in this firmware (the executive counts overruns)")},
+      {"no_cop_tickle_percent", ignored("no COP watchdog in this firmware")},
+      {"reqd_spare_heap", ignored("the firmware allocates nothing after start-up")},
+      {"chk_sensor_reasonableness", ignored("every sensor value is always checked (validity, finiteness, age)")},
+      {"leakdetect_sample_time", ignored("the leak detector is read every control cycle")},
+      {"vacuum_min", refused("no vacuum sensor in the HAL: the vacuum abort cannot be honoured")},
+      {"vacuum_max", refused("no vacuum sensor in the HAL: the vacuum abort cannot be honoured")},
   };
   return rules;
 }
 
 const Rules& surface_rules() {
   static const Rules rules{
-      {"start_when", {Use::kUsed, ""}},
-      {"when_secs", {Use::kUsed, ""}},
-      {"end_action", {Use::kUsed, ""}},
-      {"gps_wait_time", {Use::kUsed, ""}},
-      {"keystroke_wait_time", {Use::kUsed, ""}},
-      {"c_use_bpump", {Use::kIgnored, "surfacing climbs use the yo's climb ballast (full buoyancy at the surface)"}},
-      {"c_bpump_value", {Use::kIgnored, "surfacing climbs use the yo's climb ballast (full buoyancy at the surface)"}},
-      {"c_use_pitch", {Use::kIgnored, "surfacing climbs use the yo's climb pitch"}},
-      {"c_pitch_value", {Use::kIgnored, "surfacing climbs use the yo's climb pitch"}},
-      {"strobe_on", {Use::kIgnored, "no strobe in the HAL"}},
-      {"report_all", {Use::kIgnored, "no surface dialog"}},
-      {"printout_cycle_time", {Use::kIgnored, "no surface dialog"}},
-      {"when_wpt_dist", {Use::kIgnored, "only used by start_when 7, which is refused"}},
-      {"when_utc_min", {Use::kIgnored, "only used by start_when 13, which is refused"}},
-      {"when_utc_hour", {Use::kIgnored, "only used by start_when 13, which is refused"}},
-      {"when_utc_day", {Use::kIgnored, "only used by start_when 13, which is refused"}},
+      {"start_when", used(0.0, 20.0, "")},
+      {"when_secs", used(-1.0, 2.0 * 366.0 * 86400.0, "s")},
+      {"end_action", used(0.0, 2.0, "")},
+      {"gps_wait_time", used(0.0, 86400.0, "s")},
+      {"keystroke_wait_time", used(0.0, 86400.0, "s")},
+      {"c_use_bpump", ignored("surfacing climbs use the yo's climb ballast (full buoyancy at the surface)")},
+      {"c_bpump_value", ignored("surfacing climbs use the yo's climb ballast (full buoyancy at the surface)")},
+      {"c_use_pitch", ignored("surfacing climbs use the yo's climb pitch")},
+      {"c_pitch_value", ignored("surfacing climbs use the yo's climb pitch")},
+      {"strobe_on", ignored("no strobe in the HAL")},
+      {"report_all", ignored("no surface dialog")},
+      {"printout_cycle_time", ignored("no surface dialog")},
+      {"when_wpt_dist", ignored("only used by start_when 7, which is refused")},
+      {"when_utc_min", ignored("only used by start_when 13, which is refused")},
+      {"when_utc_hour", ignored("only used by start_when 13, which is refused")},
+      {"when_utc_day", ignored("only used by start_when 13, which is refused")},
   };
   return rules;
 }
 
 const Rules& goto_rules() {
   static const Rules rules{
-      {"start_when", {Use::kUsed, ""}},  {"list_stop_when", {Use::kUsed, ""}}, {"list_when_wpt_dist", {Use::kUsed, ""}},
-      {"initial_wpt", {Use::kUsed, ""}}, {"num_waypoints", {Use::kUsed, ""}},  {"num_legs_to_run", {Use::kUsed, ""}},
+      {"start_when", used(0.0, 20.0, "")},         {"list_stop_when", used(0.0, 20.0, "")},
+      {"list_when_wpt_dist", used(0.0, 1e5, "m")}, {"initial_wpt", used(-2.0, 1000.0, "")},
+      {"num_waypoints", used(0.0, 1000.0, "")},    {"num_legs_to_run", used(-2.0, 1e6, "")},
   };
   return rules;
 }
 
 const Rules& glide_rules() {  // yo (d_ and c_ prefixes), dive_to and climb_to (no prefix)
   static const Rules rules{
-      {"start_when", {Use::kUsed, ""}},
-      {"end_action", {Use::kUsed, ""}},
-      {"num_half_cycles_to_do", {Use::kUsed, ""}},
-      {"target_depth", {Use::kUsed, ""}},
-      {"target_altitude", {Use::kUsed, ""}},
-      {"use_pitch", {Use::kUsed, ""}},
-      {"pitch_value", {Use::kUsed, ""}},
-      {"use_bpump", {Use::kUsed, ""}},
-      {"bpump_value", {Use::kUsed, ""}},
+      {"start_when", used(0.0, 20.0, "")},
+      {"end_action", used(0.0, 2.0, "")},
+      {"num_half_cycles_to_do", used(-1.0, 1e6, "")},
+      {"target_depth", used(-1.0, 1500.0, "m")},
+      {"target_altitude", used(-1.0, 1500.0, "m")},
+      {"use_pitch", used(1.0, 3.0, "")},
+      {"pitch_value", used(-5.0, 5.0, "rad (use_pitch 3) or in (use_pitch 1)")},
+      {"use_bpump", used(0.0, 2.0, "")},
+      {"bpump_value", used(-1000.0, 1000.0, "cc")},
       {"stop_when_hover_for",
-       {Use::kIgnored, "not a per-glide check here: the abend samedepth_for/stalled_for aborts still apply"}},
+       ignored("not a per-glide check here: the abend samedepth_for/stalled_for aborts still apply")},
       {"stop_when_stalled_for",
-       {Use::kIgnored, "not a per-glide check here: the abend samedepth_for/stalled_for aborts still apply"}},
-      {"wait_for_pitch", {Use::kIgnored, "the pitch servo runs from the start of every glide"}},
-      {"wait_for_ballast", {Use::kIgnored, "the pitch servo waits for the pump by itself"}},
+       ignored("not a per-glide check here: the abend samedepth_for/stalled_for aborts still apply")},
+      {"wait_for_pitch", ignored("the pitch servo runs from the start of every glide")},
+      {"wait_for_ballast", ignored("the pitch servo waits for the pump by itself")},
   };
   return rules;
 }
 
 const Rules& prepare_rules() {
   static const Rules rules{
-      {"start_when", {Use::kUsed, ""}},
-      {"wait_time", {Use::kUsed, ""}},
+      {"start_when", used(0.0, 20.0, "")},
+      {"wait_time", used(0.0, 86400.0, "s")},
   };
   return rules;
 }
 
 const Rules& heading_rules() {
   static const Rules rules{
-      {"start_when", {Use::kUsed, ""}},
-      {"use_heading", {Use::kUsed, ""}},
-      {"heading_value", {Use::kUsed, ""}},
-      {"end_action", {Use::kIgnored, "a set heading holds until the mission ends"}},
-      {"stop_when", {Use::kIgnored, "a set heading holds until the mission ends"}},
-      {"when_secs", {Use::kIgnored, "a set heading holds until the mission ends"}},
+      {"start_when", used(0.0, 20.0, "")},
+      {"use_heading", used(0.0, 4.0, "")},
+      {"heading_value", used(-7.0, 7.0, "rad")},
+      {"end_action", ignored("a set heading holds until the mission ends")},
+      {"stop_when", ignored("a set heading holds until the mission ends")},
+      {"when_secs", ignored("a set heading holds until the mission ends")},
   };
   return rules;
 }
@@ -172,6 +180,7 @@ class Loader {
   SourceLocation yo_at_{};
   std::int32_t half_cycles_ = -1;
   double overdepth_m_ = 0.0;
+  std::set<const MiArg*> out_of_range_;
 };
 
 const MiArg* Loader::find(const MiBehavior& b, const std::string& name) const {
@@ -184,7 +193,8 @@ const MiArg* Loader::find(const MiBehavior& b, const std::string& name) const {
 
 double Loader::value(const MiBehavior& b, const std::string& name, double fallback) const {
   const MiArg* a = find(b, name);
-  return a != nullptr ? a->value : fallback;
+  // A refused value (error already reported) is never flown, nor converted.
+  return a != nullptr && out_of_range_.count(a) == 0 ? a->value : fallback;
 }
 
 void Loader::check_args(const MiBehavior& b, const Rules& rules, bool strict, bool prefixed) {
@@ -199,6 +209,9 @@ void Loader::check_args(const MiBehavior& b, const Rules& rules, bool strict, bo
       } else {
         warn(a.where, b.name + ": argument " + a.name + " is not supported and is ignored");
       }
+    } else if (rule->second.use == Use::kUsed && !config::within(a.value, rule->second.range)) {
+      fail(a.where, b.name + ": " + a.name + ": " + config::range_problem(a.value, rule->second.range));
+      out_of_range_.insert(&a);
     } else if (rule->second.use == Use::kIgnored) {
       warn(a.where, b.name + ": " + a.name + " ignored: " + rule->second.why);
     } else if (rule->second.use == Use::kRefused) {
@@ -292,7 +305,9 @@ void Loader::read_goto(const MiBehavior& b) {
     const double lat_minutes = std::fmod(std::fabs(w.lat_nmea), 100.0);
     const double lon_minutes = std::fmod(std::fabs(w.lon_nmea), 100.0);
     const LatLon ll{nmea_to_degrees(w.lat_nmea), nmea_to_degrees(w.lon_nmea)};
-    if (lat_minutes >= 60.0 || lon_minutes >= 60.0 || std::fabs(ll.lat_deg) > 90.0 || std::fabs(ll.lon_deg) > 180.0) {
+    // Written so that NaN fails too (the reader already refuses non-finite numbers).
+    if (!(lat_minutes < 60.0 && lon_minutes < 60.0 && std::fabs(ll.lat_deg) <= 90.0 &&
+          std::fabs(ll.lon_deg) <= 180.0)) {
       fail(w.where, "waypoint is not a position in NMEA ddmm.mmm (lon lat)");
       continue;
     }
@@ -341,7 +356,7 @@ void Loader::read_glide(const MiBehavior& b, const std::string& prefix, bool div
   const int use_pitch = static_cast<int>(value(b, prefix + "use_pitch", 3.0));
   const double pitch_value = value(b, prefix + "pitch_value", dive ? -0.4363 : 0.4363);
   if (use_pitch == 1) {  // battery position, in
-    if (pitch_value < vehicle_.limits.battery_min_in || pitch_value > vehicle_.limits.battery_max_in) {
+    if (!(pitch_value >= vehicle_.limits.battery_min_in && pitch_value <= vehicle_.limits.battery_max_in)) {
       fail(find(b, prefix + "pitch_value") != nullptr ? find(b, prefix + "pitch_value")->where : b.where,
            what + "pitch_value " + std::to_string(pitch_value) + " in is outside the battery's travel");
     }
@@ -349,6 +364,11 @@ void Loader::read_glide(const MiBehavior& b, const std::string& prefix, bool div
   } else if (use_pitch == 3) {  // pitch servo, rad
     if (dive ? !(pitch_value < 0.0) : !(pitch_value > 0.0)) {
       fail(b.where, what + "pitch_value must be " + (dive ? "nose down (< 0 rad)" : "nose up (> 0 rad)"));
+    }
+    constexpr config::Range kPitchRad{-1.4, 1.4, "rad (80 deg)"};
+    if (!config::within(pitch_value, kPitchRad)) {
+      fail(find(b, prefix + "pitch_value") != nullptr ? find(b, prefix + "pitch_value")->where : b.where,
+           what + "pitch_value: " + config::range_problem(pitch_value, kPitchRad));
     }
     (dive ? m.dive_pitch_rad : m.climb_pitch_rad) = pitch_value;
     (dive ? m.dive_battpos_in : m.climb_battpos_in) = std::numeric_limits<double>::quiet_NaN();
@@ -403,6 +423,9 @@ void Loader::read_set_heading(const MiBehavior& b) {
 void Loader::read_sensors(const MiDocument& doc) {
   for (const MiArg& s : doc.sensors) {
     if (s.name == "u_use_current_correction") {
+      if (!(s.value == 0.0 || s.value == 1.0)) {
+        fail(s.where, "sensor u_use_current_correction: value " + config::show_value(s.value) + " must be 0 or 1");
+      }
       config_.plan.current_correction = s.value != 0.0;
     } else {
       warn(s.where, "sensor " + s.name + " is not used by this firmware and is ignored");
@@ -503,6 +526,24 @@ std::optional<FlightSoftwareConfig> Loader::load(const MiDocument& doc) {
 }
 
 }  // namespace
+
+std::vector<ArgumentRange> mission_argument_limits() {
+  std::vector<ArgumentRange> out;
+  auto add = [&out](const char* behavior, const Rules& rules, const char* prefix) {
+    for (const auto& [name, rule] : rules) {
+      if (rule.use == Use::kUsed) out.push_back({behavior, prefix + name, rule.range});
+    }
+  };
+  add("abend", abend_rules(), "");
+  add("surface", surface_rules(), "");
+  add("goto_list", goto_rules(), "");
+  add("yo", glide_rules(), "d_");
+  add("yo", glide_rules(), "c_");
+  add("dive_to", glide_rules(), "");
+  add("prepare_to_dive", prepare_rules(), "");
+  add("set_heading", heading_rules(), "");
+  return out;
+}
 
 LoadedMission load_mission(const MiDocument& doc, const MissionVehicle& vehicle, const FlightSoftwareConfig& base) {
   LoadedMission result;

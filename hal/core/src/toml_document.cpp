@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/config/toml_document.hpp"
 
+#include <algorithm>
+
 #include <toml++/toml.h>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace glider::config {
@@ -52,7 +55,7 @@ TomlDocument TomlDocument::load(const std::filesystem::path& path) {
     impl->table = toml::parse_file(path.string());
     return TomlDocument(std::move(impl), path.string());
   } catch (const toml::parse_error& error) {
-    throw ConfigError(location(path.string(), error.source()) + ": " + std::string(error.description()));
+    throw ConfigError(location(path.string(), error.source()) + ": " + shorten(error.description(), 200));
   }
 }
 
@@ -62,7 +65,7 @@ TomlDocument TomlDocument::parse(std::string_view text, const std::string& sourc
     impl->table = toml::parse(text, source_name);
     return TomlDocument(std::move(impl), source_name);
   } catch (const toml::parse_error& error) {
-    throw ConfigError(location(source_name, error.source()) + ": " + std::string(error.description()));
+    throw ConfigError(location(source_name, error.source()) + ": " + shorten(error.description(), 200));
   }
 }
 
@@ -79,7 +82,7 @@ bool TomlDocument::has(std::string_view dotted_key) const {
   return static_cast<bool>(impl_->table.at_path(dotted_key));
 }
 
-double TomlDocument::number(std::string_view dotted_key) const {
+double TomlDocument::raw_number(std::string_view dotted_key) const {
   const auto node = impl_->table.at_path(dotted_key);
   if (!node) {
     throw ConfigError(source_ + ": missing required key '" + std::string(dotted_key) + "'");
@@ -89,10 +92,15 @@ double TomlDocument::number(std::string_view dotted_key) const {
   if (!value || !node.is_number()) {
     fail(dotted_key, "expected a number");
   }
-  if (!std::isfinite(*value)) {
-    fail(dotted_key, "must be finite");
-  }
   return *value;
+}
+
+double TomlDocument::number(std::string_view dotted_key) const {
+  const double value = raw_number(dotted_key);
+  if (!std::isfinite(value)) {
+    fail(dotted_key, "value " + show_value(value) + " is not a finite number");
+  }
+  return value;
 }
 
 double TomlDocument::number_or(std::string_view dotted_key, double fallback) const {
@@ -115,7 +123,46 @@ std::int64_t TomlDocument::integer_or(std::string_view dotted_key, std::int64_t 
   return has(dotted_key) ? integer(dotted_key) : fallback;
 }
 
+double TomlDocument::number(std::string_view dotted_key, const Range& range) const {
+  const double value = raw_number(dotted_key);
+  if (!within(value, range)) fail(dotted_key, range_problem(value, range));
+  return value;
+}
+
+double TomlDocument::number_or(std::string_view dotted_key, double fallback, const Range& range) const {
+  return has(dotted_key) ? number(dotted_key, range) : fallback;
+}
+
+std::int64_t TomlDocument::integer(std::string_view dotted_key, std::int64_t min, std::int64_t max) const {
+  std::string range = "[";
+  range.append(std::to_string(min)).append(", ").append(std::to_string(max)).append("]");
+  const auto node = impl_->table.at_path(dotted_key);
+  if (node && !node.is_integer()) {
+    used_.emplace(dotted_key);
+    const std::optional<double> number = node.value<double>();
+    std::string message = number ? "value " + show_value(*number) : std::string("the value");
+    fail(dotted_key, message.append(" is not a whole number in the allowed range ").append(range));
+  }
+  const std::int64_t value = integer(dotted_key);
+  if (value < min || value > max) {
+    std::string message = "value " + std::to_string(value);
+    fail(dotted_key, message.append(" is outside the allowed range ").append(range));
+  }
+  return value;
+}
+
+std::int64_t TomlDocument::integer_or(std::string_view dotted_key, std::int64_t fallback, std::int64_t min,
+                                      std::int64_t max) const {
+  return has(dotted_key) ? integer(dotted_key, min, max) : fallback;
+}
+
 std::vector<double> TomlDocument::numbers_or_empty(std::string_view dotted_key) const {
+  // Any finite double (the caller checks the physics).
+  constexpr double kMax = std::numeric_limits<double>::max();
+  return numbers_or_empty(dotted_key, Range{-kMax, kMax, ""});
+}
+
+std::vector<double> TomlDocument::numbers_or_empty(std::string_view dotted_key, const Range& range) const {
   std::vector<double> out;
   const auto node = impl_->table.at_path(dotted_key);
   if (!node) return out;
@@ -123,11 +170,11 @@ std::vector<double> TomlDocument::numbers_or_empty(std::string_view dotted_key) 
   const toml::array* array = node.as_array();
   if (array == nullptr) fail(dotted_key, "expected an array of numbers");
   for (const toml::node& element : *array) {
+    const std::string at =
+        location(source_, element.source()) + ": " + std::string(dotted_key) + "[" + std::to_string(out.size()) + "]: ";
     const std::optional<double> value = element.value<double>();
-    if (!value || !element.is_number() || !std::isfinite(*value)) {
-      throw ConfigError(location(source_, element.source()) + ": " + std::string(dotted_key) +
-                        ": expected a finite number");
-    }
+    if (!value || !element.is_number()) throw ConfigError(at + "expected a number");
+    if (!within(*value, range)) throw ConfigError(at + range_problem(*value, range));
     out.push_back(*value);
   }
   return out;
@@ -157,11 +204,15 @@ std::string TomlDocument::string_or(std::string_view dotted_key, std::string fal
   return has(dotted_key) ? string(dotted_key) : std::move(fallback);
 }
 
+void TomlDocument::leave_table(std::string_view table) const { left_tables_.emplace_back(std::string(table) + "."); }
+
 void TomlDocument::reject_unknown_keys() const {
   std::vector<std::pair<std::string, toml::source_region>> leaves;
   collect_leaves(impl_->table, "", leaves);
   for (const auto& [name, region] : leaves) {
-    if (used_.find(name) == used_.end()) {
+    const bool left = std::any_of(left_tables_.begin(), left_tables_.end(),
+                                  [&name](const std::string& prefix) { return name.starts_with(prefix); });
+    if (!left && used_.find(name) == used_.end()) {
       throw ConfigError(location(source_, region) + ": unknown key '" + name + "'");
     }
   }

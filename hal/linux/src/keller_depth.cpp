@@ -4,10 +4,11 @@
 #include <bit>
 #include <cmath>
 
+#include "glider/units.hpp"
+
 namespace glider::hal_linux {
 namespace {
 
-constexpr double kPascalPerBar = 1e5;
 constexpr double kStandardGravity = 9.80665;  // m/s^2
 // A TOB1 outside this is a broken sensor, not water.
 constexpr double kMinTemperatureC = -5.0;
@@ -20,7 +21,7 @@ float keller_float(std::uint16_t high_word, std::uint16_t low_word) {
 }
 
 double depth_from_pressure(double pressure_bar, const KellerConfig& config) {
-  return (pressure_bar - config.surface_pressure_bar) * kPascalPerBar / (config.water_density_kg_m3 * kStandardGravity);
+  return bar_to_pa(pressure_bar - config.surface_pressure_bar) / (config.water_density_kg_m3 * kStandardGravity);
 }
 
 hal::DepthSample KellerDepthSensor::read() {

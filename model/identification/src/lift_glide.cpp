@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "glider/model/hydrodynamics.hpp"
+#include "glider/model/root_finding.hpp"
 
 namespace glider::identification {
 
@@ -35,16 +36,14 @@ std::optional<GlideFromLift> glide_from_lift(const LiftModel& lift, const Steady
   const double a_max = lift.hydro.fit_valid_to_rad > 0.0 ? lift.hydro.fit_valid_to_rad : 0.25;
   const double t_min = std::max(0.0, direction * theta) + 1e-9;
   if (!(t_min < a_max)) return std::nullopt;
-  double lo = direction * t_min;
-  double hi = direction * a_max;
-  const bool lo_negative = residual(lo) < 0.0;
-  if (lo_negative == (residual(hi) < 0.0)) return std::nullopt;
-  for (int i = 0; i < 200 && std::abs(hi - lo) > 1e-14; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    ((residual(mid) < 0.0) == lo_negative ? lo : hi) = mid;
-  }
+  const double lo = direction * t_min;
+  const double hi = direction * a_max;
+  const double r_lo = residual(lo);
+  const double r_hi = residual(hi);
+  if (!((r_lo < 0.0) != (r_hi < 0.0))) return std::nullopt;  // no sign change (or NaN)
   GlideFromLift glide;
-  glide.alpha_rad = 0.5 * (lo + hi);
+  glide.alpha_rad =
+      model::bracketed_root(residual, std::min(lo, hi), std::max(lo, hi), lo < hi ? r_lo : r_hi, lo < hi ? r_hi : r_lo);
   glide.speed_m_s = rate / std::sin(glide.alpha_rad - theta);
   glide.net_buoyancy_kg = m0;
   glide.glide_path_rad = theta - glide.alpha_rad;

@@ -274,6 +274,10 @@ int main(int argc, char** argv) {
       read_options.rename.emplace_back(r.substr(0, eq), r.substr(eq + 1));
     }
     const glider::flightlog::FlightLog log = glider::flightlog::read_flight_log(log_path, read_options);
+    // A log that did not end cleanly is still diagnosed, but the user is told.
+    if (!log.end().complete()) {
+      std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());
+    }
     glider::model::VehicleParams vehicle;
     std::string vehicle_source;
     const auto metadata = log.vehicle_metadata();

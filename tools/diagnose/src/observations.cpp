@@ -6,6 +6,7 @@
 #include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/gaps.hpp"
 #include "glider/model/seawater.hpp"
+#include "glider/units.hpp"
 
 namespace glider::diagnose {
 namespace {
@@ -62,9 +63,10 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
       obs.ballast_cc.push_back(ballast[i]);
       obs.battpos_in.push_back(battpos[i]);
       obs.temperature_c.push_back(temperature[i]);
-      const double rho = std::isfinite(logged_density[i])
-                             ? logged_density[i]
-                             : model::seawater::density_from_ctd(conductivity[i], temperature[i], 10.0 * pressure[i]);
+      const double rho =
+          std::isfinite(logged_density[i])
+              ? logged_density[i]
+              : model::seawater::density_from_ctd(conductivity[i], temperature[i], bar_to_dbar(pressure[i]));
       obs.density_kg_m3.push_back(rho);
       obs.has_temperature |= std::isfinite(temperature[i]);
       obs.has_ctd |= std::isfinite(rho);

@@ -11,6 +11,7 @@
 #include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/gaps.hpp"
 #include "glider/model/seawater.hpp"
+#include "glider/units.hpp"
 
 namespace glider::diagnose {
 namespace {
@@ -200,7 +201,7 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
     track.density_kg_m3.push_back(
         std::isfinite(logged_density[i])
             ? logged_density[i]
-            : model::seawater::density_from_ctd(conductivity[i], temperature[i], 10.0 * pressure[i]));
+            : model::seawater::density_from_ctd(conductivity[i], temperature[i], bar_to_dbar(pressure[i])));
     track.speed_through_water_m_s.push_back(speed[i]);
     track.phase.push_back(phases[i]);
     track.yo.push_back(yo[i]);

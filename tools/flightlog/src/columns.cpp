@@ -5,6 +5,8 @@
 #include <array>
 #include <utility>
 
+#include "glider/units.hpp"
+
 namespace glider::flightlog {
 namespace {
 
@@ -55,7 +57,7 @@ std::optional<DepthSeries> depth_series(const FlightLog& log) {
   if (const Column* depth = log.find("m_depth")) return DepthSeries{*depth, "m_depth"};
   if (const Column* pressure = log.find("sci_water_pressure")) {
     DepthSeries series{*pressure, "sci_water_pressure"};
-    for (double& value : series.depth_m) value *= kMetresPerBar;  // NaN stays NaN
+    for (double& value : series.depth_m) value = bar_to_approx_depth_m(value);  // NaN stays NaN
     return series;
   }
   return std::nullopt;

@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <utility>
+
+#include "glider/config/value_limits.hpp"
 
 #include "csv_text.hpp"
 
@@ -47,6 +51,49 @@ std::size_t count_lines(std::string_view text) {
   return lines;
 }
 
+constexpr std::string_view kTrailerPrefix = "# end:";
+
+std::optional<std::size_t> count_field(std::string_view text, std::string_view key) {
+  if (text.substr(0, key.size()) != key) return std::nullopt;
+  text.remove_prefix(key.size());
+  std::size_t value = 0;
+  const auto [ptr, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc{} || ptr != text.data() + text.size() || text.empty()) return std::nullopt;
+  return value;
+}
+
+// "# end: complete rows=N lost=M", "# end: aborted CAUSE rows=N lost=M",
+// "# end: stopped REASON rows=N lost=M"; nullopt if not exactly that.
+std::optional<LogEnd> parse_trailer(std::string_view line) {
+  line.remove_prefix(kTrailerPrefix.size());
+  if (line.substr(0, 1) != " ") return std::nullopt;
+  line.remove_prefix(1);
+  const std::size_t rows_at = line.rfind(" rows=");
+  const std::size_t lost_at = line.rfind(" lost=");
+  if (rows_at == std::string_view::npos || lost_at == std::string_view::npos || lost_at < rows_at) return std::nullopt;
+  const auto rows = count_field(line.substr(rows_at + 1, lost_at - rows_at - 1), "rows=");
+  const auto lost = count_field(line.substr(lost_at + 1), "lost=");
+  if (!rows || !lost) return std::nullopt;
+  const std::string_view what = line.substr(0, rows_at);
+  LogEnd end;
+  end.trailer_rows = *rows;
+  end.trailer_lost = *lost;
+  const auto with_cause = [&what, &end](std::string_view keyword, LogEnd::State state) {
+    if (what.substr(0, keyword.size()) != keyword || what.size() <= keyword.size() + 1 || what[keyword.size()] != ' ') {
+      return false;
+    }
+    end.cause = std::string(what.substr(keyword.size() + 1));
+    end.state = state;
+    return !trim(end.cause).empty() && end.cause == trim(end.cause);
+  };
+  if (what == "complete") {
+    end.state = LogEnd::State::kComplete;
+  } else if (!with_cause("aborted", LogEnd::State::kAborted) && !with_cause("stopped", LogEnd::State::kStopped)) {
+    return std::nullopt;
+  }
+  return end;
+}
+
 // One pass over the text: metadata, header, then rows straight into the
 // column vectors. Fields of skipped columns are split off but never parsed.
 class Parser {
@@ -58,13 +105,30 @@ class Parser {
     read_metadata_and_header();
     select_columns();
     std::string_view line;
+    LogEnd end;
     while (lines_.next(line)) {
       if (is_blank(line)) continue;  // e.g. a trailing empty line
-      if (line.front() == '#') fail(lines_.number(), "", kNone, "metadata line after the header");
+      if (end.trailer_line != kNone) fail(lines_.number(), "", kNone, "line after the end trailer");
+      if (line.front() == '#') {
+        if (line.substr(0, kTrailerPrefix.size()) != kTrailerPrefix) {
+          fail(lines_.number(), "", kNone, "metadata line after the header");
+        }
+        const auto trailer = parse_trailer(line);
+        if (!trailer) {
+          fail(lines_.number(), "", kNone,
+               "malformed end trailer '" + config::shorten(line) +
+                   "' (expected '# end: complete|aborted <cause>|stopped <reason> rows=<N> lost=<M>')");
+        }
+        end = *trailer;
+        end.trailer_line = lines_.number();
+        continue;
+      }
       read_row(line);
     }
     if (columns_[time_slot_].empty()) fail(header_line_, "", kNone, "header only, no data rows");
-    return FlightLog(source_, std::move(metadata_), std::move(kept_names_), std::move(columns_), time_slot_);
+    FlightLog log(source_, std::move(metadata_), std::move(kept_names_), std::move(columns_), time_slot_);
+    log.set_end(std::move(end));
+    return log;
   }
 
  private:
@@ -141,6 +205,7 @@ class Parser {
     // One newline per row (at most): reserving avoids regrowing 30 vectors.
     const std::size_t expected_rows = count_lines(lines_.rest());
     slot_.assign(header_.size(), kSkip);
+    plausible_.assign(header_.size(), nullptr);
     for (std::size_t col = 0; col < header_.size(); ++col) {
       if (!wanted(header_[col])) continue;
       if (header_[col] == options_.time_column) {
@@ -148,6 +213,7 @@ class Parser {
         time_slot_ = columns_.size();
       }
       slot_[col] = columns_.size();
+      plausible_[col] = plausible_range(header_[col]);
       kept_names_.push_back(header_[col]);
       columns_.emplace_back().reserve(expected_rows);
     }
@@ -160,7 +226,13 @@ class Parser {
         fail_field(
             col, std::to_string(count) + " fields, but the header has " + std::to_string(header_.size()) + " columns");
       }
-      if (slot_[col] != kSkip) columns_[slot_[col]].push_back(parse_checked(col, field));
+      if (slot_[col] == kSkip) return;
+      const double value = parse_checked(col, field);
+      const config::Range* range = plausible_[col];
+      if (range != nullptr && !std::isnan(value) && !config::within(value, *range)) {
+        fail_field(col, "implausible: " + config::range_problem(value, *range));
+      }
+      columns_[slot_[col]].push_back(value);
     });
     if (fields < header_.size()) {
       fail_field(fields, "missing field: the row has " + std::to_string(fields) + " fields, the header has " +
@@ -209,7 +281,8 @@ class Parser {
   std::vector<MetadataEntry> metadata_;
   std::size_t header_line_ = kNone;
   std::vector<std::string> header_;
-  std::vector<std::size_t> slot_;  // per header column: index into columns_, or kSkip
+  std::vector<std::size_t> slot_;                // per header column: index into columns_, or kSkip
+  std::vector<const config::Range*> plausible_;  // per header column: nullptr = not checked
   std::vector<std::string> kept_names_;
   std::vector<Column> columns_;
   std::size_t time_col_ = 0;   // in the header
@@ -273,11 +346,70 @@ std::vector<MetadataEntry> FlightLog::vehicle_metadata() const {
   return out;
 }
 
+const config::Range* plausible_range(std::string_view column_name) {
+  // Wide physical bounds: a value outside is a corrupt log, never a glider.
+  static constexpr config::Range kTime{0.0, 4102444800.0, "s (1970 to 2100)"};
+  static constexpr config::Range kDepth{-50.0, 11000.0, "m"};
+  static constexpr config::Range kPressure{-5.0, 1200.0, "bar"};
+  static constexpr config::Range kPitch{-1.5708, 1.5708, "rad"};
+  static constexpr config::Range kRoll{-3.1416, 3.1416, "rad"};
+  if (column_name == "m_present_time" || column_name == "sci_m_present_time") return &kTime;
+  if (column_name == "m_depth") return &kDepth;
+  if (column_name == "sci_water_pressure" || column_name == "m_pressure") return &kPressure;
+  if (column_name == "m_pitch") return &kPitch;
+  if (column_name == "m_roll") return &kRoll;
+  return nullptr;
+}
+
+std::string LogEnd::describe(std::size_t rows_read) const {
+  std::string out;
+  switch (state) {
+    case State::kNoTrailer:
+      out = "no end trailer: incomplete flight (the writer crashed or was cut off)";
+      break;
+    case State::kComplete:
+      out = "complete";
+      break;
+    case State::kAborted:
+      out = "aborted (" + cause + ")";
+      break;
+    case State::kStopped:
+      out = "stopped (" + cause + ")";
+      break;
+  }
+  if (state != State::kNoTrailer) {
+    out += ": trailer rows=" + std::to_string(trailer_rows) + " lost=" + std::to_string(trailer_lost);
+    if (trailer_rows != rows_read) out += ", but " + std::to_string(rows_read) + " rows read";
+  }
+  if (torn_line != 0) {
+    out += "; torn last line " + std::to_string(torn_line) + " (" + std::to_string(torn_bytes) +
+           " bytes, no newline) dropped";
+  }
+  return out;
+}
+
 FlightLog parse_flight_log(std::string_view text, const std::string& source_name, const ReadOptions& options) {
   // A UTF-8 byte order mark (spreadsheet exports) would glue onto the first name.
   constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
   if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) text.remove_prefix(kByteOrderMark.size());
-  return Parser(text, source_name, options).parse();
+  // Writers end every line with a newline: a last line without one was cut
+  // mid-write (power, disk full, kill -9). It is dropped, never half-read.
+  LogEnd torn;
+  const std::size_t last_newline = text.rfind('\n');
+  const std::string_view tail = last_newline == std::string_view::npos ? text : text.substr(last_newline + 1);
+  if (!is_blank(tail)) {
+    torn.torn_line = last_newline == std::string_view::npos ? 1 : count_lines(text.substr(0, last_newline + 1));
+    torn.torn_bytes = tail.size();
+    text.remove_suffix(tail.size());
+  }
+  FlightLog log = Parser(text, source_name, options).parse();
+  if (torn.torn_line != 0) {
+    LogEnd end = log.end();
+    end.torn_line = torn.torn_line;
+    end.torn_bytes = torn.torn_bytes;
+    log.set_end(std::move(end));
+  }
+  return log;
 }
 
 FlightLog read_flight_log(const std::filesystem::path& path, const ReadOptions& options) {

@@ -130,6 +130,7 @@ int main(int argc, char** argv) {
     const fl::FlightLog log = fl::read_flight_log(path, options);
     std::printf("log      : %s\n", log.source().c_str());
     std::printf("rows     : %zu\n", log.rows());
+    std::printf("end      : %s\n", log.end().describe(log.rows()).c_str());
     print_time(log);
     print_phases(log);
     print_columns(log);

@@ -31,6 +31,10 @@ enum class AbortCause : std::int32_t {
 
 const char* to_string(Phase phase);
 const char* to_string(AbortCause cause);
+// The cause as one word (log trailer, summary JSON; docs/flight-log.md):
+// none overdepth overtime depth_sensor attitude_sensor actuator_fault leak
+// low_battery samedepth stalled waypoint_too_far. Stable: tools key on it.
+const char* cause_id(AbortCause cause);
 
 struct YoMissionConfig {
   double dive_to_m = 50.0;        // inflect to climb at this depth

@@ -11,6 +11,11 @@ namespace glider {
 constexpr double kCubicMetresPerCc = 1e-6;
 constexpr double kMetresPerInch = 0.0254;
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+constexpr double kDbarPerBar = 10.0;
+constexpr double kPascalPerBar = 1e5;
+// Slocum's own depth from pressure where a log has no m_depth: 1 dbar taken as
+// 1 m of sea water (true to ~1 % in the upper 200 m; the model uses TEOS-10).
+constexpr double kApproxMetresPerBar = 10.0;
 
 constexpr double cc_to_m3(double cc) { return cc * kCubicMetresPerCc; }
 constexpr double m3_to_cc(double m3) { return m3 / kCubicMetresPerCc; }
@@ -18,6 +23,11 @@ constexpr double in_to_m(double in) { return in * kMetresPerInch; }
 constexpr double m_to_in(double m) { return m / kMetresPerInch; }
 constexpr double deg_to_rad(double deg) { return deg * kRadPerDeg; }
 constexpr double rad_to_deg(double rad) { return rad / kRadPerDeg; }
+constexpr double bar_to_dbar(double bar) { return bar * kDbarPerBar; }
+constexpr double dbar_to_bar(double dbar) { return dbar / kDbarPerBar; }
+constexpr double bar_to_pa(double bar) { return bar * kPascalPerBar; }
+constexpr double pa_to_bar(double pa) { return pa / kPascalPerBar; }
+constexpr double bar_to_approx_depth_m(double bar) { return bar * kApproxMetresPerBar; }
 
 // Fixed-point register values of the Modbus actuators: a register holds
 // round(value * counts_per_unit) as a signed 16-bit count (boards/modbus_actuators.md).

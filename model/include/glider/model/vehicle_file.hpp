@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "glider/config/value_limits.hpp"
 #include "glider/model/vehicle.hpp"
 
 namespace glider::model {
@@ -28,5 +29,8 @@ VehicleParams vehicle_from_metadata(const std::vector<std::pair<std::string, std
 
 // A vehicle file (TOML) holding every parameter of `v`: what load_vehicle_file reads back.
 std::string vehicle_file_text(const VehicleParams& v);
+
+// Every number key of the vehicle file with its allowed range.
+std::vector<config::KeyRange> vehicle_file_limits();
 
 }  // namespace glider::model

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -11,9 +12,14 @@ struct GlideStats {
   std::uint64_t samples = 0;
   double pitch_sum_rad = 0.0;
   double depth_rate_sum_m_s = 0.0;
-  double max_pitch_error_rad = 0.0;  // |m_pitch - c_pitch| on settled samples
+  double max_pitch_error_rad = 0.0;       // |m_pitch - c_pitch| on settled samples
+  std::uint64_t pitch_error_samples = 0;  // settled samples with a pitch target
+  double pitch_error_sq_sum_rad2 = 0.0;
   double mean_pitch_rad() const { return samples ? pitch_sum_rad / static_cast<double>(samples) : 0.0; }
   double mean_depth_rate_m_s() const { return samples ? depth_rate_sum_m_s / static_cast<double>(samples) : 0.0; }
+  double rms_pitch_error_rad() const {
+    return pitch_error_samples ? std::sqrt(pitch_error_sq_sum_rad2 / static_cast<double>(pitch_error_samples)) : 0.0;
+  }
 };
 
 // The first GPS fix after a segment: how far the dead reckoning was off.

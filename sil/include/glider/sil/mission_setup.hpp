@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// What a mission needs from the vehicle model before launch: the limits a
-// Slocum mission is checked against, and the flight model's angle-of-attack
-// table for dead reckoning (the firmware cannot call the model: it gets a
-// table at init time).
+// The SIL's source of the flight application's vehicle setup
+// (glider/firmware/app/vehicle_setup.hpp): derived from the vehicle model, the
+// data the target reads from its board file. The limits a Slocum mission is
+// checked against, and the flight model's angle-of-attack table for dead
+// reckoning (the firmware cannot call the model: it gets a table at init time).
+#include <filesystem>
+
+#include "glider/firmware/app/vehicle_setup.hpp"
 #include "glider/firmware/dead_reckoning.hpp"
 #include "glider/firmware/mission_file/mission_loader.hpp"
 #include "glider/model/vehicle.hpp"
@@ -12,6 +16,15 @@ namespace glider::sil {
 
 // The pump, slide and fin travel of the model as firmware limits.
 fw::mission_file::MissionVehicle mission_vehicle(const model::VehicleParams& vehicle, double max_working_depth_m);
+
+// The whole setup: limits, fin, `fitted` devices, and (with
+// `flight_model_dr`) the alpha table in water of `density_kg_m3`.
+fw::app::VehicleSetup vehicle_setup(const model::VehicleParams& vehicle, const fw::app::FittedDevices& fitted,
+                                    double max_working_depth_m, bool flight_model_dr, double density_kg_m3);
+
+// The [fitted] table of a vehicle file (the model's reader leaves it to the
+// firmware). Defaults: leak detector, rudder and power monitor fitted, no drop weight.
+fw::app::FittedDevices load_fitted_devices(const std::filesystem::path& vehicle_file);
 
 // kFlightModel dead reckoning: |alpha| of the model's steady glide at each
 // |pitch| of the table, for dives and climbs, in water of `density_kg_m3`.

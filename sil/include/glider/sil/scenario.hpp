@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "glider/firmware/app/vehicle_setup.hpp"
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/flight_software.hpp"
 #include "glider/model/environment.hpp"
@@ -37,6 +38,10 @@ struct ScenarioOptions {
   // Faults switched on at a simulated time (`--fault NAME@T`).
   std::vector<ScheduledFault> faults;
   PeripheralModels peripherals{};  // GPS (launch position) and energy model
+  // The devices the vehicle carries (its vehicle file's [fitted]); one that is
+  // not fitted is an absent stand-in in the HAL, as on a target board without it.
+  // Default: everything the SimHal simulates.
+  fw::app::FittedDevices fitted{.drop_weight = true, .leak_detector = true, .rudder = true, .power_monitor = true};
   // An aborted firmware stays in its abort state for good; the run stops
   // this long after the abort (the vehicle is up by then, or never will be).
   double stop_after_abort_s = 3600.0;

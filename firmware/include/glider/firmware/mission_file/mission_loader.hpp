@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "glider/config/value_limits.hpp"
 #include "glider/firmware/flight_software.hpp"
 #include "glider/firmware/mission_file/mi_document.hpp"
 
@@ -32,6 +33,16 @@ struct LoadedMission {
 
 // `base` supplies what a Slocum mission does not say (pitch servo gains,
 // sensor timeouts, heading and DR settings); the mission overrides the rest.
+// Every argument the loader flies, per behavior, with its allowed range (in
+// Slocum's units; yo arguments with their d_/c_ prefix). Values outside are
+// refused with file:line, argument, value and range.
+struct ArgumentRange {
+  std::string behavior;
+  std::string argument;
+  config::Range range;
+};
+std::vector<ArgumentRange> mission_argument_limits();
+
 LoadedMission load_mission(const MiDocument& doc, const MissionVehicle& vehicle, const FlightSoftwareConfig& base = {});
 
 LoadedMission load_mission_file(const std::filesystem::path& path, const MissionVehicle& vehicle,

@@ -33,6 +33,7 @@
 
 #include "glider/identification/lift_glide.hpp"
 #include "glider/model/dynamics.hpp"
+#include "glider/units.hpp"
 
 namespace glider::identification {
 
@@ -76,7 +77,7 @@ struct PitchTrimEstimate {
   double cm_alpha_viscous_input_se_m = 0.0;
   std::vector<GlideMoment> glides;
 
-  double pitch_trim_offset_in() const { return pitch_trim_offset_m / 0.0254; }
+  double pitch_trim_offset_in() const { return m_to_in(pitch_trim_offset_m); }
 };
 
 // The moment terms of one glide (read with the buoyancy offset) on the given

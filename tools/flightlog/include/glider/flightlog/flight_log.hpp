@@ -17,6 +17,8 @@
 #include <utility>
 #include <vector>
 
+#include "glider/config/value_limits.hpp"
+
 namespace glider::flightlog {
 
 using Column = std::vector<double>;
@@ -65,6 +67,30 @@ struct MetadataEntry {
   std::string value;
 };
 
+// How the log ends (docs/flight-log.md). Writers end a finished flight with
+// one of these as the very last line:
+//   # end: complete rows=<N> lost=<M>
+//   # end: aborted <cause> rows=<N> lost=<M>
+//   # end: stopped <reason> rows=<N> lost=<M>
+// No trailer: the writer never finished (power cut, crash, kill -9, or a log
+// from a writer without trailers). A last line without its newline is a row
+// (or trailer) torn by the same: it is dropped, and said so.
+struct LogEnd {
+  enum class State { kNoTrailer, kComplete, kAborted, kStopped };
+  State state = State::kNoTrailer;
+  std::string cause;             // aborted's cause, stopped's reason
+  std::size_t trailer_rows = 0;  // rows=<N> (writer's count)
+  std::size_t trailer_lost = 0;  // lost=<M> (rows the writer could not write)
+  std::size_t trailer_line = 0;  // 0 without a trailer
+  std::size_t torn_line = 0;     // line of the dropped torn last line, 0 if none
+  std::size_t torn_bytes = 0;    // its length
+  bool complete() const { return state == State::kComplete; }
+  // One line for people: "complete: 120 rows, 0 lost", "no end trailer:
+  // incomplete (crashed or cut) flight", + the torn row and any disagreement
+  // between the trailer's count and the rows read.
+  std::string describe(std::size_t rows_read) const;
+};
+
 class FlightLog {
  public:
   FlightLog(std::string source, std::vector<MetadataEntry> metadata, std::vector<std::string> names,
@@ -91,6 +117,10 @@ class FlightLog {
   // "name"), in file order: the nominal vehicle the log was recorded with.
   std::vector<MetadataEntry> vehicle_metadata() const;
 
+  // The end trailer and any torn last line (see LogEnd).
+  const LogEnd& end() const { return end_; }
+  void set_end(LogEnd end) { end_ = std::move(end); }
+
  private:
   std::string source_;
   std::vector<MetadataEntry> metadata_;
@@ -98,14 +128,23 @@ class FlightLog {
   std::vector<Column> columns_;
   std::map<std::string, std::size_t, std::less<>> index_;
   std::size_t time_index_;
+  LogEnd end_;
 };
 
 // Reads a log file; throws FlightLogError (see the class) on anything that
 // breaks the contract: cannot open, no header, missing required column,
 // duplicate column, a field that is not a number, a row with more or fewer
-// fields than the header, time empty or not strictly increasing, no rows.
+// fields than the header, time empty or not strictly increasing, no rows, a
+// malformed end trailer or anything after it, and a physically impossible
+// value of time, depth, pressure, pitch or roll (plausible_range()). A torn
+// last line (no newline) is dropped and reported in FlightLog::end().
 FlightLog read_flight_log(const std::filesystem::path& path, const ReadOptions& options = {});
 // The same on text in memory; source_name stands for the path in errors.
 FlightLog parse_flight_log(std::string_view text, const std::string& source_name, const ReadOptions& options = {});
+
+// The physical range a column's values must lie in, for the columns the
+// reader checks (time since 1970 up to 2100, depth, pressure, pitch, roll);
+// nullptr for the others.
+const config::Range* plausible_range(std::string_view column_name);
 
 }  // namespace glider::flightlog

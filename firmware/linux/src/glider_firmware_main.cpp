@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: Apache-2.0
+// glider-firmware: the flight software on the glider's Linux computer. Reads
+// the target board file (devices, the vehicle's limits and fitted devices)
+// and the mission (a Slocum .mi with its .ma files, or TOML) through the
+// flight application shared with glider-sil (glider/firmware/app/), opens
+// every device, then runs the application's executive at absolute deadlines
+// on the loop clock until the mission is complete or SIGTERM/SIGINT; logs,
+// prints its statistics and exits.
+// Under systemd (Type=notify, WatchdogSec=) it reports READY and feeds the
+// watchdog after every healthy cycle (packaging/glider-firmware.service).
+#include <CLI/CLI.hpp>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "glider/cli/tool.hpp"
+#include "glider/firmware/app/flight_application.hpp"
+#include "glider/firmware/app/mission_setup.hpp"
+#include "glider/target/linux_hal.hpp"
+#include "glider/target/realtime_loop.hpp"
+#include "glider/target/target_board.hpp"
+
+namespace {
+
+using namespace glider;
+
+// The platform's part of each cycle, before the flight software: fresh
+// blocking budgets on the Modbus buses. (The flight software reads every
+// device itself, GPS and power included.)
+class PlatformCycle final : public fw::PeriodicTask {
+ public:
+  explicit PlatformCycle(target::LinuxHal& hal) : hal_(hal) {}
+  void run(hal::Micros) override { hal_.begin_cycle(); }
+
+ private:
+  target::LinuxHal& hal_;
+};
+
+// Start-up check: the flight software aborts on a sensor that has never
+// given a value, so the sensors must speak before the first cycle. Polls
+// until depth and attitude are valid; the message names what stayed silent.
+std::string wait_for_sensors(const hal::Hal& hal, target::LinuxHal& linux_hal, double timeout_s) {
+  const hal::Micros give_up = hal.clock.now_us() + static_cast<hal::Micros>(timeout_s * 1e6);
+  bool depth = false;
+  bool attitude = false;
+  while (true) {
+    linux_hal.begin_cycle();
+    depth = depth || hal.depth.read().valid;
+    attitude = attitude || hal.attitude.read().valid;
+    if (depth && attitude) return "";
+    if (hal.clock.now_us() > give_up) break;
+    timespec pause{0, 100'000'000};
+    nanosleep(&pause, nullptr);
+  }
+  std::string silent = depth ? "" : "depth transmitter";
+  if (!attitude) silent += silent.empty() ? "compass" : " and compass";
+  return "no valid reading from the " + silent + " within " + std::to_string(static_cast<int>(timeout_s)) +
+         " s of start-up (see the counters below)";
+}
+
+std::string default_log_name(const std::filesystem::path& directory) {
+  const std::time_t now = std::time(nullptr);
+  char name[64];
+  std::strftime(name, sizeof name, "flight-%Y%m%dT%H%M%SZ.csv", std::gmtime(&now));
+  return (directory / name).string();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  cli::Tool tool("glider-firmware", "Glider flight software on the Linux target");
+  CLI::App& app = tool.app();
+  std::string board_path = "/etc/glider/target/board.toml";
+  std::string mission_path = "/etc/glider/missions/mission.mi";
+  std::string log_path;
+  std::string actuators_tcp;
+  std::uint64_t max_cycles = 0;
+  bool no_realtime = false;
+  bool check_mission = false;
+  double sensor_wait_s = 30.0;
+  double time_scale = 1.0;
+  std::int32_t legs = 0;
+  app.add_option("--board", board_path, "target board file (devices, vehicle limits, loop)")->capture_default_str();
+  app.add_option("--mission", mission_path, "mission: Slocum .mi (its .ma files in ../mafiles) or TOML")
+      ->capture_default_str();
+  app.add_option("--log", log_path, "flight log file (default: a new file in the board's log directory)");
+  app.add_option("--actuators-tcp", actuators_tcp, "override the actuator bus with Modbus TCP HOST:PORT (bench)");
+  app.add_option("--max-cycles", max_cycles, "stop after this many cycles (0: until done or SIGTERM)");
+  app.add_option("--sensor-wait-s", sensor_wait_s, "start-up: wait this long for depth and attitude")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--time-scale", time_scale,
+                 "bench/HIL only (board file: bench = true): the loop clock runs this many times faster")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1000.0));
+  app.add_option("--legs", legs, ".mi: override goto_list num_legs_to_run");
+  app.add_flag("--check-mission", check_mission, "read the board and the mission, report, exit (no device opened)");
+  app.add_flag("--no-realtime", no_realtime, "do not ask for SCHED_FIFO or mlockall whatever the board says");
+  return tool.run(argc, argv, [&]() -> int {
+    target::block_stop_signals();  // before the log's writer thread exists
+    std::FILE* out = stderr;       // journald takes stderr under systemd
+    target::TargetBoard board = target::load_target_board(board_path);
+    if (time_scale != 1.0 && !board.bench) {
+      throw cli::ToolError(cli::kUsage, "--time-scale is a bench/HIL option: " + board.source +
+                                            " is a flight board (it does not say bench = true)");
+    }
+    // The flight application's mission setup, exactly as glider-sil does it.
+    fw::app::MissionOptions mission_options = board.mission_options;
+    mission_options.legs = legs;
+    const fw::app::PreparedMission prepared = fw::app::prepare_mission(mission_path, board.vehicle, mission_options);
+    const std::vector<std::string> messages = fw::app::mission_messages(prepared, false);
+    for (std::size_t i = 0; i + (prepared.config ? 0 : 1) < messages.size(); ++i) {
+      std::fprintf(out, "%s\n", messages[i].c_str());
+    }
+    if (!prepared.config) return tool.fail(cli::kError, prepared.refusal);
+    if (check_mission) {
+      std::fprintf(out, "glider-firmware: %s: mission accepted for board %s\n", mission_path.c_str(),
+                   board.name.c_str());
+      return cli::kOk;
+    }
+    target::LinuxHalOptions options;
+    options.actuators_tcp = actuators_tcp;
+    options.time_scale = time_scale;
+    if (log_path.empty()) {
+      std::filesystem::create_directories(board.log_directory);
+      log_path = default_log_name(board.log_directory);
+    }
+    options.log_path = log_path;
+    std::unique_ptr<target::LinuxHal> linux_hal = target::LinuxHal::build(board, options, out);
+    if (no_realtime) board.loop.sched_fifo = board.loop.lock_memory = false;
+    const std::string warning = target::apply_realtime(board.loop);
+    if (!warning.empty()) std::fprintf(out, "glider-firmware: warning: %s\n", warning.c_str());
+
+    const hal::Hal hal = linux_hal->hal();
+    if (const std::string silent = wait_for_sensors(hal, *linux_hal, sensor_wait_s); !silent.empty()) {
+      linux_hal->log().close();
+      linux_hal->print_statistics(out);
+      return tool.fail(cli::kError, silent);
+    }
+    PlatformCycle platform(*linux_hal);
+    fw::app::FlightApplication application(hal, *prepared.config, &platform);
+    if (!application.valid()) return tool.fail(cli::kError, "invalid task table");
+    const fw::FlightSoftware& flight = application.flight();
+    std::fprintf(out, "glider-firmware: board %s, mission %s, flight log %s%s; flying\n", board.name.c_str(),
+                 mission_path.c_str(), log_path.c_str(),
+                 time_scale != 1.0 ? (", time scale x" + std::to_string(time_scale)).c_str() : "");
+    std::fflush(out);
+
+    target::StopReason reason = target::StopReason::kError;
+    try {
+      target::RealtimeLoop loop(application.executive(), linux_hal->clock(), board.loop, out);
+      std::uint32_t overruns_seen = 0;
+      reason = loop.run([&] { return flight.complete(); },
+                        [&] {
+                          const bool healthy = application.executive().stats().overruns == overruns_seen;
+                          overruns_seen = application.executive().stats().overruns;
+                          return healthy;
+                        },
+                        max_cycles);
+      char line[256];
+      loop.timing().format(line, sizeof line);
+      std::fprintf(out, "glider-firmware: loop: %s; watchdog %s (%llu pings)\n", line,
+                   loop.watchdog_enabled() ? "on" : "off", static_cast<unsigned long long>(loop.watchdog_pings()));
+    } catch (const std::exception& error) {
+      std::fprintf(out, "glider-firmware: %s\n", error.what());
+    }
+    const bool aborted = flight.phase() == fw::Phase::kAbort;
+    const char* why = reason == target::StopReason::kSignal  ? "stopped by signal"
+                      : reason == target::StopReason::kDone  ? "done"
+                      : reason == target::StopReason::kError ? "loop error"
+                                                             : "cycle limit";
+    std::fprintf(out, "glider-firmware: %s; phase %s, %d yos, abort cause %s, %llu log rows lost\n", why,
+                 fw::to_string(flight.phase()), flight.yos_completed(), fw::to_string(flight.abort_cause()),
+                 static_cast<unsigned long long>(flight.log_rows_lost()));
+    const bool log_ok = linux_hal->log().close();
+    linux_hal->print_statistics(out);
+    if (!log_ok) std::fprintf(out, "glider-firmware: %s: writing the flight log failed\n", log_path.c_str());
+    if (reason == target::StopReason::kError || !log_ok) return static_cast<int>(cli::kError);
+    // A clean stop (SIGTERM: systemctl stop) is success; an abort or the
+    // cycle limit ends the flight early (systemd must not restart either).
+    if (aborted || reason == target::StopReason::kCycleLimit) return static_cast<int>(cli::kStopped);
+    return static_cast<int>(cli::kOk);
+  });
+}

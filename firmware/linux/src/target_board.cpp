@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/target/target_board.hpp"
+
+#include <cmath>
+
+#include "glider/config/toml_document.hpp"
+#include "glider/hal_linux/serial_port.hpp"
+
+namespace glider::target {
+namespace {
+
+using config::TomlDocument;
+
+int integer_in(const TomlDocument& doc, const std::string& key, std::int64_t fallback, std::int64_t lo,
+               std::int64_t hi) {
+  const std::int64_t value = doc.integer_or(key, fallback);
+  if (value < lo || value > hi) doc.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return static_cast<int>(value);
+}
+
+double positive(const TomlDocument& doc, const std::string& key, double fallback) {
+  const double value = doc.number_or(key, fallback);
+  if (!(value > 0.0)) doc.fail(key, "must be positive");
+  return value;
+}
+
+int baud(const TomlDocument& doc, const std::string& key, int fallback) {
+  const int value = integer_in(doc, key, fallback, 300, 4'000'000);
+  if (!hal_linux::supported_baud(value)) doc.fail(key, "not a standard baud rate");
+  return value;
+}
+
+std::filesystem::path board_path(const TomlDocument& doc, const std::string& key,
+                                 const std::filesystem::path& relative_to) {
+  const std::filesystem::path path = relative_to / doc.string(key);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) doc.fail(key, "no such file: " + path.string());
+  return path;
+}
+
+SerialSensorConfig read_serial(const TomlDocument& doc, const std::string& table, int default_baud,
+                               double default_stale_s) {
+  SerialSensorConfig sensor;
+  sensor.device = doc.string(table + ".device");
+  sensor.baud = baud(doc, table + ".baud", default_baud);
+  sensor.stale_after_us =
+      static_cast<hal::Micros>(std::llround(positive(doc, table + ".stale_after_s", default_stale_s) * 1e6));
+  return sensor;
+}
+
+DepthConfig read_depth(const TomlDocument& doc) {
+  DepthConfig depth;
+  hal_linux::BusConfig& bus = depth.bus;
+  bus.transport = hal_linux::Transport::kRtu;
+  bus.device = doc.string("depth.device");
+  bus.baud = baud(doc, "depth.baud", 9600);  // Keller's default line: 9600 8N1
+  bus.response_timeout_ms = integer_in(doc, "depth.response_timeout_ms", 100, 1, 1000);
+  bus.retries = integer_in(doc, "depth.retries", 1, 0, 5);
+  bus.cycle_budget_ms = integer_in(doc, "depth.cycle_budget_ms", 250, bus.response_timeout_ms, 1000);
+  hal_linux::KellerConfig& keller = depth.keller;
+  keller.slave = integer_in(doc, "depth.slave", 1, 1, 247);
+  keller.surface_pressure_bar = doc.number_or("depth.surface_pressure_bar", keller.surface_pressure_bar);
+  if (keller.surface_pressure_bar < 0.0 || keller.surface_pressure_bar > 1.2) {
+    doc.fail("depth.surface_pressure_bar", "must be 0 (gauge transmitter) or the atmosphere's, up to 1.2 bar");
+  }
+  keller.water_density_kg_m3 = doc.number_or("depth.water_density_kg_m3", keller.water_density_kg_m3);
+  if (keller.water_density_kg_m3 < 990.0 || keller.water_density_kg_m3 > 1050.0) {
+    doc.fail("depth.water_density_kg_m3", "must be a water density, 990 to 1050 kg/m^3");
+  }
+  keller.max_pressure_bar = positive(doc, "depth.max_pressure_bar", keller.max_pressure_bar);
+  return depth;
+}
+
+hal_linux::PowerMonitorConfig read_power(const TomlDocument& doc) {
+  hal_linux::PowerMonitorConfig power;
+  power.hwmon_name = doc.string_or("power.hwmon_name", power.hwmon_name);
+  power.charge_used_at_start_amphr = doc.number_or("power.charge_used_at_start_amphr", 0.0);
+  if (power.charge_used_at_start_amphr < 0.0) doc.fail("power.charge_used_at_start_amphr", "must not be negative");
+  power.min_voltage_v = positive(doc, "power.min_voltage_v", power.min_voltage_v);
+  power.max_voltage_v = positive(doc, "power.max_voltage_v", power.max_voltage_v);
+  if (power.min_voltage_v >= power.max_voltage_v) doc.fail("power.max_voltage_v", "must be above min_voltage_v");
+  return power;
+}
+
+TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& relative_to) {
+  TargetBoard board;
+  board.source = doc.source();
+  board.name = doc.string("name");
+  doc.string_or("description", "");
+  board.loop.sched_fifo = doc.boolean_or("loop.sched_fifo", false);
+  board.loop.priority = integer_in(doc, "loop.priority", 50, 1, 99);
+  board.loop.lock_memory = doc.boolean_or("loop.lock_memory", false);
+  board.loop.stats_every_us = static_cast<hal::Micros>(std::llround(positive(doc, "loop.stats_every_s", 60.0) * 1e6));
+  board.actuators_board = board_path(doc, "actuators.board", relative_to);
+  if (doc.has("gpio.board")) board.gpio_board = board_path(doc, "gpio.board", relative_to);
+  board.gps = read_serial(doc, "gps", 9600, 5.0);
+  board.compass = read_serial(doc, "compass", 19200, 3.0);
+  board.depth = read_depth(doc);
+  if (doc.has("power")) board.power = read_power(doc);
+  board.log_directory = doc.string_or("log.directory", board.log_directory.string());
+  board.bench = doc.boolean_or("bench", false);
+  fw::app::FittedDevices fitted;
+  fitted.drop_weight = fitted.leak_detector = board.gpio_board.has_value();
+  fitted.power_monitor = board.power.has_value();
+  fitted.rudder = hal_linux::load_modbus_board(board.actuators_board).rudder.has_value();
+  board.vehicle = fw::app::read_vehicle_setup(doc, fitted);
+  const std::string law = doc.string_or("vehicle.heading_law", "compensated");
+  const auto heading_law = fw::app::heading_law_from_name(law);
+  if (!heading_law) doc.fail("vehicle.heading_law", "must be proportional, slocum or compensated");
+  board.mission_options.heading_law = *heading_law;
+  const std::string dr = doc.string_or("vehicle.dead_reckoning", board.vehicle.flight_model_dr ? "model" : "assumed");
+  if (dr != "assumed" && dr != "model") doc.fail("vehicle.dead_reckoning", "must be assumed or model");
+  if (dr == "model" && !board.vehicle.flight_model_dr) {
+    doc.fail("vehicle.dead_reckoning", "model needs vehicle.dr_dive_alpha_deg and vehicle.dr_climb_alpha_deg");
+  }
+  board.mission_options.flight_model_dr = dr == "model";
+  doc.reject_unknown_keys();
+  return board;
+}
+
+}  // namespace
+
+TargetBoard load_target_board(const std::filesystem::path& path) {
+  return read_board(TomlDocument::load(path), path.parent_path());
+}
+
+TargetBoard parse_target_board(const std::string& text, const std::string& source_name,
+                               const std::filesystem::path& relative_to) {
+  return read_board(TomlDocument::parse(text, source_name), relative_to);
+}
+
+}  // namespace glider::target
