@@ -16,6 +16,7 @@
 #include "board_files.hpp"
 #include "glider/hal_linux/register_map.hpp"
 #include "glider/model/simulator.hpp"
+#include "glider/sil/mission_setup.hpp"
 #include "glider/sil/sim_hal.hpp"
 #include "glider/units.hpp"
 #include "keller_server.hpp"
@@ -74,6 +75,7 @@ class Plant {
 
  private:
   bool writable(int address) const;
+  void check_vehicle_fits_axes() const;
   void take_commands();
   void step();
   void apply_due_faults();
@@ -108,7 +110,6 @@ class Plant {
   bool gps_silent_ = false;
   double last_fin_rad_ = 0.0;
   hal::Micros last_fix_sent_us_ = -1;
-  std::uint64_t last_gps_sentence_step_ = 0;
   double next_truth_s_ = 0.0;
   Lateness lateness_;
 };
@@ -135,7 +136,8 @@ Plant::Plant(const PlantOptions& options, std::FILE* out)
   }
   mapping_ = modbus_mapping_new(0, 0, size, 0);
   if (mapping_ == nullptr) throw std::runtime_error("modbus_mapping_new failed");
-  for (const PlantAxis& axis : axes_) axis.publish(mapping_->tab_registers + axis.base());
+  for (const PlantAxis& axis : axes_) axis.initial_commands(mapping_->tab_registers + axis.base());
+  check_vehicle_fits_axes();
 
   TcpServerOptions tcp = options.tcp;
   tcp_ = std::make_unique<ModbusTcpServer>(tcp, mapping_, axes_.front().slave(), [this](int a) { return writable(a); });
@@ -153,6 +155,9 @@ Plant::Plant(const PlantOptions& options, std::FILE* out)
   endpoints.depth_device = depth_line_->link();
   endpoints.keller = keller_config_;
   endpoints.log_directory = options.directory / "logs";
+  endpoints.vehicle = sil::vehicle_setup(options.vehicle, fw::app::FittedDevices{}, options.max_working_depth_m, false,
+                                         options.environment.water.at(0.0, 0.0).density_kg_m3);
+  endpoints.heading_law = options.heading_law;
   const auto board_file = write_board_files(options.directory, board_, endpoints);
 
   if (!options.truth_path.empty()) {
@@ -175,6 +180,23 @@ Plant::~Plant() {
   keller_.reset();
   tcp_.reset();
   if (mapping_ != nullptr) modbus_mapping_free(mapping_);
+}
+
+// The board's [vehicle] (the model's travel and fin limit) is what the
+// firmware commands up to; an axis whose command limits are narrower would
+// refuse those commands, an actuator fault at the first full stroke.
+void Plant::check_vehicle_fits_axes() const {
+  const model::VehicleParams& v = options_.vehicle;
+  const auto check = [&](const hal_linux::AxisConfig& axis, double lo, double hi) {
+    if (lo < axis.min - 1e-9 || hi > axis.max + 1e-9) {
+      throw std::runtime_error(board_.source + ": " + axis.name + " command limits [" + std::to_string(axis.min) +
+                               ", " + std::to_string(axis.max) + "] " + axis.unit + " are narrower than vehicle " +
+                               v.name + "'s [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    }
+  };
+  check(board_.pump, m3_to_cc(v.ballast.volume_min_m3), m3_to_cc(v.ballast.volume_max_m3));
+  check(board_.slide, m_to_in(v.battery.travel_min_m), m_to_in(v.battery.travel_max_m));
+  if (board_.rudder) check(*board_.rudder, -rad_to_deg(v.heading.fin_max_rad), rad_to_deg(v.heading.fin_max_rad));
 }
 
 bool Plant::writable(int address) const {
@@ -254,15 +276,16 @@ void Plant::send_sentences() {
   if (!compass_silent_ && steps_ % compass_every == 0) {
     compass_line_->write_all_or_drop(ptnthpr(sensors_->attitude().read()));
   }
-  if (gps_silent_) return;
+  // The receiver computes once a second (the model's fix interval), and the
+  // model is asked at that rate, as glider-sil's firmware asks it once a
+  // cycle: sampled faster, the surface bobbing would restart its acquisition.
+  if (gps_silent_ || steps_ % 10 != 0) return;
   const hal::GpsFix fix = sensors_->gps().read();
   if (fix.valid && fix.time_us != last_fix_sent_us_) {
     gps_line_->write_all_or_drop(gga_fix(fix, utc) + rmc_fix(fix, utc));
     last_fix_sent_us_ = fix.time_us;
-    last_gps_sentence_step_ = steps_;
-  } else if (steps_ - last_gps_sentence_step_ >= 10) {
-    gps_line_->write_all_or_drop(gga_no_fix(utc));  // a receiver without sky still talks, once a second
-    last_gps_sentence_step_ = steps_;
+  } else {
+    gps_line_->write_all_or_drop(gga_no_fix(utc));  // a receiver without sky still talks
   }
 }
 
