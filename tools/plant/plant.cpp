@@ -277,9 +277,11 @@ void Plant::send_sentences() {
     compass_line_->write_all_or_drop(ptnthpr(sensors_->attitude().read()));
   }
   // The receiver computes once a second (the model's fix interval), and the
-  // model is asked at that rate, as glider-sil's firmware asks it once a
-  // cycle: sampled faster, the surface bobbing would restart its acquisition.
-  if (gps_silent_ || steps_ % 10 != 0) return;
+  // model is asked at whole seconds after launch, the instants glider-sil's
+  // firmware asks it at: sampled faster or at other instants, the surface
+  // bobbing would restart its acquisition (a new time to first fix) otherwise.
+  const bool whole_second = launched_ ? clock_.now_us() % 1'000'000 == 0 : steps_ % 10 == 0;
+  if (gps_silent_ || !whole_second) return;
   const hal::GpsFix fix = sensors_->gps().read();
   if (fix.valid && fix.time_us != last_fix_sent_us_) {
     gps_line_->write_all_or_drop(gga_fix(fix, utc) + rmc_fix(fix, utc));
