@@ -76,12 +76,21 @@ def number(text):
 
 
 def read_log(path):
+    """Rows as dicts of numbers, with "t": simulated seconds since the first
+    row. A target log whose m_present_time is wall-clock UTC says its loop's
+    time scale in a "# time_scale: X" line; its times are scaled back."""
     with open(path) as f:
-        lines = [line for line in f if not line.startswith("#")]
+        text = f.readlines()
+    lines = [line for line in text if not line.startswith("#")]
+    scale = 1.0
+    for line in text:
+        m = re.match(r"#\s*time_scale:\s*([0-9.eE+-]+)", line)
+        if m:
+            scale = float(m.group(1))
     rows = [{k: number(v) for k, v in row.items()} for row in csv.DictReader(lines)]
     t0 = rows[0]["m_present_time"]
     for row in rows:
-        row["t"] = row["m_present_time"] - t0
+        row["t"] = (row["m_present_time"] - t0) * scale
     return rows
 
 
