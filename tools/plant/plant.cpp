@@ -18,6 +18,7 @@
 #include "glider/model/simulator.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/sim_hal.hpp"
+#include "glider/target/loop_timing.hpp"
 #include "glider/units.hpp"
 #include "keller_server.hpp"
 #include "nmea_sentences.hpp"
@@ -34,27 +35,6 @@ constexpr double kStepS = model::GliderSimulator::kDefaultStepS;
 constexpr hal::Micros kStepUs = 100'000;
 constexpr double kStandardGravity = 9.80665;   // as the firmware's Keller driver converts
 constexpr double kUtcAtLaunchS = 12 * 3600.0;  // the NMEA time of day (the firmware does not use it)
-
-// Wake-up lateness of the plant's steps (wall microseconds).
-class Lateness {
- public:
-  void add(std::int64_t us) { samples_.push_back(us); }
-  std::string summary() {
-    if (samples_.empty()) return "no steps";
-    std::sort(samples_.begin(), samples_.end());
-    double sum = 0.0;
-    for (auto s : samples_) sum += static_cast<double>(s);
-    const auto at = [&](double q) { return samples_[static_cast<std::size_t>(q * (samples_.size() - 1))]; };
-    char text[160];
-    std::snprintf(text, sizeof text, "%zu steps, late mean %.0f us, p50 %lld us, p99 %lld us, max %lld us",
-                  samples_.size(), sum / samples_.size(), static_cast<long long>(at(0.5)),
-                  static_cast<long long>(at(0.99)), static_cast<long long>(samples_.back()));
-    return text;
-  }
-
- private:
-  std::vector<std::int64_t> samples_;
-};
 
 int open_stop_signals() {
   sigset_t stop;
@@ -111,7 +91,7 @@ class Plant {
   double last_fin_rad_ = 0.0;
   hal::Micros last_fix_sent_us_ = -1;
   double next_truth_s_ = 0.0;
-  Lateness lateness_;
+  target::LoopTiming timing_;  // the firmware loop's statistics, for the plant's steps
 };
 
 Plant::Plant(const PlantOptions& options, std::FILE* out)
@@ -351,8 +331,10 @@ void Plant::run() {
       if (stop || now >= deadline) break;
     }
     if (stop) break;
-    lateness_.add(std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - deadline).count());
+    const Clock::time_point woke = Clock::now();
     step();
+    const auto us = [](Clock::duration d) { return std::chrono::duration_cast<std::chrono::microseconds>(d).count(); };
+    timing_.record(us(woke - deadline), us(Clock::now() - woke), us(step_wall));
     if (launched_ && options_.duration_s > 0.0 && sim_.time_s() >= options_.duration_s) {
       why = "duration reached";
       break;
@@ -367,7 +349,9 @@ void Plant::print_statistics(const char* why) {
   std::fprintf(
       out_, "glider-plant: stopped (%s); %s; %.1f s simulated after launch, depth %.2f m, east %.1f m, north %.1f m\n",
       why, launched_ ? "launched" : "never launched", sim_.time_s(), truth.depth_m, truth.east_m, truth.north_m);
-  std::fprintf(out_, "glider-plant: steps: %s (time scale %g)\n", lateness_.summary().c_str(), options_.time_scale);
+  char line[256];
+  timing_.format(line, sizeof line);
+  std::fprintf(out_, "glider-plant: steps: %s (time scale %g)\n", line, options_.time_scale);
   std::fprintf(out_,
                "glider-plant: modbus tcp: %llu connections, %llu refused (cap %d), %llu requests, %llu exceptions, "
                "%llu malformed, %llu timed out, %llu unanswered\n",
