@@ -59,6 +59,8 @@ FlightSoftware::FlightSoftware(const hal::Hal& hal, const FlightSoftwareConfig& 
       mission_(config.mission),
       navigator_(config.plan, config.dead_reckoning, config.aborts.max_wpt_distance_m),
       abort_monitor_(config.aborts),
+      guard_({config.limits.ballast_min_cc, config.limits.ballast_max_cc, config.limits.battery_min_in,
+              config.limits.battery_max_in, config.heading.fin_max_rad}),
       heading_(config.heading),
       pitch_servo_(PiGains{config.pitch_kp_in_per_rad, config.pitch_ki_in_per_rad_s, config.limits.battery_min_in,
                            config.limits.battery_max_in}),
@@ -222,15 +224,16 @@ FlightSoftware::CycleCommands FlightSoftware::command_actuators(const CycleReadi
                                                                 double dt_s) {
   const bool aborting = last_.phase == Phase::kAbort;
   CycleCommands c;
-  c.ballast_cc = aborting ? config_.limits.ballast_max_cc : last_.ballast_cc;
-  c.battery_in = battery_command(last_, attitude_.pitch_rad, in.pump_ok ? in.pump.position : ballast_cmd_cc_, dt_s);
+  c.ballast_cc = guard_.ballast_cc(aborting ? config_.limits.ballast_max_cc : last_.ballast_cc);
+  c.battery_in = guard_.battery_in(
+      battery_command(last_, attitude_.pitch_rad, in.pump_ok ? in.pump.position : ballast_cmd_cc_, dt_s));
   if (!commanded_ || c.ballast_cc != ballast_cmd_cc_) {
     hal_.pump.command_volume_cc(c.ballast_cc);
   }
   if (!commanded_ || c.battery_in != battery_cmd_in_) {
     hal_.battery.command_position_in(c.battery_in);
   }
-  c.fin_rad = aborting ? 0.0 : fin_command(nav, dt_s);
+  c.fin_rad = guard_.fin_rad(aborting ? 0.0 : fin_command(nav, dt_s));
   if (!commanded_ || c.fin_rad != fin_cmd_rad_) {
     hal_.rudder.command_angle_rad(c.fin_rad);
   }
