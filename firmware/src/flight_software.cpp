@@ -59,6 +59,8 @@ FlightSoftware::FlightSoftware(const hal::Hal& hal, const FlightSoftwareConfig& 
       mission_(config.mission),
       navigator_(config.plan, config.dead_reckoning, config.aborts.max_wpt_distance_m),
       abort_monitor_(config.aborts),
+      guard_({config.limits.ballast_min_cc, config.limits.ballast_max_cc, config.limits.battery_min_in,
+              config.limits.battery_max_in, config.heading.fin_max_rad}),
       heading_(config.heading),
       pitch_servo_(PiGains{config.pitch_kp_in_per_rad, config.pitch_ki_in_per_rad_s, config.limits.battery_min_in,
                            config.limits.battery_max_in}),
@@ -213,16 +215,17 @@ void FlightSoftware::run(hal::Micros now_us) {
   const bool aborting = last_.phase == Phase::kAbort;
 
   // --- control and actuators
-  const double ballast_target = last_.phase == Phase::kAbort ? config_.limits.ballast_max_cc : last_.ballast_cc;
+  const double ballast_target =
+      guard_.ballast_cc(last_.phase == Phase::kAbort ? config_.limits.ballast_max_cc : last_.ballast_cc);
   const double battery_target =
-      battery_command(last_, attitude_.pitch_rad, pump_ok ? pump.position : ballast_cmd_cc_, dt_s);
+      guard_.battery_in(battery_command(last_, attitude_.pitch_rad, pump_ok ? pump.position : ballast_cmd_cc_, dt_s));
   if (!commanded_ || ballast_target != ballast_cmd_cc_) {
     hal_.pump.command_volume_cc(ballast_target);
   }
   if (!commanded_ || battery_target != battery_cmd_in_) {
     hal_.battery.command_position_in(battery_target);
   }
-  const double fin_target = aborting ? 0.0 : fin_command(nav, dt_s);
+  const double fin_target = guard_.fin_rad(aborting ? 0.0 : fin_command(nav, dt_s));
   if (!commanded_ || fin_target != fin_cmd_rad_) {
     hal_.rudder.command_angle_rad(fin_target);
   }
@@ -258,6 +261,7 @@ void FlightSoftware::run(hal::Micros now_us) {
   row.c_fin = fin_target;
   row.m_gps_lat = nav.new_fix ? degrees_to_nmea(fix.latitude_deg) : kNaN;
   row.m_gps_lon = nav.new_fix ? degrees_to_nmea(fix.longitude_deg) : kNaN;
+  row.m_gps_utc_s = nav.new_fix ? fix.utc_time_of_day_s : kNaN;
   const bool have_position = navigator_.have_position();
   row.m_lat = have_position ? degrees_to_nmea(navigator_.dr_position().lat_deg) : kNaN;
   row.m_lon = have_position ? degrees_to_nmea(navigator_.dr_position().lon_deg) : kNaN;

@@ -2,7 +2,9 @@
 #include "actuator_server.hpp"
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <modbus/modbus.h>
+#include <poll.h>
 #include <sys/select.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -10,11 +12,13 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 #include <thread>
 
 #include "garbled_reply.hpp"
 #include "glider/hal_linux/register_map.hpp"
+#include "modbus_request.hpp"
 
 namespace glider::sim_tools {
 namespace {
@@ -50,7 +54,7 @@ ActuatorServer::ActuatorServer(const ServerOptions& options) : options_(options)
   if (bus.transport == hal_linux::Transport::kTcp) {
     context_ = modbus_new_tcp(bus.host.c_str(), bus.port);
     if (context_ == nullptr) throw std::runtime_error("tcp " + bus.host + ": " + modbus_strerror(errno));
-    listen_socket_ = modbus_tcp_listen(context_, 8);
+    listen_socket_ = modbus_tcp_listen(context_, 128);
     if (listen_socket_ == -1) throw std::runtime_error(hal_linux::describe(bus) + ": " + modbus_strerror(errno));
     sockaddr_in bound{};
     socklen_t size = sizeof bound;
@@ -156,46 +160,105 @@ void ActuatorServer::handle(const std::uint8_t* query, int length) {
   }
 }
 
+void ActuatorServer::serve_frame(int fd, const std::uint8_t* frame, std::size_t length) {
+  // Checked here, not by libmodbus: its answer to an oversize read sleeps and
+  // flushes the socket, which stalled every client and ate the next request.
+  const int exception = request_exception(frame, length);
+  if (exception != 0) {
+    ++stats_.exceptions;
+    const std::vector<std::uint8_t> reply = exception_reply(frame, exception);
+    if (send(fd, reply.data(), reply.size(), MSG_NOSIGNAL) < 0) return;  // the client is gone: poll says so next
+    return;
+  }
+  ++stats_.requests;
+  modbus_set_socket(context_, fd);
+  handle(frame, static_cast<int>(length));
+}
+
+namespace {
+
+struct Client {
+  int fd;
+  std::vector<std::uint8_t> pending;  // bytes of a frame not yet whole
+  double last_byte_s;
+  double frame_started_s;
+};
+
+}  // namespace
+
 void ActuatorServer::serve_tcp(const volatile std::sig_atomic_t& stop) {
-  std::vector<int> clients;
-  std::uint8_t query[MODBUS_TCP_MAX_ADU_LENGTH];
+  // poll(), not select(): no FD_SETSIZE limit; every socket non-blocking and
+  // every frame assembled here, so no client can make the loop wait for it.
+  fcntl(listen_socket_, F_SETFL, fcntl(listen_socket_, F_GETFL) | O_NONBLOCK);
+  std::vector<Client> clients;
+  std::vector<pollfd> polled;
+  std::uint8_t chunk[kMaxTcpFrameLength];
   while (stop == 0) {
-    fd_set readable;
-    FD_ZERO(&readable);
-    FD_SET(listen_socket_, &readable);
-    int highest = listen_socket_;
-    for (int fd : clients) {
-      FD_SET(fd, &readable);
-      highest = std::max(highest, fd);
-    }
-    timeval tick{0, 50'000};  // also the dynamics' idle step and the stop check
-    if (select(highest + 1, &readable, nullptr, nullptr, &tick) <= 0) {
-      advance();
-      continue;
-    }
-    if (FD_ISSET(listen_socket_, &readable)) {
-      const int fd = accept(listen_socket_, nullptr, nullptr);
-      if (fd != -1) clients.push_back(fd);
-    }
-    for (auto it = clients.begin(); it != clients.end();) {
-      if (!FD_ISSET(*it, &readable)) {
-        ++it;
+    polled.assign(1, pollfd{listen_socket_, POLLIN, 0});
+    for (const Client& c : clients) polled.push_back({c.fd, POLLIN, 0});
+    const int ready = poll(polled.data(), polled.size(), 50);  // 50 ms: the idle dynamics step and the stop check
+    const double now = monotonic_s();
+    if (ready <= 0) advance();
+    for (std::size_t i = 1; i < polled.size(); ++i) {
+      Client& c = clients[i - 1];
+      if ((polled[i].revents & (POLLIN | POLLHUP | POLLERR)) == 0) continue;
+      const ssize_t got = recv(c.fd, chunk, sizeof chunk, 0);
+      if (got <= 0) {
+        if (got < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+        close(c.fd);
+        c.fd = -1;
         continue;
       }
-      modbus_set_socket(context_, *it);
-      const int length = modbus_receive(context_, query);
-      if (length > 0) {
-        handle(query, length);
-        ++it;
-      } else if (length == -1) {  // client gone or sent garbage: drop it
-        close(*it);
-        it = clients.erase(it);
-      } else {
-        ++it;
+      if (c.pending.empty()) c.frame_started_s = now;
+      c.last_byte_s = now;
+      c.pending.insert(c.pending.end(), chunk, chunk + got);
+      // Every whole frame in the buffer, in order; a malformed header drops the client.
+      std::size_t used = 0;
+      while (c.fd != -1) {
+        const std::size_t size = tcp_frame_size(c.pending.data() + used, c.pending.size() - used);
+        if (size == kFrameIncomplete) break;
+        if (size == kFrameMalformed) {
+          ++stats_.malformed;
+          close(c.fd);
+          c.fd = -1;
+          break;
+        }
+        serve_frame(c.fd, c.pending.data() + used, size);
+        used += size;
+        c.frame_started_s = now;
+      }
+      if (c.fd != -1) c.pending.erase(c.pending.begin(), c.pending.begin() + static_cast<std::ptrdiff_t>(used));
+    }
+    for (Client& c : clients) {
+      const bool frame_late = !c.pending.empty() && now - c.frame_started_s > options_.frame_timeout_s;
+      if (c.fd != -1 && (frame_late || now - c.last_byte_s > options_.idle_timeout_s)) {
+        ++stats_.timed_out;
+        close(c.fd);
+        c.fd = -1;
+      }
+    }
+    clients.erase(std::remove_if(clients.begin(), clients.end(), [](const Client& c) { return c.fd == -1; }),
+                  clients.end());
+    if ((polled[0].revents & POLLIN) != 0) {
+      // Everything waiting, bounded: a flood of connections cannot starve the clients.
+      for (int n = 0; n < 256; ++n) {
+        const int fd = accept4(listen_socket_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        if (fd == -1) break;
+        if (static_cast<int>(clients.size()) >= options_.max_clients) {
+          ++stats_.refused;
+          if (stats_.refused == 1 || stats_.refused % 1000 == 0) {
+            std::fprintf(stderr, "glider-actuator-sim: connection refused: %d clients already (the cap); %llu so far\n",
+                         options_.max_clients, static_cast<unsigned long long>(stats_.refused));
+          }
+          close(fd);
+          continue;
+        }
+        ++stats_.accepted;
+        clients.push_back({fd, {}, now, now});
       }
     }
   }
-  for (int fd : clients) close(fd);
+  for (const Client& c : clients) close(c.fd);
   modbus_set_socket(context_, -1);
 }
 

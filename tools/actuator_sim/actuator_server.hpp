@@ -4,6 +4,7 @@
 // behind the default register map, on TCP (many clients) or on a serial
 // device (RTU), with the fault plan applied to every request.
 #include <csignal>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -22,6 +23,23 @@ struct ServerOptions {
   hal_linux::ModbusBoard board;  // bus says where to serve
   FaultPlan faults;
   double time_scale = 1.0;  // simulated seconds per real second
+  // TCP: clients served at once; one more is accepted and closed at once
+  // (its connect succeeds, its first read sees the end of the stream), and
+  // the refusal is counted and said on stderr.
+  int max_clients = 64;
+  // TCP: a frame started must be whole within this, and a client silent for
+  // idle_timeout_s is closed: a slow or stuck client never holds a slot.
+  double frame_timeout_s = 2.0;
+  double idle_timeout_s = 120.0;
+};
+
+struct ServerStats {
+  std::uint64_t accepted = 0;
+  std::uint64_t refused = 0;     // over max_clients
+  std::uint64_t timed_out = 0;   // frame or idle timeout
+  std::uint64_t malformed = 0;   // not a Modbus TCP frame: client dropped
+  std::uint64_t exceptions = 0;  // requests answered with an exception by the checks
+  std::uint64_t requests = 0;    // frames handed to the register map
 };
 
 class ActuatorServer {
@@ -37,6 +55,11 @@ class ActuatorServer {
   const std::string& warning() const { return warning_; }
   // Serves until `stop` becomes non-zero (a signal handler sets it).
   void run(const volatile std::sig_atomic_t& stop);
+  // Answers one whole Modbus TCP frame on socket `fd`: the checks of
+  // modbus_request.hpp, then the register map. The TCP loop calls it; the
+  // fuzz target calls it on a socket pair.
+  void serve_frame(int fd, const std::uint8_t* frame, std::size_t length);
+  const ServerStats& stats() const { return stats_; }
 
  private:
   struct Axis {
@@ -59,6 +82,7 @@ class ActuatorServer {
   std::string endpoint_;
   std::string warning_;
   double last_time_s_ = 0.0;
+  ServerStats stats_;
 };
 
 }  // namespace glider::sim_tools

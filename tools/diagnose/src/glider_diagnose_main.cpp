@@ -234,6 +234,18 @@ int main(int argc, char** argv) {
       throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
     }
     const auto start = std::chrono::steady_clock::now();
+    // Progress on stderr once a run has taken more than 2 s, at most a line a second.
+    std::size_t fits = 0;
+    double last_line_s = 0.0;
+    const std::size_t rows = log.rows();
+    options.progress = [&](const std::string& fitting) {
+      ++fits;
+      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (elapsed_s < 2.0 || elapsed_s - last_line_s < 1.0) return;
+      last_line_s = elapsed_s;
+      std::fprintf(stderr, "glider-diagnose: %.0f s, %zu rows: model fit %zu (%s)\n", elapsed_s, rows, fits,
+                   fitting.c_str());
+    };
     const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log, observation_options);
     const Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

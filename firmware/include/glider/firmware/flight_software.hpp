@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "glider/firmware/abort_monitor.hpp"
+#include "glider/firmware/actuator_guard.hpp"
 #include "glider/firmware/dead_reckoning.hpp"
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/heading_controller.hpp"
@@ -70,6 +71,8 @@ class FlightSoftware final : public PeriodicTask {
   std::int32_t yos_completed() const { return last_.yos_completed; }
   const Navigator& navigator() const { return navigator_; }
   std::uint64_t log_rows_lost() const { return log_rows_lost_; }
+  // Commands clamped to the vehicle's range (or non-finite) before they were sent.
+  const GuardCounts& actuator_guard_counts() const { return guard_.counts(); }
 
  private:
   void update_depth_rate(const hal::DepthSample& depth);
@@ -81,6 +84,7 @@ class FlightSoftware final : public PeriodicTask {
   YoMission mission_;
   Navigator navigator_;
   AbortMonitor abort_monitor_;
+  ActuatorGuard guard_;
   HeadingController heading_;
   PiController pitch_servo_;
   bool mission_over_ = false;  // the navigator's end of mission

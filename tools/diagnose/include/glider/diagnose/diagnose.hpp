@@ -4,6 +4,7 @@
 // candidate effect fitted on half of the yos and scored on the other half,
 // forward selection of the effects that really help (held-out error and the
 // Bayesian information criterion), the named cause and the gain.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -102,6 +103,9 @@ struct DiagnoseOptions {
   // Score and fit only samples in this depth window (m), e.g. gliderflight's
   // 10-35 dbar; the model still flies the whole log.
   double window_min_m = -1e9, window_max_m = 1e9;
+  // Called before each model fit with the effects being fitted ("nominal",
+  // "buoyancy_offset+drag_change"): progress for the user on long logs.
+  std::function<void(const std::string& fitting)> progress;
 };
 
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& observations,
