@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "glider/cli/tool.hpp"
 #include "glider/firmware/mission_file/mission_loader.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -72,7 +73,10 @@ bool fly(const std::string& source, const std::string& out_dir, const Case& c, H
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Heading autopilot study: real comet logs vs SIL with fin dead time, before and after the fix"};
+  glider::cli::Tool tool(
+      "glider-heading-study",
+      "Heading autopilot study: real comet logs vs SIL with fin dead time, before and after the fix");
+  CLI::App& app = tool.app();
   std::string source = ".";
   std::string out_dir = "build/heading_study";
   std::vector<double> delays{0.0, 5.0, 10.0, 15.0, 20.0};
@@ -83,52 +87,53 @@ int main(int argc, char** argv) {
   app.add_option("--real", real_logs,
                  "real logs to measure instead of the three comet CSVs: a CSV, or a directory / glob of a glider's "
                  "binary files (repeatable)");
-  CLI11_PARSE(app, argc, argv);
-  std::filesystem::create_directories(out_dir);
+  return tool.run(argc, argv, [&] {
+    std::filesystem::create_directories(out_dir);
 
-  glider::flightlog::ReadOptions real;
-  real.columns = {"m_heading", "c_heading", "m_depth_state", "c_fin"};
-  std::printf("Real comet logs (glides with a heading command):\n");
-  if (real_logs.empty()) {
-    for (const char* log : {"comet-2016-174-05", "comet-2019-222-02-154", "comet-2019-222-02-156"}) {
-      real_logs.push_back(source + "/tests/data/real/" + log + ".csv");
+    glider::flightlog::ReadOptions real;
+    real.columns = {"m_heading", "c_heading", "m_depth_state", "c_fin"};
+    std::printf("Real comet logs (glides with a heading command):\n");
+    if (real_logs.empty()) {
+      for (const char* log : {"comet-2016-174-05", "comet-2019-222-02-154", "comet-2019-222-02-156"}) {
+        real_logs.push_back(source + "/tests/data/real/" + log + ".csv");
+      }
     }
-  }
-  for (const std::string& log : real_logs) {
-    std::vector<glider::slocum::Warning> warnings;
-    const auto data = glider::slocum::load_flight_log({{log}, {}}, real, &warnings);
-    for (const auto& w : warnings) std::fprintf(stderr, "glider-heading-study: warning: %s\n", w.text().c_str());
-    std::printf("  %-24s %s\n", std::filesystem::path(log).stem().c_str(),
-                glider::heading_study::format(glider::heading_study::heading_metrics(data, 0.0)).c_str());
-  }
+    for (const std::string& log : real_logs) {
+      std::vector<glider::slocum::Warning> warnings;
+      const auto data = glider::slocum::load_flight_log({{log}, {}}, real, &warnings);
+      for (const auto& w : warnings) std::fprintf(stderr, "glider-heading-study: warning: %s\n", w.text().c_str());
+      std::printf("  %-24s %s\n", std::filesystem::path(log).stem().c_str(),
+                  glider::heading_study::format(glider::heading_study::heading_metrics(data, 0.0)).c_str());
+    }
 
-  int failures = 0;
-  auto run = [&](const Case& c) {
-    HeadingMetrics m;
-    if (!fly(source, out_dir, c, m)) {
-      ++failures;
-      return;
+    int failures = 0;
+    auto run = [&](const Case& c) {
+      HeadingMetrics m;
+      if (!fly(source, out_dir, c, m)) {
+        ++failures;
+        return;
+      }
+      std::printf("  %-24s roll %+5.1f deg, fin dead time %4.1f s: %s\n", law_name(c.law), c.roll_deg, c.delay_s,
+                  glider::heading_study::format(m).c_str());
+    };
+    std::printf("SIL, comet vehicle, roll +3.7 deg (comet 2016), fin 0.1 rad/s:\n");
+    for (const double delay : delays) {
+      for (const auto law : {glider::fw::HeadingLaw::kProportional, glider::fw::HeadingLaw::kSlocum,
+                             glider::fw::HeadingLaw::kCompensated}) {
+        char name[64];
+        std::snprintf(name, sizeof(name), "roll4_law%d_delay%02.0f", static_cast<int>(law), delay);
+        run({name, law, 3.7, delay});
+      }
     }
-    std::printf("  %-24s roll %+5.1f deg, fin dead time %4.1f s: %s\n", law_name(c.law), c.roll_deg, c.delay_s,
-                glider::heading_study::format(m).c_str());
-  };
-  std::printf("SIL, comet vehicle, roll +3.7 deg (comet 2016), fin 0.1 rad/s:\n");
-  for (const double delay : delays) {
-    for (const auto law : {glider::fw::HeadingLaw::kProportional, glider::fw::HeadingLaw::kSlocum,
-                           glider::fw::HeadingLaw::kCompensated}) {
-      char name[64];
-      std::snprintf(name, sizeof(name), "roll4_law%d_delay%02.0f", static_cast<int>(law), delay);
-      run({name, law, 3.7, delay});
+    std::printf("SIL, comet vehicle, roll -10 deg (comet 2019), fin 0.1 rad/s:\n");
+    for (const double delay : {0.0, delays.back()}) {
+      for (const auto law : {glider::fw::HeadingLaw::kProportional, glider::fw::HeadingLaw::kSlocum,
+                             glider::fw::HeadingLaw::kCompensated}) {
+        char name[64];
+        std::snprintf(name, sizeof(name), "roll10_law%d_delay%02.0f", static_cast<int>(law), delay);
+        run({name, law, -10.0, delay});
+      }
     }
-  }
-  std::printf("SIL, comet vehicle, roll -10 deg (comet 2019), fin 0.1 rad/s:\n");
-  for (const double delay : {0.0, delays.back()}) {
-    for (const auto law : {glider::fw::HeadingLaw::kProportional, glider::fw::HeadingLaw::kSlocum,
-                           glider::fw::HeadingLaw::kCompensated}) {
-      char name[64];
-      std::snprintf(name, sizeof(name), "roll10_law%d_delay%02.0f", static_cast<int>(law), delay);
-      run({name, law, -10.0, delay});
-    }
-  }
-  return failures == 0 ? 0 : 1;
+    return failures == 0 ? glider::cli::kOk : glider::cli::kError;
+  });
 }

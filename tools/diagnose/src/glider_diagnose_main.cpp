@@ -11,6 +11,7 @@
 
 #include "glider/config/toml_document.hpp"
 #include "glider/diagnose/diagnose.hpp"
+#include "glider/diagnose/diagnosis_json.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/report/report.hpp"
@@ -24,82 +25,8 @@ using glider::diagnose::Effect;
 using glider::diagnose::info;
 using nlohmann::ordered_json;
 
-ordered_json number_or_null(double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr); }
-
-ordered_json rms_json(const glider::diagnose::Rms& r) {
-  return {{"rms_depth_rate_m_s", number_or_null(r.depth_rate_m_s)}, {"samples", r.samples}};
-}
-
 ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source, double wall_s) {
-  ordered_json j;
-  j["vehicle"] = d.vehicle;
-  j["vehicle_source"] = vehicle_source;
-  j["flight_model"] = to_string(d.model);
-  if (d.retrimmed_to_kg_m3) {
-    j["trim_density_kg_m3"] = {{"vehicle", *d.retrimmed_from_kg_m3},
-                               {"used", *d.retrimmed_to_kg_m3},
-                               {"note",
-                                "the log's water is far from the vehicle's trim density: the vehicle is taken "
-                                "as ballasted for the log's median measured density"}};
-  }
-  j["samples_used"] = d.samples_used;
-  j["train_samples"] = d.train_samples;
-  j["heldout_samples"] = d.heldout_samples;
-  ordered_json base;
-  base["rms_depth_rate_m_s"] = number_or_null(d.baseline.all.depth_rate_m_s);
-  base["rms_pitch_deg"] = d.baseline.rms_pitch_deg ? ordered_json(*d.baseline.rms_pitch_deg) : ordered_json(nullptr);
-  base["heldout_rms_depth_rate_m_s"] = number_or_null(d.baseline.heldout_rms_m_s);
-  base["rms_battpos_in"] = d.baseline.rms_battpos_in ? ordered_json(*d.baseline.rms_battpos_in) : ordered_json(nullptr);
-  base["by_phase"] = {{"dive", rms_json(d.baseline.dives)},
-                      {"climb", rms_json(d.baseline.climbs)},
-                      {"inflection", d.model == glider::diagnose::FlightModelKind::kDynamic
-                                         ? rms_json(d.baseline.inflections)
-                                         : ordered_json{{"rms_depth_rate_m_s", nullptr},
-                                                        {"samples", d.baseline.inflection_samples},
-                                                        {"note", "turns are not scored by the steady model"}}}};
-  ordered_json depth = ordered_json::array();
-  for (const auto& bin : d.baseline.by_depth) {
-    depth.push_back({{"from_m", bin.from_m},
-                     {"to_m", bin.to_m},
-                     {"rms_depth_rate_m_s", number_or_null(bin.rms.depth_rate_m_s)},
-                     {"samples", bin.rms.samples}});
-  }
-  base["by_depth"] = depth;
-  j["baseline"] = base;
-  ordered_json findings = ordered_json::array();
-  for (const auto& f : d.findings) {
-    findings.push_back({{"effect", info(f.effect).id},
-                        {"value", f.value},
-                        {"unit", info(f.effect).unit},
-                        {"ci95", {f.ci95_low, f.ci95_high}},
-                        {"heldout_rms_depth_rate_m_s", f.heldout_rms_m_s},
-                        {"gain", f.gain},
-                        {"fitted", f.fitted}});
-    if (f.heldout_rms_battpos_in) findings.back()["heldout_rms_battpos_in"] = *f.heldout_rms_battpos_in;
-  }
-  j["findings"] = findings;
-  j["cause"] = d.cause;
-  j["extended"] = {{"rms_depth_rate_m_s", number_or_null(d.extended_all.depth_rate_m_s)},
-                   {"heldout_rms_depth_rate_m_s", number_or_null(d.extended_heldout_rms_m_s)}};
-  j["gain"] = d.gain;
-  ordered_json parameters;
-  for (std::size_t i = 0; i < glider::diagnose::kEffectCount; ++i) {
-    parameters[info(static_cast<Effect>(i)).id] = d.extended[i];
-  }
-  j["parameters"] = parameters;
-  j["candidates"] = d.candidates_tried;
-  if (d.speed_through_water) {
-    const auto& u = *d.speed_through_water;
-    j["speed_through_water"] = {{"samples", u.samples},
-                                {"measured_mean_m_s", u.measured_mean_m_s},
-                                {"rms_nominal_m_s", number_or_null(u.nominal_rms_m_s)},
-                                {"rms_extended_m_s", number_or_null(u.extended_rms_m_s)},
-                                {"heldout_samples", u.heldout_samples},
-                                {"heldout_rms_nominal_m_s", number_or_null(u.heldout_nominal_rms_m_s)},
-                                {"heldout_rms_extended_m_s", number_or_null(u.heldout_extended_rms_m_s)}};
-  }
-  j["wall_s"] = wall_s;
-  return j;
+  return glider::diagnose::diagnosis_json(d, vehicle_source, wall_s);
 }
 
 void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source, double wall_s) {
