@@ -54,6 +54,10 @@ CASES = {
     # it must abort on an actuator or sensor fault and keep cycling.
     "plant_silent": dict(mission="tests/hil/short_yo.toml", plant=["plant_silent@60s"], sil=None, end="abort",
                          cause=(3, 4, 5)),
+    # The plant process dies (SIGKILL) about a simulated minute into the
+    # flight: connection refused, ptys hung up. The same demand.
+    "plant_killed": dict(mission="tests/hil/short_yo.toml", plant=[], kill_plant_at_s=60.0, sil=None, end="abort",
+                         cause=(3, 4, 5)),
 }
 
 ABORT_NAMES = {0: "none", 1: "overdepth", 2: "overtime", 3: "depth sensor", 4: "attitude sensor", 5: "actuator fault",
@@ -257,7 +261,13 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     started = time.monotonic()
     fw = start(fw_args, stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
     stopped_by_us = False
+    killed = False
     while fw.poll() is None:
+        if "kill_plant_at_s" in case and not killed and time.monotonic() - started > case["kill_plant_at_s"] / scale:
+            plant.kill()  # the firmware starts within a fraction of a simulated second: near enough
+            killed = True
+            print("harness: glider-plant killed (SIGKILL) %.1f s after the firmware started" %
+                  (time.monotonic() - started))
         if time.monotonic() - started > limit_s:
             fw.send_signal(signal.SIGTERM)
             stopped_by_us = True
@@ -268,7 +278,8 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     except subprocess.TimeoutExpired:
         fail(name, "glider-firmware did not stop within 10 s of SIGTERM (a hang)")
     wall = time.monotonic() - started
-    plant.send_signal(signal.SIGTERM)
+    if not killed:
+        plant.send_signal(signal.SIGTERM)
     plant_out, _ = plant.communicate(timeout=10)
     print(plant_out, end="")
     print(err, end="")
@@ -305,7 +316,7 @@ def main():
         if case["end"] == "complete":
             stop_s = sil["end_t"]
         else:  # a minute after the abort, to see the firmware go on cycling
-            fault_s = min(float(f.split("@")[1].rstrip("s")) for f in case["plant"])
+            fault_s = case.get("kill_plant_at_s") or min(float(f.split("@")[1].rstrip("s")) for f in case["plant"])
             stop_s = (sil["abort_t"] if sil else fault_s) + 60.0
         hil_rows, err, stopped = run_hil(build, source, a.case, case, tmp, a.time_scale, stop_s)
         hil = events(hil_rows)
