@@ -114,7 +114,8 @@ struct Fixture {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static Fixture fixture;
+  // Never destroyed: the responder thread outlives LLVMFuzzerTestOneInput to the process' end.
+  static Fixture& fixture = *new Fixture;
   fixture.responder.set_reply(data, size);
   fixture.link->begin_cycle();
   hl::KellerDepthSensor keller(*fixture.link, hl::KellerConfig{}, fixture.clock);
