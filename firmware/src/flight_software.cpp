@@ -261,6 +261,7 @@ void FlightSoftware::run(hal::Micros now_us) {
   row.c_fin = fin_target;
   row.m_gps_lat = nav.new_fix ? degrees_to_nmea(fix.latitude_deg) : kNaN;
   row.m_gps_lon = nav.new_fix ? degrees_to_nmea(fix.longitude_deg) : kNaN;
+  row.m_gps_utc_s = nav.new_fix ? fix.utc_time_of_day_s : kNaN;
   const bool have_position = navigator_.have_position();
   row.m_lat = have_position ? degrees_to_nmea(navigator_.dr_position().lat_deg) : kNaN;
   row.m_lon = have_position ? degrees_to_nmea(navigator_.dr_position().lon_deg) : kNaN;

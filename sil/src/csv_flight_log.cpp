@@ -1,86 +1,75 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/sil/csv_flight_log.hpp"
 
-#include <charconv>
-#include <cmath>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstring>
 
+#include "glider/firmware/log/log_text.hpp"
 #include "glider/units.hpp"
 
 namespace glider::sil {
 namespace {
 
-void append_number(std::string& line, double value) {
-  if (std::isfinite(value)) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    line.append(buffer, result.ptr);
-  }
-  line.push_back(',');
-}
+constexpr std::size_t kFlushBytes = 64 * 1024;  // whole rows, at most this much held in memory
 
-void append_integer(std::string& line, long long value) {
-  char buffer[24];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  line.append(buffer, result.ptr);
-  line.push_back(',');
-}
-
-// Microseconds as exact decimal seconds ("12.5", "3").
-void append_time(std::string& line, hal::Micros us) {
-  append_integer(line, us / hal::kMicrosPerSecond);
-  line.pop_back();
-  long long fraction = us % hal::kMicrosPerSecond;
-  if (fraction != 0) {
-    char digits[7];
-    for (int i = 5; i >= 0; --i) {
-      digits[i] = static_cast<char>('0' + fraction % 10);
-      fraction /= 10;
-    }
-    int length = 6;
-    while (length > 0 && digits[length - 1] == '0') --length;
-    line.push_back('.');
-    line.append(digits, static_cast<std::size_t>(length));
-  }
-  line.push_back(',');
-}
+const char* kSimColumns =
+    "sci_water_temp,sci_water_cond,sci_water_pressure,"
+    "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
+    "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
+    "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_yaw_rate_rad_s,sim_density_kg_m3,sim_u_water_m_s,"
+    "sim_v_water_m_s,sim_w_water_m_s,sim_temperature_c,sim_practical_salinity";
 
 }  // namespace
 
-const char* CsvFlightLog::header() {
-  return "m_present_time,m_depth,m_depth_rate,m_pitch,m_roll,m_heading,m_ballast_pumped,c_ballast_pumped,"
-         "m_battpos,c_battpos,c_pitch,m_depth_state,x_yo_count,x_abort_cause,x_loop_overruns,"
-         "c_heading,m_fin,c_fin,m_gps_lat,m_gps_lon,m_lat,m_lon,m_water_vx,m_water_vy,m_leakdetect,"
-         "m_coulomb_amphr_total,m_battery,x_waypoint,x_waypoints_reached,x_segment,x_dr_error_m,x_dr_distance_m,x_"
-         "mission_complete,"
-         "sci_water_temp,sci_water_cond,sci_water_pressure,"
-         "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
-         "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
-         "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_yaw_rate_rad_s,sim_density_kg_m3,sim_u_water_m_s,sim_v_"
-         "water_m_s,"
-         "sim_w_water_m_s,sim_temperature_c,sim_practical_salinity";
-}
+std::string CsvFlightLog::header() { return fw::log_header() + "," + kSimColumns; }
 
 CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
                            const SimCtd& ctd, const LogGaps& gaps, std::uint64_t gap_seed)
-    : path_(path),
-      out_(path, std::ios::out | std::ios::trunc),
-      sim_(sim),
-      ctd_(ctd),
-      gaps_(gaps),
-      gap_random_(gap_seed) {
-  if (!out_) {
+    : path_(path), sim_(sim), ctd_(ctd), gaps_(gaps), gap_random_(gap_seed) {
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
     ok_ = false;
     error_ = path + ": cannot open for writing: " + std::strerror(errno);
     return;
   }
+  pending_.reserve(kFlushBytes + 4096);
   for (const auto& [key, value] : metadata) {
-    out_ << "# " << key << ": " << value << '\n';
+    pending_ += "# " + key + ": " + value + '\n';
   }
-  out_ << header() << '\n';
-  line_.reserve(512);
-  ok_ = static_cast<bool>(out_);
-  if (!ok_) error_ = path + ": write failed";
+  pending_ += header() + '\n';
+  flush();
+}
+
+CsvFlightLog::~CsvFlightLog() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+// Writes the held rows with as few write() calls as the kernel allows. A
+// failure (disk full) cuts the file back to the last whole row.
+bool CsvFlightLog::flush() {
+  if (!ok_ || pending_.empty()) return ok_;
+  std::size_t done = 0;
+  while (done < pending_.size()) {
+    const ssize_t n = ::write(fd_, pending_.data() + done, pending_.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      if (::ftruncate(fd_, static_cast<off_t>(flushed_bytes_)) != 0) {
+        error_ = path_ + ": write failed (" + std::strerror(error) + ") and the torn row could not be cut off";
+      } else {
+        error_ = path_ + ": write failed after " + std::to_string(rows_) + " rows: " + std::strerror(error);
+      }
+      ok_ = false;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  flushed_bytes_ += pending_.size();
+  pending_.clear();
+  return true;
 }
 
 hal::Micros CsvFlightLog::draw_us(double min_s, double max_s) {
@@ -104,91 +93,66 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   if (!ok_) return false;
   if (thinned_out(r)) return true;  // not logged by design: not a lost row
   const model::Truth t = sim_.truth();
-  line_.clear();
-  append_time(line_, r.time_us);
-  append_number(line_, r.m_depth);
-  append_number(line_, r.m_depth_rate);
-  append_number(line_, r.m_pitch);
-  append_number(line_, r.m_roll);
-  append_number(line_, r.m_heading);
-  append_number(line_, r.m_ballast_pumped);
-  append_number(line_, r.c_ballast_pumped);
-  append_number(line_, r.m_battpos);
-  append_number(line_, r.c_battpos);
-  append_number(line_, r.c_pitch);
-  append_integer(line_, r.m_depth_state);
-  append_integer(line_, r.x_yo_count);
-  append_integer(line_, r.x_abort_cause);
-  append_integer(line_, r.x_loop_overruns);
-  append_number(line_, r.c_heading);
-  append_number(line_, r.m_fin);
-  append_number(line_, r.c_fin);
-  append_number(line_, r.m_gps_lat);
-  append_number(line_, r.m_gps_lon);
-  append_number(line_, r.m_lat);
-  append_number(line_, r.m_lon);
-  append_number(line_, r.m_water_vx);
-  append_number(line_, r.m_water_vy);
-  append_integer(line_, r.m_leakdetect);
-  append_number(line_, r.m_coulomb_amphr_total);
-  append_number(line_, r.m_battery);
-  append_integer(line_, r.x_waypoint);
-  append_integer(line_, r.x_waypoints_reached);
-  append_integer(line_, r.x_segment);
-  append_number(line_, r.x_dr_error_m);
-  append_number(line_, r.x_dr_distance_m);
-  append_integer(line_, r.x_mission_complete);
+  char line[fw::kLogFieldsMaxChars + 1024];
+  std::size_t at = fw::format_log_fields(r, r.time_us, line, sizeof line);
   // The science bay is off at the surface (m_depth_state 0), as in real logs.
   const bool science_missed = gaps_.enabled && gap_random_.uniform() < gaps_.sci_blank_fraction;
   const CtdReading ctd = science_missed ? CtdReading{} : ctd_.sample(t, r.m_depth_state != 0);
-  append_number(line_, ctd.temperature_c);
-  append_number(line_, ctd.conductivity_s_m);
-  append_number(line_, ctd.pressure_bar);
-  append_number(line_, t.east_m);
-  append_number(line_, t.north_m);
-  append_number(line_, t.depth_m);
-  append_number(line_, t.heading_rad);
-  append_number(line_, t.pitch_rad);
-  append_number(line_, t.speed_m_s);
-  append_number(line_, t.alpha_rad);
-  append_number(line_, t.glide_path_rad);
-  append_number(line_, t.horizontal_speed_m_s);
-  append_number(line_, t.depth_rate_m_s);
-  append_number(line_, t.net_buoyancy_kg);
-  append_number(line_, m3_to_cc(t.pumped_volume_m3));
-  append_number(line_, m_to_in(t.battery_pos_m));
-  append_number(line_, t.fin_rad);
-  append_number(line_, t.yaw_rate_rad_s);
-  append_number(line_, t.water.density_kg_m3);
-  append_number(line_, t.water.current_east_m_s);
-  append_number(line_, t.water.current_north_m_s);
-  append_number(line_, t.water.vertical_velocity_m_s);
-  append_number(line_, t.water.temperature_c);
-  append_number(line_, t.water.practical_salinity);
-  line_.back() = '\n';
-  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
-  if (!out_) {
+  for (const double value : {ctd.temperature_c,
+                             ctd.conductivity_s_m,
+                             ctd.pressure_bar,
+                             t.east_m,
+                             t.north_m,
+                             t.depth_m,
+                             t.heading_rad,
+                             t.pitch_rad,
+                             t.speed_m_s,
+                             t.alpha_rad,
+                             t.glide_path_rad,
+                             t.horizontal_speed_m_s,
+                             t.depth_rate_m_s,
+                             t.net_buoyancy_kg,
+                             m3_to_cc(t.pumped_volume_m3),
+                             m_to_in(t.battery_pos_m),
+                             t.fin_rad,
+                             t.yaw_rate_rad_s,
+                             t.water.density_kg_m3,
+                             t.water.current_east_m_s,
+                             t.water.current_north_m_s,
+                             t.water.vertical_velocity_m_s,
+                             t.water.temperature_c,
+                             t.water.practical_salinity}) {
+    const std::size_t n = at > 0 ? fw::format_log_number(value, line + at, sizeof line - at) : 0;
+    at = n > 0 ? at + n : 0;
+  }
+  if (at == 0) {
     ok_ = false;
-    error_ = path_ + ": write failed after " + std::to_string(rows_) + " rows: " + std::strerror(errno);
+    error_ = path_ + ": a row did not fit its buffer";
     return false;
   }
+  line[at - 1] = '\n';
+  pending_.append(line, at);
   ++rows_;
-  return true;
+  return pending_.size() < kFlushBytes || flush();
+}
+
+bool CsvFlightLog::finish(std::string_view outcome, std::uint64_t lost) {
+  if (fd_ < 0) return ok_;
+  char trailer[256];
+  const std::size_t n = fw::format_log_trailer(outcome, rows_, lost, trailer, sizeof trailer);
+  if (ok_) pending_.append(trailer, n);
+  flush();
+  return close();
 }
 
 bool CsvFlightLog::close() {
-  if (out_.is_open()) {
-    out_.flush();
-    if (!out_ && ok_) {
-      ok_ = false;
-      error_ = path_ + ": flush failed: " + std::strerror(errno);
-    }
-    out_.close();
-    if (out_.fail() && ok_) {
-      ok_ = false;
-      error_ = path_ + ": close failed";
-    }
+  if (fd_ < 0) return ok_;
+  flush();
+  if (::close(fd_) != 0 && ok_) {
+    ok_ = false;
+    error_ = path_ + ": close failed: " + std::strerror(errno);
   }
+  fd_ = -1;
   return ok_;
 }
 

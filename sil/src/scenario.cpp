@@ -139,7 +139,11 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   result.log_rows_lost = flight.log_rows_lost();
   if (csv) {
     result.log_rows = csv->rows();
-    if (!csv->close()) result.error = csv->error();
+    const std::string outcome = result.final_phase == fw::Phase::kAbort
+                                    ? std::string("aborted ") + fw::cause_id(result.abort_cause)
+                                : result.completed ? std::string("complete")
+                                                   : std::string("stopped max_sim_time");
+    if (!csv->finish(outcome, result.log_rows_lost)) result.error = csv->error();
   }
   if (result.error.empty() && result.log_rows_lost > 0) {
     result.error = std::to_string(result.log_rows_lost) + " log rows could not be written";

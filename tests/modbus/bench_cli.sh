@@ -31,7 +31,9 @@ expect 2 "refused: 300 cc is outside the pump's limits \[-250, 250\] cc" -- "$be
 expect 2 "not confirmed: nothing moved" -- "$bench" "${at[@]}" move pump 100
 expect 0 "pump move \+0.000 -> \+100.000 cc: arrived" -- "$bench" "${at[@]}" --yes --csv "$tmp/move.csv" move pump 100
 head -1 "$tmp/move.csv" | grep -q "^time_s,axis,target,position,speed,status,fault_code$" || fail "CSV header"
-[ "$(wc -l <"$tmp/move.csv")" -ge 3 ] || fail "CSV has no samples"
+[ "$(wc -l <"$tmp/move.csv")" -ge 4 ] || fail "CSV has no samples"
+rows="$(grep -vc '^#' "$tmp/move.csv")"
+tail -1 "$tmp/move.csv" | grep -q "^# end: complete rows=$((rows - 1)) lost=0$" || fail "CSV trailer: $(tail -1 "$tmp/move.csv")"
 expect 0 "slide step \+0.000 -> \+0.200 in: arrived.*overshoot 0.0 %" -- "$bench" "${at[@]}" --yes step slide 0.2
 expect 0 "pump   : .*\+100.000 cc" -- "$bench" "${at[@]}" status
 kill "$sim_pid"; wait "$sim_pid" 2>/dev/null || true; sim_pid=""

@@ -87,16 +87,22 @@ TEST(DemoMission, LogFollowsTheFlightLogContract) {
     saw_vehicle_name |= line == "# vehicle.name: slocum_we01";
   }
   CHECK_TRUE(saw_vehicle_name);
-  STRCMP_EQUAL(sil::CsvFlightLog::header(), line.c_str());
+  STRCMP_EQUAL(sil::CsvFlightLog::header().c_str(), line.c_str());
   double last_time = -1.0;
   std::uint64_t rows = 0;
+  std::string last_line;
   while (std::getline(in, line)) {
+    last_line = line;
+    if (line.rfind("# end: ", 0) == 0) break;
     const double time = std::stod(line.substr(0, line.find(',')));
     CHECK(time > last_time);  // strictly increasing
     last_time = time;
     ++rows;
   }
   LONGS_EQUAL(r.log_rows, rows);  // nothing lost or truncated
+  // The trailer is the last line: how the flight ended, rows written and lost.
+  STRCMP_EQUAL(("# end: complete rows=" + std::to_string(rows) + " lost=0").c_str(), last_line.c_str());
+  CHECK_FALSE(std::getline(in, line));
 }
 
 TEST(DemoMission, CtdMeasuresTheWaterTheVehicleFeels) {

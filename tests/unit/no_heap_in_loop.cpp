@@ -2,8 +2,9 @@
 // The firmware allocates nothing after start-up: every global operator new in
 // this program is counted, and the flight software flies a whole scripted
 // mission (dive, climbs, yos, surfacing), a navigated mission (GPS fixes,
-// segments, waypoints) and an abort with the count unchanged. A plain program (not CppUTest, whose library replaces the
-// allocation operators itself); exit status 0 = pass.
+// segments, waypoints) and an abort with the count unchanged, through the
+// flight application both mains share, with the log rows' text formatted. A plain program (not CppUTest, whose library
+// replaces the allocation operators itself); exit status 0 = pass.
 #include <array>
 #include <atomic>
 #include <cstdio>
@@ -11,8 +12,10 @@
 #include <new>
 
 #include "fake_hal.hpp"
+#include "glider/firmware/app/flight_application.hpp"
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/flight_software.hpp"
+#include "glider/firmware/log/log_text.hpp"
 
 namespace {
 
@@ -37,10 +40,10 @@ int main() {
   using namespace glider;
   test::FakeHal fake;
   fw::FlightSoftwareConfig config;
-  fw::FlightSoftware flight(fake.hal(), config);
-  const std::array<fw::TaskSlot, 1> table{{{"flight", &flight, 1, 500'000}}};
-  fw::Executive executive(fake, table, 1'000'000);
-  flight.attach_executive(&executive);
+  // The flight application both mains fly (its task table and executive).
+  fw::app::FlightApplication application(fake.hal(), config);
+  const fw::FlightSoftware& flight = application.flight();
+  fw::Executive& executive = application.executive();
   fw::FlightSoftware aborting(fake.hal(), config);
   // A navigated mission: two waypoints, segments of 2 yos, GPS at the surface.
   test::FakeHal nav_fake;
@@ -58,12 +61,16 @@ int main() {
   const unsigned long before = g_allocations.load();
   double depth = 0.5;
   int cycles = 0;
+  std::size_t row_chars = 0;
   for (; cycles < 5000 && !flight.complete(); ++cycles) {
     const bool diving = flight.phase() != fw::Phase::kClimb;
     depth += diving ? 0.5 : -0.5;
     fake.pump_cc = diving ? config.mission.dive_ballast_cc : config.mission.climb_ballast_cc;
     fake.sense(depth, diving ? -0.45 : 0.45);
     executive.step();
+    // The writers' row text (SIL CSV, target ring log) of this cycle's row.
+    char row[fw::kLogFieldsMaxChars];
+    row_chars += fw::format_log_fields(fake.last_row, fake.now, row, sizeof row);
     fake.now += 1'000'000;
   }
   // The navigated mission: the fake glider moves north at 0.3 m/s under
@@ -103,5 +110,6 @@ int main() {
       "cycles %d, mission complete %d, abort %d, navigated mission complete %d (%d cycles, %d segments), "
       "heap allocations in the loop: %lu\n",
       cycles, flew, aborted, navigated_ok, nav_cycles, navigated.navigator().segments(), during);
-  return flew && aborted && navigated_ok && during == 0 ? 0 : 1;
+  std::printf("log row text formatted: %zu characters\n", row_chars);
+  return flew && aborted && navigated_ok && during == 0 && row_chars > 0 ? 0 : 1;
 }

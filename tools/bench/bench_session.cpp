@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "bench_session.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <thread>
 
+#include "glider/firmware/log/log_text.hpp"
 #include "glider/hal_linux/register_map.hpp"
 
 namespace glider::bench {
@@ -28,14 +34,36 @@ BenchSession::BenchSession(const hal_linux::ModbusBoard& board, const std::strin
   pump_ = std::make_unique<hal_linux::ModbusAxis>(*link_, board_.pump);
   slide_ = std::make_unique<hal_linux::ModbusAxis>(*link_, board_.slide);
   if (!csv_path.empty()) {
-    csv_ = std::fopen(csv_path.c_str(), "w");
-    if (csv_ == nullptr) throw std::runtime_error(csv_path + ": cannot write");
-    std::fprintf(csv_, "time_s,axis,target,position,speed,status,fault_code\n");
+    csv_ = ::open(csv_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (csv_ < 0) throw std::runtime_error(csv_path + ": cannot write: " + std::strerror(errno));
+    const std::string header = "time_s,axis,target,position,speed,status,fault_code\n";
+    if (!write_whole(header.data(), header.size())) throw std::runtime_error(csv_path + ": cannot write");
   }
 }
 
 BenchSession::~BenchSession() {
-  if (csv_ != nullptr) std::fclose(csv_);
+  if (csv_ < 0) return;
+  char trailer[256];
+  const std::size_t n = fw::format_log_trailer(outcome_, csv_rows_, csv_lost_, trailer, sizeof trailer);
+  write_whole(trailer, n);
+  ::close(csv_);
+}
+
+// One row, one write(2): the file never holds part of a row (a short write is
+// cut back to the last whole row and the row counted as lost).
+bool BenchSession::write_whole(const char* data, std::size_t size) {
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::write(csv_, data + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (::ftruncate(csv_, static_cast<off_t>(csv_bytes_)) != 0) return false;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  csv_bytes_ += size;
+  return true;
 }
 
 hal_linux::ModbusAxis& BenchSession::axis(const std::string& name) { return name == "pump" ? *pump_ : *slide_; }
@@ -77,9 +105,15 @@ MoveOutcome BenchSession::move(hal_linux::ModbusAxis& axis, double target, doubl
     }
     missed = 0;
     out.samples.push_back({t, s.position, s.speed, s.status_bits, s.fault_code});
-    if (csv_ != nullptr) {
-      std::fprintf(csv_, "%.3f,%s,%g,%g,%g,%u,%u\n", t, c.name.c_str(), target, s.position, s.speed,
-                   static_cast<unsigned>(s.status_bits), static_cast<unsigned>(s.fault_code));
+    if (csv_ >= 0) {
+      char row[256];
+      const int n = std::snprintf(row, sizeof row, "%.3f,%s,%g,%g,%g,%u,%u\n", t, c.name.c_str(), target, s.position,
+                                  s.speed, static_cast<unsigned>(s.status_bits), static_cast<unsigned>(s.fault_code));
+      if (n > 0 && static_cast<std::size_t>(n) < sizeof row && write_whole(row, static_cast<std::size_t>(n))) {
+        ++csv_rows_;
+      } else {
+        ++csv_lost_;
+      }
     }
     if (t - last_progress_s >= 1.0) {
       last_progress_s = t;

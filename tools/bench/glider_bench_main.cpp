@@ -176,14 +176,20 @@ int main(int argc, char** argv) {
     if (!o.rtu.empty()) glider::hal_linux::use_rtu_device(board.bus, o.rtu);
     BenchSession session(board, o.csv);
     if (!session.warning().empty()) std::fprintf(stderr, "glider-bench: warning: %s\n", session.warning().c_str());
-    if (*status) return cmd_status(session);
-    if (*home) return cmd_home(session, o);
-    if (*move) {
+    int code = 0;
+    if (*status) {
+      code = cmd_status(session);
+    } else if (*home) {
+      code = cmd_home(session, o);
+    } else if (*move) {
       checked_move(session, o, "move", o.value);
-      return 0;
+    } else if (*step) {
+      code = cmd_step(session, o);
+    } else if (*cycle) {
+      code = cmd_cycle(session, o);
     }
-    if (*step) return cmd_step(session, o);
-    if (*cycle) return cmd_cycle(session, o);
+    session.finish(code == 0 ? "complete" : "stopped failed");
+    return code;
   } catch (const Refusal& refusal) {
     std::fprintf(stderr, "glider-bench: %s\n", refusal.what());
     return 2;

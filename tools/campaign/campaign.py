@@ -7,6 +7,7 @@ import concurrent.futures
 import hashlib
 import math
 import os
+import shutil
 import sys
 import threading
 import time
@@ -139,7 +140,7 @@ def cmd_run(args):
         manifest["runs"] = args.first  # runs 0..N-1, each as in the full campaign
         manifest["shards"] = min(manifest["shards"], manifest["runs"])
     directory = args.out or default_out(manifest)
-    directory = _prepare(directory, manifest)
+    directory, manifest = _prepare(directory, manifest)
     todo = shards.missing_shards(directory, manifest)
     total = sum(shards.shard_range(manifest, s)[1] - shards.shard_range(manifest, s)[0] for s in todo)
     print(f"campaign {manifest['name']}: {manifest['runs']} runs in {manifest['shards']} shards, "
@@ -152,8 +153,26 @@ def cmd_run(args):
     return report.write_report(directory, manifest)
 
 
+def _snapshot_inputs(directory, manifest):
+    """Copies the vehicle, environment and TOML mission files into DIR/inputs
+    and flies from the copies: editing a base file while a campaign runs (or
+    between a shard and its resubmission) cannot change its runs. A Slocum
+    .mi mission stays where it is (its .ma files are found next to it)."""
+    inputs = os.path.join(directory, "inputs")
+    os.makedirs(inputs, exist_ok=True)
+    setup = manifest["setup"]
+    for key in ("vehicle", "environment", "mission"):
+        path = setup.get(key)
+        if path is None or (key == "mission" and not path.endswith(".toml")):
+            continue
+        copy = os.path.join(inputs, f"{key}-{os.path.basename(path)}")
+        shutil.copyfile(path, copy)
+        setup[key] = copy
+
+
 def _prepare(directory, manifest):
-    """Creates the results directory, or checks it belongs to the same campaign."""
+    """Creates the results directory (manifest and input copies), or checks
+    it belongs to the same campaign; returns it and the manifest to fly."""
     directory = os.path.abspath(directory)
     if os.path.exists(os.path.join(directory, shards.MANIFEST)):
         old = shards.read_manifest(directory)
@@ -161,9 +180,11 @@ def _prepare(directory, manifest):
         if any(old.get(k) != manifest.get(k) for k in keys):
             raise CampaignError(f"{directory} holds results of another campaign or sharding "
                                 f"({', '.join(f'{k} {old.get(k)}' for k in keys)}): choose another --out")
-        return directory
+        return directory, old
+    os.makedirs(directory, exist_ok=True)
+    _snapshot_inputs(directory, manifest)
     shards.write_manifest(directory, manifest)
-    return directory
+    return directory, manifest
 
 
 def cmd_shard(args):
@@ -203,7 +224,7 @@ def cmd_submit(args):
         manifest = shards.read_manifest(directory)
     else:
         manifest = new_manifest(args.file, args.shards, args.sil)
-        directory = _prepare(args.out or default_out(manifest), manifest)
+        directory, manifest = _prepare(args.out or default_out(manifest), manifest)
     return slurm.submit(directory, manifest, args)
 
 

@@ -4,15 +4,12 @@ subprocess, and its result as a flat dictionary of metrics.
 
 Cards, campaigns and Slurm shards all fly through fly(): the real
 glider-sil binary, as a user's CI would run it. The metrics come from its
---summary-json file (docs/sil-summary.md; metrics_from_summary), or, from a
-glider-sil without that option, from the summary it prints
-(parse_summary_text). The metric names are the contract every other module
-uses (docs/campaigns.md lists them)."""
+--summary-json file (docs/sil-summary.md; metrics_from_summary); their
+names are the contract every other module uses (docs/campaigns.md lists them)."""
 
 import json
 import math
 import os
-import re
 import subprocess
 import tempfile
 import threading
@@ -20,20 +17,6 @@ import time
 import tomllib
 
 import tomli_w
-
-# Short, stable names of the firmware's abort causes (fw::to_string texts).
-ABORT_CAUSES = {
-    "overdepth": "overdepth",
-    "overtime": "overtime",
-    "depth sensor invalid or stale": "depth_sensor",
-    "attitude sensor invalid or stale": "attitude_sensor",
-    "actuator fault": "actuator_fault",
-    "leak detected": "leak",
-    "low battery (remaining charge)": "low_battery",
-    "stuck at the same depth": "samedepth",
-    "stalled": "stalled",
-    "waypoint too far": "waypoint_too_far",
-}
 
 # Parameters that are not a vehicle-file key: the environment's current as a
 # depth-uniform speed and direction (towards, degrees clockwise from north),
@@ -158,65 +141,6 @@ def command(sil_binary, setup, paths, seed, params):
     return cmd
 
 
-_NUMBER = r"([-+]?[0-9.]+(?:e[-+]?[0-9]+)?)"
-
-
-def parse_summary_text(text):
-    """The metrics from glider-sil's printed summary."""
-    m = {}
-    line = re.search(r"^  result  : (.*)$", text, re.M)
-    if not line:
-        raise RunError("glider-sil printed no result line")
-    result = line.group(1)
-    if result.startswith("ABORTED"):
-        m["result"] = "aborted"
-        a = re.match(r"ABORTED \((.*)\) at " + _NUMBER + " s", result)
-        m["abort.cause"] = ABORT_CAUSES.get(a.group(1), a.group(1))
-        m["abort.time_s"] = float(a.group(2))
-        s = re.search(r"at the surface " + _NUMBER + " s later", result)
-        m["abort.surfaced_after_s"] = float(s.group(1)) if s else math.inf
-    else:
-        m["result"] = "complete" if result.startswith("mission complete") else "stopped"
-        m["abort.cause"] = "none"
-    yos = re.search(r"^  yos     : (\d+) flown \(inflections at (.*)\)$", text, re.M)
-    m["yos"] = int(yos.group(1))
-    depths = [float(x) for x in re.findall(_NUMBER, re.sub(r"(\d)-(\d)", r"\1 \2", yos.group(2)))]
-    # The deepest inflection (the summary JSON will give the deepest sample).
-    m["max_depth_m"] = max(depths) if depths else 0.0
-    errors = [float(x) for x in re.findall(r"max pitch error " + _NUMBER + " deg", text)]
-    m["pitch_error_deg"] = max(errors) if errors else 0.0
-    pitch = re.findall(r"^  (dives|climbs) +settled: pitch +" + _NUMBER + " deg, depth rate " + _NUMBER +
-                       r" m/s +\((\d+) samples", text, re.M)
-    for kind, deg, rate, samples in pitch:
-        m[f"{kind}.pitch_deg"] = float(deg)
-        m[f"{kind}.depth_rate_m_s"] = float(rate)
-        m[f"{kind}.samples"] = int(samples)
-    seg = re.search(r"^  segments       : (\d+); waypoints reached (\d+)", text, re.M)
-    m["segments"] = int(seg.group(1)) if seg else 1
-    m["waypoints.reached"] = int(seg.group(2)) if seg else 0
-    for n, (index, at, dist) in enumerate(
-            re.findall(r"waypoint (\d+) counted at +" + _NUMBER + " s, true distance +" + _NUMBER, text), 1):
-        m[f"waypoint.{n}.index"] = int(index)
-        m[f"waypoint.{n}.reached_s"] = float(at)
-        m[f"waypoint.{n}.distance_m"] = float(dist)
-    surfacings = re.findall(r"surfacing +(\d+) at +" + _NUMBER + r" s: DR error +" + _NUMBER, text)
-    for n, at, err in surfacings:
-        m[f"surfacing.{n}.time_s"] = float(at)
-        m[f"surfacing.{n}.dr_error_m"] = float(err)
-    many = re.search(r"\.\.\. (\d+) surfacings in all", text)
-    m["surfacings"] = int(many.group(1)) if many else len(surfacings)
-    dr = re.search(r"DR error       : " + _NUMBER + " m/km travelled .*worst " + _NUMBER + " m", text)
-    if dr:
-        m["dr_error_m_per_km"] = float(dr.group(1))
-        m["dr_error_m"] = float(dr.group(2))
-    m["distance_km"] = float(re.search(r"distance       : " + _NUMBER + " km", text).group(1))
-    energy = re.search(r"energy         : " + _NUMBER + " kJ, " + _NUMBER + " Ah", text)
-    m["energy_kj"] = float(energy.group(1))
-    m["charge_ah"] = float(energy.group(2))
-    m["sim_time_s"] = float(re.search(r"simulated time : " + _NUMBER + " s", text).group(1))
-    return m
-
-
 def metrics_from_summary(j):
     """The metrics from glider-sil's summary JSON (schema glider-sil-summary/1)."""
     if j.get("schema") != "glider-sil-summary/1":
@@ -252,17 +176,6 @@ def metrics_from_summary(j):
     return m
 
 
-_HAS_SUMMARY_JSON = {}
-
-
-def has_summary_json(sil_binary):
-    """Whether this glider-sil writes --summary-json (asked once per binary)."""
-    if sil_binary not in _HAS_SUMMARY_JSON:
-        proc = subprocess.run([sil_binary, "--help"], capture_output=True, text=True, timeout=60, check=False)
-        _HAS_SUMMARY_JSON[sil_binary] = "--summary-json" in proc.stdout
-    return _HAS_SUMMARY_JSON[sil_binary]
-
-
 def run_measured(cmd, workdir, timeout_s):
     """Runs cmd with its output in files; returns (exit status or None on
     timeout, stdout, stderr, CPU seconds of the process: wait4's rusage, the
@@ -270,16 +183,17 @@ def run_measured(cmd, workdir, timeout_s):
     out_path, err_path = os.path.join(workdir, "stdout"), os.path.join(workdir, "stderr")
     with open(out_path, "w") as out, open(err_path, "w") as err:
         proc = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
-        timer = threading.Timer(timeout_s, proc.kill)
+        timed_out = threading.Event()
+        timer = threading.Timer(timeout_s, lambda: (timed_out.set(), proc.kill()))
         timer.start()
         try:
             _, status, usage = os.wait4(proc.pid, 0)
         finally:
             timer.cancel()
     proc.returncode = os.waitstatus_to_exitcode(status)  # reaped here: Popen must not wait again
-    killed = proc.returncode == -9 and not timer.is_alive()
     with open(out_path) as f_out, open(err_path) as f_err:
-        return (None if killed else proc.returncode), f_out.read(), f_err.read(), usage.ru_utime + usage.ru_stime
+        code = None if timed_out.is_set() else proc.returncode
+        return code, f_out.read(), f_err.read(), usage.ru_utime + usage.ru_stime
 
 
 def fly(sil_binary, setup, params, seed, timeout_s=3600.0):
@@ -292,21 +206,16 @@ def fly(sil_binary, setup, params, seed, timeout_s=3600.0):
             return {"result": "error"}, {"wall_s": 0.0, "cpu_s": 0.0}, str(error)
         cmd = command(sil_binary, setup, paths, seed, params)
         summary_path = os.path.join(workdir, "summary.json")
-        use_json = has_summary_json(sil_binary)
-        if use_json:
-            cmd += ["--quiet", "--summary-json", summary_path]
+        cmd += ["--quiet", "--summary-json", summary_path]
         status, stdout, stderr, cpu_s = run_measured(cmd, workdir, timeout_s)
         cost = {"wall_s": time.monotonic() - start, "cpu_s": cpu_s}
         if status is None:
             return {"result": "error"}, cost, f"glider-sil ran longer than {timeout_s} s"
         try:
-            if use_json:
-                if os.path.exists(summary_path):  # written for every run that flew
-                    with open(summary_path) as f:
-                        return metrics_from_summary(json.load(f)), cost, ""
-            elif "  result  : " in stdout:
-                return parse_summary_text(stdout), cost, ""
-        except (RunError, AttributeError, KeyError, TypeError, ValueError) as error:
+            if os.path.exists(summary_path):  # written for every run that flew
+                with open(summary_path) as f:
+                    return metrics_from_summary(json.load(f)), cost, ""
+        except (RunError, KeyError, TypeError, ValueError) as error:
             return {"result": "error"}, cost, f"cannot read glider-sil's summary: {error}"
         why = stderr.strip().replace(workdir + "/", "") or f"exit status {status}"
         return {"result": "error"}, cost, why

@@ -15,6 +15,7 @@
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
+#include "glider/slocum/log_loader.hpp"
 #include "glider/units.hpp"
 #include "heading_metrics.hpp"
 
@@ -78,15 +79,26 @@ int main(int argc, char** argv) {
   app.add_option("--source", source, "repository root (boards/, tests/data/real)")->capture_default_str();
   app.add_option("--out", out_dir, "where the SIL logs go")->capture_default_str();
   app.add_option("--delays", delays, "fin dead times to fly (s)")->capture_default_str();
+  std::vector<std::string> real_logs;
+  app.add_option("--real", real_logs,
+                 "real logs to measure instead of the three comet CSVs: a CSV, or a directory / glob of a glider's "
+                 "binary files (repeatable)");
   CLI11_PARSE(app, argc, argv);
   std::filesystem::create_directories(out_dir);
 
   glider::flightlog::ReadOptions real;
   real.columns = {"m_heading", "c_heading", "m_depth_state", "c_fin"};
   std::printf("Real comet logs (glides with a heading command):\n");
-  for (const char* log : {"comet-2016-174-05", "comet-2019-222-02-154", "comet-2019-222-02-156"}) {
-    const auto data = glider::flightlog::read_flight_log(source + "/tests/data/real/" + log + ".csv", real);
-    std::printf("  %-24s %s\n", log,
+  if (real_logs.empty()) {
+    for (const char* log : {"comet-2016-174-05", "comet-2019-222-02-154", "comet-2019-222-02-156"}) {
+      real_logs.push_back(source + "/tests/data/real/" + log + ".csv");
+    }
+  }
+  for (const std::string& log : real_logs) {
+    std::vector<glider::slocum::Warning> warnings;
+    const auto data = glider::slocum::load_flight_log({{log}, {}}, real, &warnings);
+    for (const auto& w : warnings) std::fprintf(stderr, "glider-heading-study: warning: %s\n", w.text().c_str());
+    std::printf("  %-24s %s\n", std::filesystem::path(log).stem().c_str(),
                 glider::heading_study::format(glider::heading_study::heading_metrics(data, 0.0)).c_str());
   }
 

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "glider/units.hpp"
+
 namespace glider::plant {
 namespace {
 
@@ -13,6 +15,14 @@ namespace {
 std::string number(double value) {
   std::ostringstream out;
   out << std::setprecision(17) << value;
+  return out.str();
+}
+
+// Twelve digits: 250e-6 m^3 reads as 250 cc, not 250.00000000000003 (which
+// the pump axis, limited to 250 cc, would refuse).
+std::string rounded(double value) {
+  std::ostringstream out;
+  out << std::setprecision(12) << value;
   return out.str();
 }
 
@@ -52,7 +62,8 @@ std::filesystem::path write_board_files(const std::filesystem::path& directory, 
 
   std::ostringstream b;
   b << "# SPDX-License-Identifier: Apache-2.0\n# Written by glider-plant: the glider's devices are the plant's.\n"
-       "name = \"plant\"\ndescription = \"hardware in the loop: glider-plant's devices\"\n\n"
+       "name = \"plant\"\ndescription = \"hardware in the loop: glider-plant's devices\"\n"
+       "bench = true   # a bench board: glider-firmware --time-scale is allowed\n\n"
        "[loop]\nsched_fifo = false\nlock_memory = false\nstats_every_s = 60\n\n"
        "[actuators]\nboard = \"actuators.toml\"\n\n[gps]\ndevice = \""
     << e.gps_device << "\"\nbaud = 9600\n\n[compass]\ndevice = \"" << e.compass_device
@@ -61,6 +72,17 @@ std::filesystem::path write_board_files(const std::filesystem::path& directory, 
     << "\nwater_density_kg_m3 = " << number(e.keller.water_density_kg_m3)
     << "\nmax_pressure_bar = " << number(e.keller.max_pressure_bar) << "\n\n[log]\ndirectory = \""
     << e.log_directory.string() << "\"\n";
+  const fw::mission_file::MissionVehicle& v = e.vehicle.vehicle;
+  b << "\n[vehicle]   # the plant's vehicle model, as glider-sil derives it from the vehicle file\n"
+    << "max_working_depth_m = " << rounded(v.max_working_depth_m)
+    << "\nballast_min_cc = " << rounded(v.limits.ballast_min_cc)
+    << "\nballast_max_cc = " << rounded(v.limits.ballast_max_cc)
+    << "\nbattery_min_in = " << rounded(v.limits.battery_min_in)
+    << "\nbattery_max_in = " << rounded(v.limits.battery_max_in)
+    << "\nfin_max_deg = " << rounded(rad_to_deg(v.fin_max_rad))
+    << "\nfin_rate_deg_s = " << rounded(rad_to_deg(v.fin_rate_rad_s))
+    << "\nyaw_gain_per_m = " << rounded(v.yaw_gain_per_m) << "\nfin_delay_s = " << rounded(e.vehicle.fin_delay_s)
+    << "\nheading_law = \"" << e.heading_law << "\"\n";
   write_file(directory / "board.toml", b.str());
   return directory / "board.toml";
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "glider/firmware/app/vehicle_setup.hpp"
 #include "glider/hal_linux/keller_depth.hpp"
 #include "glider/hal_linux/modbus_board.hpp"
 
@@ -20,6 +21,10 @@ struct PlantEndpoints {
   std::string depth_device;
   hal_linux::KellerConfig keller;
   std::filesystem::path log_directory;
+  // The board's [vehicle]: what the flight software must know of the
+  // vehicle, here the model's, exactly as glider-sil derives it.
+  fw::app::VehicleSetup vehicle;
+  std::string heading_law = "compensated";
 };
 
 // Writes `directory`/board.toml and `directory`/actuators.toml; returns the

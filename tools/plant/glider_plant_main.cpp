@@ -33,6 +33,13 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--heading-deg", options.heading_deg, "initial heading (as glider-sil --heading-deg)")
       ->capture_default_str();
+  app.add_option("--max-working-depth-m", options.max_working_depth_m,
+                 "board [vehicle] depth rating (as glider-sil --max-working-depth-m)")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 11000.0));
+  app.add_option("--heading-law", options.heading_law, "board [vehicle] fin autopilot (as glider-sil --heading-law)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"proportional", "slocum", "compensated"}));
   app.add_option("--time-scale", options.time_scale, "simulated seconds per wall second (glider-firmware's the same)")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 1000.0));

@@ -21,6 +21,7 @@ KellerServer::KellerServer(int fd, const std::string& device_name, int slave) {
   // A request comes in one write: a gap longer than this ends a garbled one.
   modbus_set_byte_timeout(context_, 0, 50'000);
   modbus_set_indication_timeout(context_, 0, 50'000);
+  modbus_set_response_timeout(context_, 0, 1'000);  // its sleep before a flush stalls the whole plant
   mapping_ = modbus_mapping_new(0, 0, keller::kP1Address + keller::kReadCount, 0);
   if (mapping_ == nullptr) throw std::runtime_error(device_name + ": modbus_mapping_new failed");
 }

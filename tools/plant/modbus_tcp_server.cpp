@@ -26,6 +26,10 @@ ModbusTcpServer::ModbusTcpServer(const TcpServerOptions& options, modbus_mapping
     : options_(options), mapping_(mapping), unit_id_(unit_id), writable_(std::move(writable)) {
   context_ = modbus_new_tcp(options.host.c_str(), options.port);
   if (context_ == nullptr) throw std::runtime_error("modbus tcp " + options.host + ": " + modbus_strerror(errno));
+  // libmodbus sleeps one response timeout before it flushes after some
+  // exception replies (an oversize read): 1 us, or one bad client would
+  // stall every other for half a second.
+  modbus_set_response_timeout(context_, 0, 1);
   listen_fd_ = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
   if (listen_fd_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
   const int yes = 1;

@@ -16,7 +16,9 @@
 #include "board_files.hpp"
 #include "glider/hal_linux/register_map.hpp"
 #include "glider/model/simulator.hpp"
+#include "glider/sil/mission_setup.hpp"
 #include "glider/sil/sim_hal.hpp"
+#include "glider/target/loop_timing.hpp"
 #include "glider/units.hpp"
 #include "keller_server.hpp"
 #include "nmea_sentences.hpp"
@@ -33,27 +35,6 @@ constexpr double kStepS = model::GliderSimulator::kDefaultStepS;
 constexpr hal::Micros kStepUs = 100'000;
 constexpr double kStandardGravity = 9.80665;   // as the firmware's Keller driver converts
 constexpr double kUtcAtLaunchS = 12 * 3600.0;  // the NMEA time of day (the firmware does not use it)
-
-// Wake-up lateness of the plant's steps (wall microseconds).
-class Lateness {
- public:
-  void add(std::int64_t us) { samples_.push_back(us); }
-  std::string summary() {
-    if (samples_.empty()) return "no steps";
-    std::sort(samples_.begin(), samples_.end());
-    double sum = 0.0;
-    for (auto s : samples_) sum += static_cast<double>(s);
-    const auto at = [&](double q) { return samples_[static_cast<std::size_t>(q * (samples_.size() - 1))]; };
-    char text[160];
-    std::snprintf(text, sizeof text, "%zu steps, late mean %.0f us, p50 %lld us, p99 %lld us, max %lld us",
-                  samples_.size(), sum / samples_.size(), static_cast<long long>(at(0.5)),
-                  static_cast<long long>(at(0.99)), static_cast<long long>(samples_.back()));
-    return text;
-  }
-
- private:
-  std::vector<std::int64_t> samples_;
-};
 
 int open_stop_signals() {
   sigset_t stop;
@@ -74,6 +55,7 @@ class Plant {
 
  private:
   bool writable(int address) const;
+  void check_vehicle_fits_axes() const;
   void take_commands();
   void step();
   void apply_due_faults();
@@ -108,9 +90,8 @@ class Plant {
   bool gps_silent_ = false;
   double last_fin_rad_ = 0.0;
   hal::Micros last_fix_sent_us_ = -1;
-  std::uint64_t last_gps_sentence_step_ = 0;
   double next_truth_s_ = 0.0;
-  Lateness lateness_;
+  target::LoopTiming timing_;  // the firmware loop's statistics, for the plant's steps
 };
 
 Plant::Plant(const PlantOptions& options, std::FILE* out)
@@ -135,7 +116,8 @@ Plant::Plant(const PlantOptions& options, std::FILE* out)
   }
   mapping_ = modbus_mapping_new(0, 0, size, 0);
   if (mapping_ == nullptr) throw std::runtime_error("modbus_mapping_new failed");
-  for (const PlantAxis& axis : axes_) axis.publish(mapping_->tab_registers + axis.base());
+  for (const PlantAxis& axis : axes_) axis.initial_commands(mapping_->tab_registers + axis.base());
+  check_vehicle_fits_axes();
 
   TcpServerOptions tcp = options.tcp;
   tcp_ = std::make_unique<ModbusTcpServer>(tcp, mapping_, axes_.front().slave(), [this](int a) { return writable(a); });
@@ -153,6 +135,9 @@ Plant::Plant(const PlantOptions& options, std::FILE* out)
   endpoints.depth_device = depth_line_->link();
   endpoints.keller = keller_config_;
   endpoints.log_directory = options.directory / "logs";
+  endpoints.vehicle = sil::vehicle_setup(options.vehicle, fw::app::FittedDevices{}, options.max_working_depth_m, false,
+                                         options.environment.water.at(0.0, 0.0).density_kg_m3);
+  endpoints.heading_law = options.heading_law;
   const auto board_file = write_board_files(options.directory, board_, endpoints);
 
   if (!options.truth_path.empty()) {
@@ -175,6 +160,23 @@ Plant::~Plant() {
   keller_.reset();
   tcp_.reset();
   if (mapping_ != nullptr) modbus_mapping_free(mapping_);
+}
+
+// The board's [vehicle] (the model's travel and fin limit) is what the
+// firmware commands up to; an axis whose command limits are narrower would
+// refuse those commands, an actuator fault at the first full stroke.
+void Plant::check_vehicle_fits_axes() const {
+  const model::VehicleParams& v = options_.vehicle;
+  const auto check = [&](const hal_linux::AxisConfig& axis, double lo, double hi) {
+    if (lo < axis.min - 1e-9 || hi > axis.max + 1e-9) {
+      throw std::runtime_error(board_.source + ": " + axis.name + " command limits [" + std::to_string(axis.min) +
+                               ", " + std::to_string(axis.max) + "] " + axis.unit + " are narrower than vehicle " +
+                               v.name + "'s [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    }
+  };
+  check(board_.pump, m3_to_cc(v.ballast.volume_min_m3), m3_to_cc(v.ballast.volume_max_m3));
+  check(board_.slide, m_to_in(v.battery.travel_min_m), m_to_in(v.battery.travel_max_m));
+  if (board_.rudder) check(*board_.rudder, -rad_to_deg(v.heading.fin_max_rad), rad_to_deg(v.heading.fin_max_rad));
 }
 
 bool Plant::writable(int address) const {
@@ -254,15 +256,18 @@ void Plant::send_sentences() {
   if (!compass_silent_ && steps_ % compass_every == 0) {
     compass_line_->write_all_or_drop(ptnthpr(sensors_->attitude().read()));
   }
-  if (gps_silent_) return;
+  // The receiver computes once a second (the model's fix interval), and the
+  // model is asked at whole seconds after launch, the instants glider-sil's
+  // firmware asks it at: sampled faster or at other instants, the surface
+  // bobbing would restart its acquisition (a new time to first fix) otherwise.
+  const bool whole_second = launched_ ? clock_.now_us() % 1'000'000 == 0 : steps_ % 10 == 0;
+  if (gps_silent_ || !whole_second) return;
   const hal::GpsFix fix = sensors_->gps().read();
   if (fix.valid && fix.time_us != last_fix_sent_us_) {
     gps_line_->write_all_or_drop(gga_fix(fix, utc) + rmc_fix(fix, utc));
     last_fix_sent_us_ = fix.time_us;
-    last_gps_sentence_step_ = steps_;
-  } else if (steps_ - last_gps_sentence_step_ >= 10) {
-    gps_line_->write_all_or_drop(gga_no_fix(utc));  // a receiver without sky still talks, once a second
-    last_gps_sentence_step_ = steps_;
+  } else {
+    gps_line_->write_all_or_drop(gga_no_fix(utc));  // a receiver without sky still talks
   }
 }
 
@@ -326,8 +331,10 @@ void Plant::run() {
       if (stop || now >= deadline) break;
     }
     if (stop) break;
-    lateness_.add(std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - deadline).count());
+    const Clock::time_point woke = Clock::now();
     step();
+    const auto us = [](Clock::duration d) { return std::chrono::duration_cast<std::chrono::microseconds>(d).count(); };
+    timing_.record(us(woke - deadline), us(Clock::now() - woke), us(step_wall));
     if (launched_ && options_.duration_s > 0.0 && sim_.time_s() >= options_.duration_s) {
       why = "duration reached";
       break;
@@ -342,7 +349,9 @@ void Plant::print_statistics(const char* why) {
   std::fprintf(
       out_, "glider-plant: stopped (%s); %s; %.1f s simulated after launch, depth %.2f m, east %.1f m, north %.1f m\n",
       why, launched_ ? "launched" : "never launched", sim_.time_s(), truth.depth_m, truth.east_m, truth.north_m);
-  std::fprintf(out_, "glider-plant: steps: %s (time scale %g)\n", lateness_.summary().c_str(), options_.time_scale);
+  char line[256];
+  timing_.format(line, sizeof line);
+  std::fprintf(out_, "glider-plant: steps: %s (time scale %g)\n", line, options_.time_scale);
   std::fprintf(out_,
                "glider-plant: modbus tcp: %llu connections, %llu refused (cap %d), %llu requests, %llu exceptions, "
                "%llu malformed, %llu timed out, %llu unanswered\n",

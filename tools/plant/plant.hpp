@@ -26,14 +26,16 @@ namespace glider::plant {
 struct PlantOptions {
   model::VehicleParams vehicle;
   model::Environment environment;
-  std::filesystem::path actuator_board;  // the register map served
-  std::filesystem::path directory;       // ptys, board files, logs
-  std::string truth_path;                // CSV of the model's truth at 1 s (optional)
-  std::uint64_t seed = 1;                // sensor noise and GPS, as glider-sil --seed
-  double heading_deg = 90.0;             // as glider-sil --heading-deg
-  double time_scale = 1.0;               // simulated seconds per wall second
-  double duration_s = 0.0;               // stop this long after launch (0: at SIGTERM/SIGINT)
-  double compass_interval_s = 0.5;       // $PTNTHPR cadence (simulated)
+  std::filesystem::path actuator_board;     // the register map served
+  std::filesystem::path directory;          // ptys, board files, logs
+  std::string truth_path;                   // CSV of the model's truth at 1 s (optional)
+  std::uint64_t seed = 1;                   // sensor noise and GPS, as glider-sil --seed
+  double heading_deg = 90.0;                // as glider-sil --heading-deg
+  double max_working_depth_m = 100.0;       // the board's [vehicle], as glider-sil --max-working-depth-m
+  std::string heading_law = "compensated";  // as glider-sil --heading-law
+  double time_scale = 1.0;                  // simulated seconds per wall second
+  double duration_s = 0.0;                  // stop this long after launch (0: at SIGTERM/SIGINT)
+  double compass_interval_s = 0.5;          // $PTNTHPR cadence (simulated)
   TcpServerOptions tcp;
   std::vector<PlantFault> faults;
 };

@@ -54,6 +54,14 @@ void PlantAxis::step(double dt_s, std::uint16_t* block) {
   publish(block);
 }
 
+void PlantAxis::initial_commands(std::uint16_t* block) const {
+  block[regs::kControl] = 0;
+  block[regs::kTarget] =
+      static_cast<std::uint16_t>(value_to_counts(axis_.position(), config_.counts_per_unit).value_or(0));
+  block[regs::kSpeed] = 0;
+  publish(block);
+}
+
 void PlantAxis::publish(std::uint16_t* block) const {
   axis_.publish(block);
   if (stall_latched_) {

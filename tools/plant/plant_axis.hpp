@@ -25,6 +25,9 @@ class PlantAxis {
   // Advance the mechanism by dt (simulated seconds), then publish its state.
   void step(double dt_s, std::uint16_t* block);
   void publish(std::uint16_t* block) const;
+  // The command registers as left before launch (drive off, target where
+  // the mechanism is), so that a write to another axis changes nothing here.
+  void initial_commands(std::uint16_t* block) const;
   void jam() { jammed_ = true; }
 
   double position() const { return axis_.position(); }

@@ -130,6 +130,14 @@ int main(int argc, char** argv) {
       log_path = default_log_name(board.log_directory);
     }
     options.log_path = log_path;
+    options.log_metadata = {{"source", "glider-firmware on the Linux target"},
+                            {"board_file", board.source},
+                            {"mission_file", mission_path},
+                            {"time",
+                             "m_present_time is UTC seconds (system clock) when the row was made; the loop runs on the "
+                             "monotonic clock; m_gps_utc_s is the GPS receiver's own UTC of a fresh fix"},
+                            {"conventions", "Slocum names, units and signs"}};
+    if (time_scale != 1.0) options.log_metadata.emplace_back("time_scale", std::to_string(time_scale));
     std::unique_ptr<target::LinuxHal> linux_hal = target::LinuxHal::build(board, options, out);
     if (no_realtime) board.loop.sched_fifo = board.loop.lock_memory = false;
     const std::string warning = target::apply_realtime(board.loop);
@@ -137,7 +145,7 @@ int main(int argc, char** argv) {
 
     const hal::Hal hal = linux_hal->hal();
     if (const std::string silent = wait_for_sensors(hal, *linux_hal, sensor_wait_s); !silent.empty()) {
-      linux_hal->log().close();
+      linux_hal->log().close("stopped sensor_wait");
       linux_hal->print_statistics(out);
       return tool.fail(cli::kError, silent);
     }
@@ -176,7 +184,18 @@ int main(int argc, char** argv) {
     std::fprintf(out, "glider-firmware: %s; phase %s, %d yos, abort cause %s, %llu log rows lost\n", why,
                  fw::to_string(flight.phase()), flight.yos_completed(), fw::to_string(flight.abort_cause()),
                  static_cast<unsigned long long>(flight.log_rows_lost()));
-    const bool log_ok = linux_hal->log().close();
+    const std::string outcome = aborted ? std::string("aborted ") + fw::cause_id(flight.abort_cause())
+                                : reason == target::StopReason::kDone       ? std::string("complete")
+                                : reason == target::StopReason::kSignal     ? std::string("stopped signal")
+                                : reason == target::StopReason::kCycleLimit ? std::string("stopped cycle_limit")
+                                                                            : std::string("stopped loop_error");
+    const bool log_ok = linux_hal->log().close(outcome);
+    std::fprintf(out, "glider-firmware: flight log %s: %llu rows, %llu lost (ring full %llu, disk %llu), %llu fsyncs\n",
+                 log_path.c_str(), static_cast<unsigned long long>(linux_hal->log().rows_written()),
+                 static_cast<unsigned long long>(linux_hal->log().rows_refused() + linux_hal->log().rows_lost_disk()),
+                 static_cast<unsigned long long>(linux_hal->log().rows_refused()),
+                 static_cast<unsigned long long>(linux_hal->log().rows_lost_disk()),
+                 static_cast<unsigned long long>(linux_hal->log().fsyncs()));
     linux_hal->print_statistics(out);
     if (!log_ok) std::fprintf(out, "glider-firmware: %s: writing the flight log failed\n", log_path.c_str());
     if (reason == target::StopReason::kError || !log_ok) return static_cast<int>(cli::kError);

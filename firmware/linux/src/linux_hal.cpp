@@ -77,7 +77,10 @@ std::unique_ptr<LinuxHal> LinuxHal::build(const TargetBoard& board, const LinuxH
       std::make_unique<hal_linux::NmeaGpsReceiver>(open_port(board.gps, "gps"), h->clock_, board.gps.stale_after_us);
   h->compass_ = std::make_unique<hal_linux::SerialCompass>(open_port(board.compass, "compass"), h->clock_,
                                                            board.compass.stale_after_us);
-  h->log_ = std::make_unique<RingBufferLog>(options.log_path);
+  RingLogOptions log_options;
+  log_options.metadata = options.log_metadata;
+  log_options.messages = log;
+  h->log_ = std::make_unique<RingBufferLog>(options.log_path, std::move(log_options));
   return h;
 }
 

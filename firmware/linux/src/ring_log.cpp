@@ -1,36 +1,50 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/target/ring_log.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <cstring>
+#include <ctime>
 #include <stdexcept>
+
+#include "glider/firmware/log/log_text.hpp"
 
 namespace glider::target {
 namespace {
 
-constexpr const char* kHeader =
-    "m_present_time,m_depth,m_depth_rate,m_pitch,m_roll,m_heading,m_ballast_pumped,c_ballast_pumped,"
-    "m_battpos,c_battpos,c_pitch,m_depth_state,x_yo_count,x_abort_cause,x_loop_overruns";
+constexpr std::size_t kBufferBytes = 64 * 1024;
 
-// NaN (no valid value this cycle) is an empty field.
-void put_number(std::FILE* file, double value) {
-  if (std::isfinite(value)) std::fprintf(file, "%.9g", value);
-  std::fputc(',', file);
+hal::Micros utc_now_us() {
+  timespec t{};
+  clock_gettime(CLOCK_REALTIME, &t);
+  return static_cast<hal::Micros>(t.tv_sec) * hal::kMicrosPerSecond + t.tv_nsec / 1000;
 }
 
 }  // namespace
 
-RingBufferLog::RingBufferLog(const std::string& path) : file_(std::fopen(path.c_str(), "w")) {
-  if (file_ == nullptr) throw std::runtime_error(path + ": cannot open the flight log: " + std::strerror(errno));
-  std::fprintf(file_, "# source: glider-firmware on the Linux target\n");
-  std::fprintf(file_, "# time: m_present_time is seconds of the monotonic clock\n%s\n", kHeader);
-  std::fflush(file_);
+RingBufferLog::RingBufferLog(const std::string& path, RingLogOptions options)
+    : path_(path), options_(std::move(options)) {
+  if (options_.write_fn == nullptr) options_.write_fn = ::write;
+  if (options_.fsync_every_rows == 0) options_.fsync_every_rows = 1;
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw std::runtime_error(path + ": cannot open the flight log: " + std::strerror(errno));
+  std::string head;
+  for (const auto& [key, value] : options_.metadata) head += "# " + key + ": " + value + "\n";
+  head += fw::log_header() + "\n";
+  if (!write_all(head.data(), head.size()) || ::fsync(fd_) != 0) {
+    const std::string error = std::strerror(errno);
+    ::close(fd_);
+    throw std::runtime_error(path + ": cannot write the flight log's header: " + error);
+  }
+  file_bytes_ = head.size();
+  buffer_.resize(kBufferBytes);
   writer_ = std::thread([this] { writer_main(); });
 }
 
-RingBufferLog::~RingBufferLog() { close(); }
+RingBufferLog::~RingBufferLog() { close("stopped destroyed"); }
 
 bool RingBufferLog::write(const hal::FlightLogRecord& record) {
   const std::size_t head = head_.load(std::memory_order_relaxed);
@@ -39,30 +53,84 @@ bool RingBufferLog::write(const hal::FlightLogRecord& record) {
     rows_refused_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
-  ring_[head] = record;
+  ring_[head] = Slot{record, utc_now_us()};
   head_.store(next, std::memory_order_release);
   return true;
 }
 
+bool RingBufferLog::write_all(const char* data, std::size_t size) {
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = options_.write_fn(fd_, data + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = ENOSPC;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// The buffer holds whole rows only. A failed write loses those rows (counted)
+// and cuts the file back to its last whole row.
+bool RingBufferLog::flush_buffer() {
+  if (buffered_rows_ == 0) return true;
+  const bool ok = write_all(buffer_.data(), buffered_bytes_);
+  const int error = errno;
+  if (ok) {
+    file_bytes_ += buffered_bytes_;
+    rows_written_ += buffered_rows_;
+    rows_since_fsync_ += buffered_rows_;
+    if (disk_failing_) {
+      std::fprintf(options_.messages, "glider-firmware: flight log %s: writing again (%llu rows were lost)\n",
+                   path_.c_str(), static_cast<unsigned long long>(lost_this_episode_));
+      std::fflush(options_.messages);
+      disk_failing_ = false;
+    }
+  } else {
+    if (::ftruncate(fd_, static_cast<off_t>(file_bytes_)) != 0) io_error_ = true;
+    rows_lost_disk_ += buffered_rows_;
+    if (!disk_failing_) {
+      std::fprintf(options_.messages,
+                   "glider-firmware: flight log %s: %s: rows are lost (counted) until it can write again\n",
+                   path_.c_str(), std::strerror(error));
+      std::fflush(options_.messages);
+      disk_failing_ = true;
+      lost_this_episode_ = 0;
+    }
+    lost_this_episode_ += buffered_rows_;
+  }
+  buffered_bytes_ = 0;
+  buffered_rows_ = 0;
+  if (ok && rows_since_fsync_ >= options_.fsync_every_rows) {
+    if (::fsync(fd_) == 0) fsyncs_.fetch_add(1, std::memory_order_relaxed);
+    rows_since_fsync_ = 0;
+  }
+  return ok;
+}
+
 void RingBufferLog::drain() {
   std::size_t tail = tail_.load(std::memory_order_relaxed);
-  std::uint64_t written = 0;
   while (tail != head_.load(std::memory_order_acquire)) {
-    const hal::FlightLogRecord& r = ring_[tail];
-    std::fprintf(file_, "%.6f,", hal::to_seconds(r.time_us));
-    for (const double value : {r.m_depth, r.m_depth_rate, r.m_pitch, r.m_roll, r.m_heading, r.m_ballast_pumped,
-                               r.c_ballast_pumped, r.m_battpos, r.c_battpos, r.c_pitch}) {
-      put_number(file_, value);
+    // At least every fsync_every_rows rows reach the card (flush_buffer fsyncs).
+    if (buffered_rows_ >= options_.fsync_every_rows || buffer_.size() - buffered_bytes_ < fw::kLogFieldsMaxChars) {
+      flush_buffer();
     }
-    std::fprintf(file_, "%d,%d,%d,%u\n", r.m_depth_state, r.x_yo_count, r.x_abort_cause, r.x_loop_overruns);
+    const Slot& slot = ring_[tail];
+    const std::size_t n = fw::format_log_fields(slot.record, slot.utc_us, buffer_.data() + buffered_bytes_,
+                                                buffer_.size() - buffered_bytes_);
+    if (n > 0) {
+      buffer_[buffered_bytes_ + n - 1] = '\n';  // the last field's ',' ends the row
+      buffered_bytes_ += n;
+      ++buffered_rows_;
+    } else {
+      rows_lost_disk_.fetch_add(1, std::memory_order_relaxed);  // cannot happen: a row fits kLogFieldsMaxChars
+    }
     tail = (tail + 1) % kCapacity;
     tail_.store(tail, std::memory_order_release);
-    ++written;
   }
-  if (written > 0) {
-    if (std::fflush(file_) != 0 || std::ferror(file_)) io_error_ = true;
-    rows_written_ += written;
-  }
+  flush_buffer();
 }
 
 void RingBufferLog::writer_main() {
@@ -75,8 +143,9 @@ void RingBufferLog::writer_main() {
   }
 }
 
-bool RingBufferLog::close() {
-  if (file_ == nullptr) return !io_error_;
+bool RingBufferLog::close(std::string_view outcome) {
+  if (closed_) return !io_error_;
+  closed_ = true;
   {
     std::lock_guard lock(wake_mutex_);
     stopping_ = true;
@@ -84,9 +153,18 @@ bool RingBufferLog::close() {
   wake_.notify_one();
   writer_.join();
   drain();  // rows queued after the writer's last pass
-  if (std::fclose(file_) != 0) io_error_ = true;
-  file_ = nullptr;
-  return !io_error_;
+  char trailer[256];
+  const std::size_t n = fw::format_log_trailer(outcome, rows_written_.load(),
+                                               rows_refused_.load() + rows_lost_disk_.load(), trailer, sizeof trailer);
+  bool ok = !io_error_ && rows_lost_disk_.load() == 0;
+  if (n == 0 || !write_all(trailer, n)) {
+    if (::ftruncate(fd_, static_cast<off_t>(file_bytes_)) != 0) io_error_ = true;
+    ok = false;
+  }
+  if (::fsync(fd_) != 0) ok = false;
+  if (::close(fd_) != 0) ok = false;
+  fd_ = -1;
+  return ok;
 }
 
 }  // namespace glider::target

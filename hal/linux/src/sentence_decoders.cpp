@@ -2,6 +2,7 @@
 #include "glider/hal_linux/sentence_decoders.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "glider/units.hpp"
@@ -30,6 +31,20 @@ bool checked(std::string_view line, NmeaSentence& sentence, SentenceStats& stats
 // GGA fix qualities that are a measured position (1 GPS, 2 DGPS, 3 PPS,
 // 4 RTK, 5 float RTK); 6 is dead reckoning, 7 manual input, 8 simulation.
 bool measured_quality(int quality) { return quality >= 1 && quality <= 5; }
+
+// "hhmmss[.ss]" -> seconds of the UTC day; NaN when absent or not a time.
+double utc_time_of_day(std::string_view text) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (text.size() < 6) return nan;
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (text[i] < '0' || text[i] > '9') return nan;
+  }
+  const auto two = [&text](std::size_t at) { return (text[at] - '0') * 10 + (text[at + 1] - '0'); };
+  const int hours = two(0), minutes = two(2);
+  const auto seconds = nmea_number(text.substr(4));                              // "ss" or "ss.ss"
+  if (hours > 23 || minutes > 59 || !seconds || !(*seconds < 61.0)) return nan;  // 60: a leap second
+  return hours * 3600.0 + minutes * 60.0 + *seconds;
+}
 
 }  // namespace
 
@@ -78,7 +93,7 @@ void NmeaGpsDecoder::gga(const NmeaSentence& s, hal::Micros received_us) {
     ++stats_.implausible;
     return;
   }
-  fix_ = {*latitude, *longitude, *quality, *satellites, *hdop, received_us, true};
+  fix_ = {*latitude, *longitude, *quality, *satellites, *hdop, received_us, true, utc_time_of_day(s.field(1))};
   ++stats_.accepted;
 }
 

@@ -478,115 +478,116 @@ std::optional<double> retrim_density(const model::VehicleParams& nominal, const 
   return median;
 }
 
-}  // namespace
+// Every k-th sample so that at most `max_samples` remain (the fits' cost).
+void thin(std::vector<std::size_t>& samples, std::size_t max_samples) {
+  if (samples.size() <= max_samples) return;
+  const std::size_t stride = (samples.size() + max_samples - 1) / max_samples;
+  std::vector<std::size_t> kept;
+  for (std::size_t k = 0; k < samples.size(); k += stride) kept.push_back(samples[k]);
+  samples = std::move(kept);
+}
 
-const char* to_string(FlightModelKind kind) { return kind == FlightModelKind::kDynamic ? "dynamic" : "steady"; }
+// The scored samples of the depth window, split into the yos fitted and
+// those held out, and by phase.
+struct Split {
+  std::vector<std::size_t> all, train, heldout, dives, climbs, turns;
+};
 
-Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, const DiagnoseOptions& options) {
-  Diagnosis d;
-  d.vehicle = given.name;
-  model::VehicleParams nominal = given;
-  if (const auto rho = retrim_density(given, obs, options.retrim_tolerance_kg_m3)) {
-    d.retrimmed_from_kg_m3 = given.trim_density_kg_m3;
-    nominal.trim_density_kg_m3 = *rho;
-    d.retrimmed_to_kg_m3 = *rho;
-  }
-  const FlightModel steady_model(nominal, obs);
-  const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
-  const bool dynamic = options.model == FlightModelKind::kDynamic && !obs.track.scored.empty();
-  d.model = dynamic ? FlightModelKind::kDynamic : FlightModelKind::kSteady;
-  SampleSet set = dynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
-  const DepthRateModel& model = set.model;
+Split split_samples(SampleSet& set, const DiagnoseOptions& options) {
   std::erase_if(set.usable, [&](std::size_t i) {
     return !(set.depth_m[i] >= options.window_min_m && set.depth_m[i] <= options.window_max_m);
   });
   if (set.usable.empty()) throw std::invalid_argument("no samples in the depth window");
-  d.samples_used = set.usable.size();
+  Split s;
+  s.all = set.usable;
+  split_by_yo(s.all, set.yo, s.train, s.heldout);
+  s.dives = where_phase(set, flightlog::Phase::kDive);
+  s.climbs = where_phase(set, flightlog::Phase::kClimb);
+  s.turns = where_phase(set, flightlog::Phase::kInflection);
+  thin(s.train, options.max_fit_samples);
+  thin(s.heldout, options.max_fit_samples);
+  return s;
+}
 
-  const std::vector<std::size_t>& all = set.usable;
-  std::vector<std::size_t> train, heldout;
-  split_by_yo(all, set.yo, train, heldout);
-  const std::vector<std::size_t> dives = where_phase(set, flightlog::Phase::kDive);
-  const std::vector<std::size_t> climbs = where_phase(set, flightlog::Phase::kClimb);
-  const std::vector<std::size_t> turns = where_phase(set, flightlog::Phase::kInflection);
-  auto thin = [&options](std::vector<std::size_t>& samples) {
-    if (samples.size() <= options.max_fit_samples) return;
-    const std::size_t stride = (samples.size() + options.max_fit_samples - 1) / options.max_fit_samples;
-    std::vector<std::size_t> kept;
-    for (std::size_t k = 0; k < samples.size(); k += stride) kept.push_back(samples[k]);
-    samples = std::move(kept);
-  };
-  thin(train);
-  thin(heldout);
-  d.train_samples = train.size();
-  d.heldout_samples = heldout.size();
+// The residuals of `parameters` at every sample of `samples`, by sample index (NaN elsewhere).
+std::vector<double> residuals_by_sample(const SampleSet& set, const Parameters& parameters, bool ctd,
+                                        const std::vector<std::size_t>& samples) {
+  std::vector<double> r_samples;
+  residuals(set, parameters, ctd, samples, r_samples);
+  std::vector<double> r(set.measured_m_s.size(), kNaN);
+  for (std::size_t k = 0; k < samples.size(); ++k) r[samples[k]] = r_samples[k];
+  return r;
+}
 
-  // Baseline.
-  std::vector<double> r_all;
-  residuals(set, Parameters{}, false, all, r_all);
-  std::vector<double> r(set.measured_m_s.size(), kNaN);  // by sample index
-  for (std::size_t k = 0; k < all.size(); ++k) r[all[k]] = r_all[k];
-  d.baseline.all = rms_where(r, all);
-  d.baseline.dives = rms_where(r, dives);
-  d.baseline.climbs = rms_where(r, climbs);
-  if (dynamic) d.baseline.inflections = rms_where(r, turns);
-  d.baseline.inflection_samples = dynamic ? turns.size() : obs.inflection_samples;
+// The nominal model's error: by phase, by depth bin, held out, and the pitch
+// where the battery is logged.
+void report_baseline(const SampleSet& set, const Split& s, bool dynamic, const Observations& obs,
+                     const FlightModel& steady_model, Diagnosis& d) {
+  const std::vector<double> r = residuals_by_sample(set, Parameters{}, false, s.all);
+  d.baseline.all = rms_where(r, s.all);
+  d.baseline.dives = rms_where(r, s.dives);
+  d.baseline.climbs = rms_where(r, s.climbs);
+  if (dynamic) d.baseline.inflections = rms_where(r, s.turns);
+  d.baseline.inflection_samples = dynamic ? s.turns.size() : obs.inflection_samples;
   double max_depth = 0.0;
-  for (std::size_t i : all) max_depth = std::max(max_depth, set.depth_m[i]);
+  for (std::size_t i : s.all) max_depth = std::max(max_depth, set.depth_m[i]);
   const double bin = max_depth > 100.0 ? 25.0 : 10.0;
   for (double from = 0.0; from < max_depth; from += bin) {
     std::vector<std::size_t> in_bin;
-    for (std::size_t i : all) {
+    for (std::size_t i : s.all) {
       if (set.depth_m[i] >= from && set.depth_m[i] < from + bin) in_bin.push_back(i);
     }
     if (!in_bin.empty()) d.baseline.by_depth.push_back({from, from + bin, rms_where(r, in_bin)});
   }
-  d.baseline.heldout_rms_m_s = rms_of([&] {
-    std::vector<double> h;
-    residuals(set, Parameters{}, false, heldout, h);
-    return h;
-  }());
+  std::vector<double> h;
+  residuals(set, Parameters{}, false, s.heldout, h);
+  d.baseline.heldout_rms_m_s = rms_of(h);
   if (obs.has_battpos) {
-    double s = 0.0;
+    double sum = 0.0;
     std::size_t n = 0;
     const std::size_t stride = std::max<std::size_t>(1, obs.size() / 400);
     for (std::size_t i = 0; i < obs.size(); i += stride) {
       const double pitch = steady_model.nominal_pitch_rad(i);
       if (!std::isfinite(pitch)) continue;
-      s += (pitch - obs.pitch_rad[i]) * (pitch - obs.pitch_rad[i]);
+      sum += (pitch - obs.pitch_rad[i]) * (pitch - obs.pitch_rad[i]);
       ++n;
     }
-    if (n > 0) d.baseline.rms_pitch_deg = rad_to_deg(std::sqrt(s / static_cast<double>(n)));
+    if (n > 0) d.baseline.rms_pitch_deg = rad_to_deg(std::sqrt(sum / static_cast<double>(n)));
   }
+}
 
-  // Candidates available in this log and model.
+// The candidate effects this log and model can show.
+std::vector<Effect> candidate_pool(const Observations& obs, bool dynamic) {
   std::vector<Effect> pool{Effect::kBuoyancyOffset, Effect::kDragChange, Effect::kHullCompressibility,
                            Effect::kVerticalWaterVelocity};
   if (obs.has_temperature) pool.push_back(Effect::kThermalExpansion);
   if (obs.has_ctd) pool.push_back(Effect::kWaterDensity);
   if (dynamic) pool.push_back(Effect::kPumpLag);
-  for (Effect e : pool) d.candidates_tried.emplace_back(info(e).id);
+  return pool;
+}
 
-  // Forward selection (or the effects asked for).
-  Candidate current;
-  FitResult current_fit = fit_reported(set, current, train, heldout, options);
-  std::vector<Effect> remaining = pool;
-  if (!options.fit_only.empty()) {
-    remaining.clear();
-    for (Effect e : options.fit_only) {
-      if (e == Effect::kWaterDensity) {
-        current.ctd_density = true;
-      } else {
-        current.fitted.push_back(e);
-      }
+// The effects asked for (--fit), fitted jointly with no selection.
+void fit_requested(const SampleSet& set, const Split& s, const DiagnoseOptions& options, Candidate& current,
+                   FitResult& current_fit, Diagnosis& d) {
+  for (Effect e : options.fit_only) {
+    if (e == Effect::kWaterDensity) {
+      current.ctd_density = true;
+    } else {
+      current.fitted.push_back(e);
     }
-    current_fit = fit_reported(set, current, train, heldout, options);
-    for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
   }
-  // The measured density is a known input, not a fitted number: where the
-  // log has a CTD it is tried alone at the start of every round until it is
-  // taken, so that a fitted effect of the same shape (a negative hull
-  // compressibility in stratified water) cannot take its place.
+  current_fit = fit_reported(set, current, s.train, s.heldout, options);
+  for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
+}
+
+// Forward selection: the candidate that cuts the held-out error most enters
+// if it cuts it by the margins, lowers the BIC and has a plausible value.
+// The measured density is a known input, not a fitted number: where the log
+// has a CTD it is tried alone at the start of every round until it is taken,
+// so that a fitted effect of the same shape (a negative hull compressibility
+// in stratified water) cannot take its place.
+void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions& options, std::vector<Effect> remaining,
+                    Candidate& current, FitResult& current_fit, Diagnosis& d) {
   bool ctd_declined_this_round = false;
   while (!remaining.empty()) {
     const auto ctd = std::find(remaining.begin(), remaining.end(), Effect::kWaterDensity);
@@ -602,7 +603,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
       } else {
         trial.fitted.push_back(remaining[c]);
       }
-      FitResult f = fit_reported(set, trial, train, heldout, options);
+      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
       if (!best || f.heldout_rms < best->second.heldout_rms) {
         best = std::make_pair(c, f);
         best_candidate = trial;
@@ -614,7 +615,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     const bool helps = f.heldout_rms < current_fit.heldout_rms * (1.0 - options.min_heldout_improvement) &&
                        f.heldout_rms < current_fit.heldout_rms - options.min_heldout_improvement_m_s;
     const bool bic_better = f.bic < current_fit.bic;
-    // Its interval is judged in the final joint fit (backward step below):
+    // Its interval is judged in the final joint fit (backward step):
     // while another effect is still missing, the residuals are serially
     // correlated and inflate every interval.
     const bool is_plausible =
@@ -630,10 +631,11 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     d.findings.push_back(new_finding(effect, f.heldout_rms, d));
     remaining.erase(remaining.begin() + static_cast<long>(best->first));
   }
+}
 
-  if (options.fit_only.empty()) backward_and_rank(set, train, heldout, options, current, current_fit, d);
-
-  // Report every finding's value from the final joint fit.
+// Every finding's value and 95 % interval from the final joint fit, and the
+// extended vehicle's parameters.
+void report_final_values(const DepthRateModel& model, const Candidate& current, FitResult& current_fit, Diagnosis& d) {
   for (Finding& finding : d.findings) {
     if (!finding.fitted) {
       finding.value = model.ctd_density_anomaly();
@@ -658,25 +660,70 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   d.extended_uses_ctd_density = current.ctd_density;
   if (current.ctd_density) d.extended[static_cast<std::size_t>(Effect::kWaterDensity)] = model.ctd_density_anomaly();
   d.cause = d.findings.empty() ? "none" : info(d.findings.front().effect).id;
-  std::vector<double> re;
-  residuals(set, current_fit.parameters, current.ctd_density, all, re);
-  std::vector<double> r_ext(set.measured_m_s.size(), kNaN);
-  for (std::size_t k = 0; k < all.size(); ++k) r_ext[all[k]] = re[k];
-  d.extended_all = rms_where(r_ext, all);
-  d.extended_heldout_rms_m_s = current_fit.heldout_rms;
-  d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
-  if (dynamic)
-    d.speed_through_water =
-        score_speed(dynamic_model, obs.track, all, heldout, current_fit.parameters, current.ctd_density);
-  // Pitch trim last, on the steady glides: it is judged with the depth-rate
-  // effects already found.
+}
+
+// The pitch trim, last and on the steady glides: it is judged with the
+// depth-rate effects already found.
+void diagnose_pitch_trim_last(const FlightModel& steady_model, const Observations& obs, const DiagnoseOptions& options,
+                              Diagnosis& d) {
   std::vector<std::size_t> steady_samples(obs.size()), steady_train, steady_heldout;
   std::iota(steady_samples.begin(), steady_samples.end(), std::size_t{0});
   split_by_yo(steady_samples, obs.yo, steady_train, steady_heldout);
-  thin(steady_train);
-  thin(steady_heldout);
+  thin(steady_train, options.max_fit_samples);
+  thin(steady_heldout, options.max_fit_samples);
   diagnose_pitch_trim(steady_model, obs, steady_train, steady_heldout, options, d);
   if (d.cause == "none" && !d.findings.empty()) d.cause = info(d.findings.front().effect).id;
+}
+
+}  // namespace
+
+const char* to_string(FlightModelKind kind) { return kind == FlightModelKind::kDynamic ? "dynamic" : "steady"; }
+
+// The nominal model's error, the effects that explain it (selected or asked
+// for), their values from the final joint fit, the gain on held-out yos, the
+// speed through water where a DVL measured it, and the pitch trim.
+Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, const DiagnoseOptions& options) {
+  Diagnosis d;
+  d.vehicle = given.name;
+  model::VehicleParams nominal = given;
+  if (const auto rho = retrim_density(given, obs, options.retrim_tolerance_kg_m3)) {
+    d.retrimmed_from_kg_m3 = given.trim_density_kg_m3;
+    nominal.trim_density_kg_m3 = *rho;
+    d.retrimmed_to_kg_m3 = *rho;
+  }
+  const FlightModel steady_model(nominal, obs);
+  const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
+  const bool dynamic = options.model == FlightModelKind::kDynamic && !obs.track.scored.empty();
+  d.model = dynamic ? FlightModelKind::kDynamic : FlightModelKind::kSteady;
+  SampleSet set = dynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
+  const Split s = split_samples(set, options);
+  d.samples_used = s.all.size();
+  d.train_samples = s.train.size();
+  d.heldout_samples = s.heldout.size();
+
+  report_baseline(set, s, dynamic, obs, steady_model, d);
+
+  const std::vector<Effect> pool = candidate_pool(obs, dynamic);
+  for (Effect e : pool) d.candidates_tried.emplace_back(info(e).id);
+  Candidate current;
+  FitResult current_fit = fit_reported(set, current, s.train, s.heldout, options);
+  if (options.fit_only.empty()) {
+    forward_select(set, s, options, pool, current, current_fit, d);
+    backward_and_rank(set, s.train, s.heldout, options, current, current_fit, d);
+  } else {
+    fit_requested(set, s, options, current, current_fit, d);
+  }
+  report_final_values(set.model, current, current_fit, d);
+
+  const std::vector<double> r_ext = residuals_by_sample(set, current_fit.parameters, current.ctd_density, s.all);
+  d.extended_all = rms_where(r_ext, s.all);
+  d.extended_heldout_rms_m_s = current_fit.heldout_rms;
+  d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
+  if (dynamic) {
+    d.speed_through_water =
+        score_speed(dynamic_model, obs.track, s.all, s.heldout, current_fit.parameters, current.ctd_density);
+  }
+  diagnose_pitch_trim_last(steady_model, obs, options, d);
   return d;
 }
 

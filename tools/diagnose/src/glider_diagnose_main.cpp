@@ -14,6 +14,7 @@
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/report/report.hpp"
+#include "glider/slocum/log_loader.hpp"
 #include "glider/units.hpp"
 
 namespace {
@@ -214,7 +215,13 @@ int main(int argc, char** argv) {
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
-  app.add_option("LOG", log_path, "flight log (CSV, docs/flight-log.md)")->required();
+  glider::slocum::LogSource log_source;
+  app.add_option("LOG", log_source.inputs,
+                 "flight log: a CSV (docs/flight-log.md), or a glider's binary files (.dbd/.ebd..., LZ4 .dcd/.ecd...: "
+                 "files, a directory or globs; docs/slocum-binary.md)")
+      ->required();
+  app.add_option("--cache", log_source.cache_dirs,
+                 "sensor-list cache directory for binary files (default: their folder and its cac/)");
   app.add_option("--vehicle", vehicle_path,
                  "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
       ->check(CLI::ExistingFile);
@@ -240,6 +247,7 @@ int main(int argc, char** argv) {
                  "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)")
       ->check(CLI::Range(0.0, 60.0));
   CLI11_PARSE(app, argc, argv);
+  log_path = log_source.inputs.front();
   glider::diagnose::DiagnoseOptions options;
   options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
                                            : glider::diagnose::FlightModelKind::kDynamic;
@@ -273,7 +281,9 @@ int main(int argc, char** argv) {
       }
       read_options.rename.emplace_back(r.substr(0, eq), r.substr(eq + 1));
     }
-    const glider::flightlog::FlightLog log = glider::flightlog::read_flight_log(log_path, read_options);
+    std::vector<glider::slocum::Warning> warnings;
+    const glider::flightlog::FlightLog log = glider::slocum::load_flight_log(log_source, read_options, &warnings);
+    for (const auto& w : warnings) std::fprintf(stderr, "glider-diagnose: warning: %s\n", w.text().c_str());
     // A log that did not end cleanly is still diagnosed, but the user is told.
     if (!log.end().complete()) {
       std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());

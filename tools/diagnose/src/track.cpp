@@ -8,22 +8,11 @@
 
 #include <Eigen/Dense>
 
-#include "glider/flightlog/columns.hpp"
+#include "glider/diagnose/log_columns.hpp"
 #include "glider/flightlog/gaps.hpp"
-#include "glider/model/seawater.hpp"
-#include "glider/units.hpp"
 
 namespace glider::diagnose {
 namespace {
-
-// Between the glider's cycles the pitch, the pump and the slide move
-// continuously: interpolating (not holding) them keeps a 4 s cycle from
-// looking like a 2 s actuator lag.
-flightlog::Column interpolated_or_empty(const flightlog::FlightLog& log, const char* name, double max_gap_s) {
-  const flightlog::Column* column = log.find(name);
-  if (column == nullptr) return flightlog::Column(log.rows(), NAN);
-  return flightlog::interpolate_linear(log.time(), *column, max_gap_s);
-}
 
 // A straight line fitted to the samples within +-half_window_s of each
 // sample (no gap longer than max_gap_s inside): its slope at the centre. For a smooth signal both are exact up to the
@@ -142,11 +131,12 @@ flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<co
 
 Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options) {
   Track track;
-  const auto depth_source = flightlog::depth_series(log);
-  if (!depth_source) return track;
-  const auto& time = log.time();
   const double gap = options.max_gap_s;
-  const flightlog::Column depth = flightlog::interpolate_linear(time, depth_source->depth_m, gap);
+  const auto columns = read_log_columns(log, Fill::kInterpolate, gap, gap);
+  if (!columns) return track;
+  const LogColumns& c = *columns;
+  const auto& time = log.time();
+  const flightlog::Column& depth = c.depth_m;
   // The measured depth rate: a centred slope of the depth, not Slocum's
   // m_depth_rate, which differences backwards (it trails by half a cycle,
   // ~2 s, which the fit would read as a pump lag).
@@ -156,30 +146,19 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
   track.spin_up_s = options.spin_up_s;
   // The pitch is the model's input: its sensor noise (and wave-driven
   // wobble) would add angle of attack, i.e. drag, that the glider never had.
-  const flightlog::Column raw_pitch = interpolated_or_empty(log, "m_pitch", gap);
-  const flightlog::Column pitch = local_parabola_value(time, raw_pitch, options.pitch_half_window_s, gap);
+  const flightlog::Column pitch = local_parabola_value(time, c.pitch_rad, options.pitch_half_window_s, gap);
   const flightlog::Column pitch_slope = pchip_slopes(time, pitch, gap);
-  const flightlog::Column ballast = interpolated_or_empty(log, "m_ballast_pumped", gap);
-  const flightlog::Column battpos = interpolated_or_empty(log, "m_battpos", gap);
-  const flightlog::Column temperature = interpolated_or_empty(log, "sci_water_temp", gap);
-  const flightlog::Column conductivity = interpolated_or_empty(log, "sci_water_cond", gap);
-  const flightlog::Column pressure = interpolated_or_empty(log, "sci_water_pressure", gap);
-  const flightlog::Column logged_density = interpolated_or_empty(log, "sci_water_density", gap);
-  const flightlog::Column speed = interpolated_or_empty(log, "sci_speed_through_water", 5.0);
-  const std::vector<flightlog::Phase> phases = flightlog::classify_phases(log);
-
-  // Yo numbers: a new yo at the start of every dive of 3 m or more.
-  std::vector<int> yo(time.size(), -1);
-  int current = -1;
-  for (const flightlog::Segment& seg : flightlog::find_segments(time, depth, phases)) {
-    if (seg.phase == flightlog::Phase::kDive && std::abs(seg.end_depth_m - seg.start_depth_m) >= 3.0) ++current;
-    for (std::size_t i = seg.first; i <= seg.last; ++i) yo[i] = current;
-  }
+  const flightlog::Column* logged_speed = log.find("sci_speed_through_water");
+  const flightlog::Column speed = logged_speed != nullptr ? flightlog::interpolate_linear(time, *logged_speed, 5.0)
+                                                          : flightlog::Column(time.size(), NAN);
+  const std::vector<flightlog::Phase>& phases = c.phase;
+  const std::vector<int>& yo = c.yo;
 
   double run_start_s = 0.0;
   bool in_run = false;
   for (std::size_t i = 0; i < time.size(); ++i) {
-    const bool usable = depth[i] >= options.run_min_depth_m && std::isfinite(pitch[i]) && std::isfinite(ballast[i]);
+    const bool usable =
+        depth[i] >= options.run_min_depth_m && std::isfinite(pitch[i]) && std::isfinite(c.ballast_cc[i]);
     if (!usable) {
       in_run = false;
       continue;
@@ -195,13 +174,10 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
     track.depth_rate_m_s.push_back(rate[i]);
     track.pitch_rad.push_back(pitch[i]);
     track.pitch_slope_rad_s.push_back(pitch_slope[i]);
-    track.ballast_cc.push_back(ballast[i]);
-    track.battpos_in.push_back(battpos[i]);
-    track.temperature_c.push_back(temperature[i]);
-    track.density_kg_m3.push_back(
-        std::isfinite(logged_density[i])
-            ? logged_density[i]
-            : model::seawater::density_from_ctd(conductivity[i], temperature[i], bar_to_dbar(pressure[i])));
+    track.ballast_cc.push_back(c.ballast_cc[i]);
+    track.battpos_in.push_back(c.battpos_in[i]);
+    track.temperature_c.push_back(c.temperature_c[i]);
+    track.density_kg_m3.push_back(c.density_kg_m3[i]);
     track.speed_through_water_m_s.push_back(speed[i]);
     track.phase.push_back(phases[i]);
     track.yo.push_back(yo[i]);

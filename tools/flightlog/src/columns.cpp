@@ -5,52 +5,33 @@
 #include <array>
 #include <utility>
 
+#include "glider/hal/log_record.hpp"
 #include "glider/units.hpp"
 
 namespace glider::flightlog {
 namespace {
 
-// The contract's column table, plus the SIL's own firmware columns.
-constexpr auto kUnits = std::to_array<std::pair<std::string_view, std::string_view>>({
-    {"m_present_time", "s"},
-    {"m_depth", "m"},
-    {"m_pitch", "rad"},
-    {"m_roll", "rad"},
-    {"m_heading", "rad"},
-    {"c_heading", "rad"},
-    {"m_fin", "rad"},
-    {"c_fin", "rad"},
-    {"m_ballast_pumped", "cc"},
-    {"c_ballast_pumped", "cc"},
+// Columns of real Slocum logs and the SIL's science bay that the firmware
+// does not write; the firmware's own come from the one schema (hal::kLogColumns).
+constexpr auto kOtherUnits = std::to_array<std::pair<std::string_view, std::string_view>>({
     {"m_de_oil_vol", "cc"},
-    {"m_battpos", "in"},
-    {"c_battpos", "in"},
-    {"m_depth_rate", "m/s"},
     {"m_altitude", "m"},
     {"sci_water_pressure", "bar"},
     {"sci_water_temp", "degC"},
     {"sci_water_cond", "S/m"},
-    {"m_gps_lat", "ddmm.mmmm"},
-    {"m_gps_lon", "ddmm.mmmm"},
-    {"m_lat", "ddmm.mmmm"},
-    {"m_lon", "ddmm.mmmm"},
-    {"m_water_vx", "m/s"},
-    {"m_water_vy", "m/s"},
     {"m_vacuum", "inHg"},
     {"m_leakdetect_voltage", "V"},
-    {"m_depth_state", "enum"},
-    {"c_pitch", "rad"},
-    {"x_yo_count", "count"},
-    {"x_abort_cause", "enum"},
-    {"x_loop_overruns", "count"},
 });
 
 }  // namespace
 
 std::string_view unit_of(std::string_view column) {
-  const auto* const it =
-      std::find_if(kUnits.begin(), kUnits.end(), [column](const auto& entry) { return entry.first == column; });
-  return it == kUnits.end() ? std::string_view{} : it->second;
+  for (const hal::LogColumn& c : hal::kLogColumns) {
+    if (c.name == column) return c.unit;
+  }
+  const auto* const it = std::find_if(kOtherUnits.begin(), kOtherUnits.end(),
+                                      [column](const auto& entry) { return entry.first == column; });
+  return it == kOtherUnits.end() ? std::string_view{} : it->second;
 }
 
 std::optional<DepthSeries> depth_series(const FlightLog& log) {

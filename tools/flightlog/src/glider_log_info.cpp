@@ -16,6 +16,7 @@
 #include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/flightlog/phases.hpp"
+#include "glider/slocum/log_loader.hpp"
 
 namespace fl = glider::flightlog;
 
@@ -112,10 +113,14 @@ std::vector<std::string> alternatives(const std::string& spec) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Summarize a flight-log CSV (docs/flight-log.md)"};
-  std::string path;
+  glider::slocum::LogSource source;
   fl::ReadOptions options;
   std::vector<std::string> required;
-  app.add_option("log", path, "flight log (CSV)")->required();
+  app.add_option("log", source.inputs,
+                 "flight log: a CSV, or a glider's binary files (.dbd/.ebd..., .dcd/.ecd...: files, a directory or "
+                 "globs)")
+      ->required();
+  app.add_option("--cache", source.cache_dirs, "sensor-list cache directory for binary files");
   app.add_option("--time-column", options.time_column, "strictly increasing time column")->capture_default_str();
   app.add_option("--require", required,
                  "a column the log must have, or alternatives as a|b (repeatable; replaces the default "
@@ -127,7 +132,9 @@ int main(int argc, char** argv) {
   }
 
   try {
-    const fl::FlightLog log = fl::read_flight_log(path, options);
+    std::vector<glider::slocum::Warning> warnings;
+    const fl::FlightLog log = glider::slocum::load_flight_log(source, options, &warnings);
+    for (const auto& w : warnings) std::fprintf(stderr, "glider-log-info: warning: %s\n", w.text().c_str());
     std::printf("log      : %s\n", log.source().c_str());
     std::printf("rows     : %zu\n", log.rows());
     std::printf("end      : %s\n", log.end().describe(log.rows()).c_str());

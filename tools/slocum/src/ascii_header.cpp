@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ascii_header.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <unordered_set>
 #include <vector>
 
 namespace glider::slocum::detail {
@@ -29,10 +31,11 @@ std::string printable(std::string_view s) {
 // The next line at `pos` (without its newline); `pos` moves past it.
 std::string_view next_line(std::string_view bytes, std::size_t& pos, const std::string& source, const char* what) {
   const std::size_t end = bytes.find('\n', pos);
-  if (end == std::string_view::npos || end - pos > kMaxLine) {
-    throw SlocumError(source, pos,
-                      std::string("no end of line within ") + std::to_string(kMaxLine) + " bytes in the " + what +
-                          (pos >= bytes.size() ? " (end of file)" : ""));
+  if (end == std::string_view::npos) {
+    throw SlocumError(source, pos, std::string("file ends inside the ") + what + " (truncated)");
+  }
+  if (end - pos > kMaxLine) {
+    throw SlocumError(source, pos, "no end of line within " + std::to_string(kMaxLine) + " bytes in the " + what);
   }
   const std::string_view line = bytes.substr(pos, end - pos);
   pos = end + 1;
@@ -123,7 +126,9 @@ Header parse_header(std::string_view bytes, std::size_t& pos, const std::string&
 
 SensorList parse_sensor_list(std::string_view text, std::size_t& pos, const Header& header, const std::string& source) {
   SensorList sensors;
-  sensors.reserve(header.sensors_per_cycle);
+  std::unordered_set<std::string_view> names;  // views into `text`
+  // A list line is at least 14 bytes: never reserve more than the text can hold.
+  sensors.reserve(std::min(header.sensors_per_cycle, (text.size() - pos) / 14 + 1));
   for (std::size_t line_number = 0; line_number < header.total_num_sensors; ++line_number) {
     const std::size_t line_start = pos;
     const std::string_view line = next_line(text, pos, source, "sensor list");
@@ -152,6 +157,9 @@ SensorList parse_sensor_list(std::string_view text, std::size_t& pos, const Head
       throw SlocumError(source, line_start,
                         "sensor " + std::string(words[5]) + ": stored as number " + std::to_string(used_index) +
                             ", expected " + std::to_string(sensors.size()) + " (lines out of order)");
+    }
+    if (!names.insert(words[5]).second) {
+      throw SlocumError(source, line_start, "sensor " + std::string(words[5]) + " is listed twice");
     }
     sensors.push_back(Sensor{std::string(words[5]), words.size() > 6 ? std::string(words[6]) : std::string(), bytes});
   }

@@ -113,11 +113,6 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
   const std::size_t n = sensors.size();
   const std::size_t state_bytes = header.state_bytes_per_cycle;
   const bool swap = needs_swap(order);
-  out.series.resize(n);
-  // A generous guess of the cycle count (state bytes + tag each) saves
-  // regrowing the time vector.
-  out.cycle_time.reserve((bytes.size() - pos) / (state_bytes + 1) + 1);
-  std::vector<double> held(n, std::numeric_limits<double>::quiet_NaN());
   std::vector<int> sizes(n);
   for (std::size_t i = 0; i < n; ++i) sizes[i] = sensors[i].bytes;
   // Bits of the last state byte beyond the last sensor must be zero.
@@ -128,12 +123,17 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
   std::size_t invalid_states = 0;
   std::size_t first_invalid_offset = 0;
   std::map<std::size_t, NonFinite> non_finite;
-
   const char* data = bytes.data();
   const std::size_t size = bytes.size();
+
+  // Pass 1: walk the cycles (tag, state bytes, value bytes), stop at the end
+  // marker or the damage, and count each sensor's values, so pass 2 fills
+  // exactly sized arrays and a damaged cycle is never half applied.
+  std::vector<std::size_t> cycle_offsets;
+  cycle_offsets.reserve((size - pos) / (state_bytes + 1) + 1);
+  std::vector<std::uint32_t> counts(n, 0);
   while (true) {
-    const std::size_t cycle_start = pos;
-    const std::size_t cycle = out.cycle_time.size();
+    const std::size_t cycle = cycle_offsets.size();
     if (pos >= size) {
       out.warnings.push_back({source, pos,
                               "file ends without the end marker 'X' after " + std::to_string(cycle) +
@@ -163,39 +163,61 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
       break;
     }
     const auto* states = reinterpret_cast<const unsigned char*>(data + pos + 1);
-    // First pass: how many value bytes follow, so a truncated cycle is
-    // refused whole (held values untouched) rather than half applied.
     std::size_t value_bytes = 0;
+    const std::uint32_t counted = (skip_first_cycle && cycle == 0) ? 0U : 1U;
     for (std::size_t b = 0; b < state_bytes; ++b) {
       const unsigned s = states[b];
       if (s == 0) continue;
       const std::size_t base = b * 4;
-      for (unsigned f = 0; f < 4; ++f) {
-        if (((s >> (6 - 2 * f)) & 3U) == kNewValue && base + f < n)
-          value_bytes += static_cast<std::size_t>(sizes[base + f]);
+      for (unsigned f = 0; f < 4 && base + f < n; ++f) {
+        const unsigned state = (s >> (6 - 2 * f)) & 3U;
+        if (state == kNewValue) value_bytes += static_cast<std::size_t>(sizes[base + f]);
+        if (state == kNewValue || state == kSameValue) counts[base + f] += counted;
       }
     }
     const std::size_t values_start = pos + 1 + state_bytes;
     if (size - values_start < value_bytes) {
-      out.warnings.push_back({source, cycle_start,
+      out.warnings.push_back({source, pos,
                               "file ends inside cycle " + std::to_string(cycle) + " (" + std::to_string(value_bytes) +
                                   " value bytes announced, " + std::to_string(size - values_start) +
                                   " left; truncated): " + std::to_string(cycle) + " cycles before it kept"});
+      // Its states were counted: take them back.
+      for (std::size_t b = 0; b < state_bytes; ++b) {
+        for (unsigned f = 0; f < 4 && b * 4 + f < n; ++f) {
+          const unsigned state = (states[b] >> (6 - 2 * f)) & 3U;
+          if (state == kNewValue || state == kSameValue) counts[b * 4 + f] -= counted;
+        }
+      }
       break;
     }
     if (padding_mask != 0 && (states[state_bytes - 1] & padding_mask) != 0) {
       if (padding_cycles++ == 0) first_padding_offset = pos + state_bytes;
     }
+    cycle_offsets.push_back(pos);
+    pos = values_start + value_bytes;
+  }
+
+  // Pass 2: the values, into arrays of the counted size.
+  out.series.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out.series[i].cycles.resize(counts[i]);
+    out.series[i].values.resize(counts[i]);
+  }
+  std::vector<std::uint32_t> filled(n, 0);
+  std::vector<double> held(n, std::numeric_limits<double>::quiet_NaN());
+  out.cycle_time.resize(cycle_offsets.size());
+  for (std::size_t cycle = 0; cycle < cycle_offsets.size(); ++cycle) {
+    const std::size_t at = cycle_offsets[cycle];
+    const auto* states = reinterpret_cast<const unsigned char*>(data + at + 1);
+    const char* value = data + at + 1 + state_bytes;
     const bool keep = !(skip_first_cycle && cycle == 0);
     const auto cycle_index = static_cast<std::uint32_t>(cycle);
-    const char* value = data + values_start;
     for (std::size_t b = 0; b < state_bytes; ++b) {
       const unsigned s = states[b];
       if (s == 0) continue;
       const std::size_t base = b * 4;
-      for (unsigned f = 0; f < 4; ++f) {
+      for (unsigned f = 0; f < 4 && base + f < n; ++f) {
         const std::size_t i = base + f;
-        if (i >= n) break;  // padding, reported above
         const unsigned state = (s >> (6 - 2 * f)) & 3U;
         if (state == kNotUpdated) continue;
         if (state == kNewValue) {
@@ -210,18 +232,18 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
           held[i] = v;
           value += sizes[i];
         } else if (state != kSameValue) {
-          if (invalid_states++ == 0) first_invalid_offset = pos + 1 + b;
+          if (invalid_states++ == 0) first_invalid_offset = at + 1 + b;
           continue;
         }
         if (keep) {
           SensorSeries& series = out.series[i];
-          series.cycles.push_back(cycle_index);
-          series.values.push_back(held[i]);
+          const std::uint32_t k = filled[i]++;
+          series.cycles[k] = cycle_index;
+          series.values[k] = held[i];
         }
       }
     }
-    out.cycle_time.push_back(time_index ? held[*time_index] : std::numeric_limits<double>::quiet_NaN());
-    pos = values_start + value_bytes;
+    out.cycle_time[cycle] = time_index ? held[*time_index] : std::numeric_limits<double>::quiet_NaN();
   }
 
   if (padding_cycles > 0) {
@@ -236,9 +258,10 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
   }
   for (const auto& [i, record] : non_finite) {
     std::string value = std::isnan(record.first_value) ? "nan" : (record.first_value > 0 ? "inf" : "-inf");
-    out.warnings.push_back({source, record.first_offset,
-                            sensors[i].name + ": " + std::to_string(record.count) +
-                                " non-finite values (first: " + value + ", here), kept as stored"});
+    out.warnings.push_back(
+        {source, record.first_offset,
+         sensors[i].name + ": " + std::to_string(record.count) + " non-finite values (first: " + value + ", here)",
+         sensors[i].name});
   }
   return out;
 }

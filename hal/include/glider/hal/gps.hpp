@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+#include <limits>
+
 #include "glider/hal/time.hpp"
 
 namespace glider::hal {
@@ -15,6 +17,9 @@ struct GpsFix {
   double hdop = 0.0;
   Micros time_us = 0;  // HAL clock time the fix was received
   bool valid = false;
+  // The receiver's own UTC of the fix, seconds of the day (GGA hhmmss.ss;
+  // NaN when not given): logged so a step of the system clock shows.
+  double utc_time_of_day_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 class GpsReceiver {

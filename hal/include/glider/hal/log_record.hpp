@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+#include <array>
 #include <cstdint>
+#include <string_view>
 
 #include "glider/hal/time.hpp"
 
@@ -30,7 +32,8 @@ struct FlightLogRecord {
   double c_fin = 0.0;                 // rad
   double m_gps_lat = 0.0;             // NMEA ddmm.mmm, a fresh fix this cycle only
   double m_gps_lon = 0.0;
-  double m_lat = 0.0;  // NMEA, dead-reckoned (last fix at the surface)
+  double m_gps_utc_s = 0.0;  // s of the UTC day the receiver stamped that fix (a system-clock step shows against it)
+  double m_lat = 0.0;        // NMEA, dead-reckoned (last fix at the surface)
   double m_lon = 0.0;
   double m_water_vx = 0.0;             // m/s east, depth-averaged current estimate
   double m_water_vy = 0.0;             // m/s north
@@ -44,6 +47,71 @@ struct FlightLogRecord {
   double x_dr_distance_m = 0.0;  // that segment's DR distance through the water
   std::int32_t x_mission_complete = 0;
 };
+
+// The flight log's one schema: every firmware column in file order, with its
+// unit. The SIL writer, the target writer and the reader
+// (tools/flightlog/src/columns.cpp) all work from this table, and a test
+// checks it against the table in docs/flight-log.md. m_present_time is the
+// first column (the writers format it from the row's time); kNumber columns
+// are written as the shortest round-trip text (std::to_chars), kInteger ones
+// as integers; NaN is an empty field.
+enum class LogColumnKind { kTime, kNumber, kInteger };
+
+struct LogColumn {
+  std::string_view name;
+  std::string_view unit;
+  LogColumnKind kind;
+  double (*value)(const FlightLogRecord&);  // kNumber/kInteger (integers are exact in a double)
+};
+
+#define GLIDER_LOG_NUMBER(field, unit)                                                     \
+  LogColumn {                                                                              \
+#field, unit, LogColumnKind::kNumber, [](const FlightLogRecord& r) { return r.field; } \
+  }
+#define GLIDER_LOG_INTEGER(field, unit)                                                                          \
+  LogColumn {                                                                                                    \
+#field, unit, LogColumnKind::kInteger, [](const FlightLogRecord& r) { return static_cast<double>(r.field); } \
+  }
+
+inline constexpr std::array kLogColumns{
+    LogColumn{"m_present_time", "s", LogColumnKind::kTime, nullptr},
+    GLIDER_LOG_NUMBER(m_depth, "m"),
+    GLIDER_LOG_NUMBER(m_depth_rate, "m/s"),
+    GLIDER_LOG_NUMBER(m_pitch, "rad"),
+    GLIDER_LOG_NUMBER(m_roll, "rad"),
+    GLIDER_LOG_NUMBER(m_heading, "rad"),
+    GLIDER_LOG_NUMBER(m_ballast_pumped, "cc"),
+    GLIDER_LOG_NUMBER(c_ballast_pumped, "cc"),
+    GLIDER_LOG_NUMBER(m_battpos, "in"),
+    GLIDER_LOG_NUMBER(c_battpos, "in"),
+    GLIDER_LOG_NUMBER(c_pitch, "rad"),
+    GLIDER_LOG_INTEGER(m_depth_state, "enum"),
+    GLIDER_LOG_INTEGER(x_yo_count, "count"),
+    GLIDER_LOG_INTEGER(x_abort_cause, "enum"),
+    GLIDER_LOG_INTEGER(x_loop_overruns, "count"),
+    GLIDER_LOG_NUMBER(c_heading, "rad"),
+    GLIDER_LOG_NUMBER(m_fin, "rad"),
+    GLIDER_LOG_NUMBER(c_fin, "rad"),
+    GLIDER_LOG_NUMBER(m_gps_lat, "ddmm.mmmm"),
+    GLIDER_LOG_NUMBER(m_gps_lon, "ddmm.mmmm"),
+    GLIDER_LOG_NUMBER(m_gps_utc_s, "s"),
+    GLIDER_LOG_NUMBER(m_lat, "ddmm.mmmm"),
+    GLIDER_LOG_NUMBER(m_lon, "ddmm.mmmm"),
+    GLIDER_LOG_NUMBER(m_water_vx, "m/s"),
+    GLIDER_LOG_NUMBER(m_water_vy, "m/s"),
+    GLIDER_LOG_INTEGER(m_leakdetect, "enum"),
+    GLIDER_LOG_NUMBER(m_coulomb_amphr_total, "Ah"),
+    GLIDER_LOG_NUMBER(m_battery, "V"),
+    GLIDER_LOG_INTEGER(x_waypoint, "index"),
+    GLIDER_LOG_INTEGER(x_waypoints_reached, "count"),
+    GLIDER_LOG_INTEGER(x_segment, "count"),
+    GLIDER_LOG_NUMBER(x_dr_error_m, "m"),
+    GLIDER_LOG_NUMBER(x_dr_distance_m, "m"),
+    GLIDER_LOG_INTEGER(x_mission_complete, "bool"),
+};
+
+#undef GLIDER_LOG_NUMBER
+#undef GLIDER_LOG_INTEGER
 
 // Where the firmware hands its log rows. Implementations must not block the
 // control loop (SIL: buffered file; Linux: ring buffer drained by a writer).

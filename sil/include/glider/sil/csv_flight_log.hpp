@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-#include <fstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -33,23 +33,34 @@ struct LogGaps {
 // Writes the flight log in the project's CSV format (docs/flight-log.md):
 // `# key: value` metadata, one header line, one row per firmware cycle, with
 // the simulator's truths appended as sim_ columns. The CTD columns (sci_*)
-// are the SimCtd's readings of the water at the vehicle. Numbers are written
-// in their shortest exact form (std::to_chars), so the same run gives the same
-// bytes; a value the firmware did not have (NaN) is an empty field.
+// are the SimCtd's readings of the water at the vehicle. The firmware columns
+// are the target's (fw::format_log_fields: shortest exact numbers, so the same
+// run gives the same bytes; NaN is an empty field). Rows are held in memory
+// and written whole, 64 KiB at a time, with write(2): the file only ever ends
+// on a row boundary (a failed write is cut back to the last whole row), and a
+// finished log ends with the `# end: ...` trailer (finish()).
 class CsvFlightLog final : public hal::LogSink {
  public:
   CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim, const SimCtd& ctd,
                const LogGaps& gaps = {}, std::uint64_t gap_seed = 0);
 
+  ~CsvFlightLog() override;
+  CsvFlightLog(const CsvFlightLog&) = delete;
+  CsvFlightLog& operator=(const CsvFlightLog&) = delete;
+
   bool write(const hal::FlightLogRecord& record) override;
 
-  // Flushes and closes; false (with error()) if anything was not written.
+  // Writes the trailer ("complete", "aborted <cause>" or "stopped <reason>",
+  // `lost` rows the firmware could not hand over) and closes.
+  bool finish(std::string_view outcome, std::uint64_t lost);
+  // Writes what is held and closes, without a trailer (a run that failed);
+  // false (with error()) if anything was not written.
   bool close();
   bool ok() const { return ok_; }
   const std::string& error() const { return error_; }
   std::uint64_t rows() const { return rows_; }  // written (after thinning)
 
-  static const char* header();
+  static std::string header();
 
  private:
   // True if the row of this record is left out of the file (LogGaps);
@@ -57,8 +68,12 @@ class CsvFlightLog final : public hal::LogSink {
   bool thinned_out(const hal::FlightLogRecord& record);
   hal::Micros draw_us(double min_s, double max_s);
 
+  bool flush();
+
   std::string path_;
-  std::ofstream out_;
+  int fd_ = -1;
+  std::string pending_;              // whole rows not yet written
+  std::uint64_t flushed_bytes_ = 0;  // the file's length: always a row boundary
   const model::GliderSimulator& sim_;
   SimCtd ctd_;
   LogGaps gaps_;
@@ -66,7 +81,6 @@ class CsvFlightLog final : public hal::LogSink {
   hal::Micros next_row_us_ = 0;          // thinning: the earliest time of the next row
   hal::Micros surface_gap_end_us_ = -1;  // no rows before this while at the surface
   bool at_surface_ = false;
-  std::string line_;
   bool ok_ = true;
   std::string error_;
   std::uint64_t rows_ = 0;

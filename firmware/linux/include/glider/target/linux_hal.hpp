@@ -5,6 +5,9 @@
 // its board file), owned here for the life of the firmware.
 #include <cstdio>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "glider/firmware/app/absent_devices.hpp"
 #include "glider/hal/hal.hpp"
@@ -24,6 +27,7 @@ struct LinuxHalOptions {
   std::string actuators_tcp;  // "HOST:PORT": override the actuator board's bus (bench, tests)
   std::string log_path;       // the flight log file
   double time_scale = 1.0;    // the loop clock's rate (bench/HIL only; loop_clock.hpp)
+  std::vector<std::pair<std::string, std::string>> log_metadata;  // `# key: value` lines of the flight log
 };
 
 class LinuxHal {

@@ -1,10 +1,21 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The flight log on the target: the loop hands rows to a fixed ring buffer
-// (single producer, single consumer, no lock, no allocation) and a writer
-// thread turns them into CSV (docs/flight-log.md columns, m_present_time in
-// seconds since start) and flushes them, so a slow SD card never holds the
-// control loop. A full ring refuses the row (the firmware counts it).
+// (single producer, single consumer, no lock, no allocation) and stamps each
+// with UTC (CLOCK_REALTIME: m_present_time); a writer thread formats them
+// with the one schema (fw::format_log_fields, the SIL's text), so a slow SD
+// card never holds the control loop.
+//
+// Survival (docs/flight-log.md, "Logs that survive"):
+// - whole rows only: rows are formatted into a buffer and written with
+//   write(2); a failed or short write is cut back (ftruncate) to the last
+//   whole row;
+// - fsync every `fsync_every_rows` rows (default 60: a power cut loses at most
+//   one minute of a 1 Hz log, and the SD card sees one flush a minute);
+// - a full ring refuses the row (the firmware counts it); a full disk loses
+//   the rows it cannot take (counted), says so once on stderr (the journal),
+//   and the log carries on when space returns;
+// - close() ends the file with the trailer `# end: <outcome> rows=N lost=M`.
 #include <array>
 #include <atomic>
 #include <condition_variable>
@@ -12,43 +23,80 @@
 #include <cstdio>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <thread>
+#include <utility>
+#include <vector>
+
+#include <sys/types.h>
 
 #include "glider/hal/log_record.hpp"
 
 namespace glider::target {
 
+struct RingLogOptions {
+  std::uint32_t fsync_every_rows = 60;
+  std::vector<std::pair<std::string, std::string>> metadata;  // `# key: value` lines before the header
+  std::FILE* messages = stderr;                               // disk full / recovered, once per episode
+  // The system call that writes the file (tests inject a full disk).
+  ssize_t (*write_fn)(int fd, const void* data, std::size_t size) = nullptr;
+};
+
 class RingBufferLog final : public hal::LogSink {
  public:
   static constexpr std::size_t kCapacity = 1024;  // rows: ~17 min at 1 Hz before a stuck writer loses data
 
-  // Start-up: opens (truncates) `path` and writes the header. Throws
-  // std::runtime_error naming the file when it cannot.
-  explicit RingBufferLog(const std::string& path);
+  // Start-up: opens (truncates) `path` and writes the metadata and header.
+  // Throws std::runtime_error naming the file when it cannot.
+  explicit RingBufferLog(const std::string& path, RingLogOptions options = {});
   ~RingBufferLog() override;
+  RingBufferLog(const RingBufferLog&) = delete;
+  RingBufferLog& operator=(const RingBufferLog&) = delete;
 
   bool write(const hal::FlightLogRecord& record) override;  // loop side: never blocks
 
-  // Writes what is queued, stops the writer, closes the file; false if a
-  // write failed on the way.
-  bool close();
+  // Writes what is queued, stops the writer, writes the trailer
+  // (`outcome`: "complete", "aborted <cause>", "stopped <reason>"), fsyncs and
+  // closes; false if a row or the trailer could not be written.
+  bool close(std::string_view outcome);
   std::uint64_t rows_written() const { return rows_written_.load(); }
-  std::uint64_t rows_refused() const { return rows_refused_.load(); }
+  std::uint64_t rows_refused() const { return rows_refused_.load(); }      // ring full
+  std::uint64_t rows_lost_disk() const { return rows_lost_disk_.load(); }  // write failed (disk full)
+  std::uint64_t fsyncs() const { return fsyncs_.load(); }
 
  private:
+  struct Slot {
+    hal::FlightLogRecord record;
+    hal::Micros utc_us;
+  };
   void drain();
+  bool flush_buffer();
+  bool write_all(const char* data, std::size_t size);
   void writer_main();
 
-  std::FILE* file_;
-  std::array<hal::FlightLogRecord, kCapacity> ring_{};
+  std::string path_;
+  RingLogOptions options_;
+  int fd_ = -1;
+  std::array<Slot, kCapacity> ring_{};
   std::atomic<std::size_t> head_{0};  // next slot the loop writes
   std::atomic<std::size_t> tail_{0};  // next slot the writer reads
   std::atomic<std::uint64_t> rows_written_{0};
   std::atomic<std::uint64_t> rows_refused_{0};
-  std::atomic<bool> io_error_{false};
+  std::atomic<std::uint64_t> rows_lost_disk_{0};
+  std::atomic<std::uint64_t> fsyncs_{0};
+  // Writer thread only:
+  std::vector<char> buffer_;
+  std::size_t buffered_bytes_ = 0;
+  std::uint64_t buffered_rows_ = 0;
+  std::uint64_t file_bytes_ = 0;  // always a row boundary
+  std::uint64_t rows_since_fsync_ = 0;
+  bool disk_failing_ = false;
+  std::uint64_t lost_this_episode_ = 0;
+  bool io_error_ = false;
   std::mutex wake_mutex_;
   std::condition_variable wake_;
   bool stopping_ = false;
+  bool closed_ = false;
   std::thread writer_;
 };
 

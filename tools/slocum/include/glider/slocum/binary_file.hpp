@@ -40,9 +40,13 @@ class SlocumError : public std::runtime_error {
 
 // A problem that did not stop the reading (partial file, padding bits set...).
 struct Warning {
+  Warning() = default;
+  Warning(std::string file_, std::size_t offset_, std::string problem_, std::string sensor_ = {})
+      : file(std::move(file_)), offset(offset_), problem(std::move(problem_)), sensor(std::move(sensor_)) {}
   std::string file;
   std::size_t offset = 0;
   std::string problem;
+  std::string sensor;        // set when the warning is about one sensor's values
   std::string text() const;  // "file: byte N: problem"
 };
 

@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""Logs that survive (issue 17 item 3, writer side): SIGKILL at random
+moments of the target's flight-log writer (ring_log_writer, the real
+RingBufferLog) and of glider-sil writing a long mission's log; after every
+kill the file must hold the metadata, the header and whole rows only (every
+line ends with a newline and has the header's field count). Iterations and
+time are bounded; the random points are seeded and printed.
+
+  kill9_logs.py RING_LOG_WRITER GLIDER_SIL SOURCE_DIR OUT_DIR
+"""
+import os
+import random
+import signal
+import subprocess
+import sys
+import time
+
+ITERATIONS = 25  # per writer
+
+
+def fail(message):
+    print("FAIL kill9_logs: " + message)
+    sys.exit(1)
+
+
+def check_whole_rows(path, name, iteration):
+    with open(path, "rb") as f:
+        data = f.read()
+    if not data:
+        return 0  # killed before the file had its header: nothing torn
+    if not data.endswith(b"\n"):
+        fail("%s iteration %d: the file ends inside a row (%r)" % (name, iteration, data[-60:]))
+    lines = data.decode().split("\n")[:-1]
+    header = None
+    rows = 0
+    for number, line in enumerate(lines, 1):
+        if line.startswith("#"):
+            if header is not None and not line.startswith("# end: "):
+                fail("%s iteration %d: line %d: comment after the header" % (name, iteration, number))
+            continue
+        if header is None:
+            header = line.count(",")
+            continue
+        if line.count(",") != header:
+            fail("%s iteration %d: line %d has %d fields, the header %d"
+                 % (name, iteration, number, line.count(",") + 1, header + 1))
+        rows += 1
+    return rows
+
+
+def kill_runs(name, command, path, rng, max_delay_s):
+    """Kills come at a random moment in [0.02, max_delay_s] s after the start."""
+    total_rows = 0
+    with_rows = 0
+    for iteration in range(ITERATIONS):
+        if os.path.exists(path):
+            os.remove(path)
+        proc = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        time.sleep(rng.uniform(0.02, max_delay_s))
+        proc.send_signal(signal.SIGKILL)
+        proc.wait(timeout=10)
+        rows = check_whole_rows(path, name, iteration)
+        total_rows += rows
+        with_rows += rows > 0
+    if with_rows < ITERATIONS // 2:
+        fail("%s: only %d of %d kills came after rows were written: the test proves little" % (name, with_rows, ITERATIONS))
+    print("%s: %d kills, %d with rows, %d whole rows in all, no torn row" % (name, ITERATIONS, with_rows, total_rows))
+
+
+def main():
+    writer, sil, source, out_dir = sys.argv[1:5]
+    os.makedirs(out_dir, exist_ok=True)
+    seed = int(os.environ.get("GLIDER_KILL9_SEED", "12"))
+    rng = random.Random(seed)
+    print("seed %d" % seed)
+    target_log = os.path.join(out_dir, "target.csv")
+    # The target's writer thread drains the ring every 0.5 s: kills span three drains.
+    kill_runs("target ring log", [writer, target_log], target_log, rng, 1.2)
+    sil_log = os.path.join(out_dir, "sil.csv")
+    kill_runs("glider-sil", [sil, "--quiet", "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
+                             "--mission", os.path.join(source, "boards/missions/month_200m.toml"), "--out", sil_log],
+              sil_log, rng, 0.35)
+    print("PASS kill9_logs")
+
+
+if __name__ == "__main__":
+    main()
