@@ -54,9 +54,19 @@ TEST(FlightLogEnd, TrailersAreRead) {
   CHECK(log.end().state == LogEnd::State::kStopped);
   STRCMP_EQUAL("time limit", log.end().cause.c_str());
 
+  // A log of one of our writers without its trailer did not finish.
+  log = parse_flight_log("# writer: glider-sil\n" + kHead + kRows, "t.csv");
+  CHECK(log.end().state == LogEnd::State::kNoTrailer);
+  CHECK(log.end().trailer_expected);
+  CHECK(log.end().unfinished());
+  STRCMP_CONTAINS("no end trailer: incomplete flight", log.end().describe(5).c_str());
+
+  // A log from elsewhere (converted Slocum files, gliderflight) never had one.
   log = parse_flight_log(kHead + kRows, "t.csv");
   CHECK(log.end().state == LogEnd::State::kNoTrailer);
-  STRCMP_CONTAINS("no end trailer: incomplete flight", log.end().describe(5).c_str());
+  CHECK_FALSE(log.end().trailer_expected);
+  CHECK_FALSE(log.end().unfinished());
+  STRCMP_CONTAINS("none expected", log.end().describe(5).c_str());
 }
 
 TEST(FlightLogEnd, MalformedTrailerOrLinesAfterItAreRefusedWithTheLine) {

@@ -212,7 +212,7 @@ int main(int argc, char** argv) {
     const glider::flightlog::FlightLog log = glider::slocum::load_flight_log(log_source, read_options, &warnings);
     for (const auto& w : warnings) std::fprintf(stderr, "glider-diagnose: warning: %s\n", w.text().c_str());
     // A log that did not end cleanly is still diagnosed, but the user is told.
-    if (!log.end().complete()) {
+    if (log.end().unfinished() || log.end().state == glider::flightlog::LogEnd::State::kAborted) {
       std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());
     }
     glider::model::VehicleParams vehicle;

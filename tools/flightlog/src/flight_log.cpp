@@ -365,7 +365,8 @@ std::string LogEnd::describe(std::size_t rows_read) const {
   std::string out;
   switch (state) {
     case State::kNoTrailer:
-      out = "no end trailer: incomplete flight (the writer crashed or was cut off)";
+      out = trailer_expected ? "no end trailer: incomplete flight (the writer crashed or was cut off)"
+                             : "no end trailer (none expected: the log does not name one of the project's writers)";
       break;
     case State::kComplete:
       out = "complete";
@@ -403,12 +404,14 @@ FlightLog parse_flight_log(std::string_view text, const std::string& source_name
     text.remove_suffix(tail.size());
   }
   FlightLog log = Parser(text, source_name, options).parse();
+  LogEnd end = log.end();
+  const std::optional<std::string> writer = log.metadata_value("writer");
+  end.trailer_expected = writer && writer->rfind("glider-", 0) == 0;
   if (torn.torn_line != 0) {
-    LogEnd end = log.end();
     end.torn_line = torn.torn_line;
     end.torn_bytes = torn.torn_bytes;
-    log.set_end(std::move(end));
   }
+  log.set_end(std::move(end));
   return log;
 }
 
