@@ -147,7 +147,7 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
   // Per state byte and set of its 4 fields (bit f for the f-th sensor of
   // the byte): the value bytes when those fields are new, and how many
   // cycles had those fields set (new or same). A byte at a time instead of
-  // a field at a time: pass 1 is then a small part of the decoding.
+  // a field at a time (the decoder: 100 M -> 83 M instructions on comet-2016).
   std::vector<std::uint32_t> group_bytes(state_bytes * 16, 0);
   for (std::size_t b = 0; b < state_bytes; ++b) {
     for (unsigned fields = 0; fields < 16; ++fields) {
