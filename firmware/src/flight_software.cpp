@@ -132,144 +132,157 @@ double FlightSoftware::fin_command(const NavigatorOutputs& nav, double dt_s) {
   return heading_.update(attitude_.heading_rad, nav.heading_target_rad, dt_s, navigator_.speed_m_s());
 }
 
-void FlightSoftware::run(hal::Micros now_us) {
-  const double dt_s = has_run_ ? hal::to_seconds(now_us - last_run_us_) : 0.0;
-  last_run_us_ = now_us;
-  has_run_ = true;
-
-  // --- sensors: take only valid, finite values; remember when they were seen
-  const hal::DepthSample depth = hal_.depth.read();
-  const bool depth_valid = depth.valid && std::isfinite(depth.depth_m);
-  if (depth_valid) {
-    update_depth_rate(depth);
-    depth_m_ = depth.depth_m;
-    depth_time_us_ = depth.time_us;
+// --- sensors: take only valid, finite values; remember when they were seen.
+FlightSoftware::CycleReadings FlightSoftware::read_sensors(hal::Micros now_us) {
+  CycleReadings in;
+  in.depth = hal_.depth.read();
+  in.depth_valid = in.depth.valid && std::isfinite(in.depth.depth_m);
+  if (in.depth_valid) {
+    update_depth_rate(in.depth);
+    depth_m_ = in.depth.depth_m;
+    depth_time_us_ = in.depth.time_us;
     have_depth_ = true;
   }
-  const hal::AttitudeSample attitude = hal_.attitude.read();
-  const bool attitude_valid = attitude.valid && std::isfinite(attitude.pitch_rad) && std::isfinite(attitude.roll_rad) &&
-                              std::isfinite(attitude.heading_rad);
-  if (attitude_valid) {
-    attitude_ = attitude;
+  in.attitude = hal_.attitude.read();
+  in.attitude_valid = in.attitude.valid && std::isfinite(in.attitude.pitch_rad) &&
+                      std::isfinite(in.attitude.roll_rad) && std::isfinite(in.attitude.heading_rad);
+  if (in.attitude_valid) {
+    attitude_ = in.attitude;
     have_attitude_ = true;
   }
-  const hal::ActuatorReading pump = hal_.pump.read_volume_cc();
-  const hal::ActuatorReading battery = hal_.battery.read_position_in();
-  const hal::ActuatorReading fin = hal_.rudder.read_angle_rad();
-  const bool pump_ok = pump.valid && !pump.fault && std::isfinite(pump.position);
-  const bool battery_ok = battery.valid && !battery.fault && std::isfinite(battery.position);
-  const bool fin_ok = fin.valid && !fin.fault && std::isfinite(fin.position);
-  const hal::GpsFix fix = hal_.gps.read();
-  const hal::DigitalSample leak = hal_.leak.read();
-  const bool leak_ok = leak.valid && is_fresh(now_us, leak.time_us, config_.sensor_timeout_s);
-  const hal::PowerSample power = hal_.power.read();
-  const bool power_ok = power.valid && std::isfinite(power.charge_used_amphr) &&
-                        std::isfinite(power.battery_voltage_v) &&
-                        is_fresh(now_us, power.time_us, config_.sensor_timeout_s);
+  in.pump = hal_.pump.read_volume_cc();
+  in.battery = hal_.battery.read_position_in();
+  in.fin = hal_.rudder.read_angle_rad();
+  in.pump_ok = in.pump.valid && !in.pump.fault && std::isfinite(in.pump.position);
+  in.battery_ok = in.battery.valid && !in.battery.fault && std::isfinite(in.battery.position);
+  in.fin_ok = in.fin.valid && !in.fin.fault && std::isfinite(in.fin.position);
+  in.fix = hal_.gps.read();
+  in.leak = hal_.leak.read();
+  in.leak_ok = in.leak.valid && is_fresh(now_us, in.leak.time_us, config_.sensor_timeout_s);
+  in.power = hal_.power.read();
+  in.power_ok = in.power.valid && std::isfinite(in.power.charge_used_amphr) &&
+                std::isfinite(in.power.battery_voltage_v) &&
+                is_fresh(now_us, in.power.time_us, config_.sensor_timeout_s);
+  in.depth_ok = have_depth_ && is_fresh(now_us, depth_time_us_, config_.sensor_timeout_s);
+  in.attitude_ok = have_attitude_ && is_fresh(now_us, attitude_.time_us, config_.sensor_timeout_s);
+  return in;
+}
 
-  const bool depth_ok = have_depth_ && is_fresh(now_us, depth_time_us_, config_.sensor_timeout_s);
-  const bool attitude_ok = have_attitude_ && is_fresh(now_us, attitude_.time_us, config_.sensor_timeout_s);
-
-  // --- navigation (on last cycle's vertical state: it decides this cycle's segment start)
+// --- navigation, on last cycle's vertical state: it decides this cycle's segment start.
+NavigatorOutputs FlightSoftware::navigate(hal::Micros now_us, const CycleReadings& in) {
   NavigatorInputs nav_in;
   nav_in.now_us = now_us;
   nav_in.phase = last_.phase;
   nav_in.segment_complete = last_.segment_complete;
-  nav_in.attitude_ok = attitude_ok;
+  nav_in.attitude_ok = in.attitude_ok;
   nav_in.pitch_rad = attitude_.pitch_rad;
   nav_in.heading_rad = attitude_.heading_rad;
-  nav_in.depth_rate_ok = have_depth_rate_ && depth_ok;
+  nav_in.depth_rate_ok = have_depth_rate_ && in.depth_ok;
   nav_in.depth_rate_m_s = depth_rate_m_s_;
-  nav_in.fix = fix;
+  nav_in.fix = in.fix;
   const NavigatorOutputs nav = navigator_.update(nav_in);
   if (nav.start_segment) mission_.start_segment();
   if (nav.mission_complete) mission_over_ = true;
+  return nav;
+}
 
-  // --- abort checks beyond the yo's envelope
+// --- abort checks beyond the yo's envelope.
+AbortCause FlightSoftware::check_aborts(hal::Micros now_us, const CycleReadings& in) {
   AbortMonitorInputs checks;
   checks.now_us = now_us;
   checks.phase = last_.phase;
-  checks.depth_ok = depth_ok;
+  checks.depth_ok = in.depth_ok;
   checks.depth_m = depth_m_;
-  checks.depth_rate_ok = have_depth_rate_ && depth_ok;
+  checks.depth_rate_ok = have_depth_rate_ && in.depth_ok;
   checks.depth_rate_m_s = depth_rate_m_s_;
-  checks.gliding = (last_.phase == Phase::kDive || last_.phase == Phase::kClimb) && pump_ok &&
-                   std::abs(pump.position - last_.ballast_cc) <= config_.limits.ballast_settled_cc;
-  checks.leak_ok = leak_ok;
-  checks.leak = leak.active;
-  checks.power_ok = power_ok;
-  checks.charge_used_amphr = power.charge_used_amphr;
-  const AbortCause monitored = abort_monitor_.check(checks);
+  checks.gliding = (last_.phase == Phase::kDive || last_.phase == Phase::kClimb) && in.pump_ok &&
+                   std::abs(in.pump.position - last_.ballast_cc) <= config_.limits.ballast_settled_cc;
+  checks.leak_ok = in.leak_ok;
+  checks.leak = in.leak.active;
+  checks.power_ok = in.power_ok;
+  checks.charge_used_amphr = in.power.charge_used_amphr;
+  return abort_monitor_.check(checks);
+}
 
-  // --- mission
-  MissionInputs in;
-  in.now_us = now_us;
-  in.depth_m = depth_m_;
-  in.depth_ok = depth_ok;
-  in.attitude_ok = attitude_ok;
-  in.actuator_fault = !pump_ok || !battery_ok || !fin_ok;
-  in.external_abort = monitored != AbortCause::kNone ? monitored : nav.abort;
-  in.surface_requested = nav.surface_requested;
-  in.mission_over = mission_over_;
-  last_ = mission_.update(in);
+// --- the yo mission: this cycle's phase and targets.
+void FlightSoftware::run_mission(hal::Micros now_us, const CycleReadings& in, const NavigatorOutputs& nav,
+                                 AbortCause monitored) {
+  MissionInputs mission_in;
+  mission_in.now_us = now_us;
+  mission_in.depth_m = depth_m_;
+  mission_in.depth_ok = in.depth_ok;
+  mission_in.attitude_ok = in.attitude_ok;
+  mission_in.actuator_fault = !in.pump_ok || !in.battery_ok || !in.fin_ok;
+  mission_in.external_abort = monitored != AbortCause::kNone ? monitored : nav.abort;
+  mission_in.surface_requested = nav.surface_requested;
+  mission_in.mission_over = mission_over_;
+  last_ = mission_.update(mission_in);
+}
+
+// --- control and actuators: a command goes out only when it changes.
+FlightSoftware::CycleCommands FlightSoftware::command_actuators(const CycleReadings& in, const NavigatorOutputs& nav,
+                                                                double dt_s) {
   const bool aborting = last_.phase == Phase::kAbort;
-
-  // --- control and actuators
-  const double ballast_target =
-      guard_.ballast_cc(last_.phase == Phase::kAbort ? config_.limits.ballast_max_cc : last_.ballast_cc);
-  const double battery_target =
-      guard_.battery_in(battery_command(last_, attitude_.pitch_rad, pump_ok ? pump.position : ballast_cmd_cc_, dt_s));
-  if (!commanded_ || ballast_target != ballast_cmd_cc_) {
-    hal_.pump.command_volume_cc(ballast_target);
+  CycleCommands c;
+  c.ballast_cc = guard_.ballast_cc(aborting ? config_.limits.ballast_max_cc : last_.ballast_cc);
+  c.battery_in = guard_.battery_in(
+      battery_command(last_, attitude_.pitch_rad, in.pump_ok ? in.pump.position : ballast_cmd_cc_, dt_s));
+  if (!commanded_ || c.ballast_cc != ballast_cmd_cc_) {
+    hal_.pump.command_volume_cc(c.ballast_cc);
   }
-  if (!commanded_ || battery_target != battery_cmd_in_) {
-    hal_.battery.command_position_in(battery_target);
+  if (!commanded_ || c.battery_in != battery_cmd_in_) {
+    hal_.battery.command_position_in(c.battery_in);
   }
-  const double fin_target = guard_.fin_rad(aborting ? 0.0 : fin_command(nav, dt_s));
-  if (!commanded_ || fin_target != fin_cmd_rad_) {
-    hal_.rudder.command_angle_rad(fin_target);
+  c.fin_rad = guard_.fin_rad(aborting ? 0.0 : fin_command(nav, dt_s));
+  if (!commanded_ || c.fin_rad != fin_cmd_rad_) {
+    hal_.rudder.command_angle_rad(c.fin_rad);
   }
   // The abort sequence drops the emergency weight where one is fitted
   // (once: the burn wire is commanded and left on).
   if (aborting && config_.aborts.drop_weight_fitted && !drop_weight_released_) {
     drop_weight_released_ = hal_.drop_weight.set(true);
   }
-  ballast_cmd_cc_ = ballast_target;
-  battery_cmd_in_ = battery_target;
-  fin_cmd_rad_ = fin_target;
+  ballast_cmd_cc_ = c.ballast_cc;
+  battery_cmd_in_ = c.battery_in;
+  fin_cmd_rad_ = c.fin_rad;
   commanded_ = true;
+  return c;
+}
 
-  // --- log
+// --- the log record (hal::kLogColumns): NaN where there is no valid value.
+void FlightSoftware::log_record(hal::Micros now_us, const CycleReadings& in, const NavigatorOutputs& nav,
+                                const CycleCommands& commands) {
+  const bool aborting = last_.phase == Phase::kAbort;
   hal::FlightLogRecord row;
   row.time_us = now_us;
-  row.m_depth = depth_valid ? depth.depth_m : kNaN;
-  row.m_depth_rate = have_depth_rate_ && depth_valid ? depth_rate_m_s_ : kNaN;
-  row.m_pitch = attitude_valid ? attitude.pitch_rad : kNaN;
-  row.m_roll = attitude_valid ? attitude.roll_rad : kNaN;
-  row.m_heading = attitude_valid ? attitude.heading_rad : kNaN;
-  row.m_ballast_pumped = pump_ok ? pump.position : kNaN;
-  row.c_ballast_pumped = ballast_target;
-  row.m_battpos = battery_ok ? battery.position : kNaN;
-  row.c_battpos = battery_target;
+  row.m_depth = in.depth_valid ? in.depth.depth_m : kNaN;
+  row.m_depth_rate = have_depth_rate_ && in.depth_valid ? depth_rate_m_s_ : kNaN;
+  row.m_pitch = in.attitude_valid ? in.attitude.pitch_rad : kNaN;
+  row.m_roll = in.attitude_valid ? in.attitude.roll_rad : kNaN;
+  row.m_heading = in.attitude_valid ? in.attitude.heading_rad : kNaN;
+  row.m_ballast_pumped = in.pump_ok ? in.pump.position : kNaN;
+  row.c_ballast_pumped = commands.ballast_cc;
+  row.m_battpos = in.battery_ok ? in.battery.position : kNaN;
+  row.c_battpos = commands.battery_in;
   row.c_pitch = last_.pitch_control ? last_.pitch_target_rad : kNaN;
   row.m_depth_state = static_cast<std::int32_t>(last_.phase);
   row.x_yo_count = last_.yos_completed;
   row.x_abort_cause = static_cast<std::int32_t>(last_.abort_cause);
   row.x_loop_overruns = executive_ != nullptr ? executive_->stats().overruns : 0;
   row.c_heading = std::isfinite(nav.heading_target_rad) && !aborting ? nav.heading_target_rad : kNaN;
-  row.m_fin = fin_ok ? fin.position : kNaN;
-  row.c_fin = fin_target;
-  row.m_gps_lat = nav.new_fix ? degrees_to_nmea(fix.latitude_deg) : kNaN;
-  row.m_gps_lon = nav.new_fix ? degrees_to_nmea(fix.longitude_deg) : kNaN;
-  row.m_gps_utc_s = nav.new_fix ? fix.utc_time_of_day_s : kNaN;
+  row.m_fin = in.fin_ok ? in.fin.position : kNaN;
+  row.c_fin = commands.fin_rad;
+  row.m_gps_lat = nav.new_fix ? degrees_to_nmea(in.fix.latitude_deg) : kNaN;
+  row.m_gps_lon = nav.new_fix ? degrees_to_nmea(in.fix.longitude_deg) : kNaN;
+  row.m_gps_utc_s = nav.new_fix ? in.fix.utc_time_of_day_s : kNaN;
   const bool have_position = navigator_.have_position();
   row.m_lat = have_position ? degrees_to_nmea(navigator_.dr_position().lat_deg) : kNaN;
   row.m_lon = have_position ? degrees_to_nmea(navigator_.dr_position().lon_deg) : kNaN;
   row.m_water_vx = navigator_.have_current() ? navigator_.current_m_s().east_m : kNaN;
   row.m_water_vy = navigator_.have_current() ? navigator_.current_m_s().north_m : kNaN;
-  row.m_leakdetect = leak_ok ? (leak.active ? 1 : 0) : -1;
-  row.m_coulomb_amphr_total = power_ok ? power.charge_used_amphr : kNaN;
-  row.m_battery = power_ok ? power.battery_voltage_v : kNaN;
+  row.m_leakdetect = in.leak_ok ? (in.leak.active ? 1 : 0) : -1;
+  row.m_coulomb_amphr_total = in.power_ok ? in.power.charge_used_amphr : kNaN;
+  row.m_battery = in.power_ok ? in.power.battery_voltage_v : kNaN;
   row.x_waypoint = navigator_.active_waypoint();
   row.x_waypoints_reached = navigator_.waypoints_reached();
   row.x_segment = navigator_.segments();
@@ -279,6 +292,18 @@ void FlightSoftware::run(hal::Micros now_us) {
   if (!hal_.log.write(row)) {
     ++log_rows_lost_;
   }
+}
+
+void FlightSoftware::run(hal::Micros now_us) {
+  const double dt_s = has_run_ ? hal::to_seconds(now_us - last_run_us_) : 0.0;
+  last_run_us_ = now_us;
+  has_run_ = true;
+  const CycleReadings readings = read_sensors(now_us);
+  const NavigatorOutputs nav = navigate(now_us, readings);
+  const AbortCause monitored = check_aborts(now_us, readings);
+  run_mission(now_us, readings, nav, monitored);
+  const CycleCommands commands = command_actuators(readings, nav, dt_s);
+  log_record(now_us, readings, nav, commands);
 }
 
 }  // namespace glider::fw

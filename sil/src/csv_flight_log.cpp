@@ -36,6 +36,7 @@ CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, co
     return;
   }
   pending_.reserve(kFlushBytes + 4096);
+  pending_ += "# writer: glider-sil\n";  // one of our writers: the log ends with a trailer (docs/flight-log.md)
   for (const auto& [key, value] : metadata) {
     pending_ += "# " + key + ": " + value + '\n';
   }

@@ -42,14 +42,21 @@ CASES = {
     # reports the stall and it moves no more (SIL: a fault flag and a stuck pump).
     "pump_stall": dict(mission="tests/hil/short_yo.toml", plant=["pump_stall@125s"],
                        sil=["pump_fault@125s", "pump_stuck@125s"], end="abort", cause=5),
+    # A silent transmitter makes each cycle wait its timeouts in wall time
+    # (the board's [depth] response_timeout_ms 100 x (1 + retries 1)): the
+    # row that shows the abort is stamped that much later (times the scale).
     "depth_silent": dict(mission="tests/hil/short_yo.toml", plant=["depth_silent@60s"], sil=["depth_invalid@60s"],
-                         end="abort", cause=3),
+                         end="abort", cause=3, blocked_wall_s=0.2),
     "compass_silent": dict(mission="tests/hil/short_yo.toml", plant=["compass_silent@60s"],
                            sil=["attitude_frozen@60s"], end="abort", cause=4),
     # Power lost mid-flight: every device silent. Not compared with SIL for
     # its time (the firmware's loop slows to the Modbus timeouts, wall time);
     # it must abort on an actuator or sensor fault and keep cycling.
     "plant_silent": dict(mission="tests/hil/short_yo.toml", plant=["plant_silent@60s"], sil=None, end="abort",
+                         cause=(3, 4, 5)),
+    # The plant process dies (SIGKILL) about a simulated minute into the
+    # flight: connection refused, ptys hung up. The same demand.
+    "plant_killed": dict(mission="tests/hil/short_yo.toml", plant=[], kill_plant_at_s=60.0, sil=None, end="abort",
                          cause=(3, 4, 5)),
 }
 
@@ -155,12 +162,15 @@ def time_tolerance(t):
     return 3.0 + 0.02 * t
 
 
-def compare(sil, hil, case, table):
+def compare(sil, hil, case, table, scale):
+    # A cycle blocked on a silent device, in simulated seconds.
+    blocked = case.get("blocked_wall_s", 0.0) * scale
     table.add("phase sequence", "-".join(PHASE_NAMES[p] for _, p, _ in sil["phases"]),
               "-".join(PHASE_NAMES[p] for _, p, _ in hil["phases"]),
               [p for _, p, _ in sil["phases"]] == [p for _, p, _ in hil["phases"]], "equal")
     for i, ((ts, ps, ds), (th, ph, dh)) in enumerate(zip(sil["phases"][1:], hil["phases"][1:])):
-        table.compare("%d: %s at, s" % (i + 1, PHASE_NAMES[ps]), ts, th, time_tolerance(ts))
+        table.compare("%d: %s at, s" % (i + 1, PHASE_NAMES[ps]), ts, th,
+                      time_tolerance(ts) + (blocked if ps == 99 else 0.0))
         if ps in (1, 2) and ds is not None and dh is not None:
             # Inflection depths: one cycle's travel at ~0.25 m/s, plus the noise.
             table.compare("%d: %s from depth, m" % (i + 1, PHASE_NAMES[ps]), ds, dh, 0.5)
@@ -168,7 +178,7 @@ def compare(sil, hil, case, table):
     table.add("abort cause", ABORT_NAMES[sil["abort"]], ABORT_NAMES[hil["abort"]], sil["abort"] == hil["abort"],
               "equal")
     if sil["abort_t"] is not None or hil["abort_t"] is not None:
-        table.compare("abort at, s", sil["abort_t"], hil["abort_t"], time_tolerance(sil["abort_t"] or 0.0))
+        table.compare("abort at, s", sil["abort_t"], hil["abort_t"], time_tolerance(sil["abort_t"] or 0.0) + blocked)
     table.compare("max depth before abort/end, m", sil["max_depth"], hil["max_depth"], 0.5)
     if not hil["navigation"] and (sil["waypoints"] or sil["dr"]):
         # The log of an older target has no navigation columns: said, not passed.
@@ -251,7 +261,13 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     started = time.monotonic()
     fw = start(fw_args, stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
     stopped_by_us = False
+    killed = False
     while fw.poll() is None:
+        if "kill_plant_at_s" in case and not killed and time.monotonic() - started > case["kill_plant_at_s"] / scale:
+            plant.kill()  # the firmware starts within a fraction of a simulated second: near enough
+            killed = True
+            print("harness: glider-plant killed (SIGKILL) %.1f s after the firmware started" %
+                  (time.monotonic() - started))
         if time.monotonic() - started > limit_s:
             fw.send_signal(signal.SIGTERM)
             stopped_by_us = True
@@ -262,7 +278,8 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     except subprocess.TimeoutExpired:
         fail(name, "glider-firmware did not stop within 10 s of SIGTERM (a hang)")
     wall = time.monotonic() - started
-    plant.send_signal(signal.SIGTERM)
+    if not killed:
+        plant.send_signal(signal.SIGTERM)
     plant_out, _ = plant.communicate(timeout=10)
     print(plant_out, end="")
     print(err, end="")
@@ -299,7 +316,7 @@ def main():
         if case["end"] == "complete":
             stop_s = sil["end_t"]
         else:  # a minute after the abort, to see the firmware go on cycling
-            fault_s = min(float(f.split("@")[1].rstrip("s")) for f in case["plant"])
+            fault_s = case.get("kill_plant_at_s") or min(float(f.split("@")[1].rstrip("s")) for f in case["plant"])
             stop_s = (sil["abort_t"] if sil else fault_s) + 60.0
         hil_rows, err, stopped = run_hil(build, source, a.case, case, tmp, a.time_scale, stop_s)
         hil = events(hil_rows)
@@ -311,7 +328,7 @@ def main():
             fail(a.case, "the firmware did not complete the mission within the wall-time bound")
         if sil is not None:
             table = Table()
-            compare(sil, hil, case, table)
+            compare(sil, hil, case, table, a.time_scale)
             print("SIL vs HIL, case %s (mission %s, vehicle %s, seed %d, time scale %g):" %
                   (a.case, case["mission"], VEHICLE, SEED, a.time_scale))
             table.print()

@@ -69,6 +69,6 @@ TEST(TargetBoardFile, ProblemsNameFileLineAndKey) {
   STRCMP_CONTAINS(
       "board.toml:11:10: unknown key 'depth.devise'",
       error_of(test::replaced(kBoard, "device = \"/dev/ttyS3\"", "device = \"x\"\ndevise = \"y\"")).c_str());
-  STRCMP_CONTAINS("depth.water_density_kg_m3: must be a water density",
+  STRCMP_CONTAINS("depth.water_density_kg_m3: value 1.025 is outside the allowed range [990, 1050] kg/m^3",
                   error_of(kBoard + "water_density_kg_m3 = 1.025\n").c_str());
 }

@@ -30,7 +30,7 @@ expect 0 "pump   : slave 1 @0: glider actuator map v1.0; \+0.000 cc" -- "$bench"
 expect 2 "refused: 300 cc is outside the pump's limits \[-250, 250\] cc" -- "$bench" "${at[@]}" --yes move pump 300
 expect 2 "not confirmed: nothing moved" -- "$bench" "${at[@]}" move pump 100
 expect 0 "pump move \+0.000 -> \+100.000 cc: arrived" -- "$bench" "${at[@]}" --yes --csv "$tmp/move.csv" move pump 100
-head -1 "$tmp/move.csv" | grep -q "^time_s,axis,target,position,speed,status,fault_code$" || fail "CSV header"
+sed -n 2p "$tmp/move.csv" | grep -q "^time_s,axis,target,position,speed,status,fault_code$" || fail "CSV header"
 [ "$(wc -l <"$tmp/move.csv")" -ge 4 ] || fail "CSV has no samples"
 rows="$(grep -vc '^#' "$tmp/move.csv")"
 tail -1 "$tmp/move.csv" | grep -q "^# end: complete rows=$((rows - 1)) lost=0$" || fail "CSV trailer: $(tail -1 "$tmp/move.csv")"

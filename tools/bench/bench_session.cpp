@@ -36,7 +36,7 @@ BenchSession::BenchSession(const hal_linux::ModbusBoard& board, const std::strin
   if (!csv_path.empty()) {
     csv_ = ::open(csv_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (csv_ < 0) throw std::runtime_error(csv_path + ": cannot write: " + std::strerror(errno));
-    const std::string header = "time_s,axis,target,position,speed,status,fault_code\n";
+    const std::string header = "# writer: glider-bench\ntime_s,axis,target,position,speed,status,fault_code\n";
     if (!write_whole(header.data(), header.size())) throw std::runtime_error(csv_path + ": cannot write");
   }
 }

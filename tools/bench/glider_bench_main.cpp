@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bench_session.hpp"
+#include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
 
 namespace {
@@ -145,7 +146,9 @@ int cmd_cycle(BenchSession& s, const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Bench tests of the Modbus pump and slide (the flight driver, the board's limits)"};
+  glider::cli::Tool tool("glider-bench",
+                         "Bench tests of the Modbus pump and slide (the flight driver, the board's limits)");
+  CLI::App& app = tool.app();
   app.require_subcommand(1);
   Options o;
   app.add_option("--board", o.board_file, "board file (bus, axes, limits)")->check(CLI::ExistingFile);
@@ -168,34 +171,30 @@ int main(int argc, char** argv) {
   auto* cycle = app.add_subcommand("cycle", "full-travel cycle min -> max -> min: travel times and rates");
   axis_arg(cycle);
   for (auto* sub : {move, step, cycle}) sub->add_option("--rate", o.rate, "unit/s (default: the board's rate)");
-  CLI11_PARSE(app, argc, argv);
-
-  try {
-    auto board = glider::hal_linux::load_modbus_board(o.board_file);
-    if (!o.tcp.empty()) glider::hal_linux::use_tcp_endpoint(board.bus, o.tcp);
-    if (!o.rtu.empty()) glider::hal_linux::use_rtu_device(board.bus, o.rtu);
-    BenchSession session(board, o.csv);
-    if (!session.warning().empty()) std::fprintf(stderr, "glider-bench: warning: %s\n", session.warning().c_str());
-    int code = 0;
-    if (*status) {
-      code = cmd_status(session);
-    } else if (*home) {
-      code = cmd_home(session, o);
-    } else if (*move) {
-      checked_move(session, o, "move", o.value);
-    } else if (*step) {
-      code = cmd_step(session, o);
-    } else if (*cycle) {
-      code = cmd_cycle(session, o);
+  return tool.run(argc, argv, [&]() -> int {
+    try {
+      auto board = glider::hal_linux::load_modbus_board(o.board_file);
+      if (!o.tcp.empty()) glider::hal_linux::use_tcp_endpoint(board.bus, o.tcp);
+      if (!o.rtu.empty()) glider::hal_linux::use_rtu_device(board.bus, o.rtu);
+      BenchSession session(board, o.csv);
+      if (!session.warning().empty()) std::fprintf(stderr, "glider-bench: warning: %s\n", session.warning().c_str());
+      int code = 0;
+      if (*status) {
+        code = cmd_status(session);
+      } else if (*home) {
+        code = cmd_home(session, o);
+      } else if (*move) {
+        checked_move(session, o, "move", o.value);
+      } else if (*step) {
+        code = cmd_step(session, o);
+      } else if (*cycle) {
+        code = cmd_cycle(session, o);
+      }
+      session.finish(code == 0 ? "complete" : "stopped failed");
+      return code;
+    } catch (const Refusal& refusal) {
+      // A command outside the board's limits, or not confirmed: the user's command line.
+      throw glider::cli::ToolError(glider::cli::kUsage, refusal.what());
     }
-    session.finish(code == 0 ? "complete" : "stopped failed");
-    return code;
-  } catch (const Refusal& refusal) {
-    std::fprintf(stderr, "glider-bench: %s\n", refusal.what());
-    return 2;
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "glider-bench: %s\n", error.what());
-    return 1;
-  }
-  return 0;
+  });
 }

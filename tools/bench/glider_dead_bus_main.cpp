@@ -11,10 +11,12 @@
 #include <cstdio>
 #include <thread>
 
+#include "glider/cli/tool.hpp"
 #include "glider/hal_linux/modbus_actuators.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Worst-case blocking of one control cycle on a dead Modbus bus"};
+  glider::cli::Tool tool("glider-dead-bus", "Worst-case blocking of one control cycle on a dead Modbus bus");
+  CLI::App& app = tool.app();
   std::string board_file = GLIDER_DEFAULT_MODBUS_BOARD;
   std::string tcp;
   std::string rtu;
@@ -25,8 +27,7 @@ int main(int argc, char** argv) {
   app.add_option("--rtu", rtu, "serial device")->excludes(tcp_option);
   app.add_option("--cycles", cycles, "control cycles to time")->check(CLI::PositiveNumber);
   app.add_option("--label", label, "what the bus is (for the report line)");
-  CLI11_PARSE(app, argc, argv);
-  try {
+  return tool.run(argc, argv, [&]() -> int {
     auto board = glider::hal_linux::load_modbus_board(board_file);
     if (!tcp.empty()) glider::hal_linux::use_tcp_endpoint(board.bus, tcp);
     if (!rtu.empty()) glider::hal_linux::use_rtu_device(board.bus, rtu);
@@ -66,9 +67,6 @@ int main(int argc, char** argv) {
         board.bus.response_timeout_ms, board.bus.byte_timeout_ms, board.bus.retries, faults, cycles,
         static_cast<unsigned long long>(st.attempts), static_cast<unsigned long long>(st.budget_refusals),
         link->last_error());
-    return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "glider-dead-bus: %s\n", e.what());
-    return 1;
-  }
+    return glider::cli::kOk;
+  });
 }

@@ -96,7 +96,7 @@ def _plot(directory, name, script):
         return False
     with open(os.path.join(directory, f"{name}.gp"), "w") as f:
         f.write("set terminal pngcairo size 800,500 font 'DejaVu Sans,10'\n"
-                f"set output '{name}.png'\nset grid\n{script}")
+                f"set output '{name}.png'\nset termoption noenhanced\nset grid\n{script}")  # names keep their _
     proc = subprocess.run(["gnuplot", f"{name}.gp"], cwd=directory, capture_output=True, text=True, timeout=120,
                           check=False)
     return proc.returncode == 0

@@ -12,10 +12,12 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "modbus_request.hpp"
+
 namespace glider::plant {
 namespace {
 
-constexpr std::size_t kMbapLength = 7;  // transaction, protocol, length (2 each), unit
+constexpr std::size_t kMbapLength = sim_tools::kMbapHeaderLength;
 
 int word_at(const std::uint8_t* p) { return (p[0] << 8) | p[1]; }
 
@@ -101,15 +103,13 @@ bool ModbusTcpServer::read_client(Client& client, const std::function<void()>& a
   client.last_activity = now;
   client.length += static_cast<std::size_t>(n);
   // Every whole request in the buffer, in order (a client may pipeline).
-  while (client.length >= kMbapLength) {
-    const int protocol = word_at(client.buffer + 2);
-    const std::size_t length = static_cast<std::size_t>(word_at(client.buffer + 4));
-    if (protocol != 0 || length < 2 || length > MODBUS_TCP_MAX_ADU_LENGTH - 6) {
-      ++stats_.malformed;
+  while (true) {
+    const std::size_t frame = sim_tools::tcp_frame_size(client.buffer, client.length);
+    if (frame == sim_tools::kFrameMalformed) {
+      ++stats_.malformed;  // the stream cannot be resynchronised
       return false;
     }
-    const std::size_t frame = 6 + length;
-    if (client.length < frame) break;
+    if (frame == sim_tools::kFrameIncomplete) break;
     if (!answer(client, frame, after_write)) return false;
     client.length -= frame;
     std::memmove(client.buffer, client.buffer + frame, client.length);
@@ -128,13 +128,9 @@ bool ModbusTcpServer::request_writes_read_only(const std::uint8_t* pdu, std::siz
   } else if (function == MODBUS_FC_WRITE_MULTIPLE_REGISTERS && length >= 5) {
     address = word_at(pdu + 1);
     count = word_at(pdu + 3);
-  } else if (function == MODBUS_FC_WRITE_AND_READ_REGISTERS && length >= 9) {
-    address = word_at(pdu + 5);
-    count = word_at(pdu + 7);
   } else {
-    return false;  // not a register write: libmodbus answers (or refuses) it
+    return false;  // not a register write
   }
-  if (count > 123) return false;  // libmodbus refuses the quantity itself
   for (int a = address; a < address + count; ++a) {
     if (!writable_(a)) return true;
   }
@@ -155,14 +151,16 @@ bool ModbusTcpServer::answer(Client& client, std::size_t frame_length, const std
   if (frame[6] != unit_id_ && frame[6] != 0xFF) {
     ++stats_.exceptions;
     sent = modbus_reply_exception(context_, frame, MODBUS_EXCEPTION_GATEWAY_TARGET);
+  } else if (const int code = sim_tools::request_exception(frame, frame_length); code != 0) {
+    ++stats_.exceptions;  // a function, quantity or byte count the register map does not serve
+    sent = modbus_reply_exception(context_, frame, static_cast<unsigned>(code));
   } else if (request_writes_read_only(pdu, pdu_length)) {
     ++stats_.exceptions;
     sent = modbus_reply_exception(context_, frame, MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS);
   } else {
     sent = modbus_reply(context_, frame, static_cast<int>(frame_length), mapping_);
     const int function = pdu[0];
-    if (function == MODBUS_FC_WRITE_SINGLE_REGISTER || function == MODBUS_FC_WRITE_MULTIPLE_REGISTERS ||
-        function == MODBUS_FC_WRITE_AND_READ_REGISTERS) {
+    if (function == MODBUS_FC_WRITE_SINGLE_REGISTER || function == MODBUS_FC_WRITE_MULTIPLE_REGISTERS) {
       after_write();
     }
   }

@@ -2,8 +2,9 @@
 #pragma once
 // A Modbus TCP server for many clients in one thread: poll() readiness (no
 // select() and its FD_SETSIZE limit), each client's bytes framed by the MBAP
-// header here and answered by libmodbus (modbus_reply: register access,
-// exception replies for bad addresses and oversize reads). A client that
+// header (the actuator simulator's tcp_frame_size), requests outside the
+// register map's functions and quantities refused (its request_exception),
+// the rest answered by libmodbus (register access, bad addresses). A client that
 // leaves a request unfinished longer than the request timeout, or says
 // nothing for the idle timeout, is disconnected; connections beyond the cap
 // are accepted and closed at once (counted), so the listen queue never

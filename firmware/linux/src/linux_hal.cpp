@@ -80,6 +80,7 @@ std::unique_ptr<LinuxHal> LinuxHal::build(const TargetBoard& board, const LinuxH
   RingLogOptions log_options;
   log_options.metadata = options.log_metadata;
   log_options.messages = log;
+  log_options.loop_clock = &h->clock_;
   h->log_ = std::make_unique<RingBufferLog>(options.log_path, std::move(log_options));
   return h;
 }

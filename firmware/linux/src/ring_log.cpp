@@ -53,7 +53,12 @@ bool RingBufferLog::write(const hal::FlightLogRecord& record) {
     rows_refused_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
-  ring_[head] = Slot{record, utc_now_us()};
+  hal::Micros utc_us = utc_now_us();
+  if (options_.loop_clock != nullptr) {
+    // Back to the cycle's start, in real time (the loop clock may run faster).
+    utc_us -= monotonic_now_us() - options_.loop_clock->to_monotonic_us(record.time_us);
+  }
+  ring_[head] = Slot{record, utc_us};
   head_.store(next, std::memory_order_release);
   return true;
 }

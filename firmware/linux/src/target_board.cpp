@@ -11,17 +11,21 @@ namespace {
 
 using config::TomlDocument;
 
+using config::Range;
+
+// Physical ranges of the board file's numbers (value_limits.hpp): refusals
+// name file:line:column, key, value and range.
+constexpr Range kStaleAfter{0.1, 600.0, "s"};
+constexpr Range kStatsEvery{1.0, 86400.0, "s"};
+constexpr Range kSurfacePressure{0.0, 1.2, "bar (0: gauge transmitter)"};
+constexpr Range kWaterDensity{990.0, 1050.0, "kg/m^3"};
+constexpr Range kMaxPressure{0.1, 1200.0, "bar"};
+constexpr Range kChargeUsed{0.0, 10000.0, "Ah"};
+constexpr Range kVoltage{1.0, 100.0, "V"};
+
 int integer_in(const TomlDocument& doc, const std::string& key, std::int64_t fallback, std::int64_t lo,
                std::int64_t hi) {
-  const std::int64_t value = doc.integer_or(key, fallback);
-  if (value < lo || value > hi) doc.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return static_cast<int>(value);
-}
-
-double positive(const TomlDocument& doc, const std::string& key, double fallback) {
-  const double value = doc.number_or(key, fallback);
-  if (!(value > 0.0)) doc.fail(key, "must be positive");
-  return value;
+  return static_cast<int>(doc.integer_or(key, fallback, lo, hi));
 }
 
 int baud(const TomlDocument& doc, const std::string& key, int fallback) {
@@ -43,8 +47,8 @@ SerialSensorConfig read_serial(const TomlDocument& doc, const std::string& table
   SerialSensorConfig sensor;
   sensor.device = doc.string(table + ".device");
   sensor.baud = baud(doc, table + ".baud", default_baud);
-  sensor.stale_after_us =
-      static_cast<hal::Micros>(std::llround(positive(doc, table + ".stale_after_s", default_stale_s) * 1e6));
+  sensor.stale_after_us = static_cast<hal::Micros>(
+      std::llround(doc.number_or(table + ".stale_after_s", default_stale_s, kStaleAfter) * 1e6));
   return sensor;
 }
 
@@ -59,25 +63,19 @@ DepthConfig read_depth(const TomlDocument& doc) {
   bus.cycle_budget_ms = integer_in(doc, "depth.cycle_budget_ms", 250, bus.response_timeout_ms, 1000);
   hal_linux::KellerConfig& keller = depth.keller;
   keller.slave = integer_in(doc, "depth.slave", 1, 1, 247);
-  keller.surface_pressure_bar = doc.number_or("depth.surface_pressure_bar", keller.surface_pressure_bar);
-  if (keller.surface_pressure_bar < 0.0 || keller.surface_pressure_bar > 1.2) {
-    doc.fail("depth.surface_pressure_bar", "must be 0 (gauge transmitter) or the atmosphere's, up to 1.2 bar");
-  }
-  keller.water_density_kg_m3 = doc.number_or("depth.water_density_kg_m3", keller.water_density_kg_m3);
-  if (keller.water_density_kg_m3 < 990.0 || keller.water_density_kg_m3 > 1050.0) {
-    doc.fail("depth.water_density_kg_m3", "must be a water density, 990 to 1050 kg/m^3");
-  }
-  keller.max_pressure_bar = positive(doc, "depth.max_pressure_bar", keller.max_pressure_bar);
+  keller.surface_pressure_bar =
+      doc.number_or("depth.surface_pressure_bar", keller.surface_pressure_bar, kSurfacePressure);
+  keller.water_density_kg_m3 = doc.number_or("depth.water_density_kg_m3", keller.water_density_kg_m3, kWaterDensity);
+  keller.max_pressure_bar = doc.number_or("depth.max_pressure_bar", keller.max_pressure_bar, kMaxPressure);
   return depth;
 }
 
 hal_linux::PowerMonitorConfig read_power(const TomlDocument& doc) {
   hal_linux::PowerMonitorConfig power;
   power.hwmon_name = doc.string_or("power.hwmon_name", power.hwmon_name);
-  power.charge_used_at_start_amphr = doc.number_or("power.charge_used_at_start_amphr", 0.0);
-  if (power.charge_used_at_start_amphr < 0.0) doc.fail("power.charge_used_at_start_amphr", "must not be negative");
-  power.min_voltage_v = positive(doc, "power.min_voltage_v", power.min_voltage_v);
-  power.max_voltage_v = positive(doc, "power.max_voltage_v", power.max_voltage_v);
+  power.charge_used_at_start_amphr = doc.number_or("power.charge_used_at_start_amphr", 0.0, kChargeUsed);
+  power.min_voltage_v = doc.number_or("power.min_voltage_v", power.min_voltage_v, kVoltage);
+  power.max_voltage_v = doc.number_or("power.max_voltage_v", power.max_voltage_v, kVoltage);
   if (power.min_voltage_v >= power.max_voltage_v) doc.fail("power.max_voltage_v", "must be above min_voltage_v");
   return power;
 }
@@ -90,7 +88,8 @@ TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& rel
   board.loop.sched_fifo = doc.boolean_or("loop.sched_fifo", false);
   board.loop.priority = integer_in(doc, "loop.priority", 50, 1, 99);
   board.loop.lock_memory = doc.boolean_or("loop.lock_memory", false);
-  board.loop.stats_every_us = static_cast<hal::Micros>(std::llround(positive(doc, "loop.stats_every_s", 60.0) * 1e6));
+  board.loop.stats_every_us =
+      static_cast<hal::Micros>(std::llround(doc.number_or("loop.stats_every_s", 60.0, kStatsEvery) * 1e6));
   board.actuators_board = board_path(doc, "actuators.board", relative_to);
   if (doc.has("gpio.board")) board.gpio_board = board_path(doc, "gpio.board", relative_to);
   board.gps = read_serial(doc, "gps", 9600, 5.0);

@@ -209,11 +209,13 @@ void TomlDocument::leave_table(std::string_view table) const { left_tables_.empl
 void TomlDocument::reject_unknown_keys() const {
   std::vector<std::pair<std::string, toml::source_region>> leaves;
   collect_leaves(impl_->table, "", leaves);
-  for (const auto& [name, region] : leaves) {
+  for (const auto& leaf : leaves) {
+    // Not a structured binding: clang 14 (the fuzz build) cannot capture one.
+    const std::string& name = leaf.first;
     const bool left = std::any_of(left_tables_.begin(), left_tables_.end(),
                                   [&name](const std::string& prefix) { return name.starts_with(prefix); });
     if (!left && used_.find(name) == used_.end()) {
-      throw ConfigError(location(source_, region) + ": unknown key '" + name + "'");
+      throw ConfigError(location(source_, leaf.second) + ": unknown key '" + name + "'");
     }
   }
 }

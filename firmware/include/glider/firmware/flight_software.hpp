@@ -75,6 +75,37 @@ class FlightSoftware final : public PeriodicTask {
   const GuardCounts& actuator_guard_counts() const { return guard_.counts(); }
 
  private:
+  // One cycle's sensor readings, each with its check.
+  struct CycleReadings {
+    hal::DepthSample depth{};
+    bool depth_valid = false;
+    hal::AttitudeSample attitude{};
+    bool attitude_valid = false;
+    hal::ActuatorReading pump{}, battery{}, fin{};
+    bool pump_ok = false, battery_ok = false, fin_ok = false;
+    hal::GpsFix fix{};
+    hal::DigitalSample leak{};
+    bool leak_ok = false;
+    hal::PowerSample power{};
+    bool power_ok = false;
+    bool depth_ok = false;     // a valid depth fresher than the sensor timeout
+    bool attitude_ok = false;  // likewise the attitude
+  };
+  struct CycleCommands {
+    double ballast_cc = 0.0;
+    double battery_in = 0.0;
+    double fin_rad = 0.0;
+  };
+
+  // The steps of run(), in order.
+  CycleReadings read_sensors(hal::Micros now_us);
+  NavigatorOutputs navigate(hal::Micros now_us, const CycleReadings& in);
+  AbortCause check_aborts(hal::Micros now_us, const CycleReadings& in);
+  void run_mission(hal::Micros now_us, const CycleReadings& in, const NavigatorOutputs& nav, AbortCause monitored);
+  CycleCommands command_actuators(const CycleReadings& in, const NavigatorOutputs& nav, double dt_s);
+  void log_record(hal::Micros now_us, const CycleReadings& in, const NavigatorOutputs& nav,
+                  const CycleCommands& commands);
+
   void update_depth_rate(const hal::DepthSample& depth);
   double fin_command(const NavigatorOutputs& nav, double dt_s);
   double battery_command(const MissionOutputs& mission, double pitch_rad, double ballast_cc, double dt_s);

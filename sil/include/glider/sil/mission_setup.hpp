@@ -31,7 +31,7 @@ fw::app::FittedDevices load_fitted_devices(const std::filesystem::path& vehicle_
 // Pitches shallower than the best glide have no steady glide: they take the
 // nearest steeper entry. The coast time constant through inflections is the
 // surge momentum over the drag's damping at a 25 deg glide.
-fw::DeadReckoningConfig flight_model_dead_reckoning(const model::VehicleParams& vehicle, double density_kg_m3,
-                                                    fw::DeadReckoningConfig base = {});
+fw::DeadReckoningConfig flight_model_dead_reckoning(const model::VehicleParams& v, double density_kg_m3,
+                                                    fw::DeadReckoningConfig dr = {});
 
 }  // namespace glider::sil

@@ -23,8 +23,7 @@ std::string log_header();
 // Writes the firmware fields of `record`, m_present_time given as `time_us`
 // (exact decimal seconds), each followed by ','. Returns the characters
 // written, 0 if `capacity` is too small (nothing usable written).
-std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out,
-                              std::size_t capacity);
+std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out, std::size_t capacity);
 
 // The shortest round-trip text of `value` and a ',' (NaN or inf: the ',' alone).
 // Returns the characters written, 0 if they do not fit.

@@ -31,6 +31,7 @@
 #include <sys/types.h>
 
 #include "glider/hal/log_record.hpp"
+#include "glider/target/loop_clock.hpp"
 
 namespace glider::target {
 
@@ -38,6 +39,10 @@ struct RingLogOptions {
   std::uint32_t fsync_every_rows = 60;
   std::vector<std::pair<std::string, std::string>> metadata;  // `# key: value` lines before the header
   std::FILE* messages = stderr;                               // disk full / recovered, once per episode
+  // The loop's clock: each row's m_present_time is the UTC of its cycle's start
+  // (the record's loop time), not of the moment the row was handed over after
+  // the cycle's work. Null: the moment of hand-over.
+  const LoopClock* loop_clock = nullptr;
   // The system call that writes the file (tests inject a full disk).
   ssize_t (*write_fn)(int fd, const void* data, std::size_t size) = nullptr;
 };

@@ -13,7 +13,7 @@
 
 #include "glider/hal_linux/modbus_board.hpp"
 
-struct _modbus;  // libmodbus' modbus_t
+struct _modbus;  // NOLINT(bugprone-reserved-identifier): libmodbus' own name for modbus_t
 
 namespace glider::hal_linux {
 
