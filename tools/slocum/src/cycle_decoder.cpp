@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cycle_decoder.hpp"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -57,6 +58,18 @@ double decode_value(const char* p, int bytes, bool swap) {
       return std::bit_cast<double>(load<std::uint64_t>(p, swap));
   }
 }
+
+// A state byte's fields, masked to one bit per field at bits 6, 4, 2, 0
+// (most significant pair = first sensor), as a 4-bit set: bit f for field f.
+constexpr std::array<std::uint8_t, 256> kFieldsOf = [] {
+  std::array<std::uint8_t, 256> table{};
+  for (unsigned m = 0; m < 256; ++m) {
+    unsigned fields = 0;
+    for (unsigned f = 0; f < 4; ++f) fields |= ((m >> (6 - 2 * f)) & 1U) << f;
+    table[m] = static_cast<std::uint8_t>(fields);
+  }
+  return table;
+}();
 
 // Non-finite values are kept (dbdreader keeps them, and Slocum writes -inf
 // e.g. for "no waypoint time"), but said: one warning per sensor at the end.
@@ -131,7 +144,19 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
   // exactly sized arrays and a damaged cycle is never half applied.
   std::vector<std::size_t> cycle_offsets;
   cycle_offsets.reserve((size - pos) / (state_bytes + 1) + 1);
-  std::vector<std::uint32_t> counts(n, 0);
+  // Per state byte and set of its 4 fields (bit f for the f-th sensor of
+  // the byte): the value bytes when those fields are new, and how many
+  // cycles had those fields set (new or same). A byte at a time instead of
+  // a field at a time (the decoder: 100 M -> 83 M instructions on comet-2016).
+  std::vector<std::uint32_t> group_bytes(state_bytes * 16, 0);
+  for (std::size_t b = 0; b < state_bytes; ++b) {
+    for (unsigned fields = 0; fields < 16; ++fields) {
+      for (unsigned f = 0; f < 4 && b * 4 + f < n; ++f) {
+        if ((fields >> f) & 1U) group_bytes[b * 16 + fields] += static_cast<std::uint32_t>(sizes[b * 4 + f]);
+      }
+    }
+  }
+  std::vector<std::uint32_t> pattern_counts(state_bytes * 16, 0);
   while (true) {
     const std::size_t cycle = cycle_offsets.size();
     if (pos >= size) {
@@ -168,12 +193,8 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
     for (std::size_t b = 0; b < state_bytes; ++b) {
       const unsigned s = states[b];
       if (s == 0) continue;
-      const std::size_t base = b * 4;
-      for (unsigned f = 0; f < 4 && base + f < n; ++f) {
-        const unsigned state = (s >> (6 - 2 * f)) & 3U;
-        if (state == kNewValue) value_bytes += static_cast<std::size_t>(sizes[base + f]);
-        if (state == kNewValue || state == kSameValue) counts[base + f] += counted;
-      }
+      value_bytes += group_bytes[b * 16 + kFieldsOf[(s >> 1) & ~s & 0x55U]];
+      pattern_counts[b * 16 + kFieldsOf[(s ^ (s >> 1)) & 0x55U]] += counted;
     }
     const std::size_t values_start = pos + 1 + state_bytes;
     if (size - values_start < value_bytes) {
@@ -183,10 +204,8 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
                                   " left; truncated): " + std::to_string(cycle) + " cycles before it kept"});
       // Its states were counted: take them back.
       for (std::size_t b = 0; b < state_bytes; ++b) {
-        for (unsigned f = 0; f < 4 && b * 4 + f < n; ++f) {
-          const unsigned state = (states[b] >> (6 - 2 * f)) & 3U;
-          if (state == kNewValue || state == kSameValue) counts[b * 4 + f] -= counted;
-        }
+        const unsigned s = states[b];
+        if (s != 0) pattern_counts[b * 16 + kFieldsOf[(s ^ (s >> 1)) & 0x55U]] -= counted;
       }
       break;
     }
@@ -195,6 +214,17 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
     }
     cycle_offsets.push_back(pos);
     pos = values_start + value_bytes;
+  }
+
+  std::vector<std::uint32_t> counts(n, 0);
+  for (std::size_t b = 0; b < state_bytes; ++b) {
+    for (unsigned fields = 1; fields < 16; ++fields) {
+      const std::uint32_t cycles = pattern_counts[b * 16 + fields];
+      if (cycles == 0) continue;
+      for (unsigned f = 0; f < 4 && b * 4 + f < n; ++f) {
+        if ((fields >> f) & 1U) counts[b * 4 + f] += cycles;
+      }
+    }
   }
 
   // Pass 2: the values, into arrays of the counted size (written through

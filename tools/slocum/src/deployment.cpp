@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "glider/slocum/lat_lon.hpp"
 #include "science_track.hpp"
@@ -193,30 +194,31 @@ Deployment read_deployment(const std::vector<fs::path>& paths, const DeploymentO
     }
     return std::nullopt;
   };
+  // Names already in specs (a set: every-sensor logs have ~1500 columns).
+  std::unordered_set<std::string> chosen;
+  const auto choose = [&](const ColumnSpec& spec) {
+    chosen.insert(spec.name);
+    specs.push_back(spec);
+  };
   if (options.columns.empty()) {
-    specs.push_back(*spec_for(time_name));
+    choose(*spec_for(time_name));
     for (const Catalogue* catalogue : {&base_sensors, &science_sensors}) {
       for (const std::string& name : catalogue->order) {
         if (name == time_name || !catalogue->has_data.count(name)) continue;
         const auto spec = spec_for(name);
-        if (spec && (spec->from_science == (catalogue == &science_sensors)) &&
-            std::none_of(specs.begin(), specs.end(), [&name](const ColumnSpec& s) { return s.name == name; })) {
-          specs.push_back(*spec);
-        }
+        if (spec && (spec->from_science == (catalogue == &science_sensors)) && chosen.count(name) == 0) choose(*spec);
       }
     }
   } else {
     if (std::find(options.columns.begin(), options.columns.end(), time_name) == options.columns.end()) {
-      specs.push_back(*spec_for(time_name));
+      choose(*spec_for(time_name));
     }
     for (const std::string& name : options.columns) {
-      const bool duplicate =
-          std::any_of(specs.begin(), specs.end(), [&name](const ColumnSpec& s) { return s.name == name; });
-      if (duplicate) continue;
+      if (chosen.count(name) != 0) continue;
       const auto spec = spec_for(name);
       if (!spec && options.skip_missing_columns) continue;
       if (!spec) throw flightlog::FlightLogError(source, 0, name, 0, "no such sensor in the binary files");
-      specs.push_back(*spec);
+      choose(*spec);
     }
   }
 
