@@ -23,7 +23,7 @@ double HeadingController::update_compensated(double heading_rad, double target_r
   // The fin's yaw authority now (rad/s of yaw rate per rad of fin); 0 when
   // unknown, and then the predictor falls back on the measured rate alone.
   const double authority = config_.yaw_gain_per_m * speed_m_s;
-  const auto steps = std::min<std::size_t>(static_cast<std::size_t>(config_.delay_s / dt_s + 0.5), kHistory - 1);
+  const auto steps = std::min<std::size_t>(static_cast<std::size_t>(std::lround(config_.delay_s / dt_s)), kHistory - 1);
   // history_ holds the commands of the last cycles, newest at k = 0: the
   // one acting now was sent `steps` cycles ago.
   auto sent = [this](std::size_t k) { return history_[(history_next_ + kHistory - 1 - k) % kHistory]; };

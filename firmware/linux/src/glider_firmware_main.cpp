@@ -192,7 +192,8 @@ int main(int argc, char** argv) {
     const bool log_ok = linux_hal->log().close(outcome);
     std::fprintf(out, "glider-firmware: flight log %s: %llu rows, %llu lost (ring full %llu, disk %llu), %llu fsyncs\n",
                  log_path.c_str(), static_cast<unsigned long long>(linux_hal->log().rows_written()),
-                 static_cast<unsigned long long>(linux_hal->log().rows_refused() + linux_hal->log().rows_lost_disk()),
+                 static_cast<unsigned long long>(linux_hal->log().rows_refused()) +
+                     static_cast<unsigned long long>(linux_hal->log().rows_lost_disk()),
                  static_cast<unsigned long long>(linux_hal->log().rows_refused()),
                  static_cast<unsigned long long>(linux_hal->log().rows_lost_disk()),
                  static_cast<unsigned long long>(linux_hal->log().fsyncs()));

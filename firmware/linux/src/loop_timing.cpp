@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 namespace glider::target {
 
@@ -18,7 +19,7 @@ void LoopTiming::record(hal::Micros lateness_us, hal::Micros cycle_us, hal::Micr
 }
 
 hal::Micros LoopTiming::lateness_quantile_us(double q) const {
-  const auto wanted = static_cast<std::uint64_t>(q * static_cast<double>(cycles_) + 0.5);
+  const auto wanted = static_cast<std::uint64_t>(std::llround(q * static_cast<double>(cycles_)));
   std::uint64_t seen = 0;
   for (std::size_t i = 0; i < kBuckets; ++i) {
     seen += histogram_[i];

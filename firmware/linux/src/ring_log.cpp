@@ -15,7 +15,7 @@
 namespace glider::target {
 namespace {
 
-constexpr std::size_t kBufferBytes = 64 * 1024;
+constexpr std::size_t kBufferBytes = std::size_t{64} * 1024;
 
 hal::Micros utc_now_us() {
   timespec t{};
@@ -32,7 +32,8 @@ RingBufferLog::RingBufferLog(const std::string& path, RingLogOptions options)
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0) throw std::runtime_error(path + ": cannot open the flight log: " + std::strerror(errno));
   std::string head;
-  for (const auto& [key, value] : options_.metadata) head += "# " + key + ": " + value + "\n";
+  for (const auto& [key, value] : options_.metadata)
+    head.append("# ").append(key).append(": ").append(value).append("\n");
   head += fw::log_header() + "\n";
   if (!write_all(head.data(), head.size()) || ::fsync(fd_) != 0) {
     const std::string error = std::strerror(errno);

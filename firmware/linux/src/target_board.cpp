@@ -36,7 +36,7 @@ int baud(const TomlDocument& doc, const std::string& key, int fallback) {
 
 std::filesystem::path board_path(const TomlDocument& doc, const std::string& key,
                                  const std::filesystem::path& relative_to) {
-  const std::filesystem::path path = relative_to / doc.string(key);
+  std::filesystem::path path = relative_to / doc.string(key);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) doc.fail(key, "no such file: " + path.string());
   return path;

@@ -12,7 +12,6 @@
 namespace glider::hal_linux {
 namespace {
 
-using config::ConfigError;
 using config::TomlDocument;
 
 int integer_in(const TomlDocument& doc, const std::string& key, std::int64_t fallback, std::int64_t lo,
