@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "actuator_server.hpp"
+#include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
 
 namespace {
@@ -19,7 +20,9 @@ void request_stop(int) { g_stop = 1; }
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Modbus actuator simulator: the default register map with actuator dynamics and faults"};
+  glider::cli::Tool tool("glider-actuator-sim",
+                         "Modbus actuator simulator: the default register map with actuator dynamics and faults");
+  CLI::App& app = tool.app();
   std::string board_file = GLIDER_DEFAULT_MODBUS_BOARD;
   std::string tcp;
   std::string rtu;
@@ -34,9 +37,7 @@ int main(int argc, char** argv) {
   app.add_option("--fault", faults, "inject a fault: stall:S, silent:N, noise:N, exception:N, slow:MS (repeatable)");
   app.add_option("--time-scale", time_scale, "simulated seconds per real second (faster bench demos)")
       ->check(CLI::PositiveNumber);
-  CLI11_PARSE(app, argc, argv);
-
-  try {
+  return tool.run(argc, argv, [&]() -> int {
     glider::sim_tools::ServerOptions options;
     options.board = glider::hal_linux::load_modbus_board(board_file);
     options.time_scale = time_scale;
@@ -65,9 +66,6 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     server.run(g_stop);
     std::printf("actuator-sim: stopped\n");
-    return 0;
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "glider-actuator-sim: %s\n", error.what());
-    return 1;
-  }
+    return static_cast<int>(glider::cli::kOk);
+  });
 }

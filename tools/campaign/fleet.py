@@ -74,8 +74,7 @@ def diagnose_one(manifest, log):
     record = {"log": log, "glider": glider_name(meta), "deployment": os.path.splitext(os.path.basename(log))[0],
               "mission": meta.get("mission_file", meta.get("mission", "")), "error": ""}
     if proc is None or proc.returncode != 0:
-        record["error"] = "timed out after 3600 s" if proc is None else (
-            proc.stderr.strip().splitlines() or [f"exit status {proc.returncode}"])[-1]
+        record["error"] = "timed out after 3600 s" if proc is None else diagnose_error(proc)
         return record, wall_s
     j = json.loads(proc.stdout)
     record.update({"model_vehicle": j["vehicle"], "samples": j["samples_used"], "cause": j["cause"],
@@ -84,6 +83,19 @@ def diagnose_one(manifest, log):
                    "fitted": {f["effect"]: {"value": f["value"], "unit": f["unit"], "ci95": f.get("ci95")}
                               for f in j["findings"] if f.get("fitted")}})
     return record, wall_s
+
+
+def diagnose_error(proc):
+    """glider-diagnose's own message: with --json every program of the project
+    (tools/cli) writes {"error": ..., "exit_code": N} on stdout; else its last
+    stderr line (a usage error from the command line parser)."""
+    try:
+        message = json.loads(proc.stdout.strip().splitlines()[-1]).get("error")
+        if message:
+            return f"glider-diagnose: {message}"
+    except (ValueError, IndexError, AttributeError):
+        pass
+    return (proc.stderr.strip().splitlines() or [f"exit status {proc.returncode}"])[-1]
 
 
 def run_shard(directory, manifest, shard, jobs):

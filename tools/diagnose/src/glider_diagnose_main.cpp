@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/diagnosis_json.hpp"
@@ -133,8 +134,12 @@ void write_plots(const std::string& dir, const glider::model::VehicleParams& veh
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Show what the simulation gets wrong in a flight log, name the cause, fit it, measure the gain"};
-  std::string log_path, vehicle_path, default_vehicle, report_dir;
+  glider::cli::Tool tool(
+      "glider-diagnose",
+      "Show what the simulation gets wrong in a flight log, name the cause, fit it, measure the gain");
+  CLI::App& app = tool.app();
+  std::string log_path, vehicle_path, report_dir;
+  std::string default_vehicle = glider::cli::default_vehicle_path();
   bool json = false;
   std::vector<std::string> renames;
   std::string flight_model = "dynamic";
@@ -153,9 +158,10 @@ int main(int argc, char** argv) {
                  "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
       ->check(CLI::ExistingFile);
   app.add_option("--default-vehicle", default_vehicle, "vehicle used when neither --vehicle nor metadata give one")
-      ->check(CLI::ExistingFile);
+      ->check(CLI::ExistingFile)
+      ->capture_default_str();
   app.add_option("--report", report_dir, "write the summary and the extended vehicle file here");
-  app.add_flag("--json", json, "one JSON object on stdout");
+  tool.add_json_flag(json);
   app.add_option("--rename", renames, "read column FROM as TO (FROM=TO), for logs not in the contract's names");
   app.add_option("--model", flight_model,
                  "flight model fitted: dynamic (the project's dynamics driven by the measured pitch, turns "
@@ -173,103 +179,101 @@ int main(int argc, char** argv) {
   app.add_option("--pitch-window", pitch_window_s,
                  "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)")
       ->check(CLI::Range(0.0, 60.0));
-  CLI11_PARSE(app, argc, argv);
-  log_path = log_source.inputs.front();
-  glider::diagnose::DiagnoseOptions options;
-  options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
-                                           : glider::diagnose::FlightModelKind::kDynamic;
-  for (const std::string& id : fit_only) {
-    bool known = false;
-    for (std::size_t i = 0; i < glider::diagnose::kEffectCount; ++i) {
-      if (id == info(static_cast<Effect>(i)).id && static_cast<Effect>(i) != Effect::kPitchTrimOffset) {
-        options.fit_only.push_back(static_cast<Effect>(i));
-        known = true;
+  return tool.run(argc, argv, [&]() -> int {
+    log_path = log_source.inputs.front();
+    glider::diagnose::DiagnoseOptions options;
+    options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
+                                             : glider::diagnose::FlightModelKind::kDynamic;
+    for (const std::string& id : fit_only) {
+      bool known = false;
+      for (std::size_t i = 0; i < glider::diagnose::kEffectCount; ++i) {
+        if (id == info(static_cast<Effect>(i)).id && static_cast<Effect>(i) != Effect::kPitchTrimOffset) {
+          options.fit_only.push_back(static_cast<Effect>(i));
+          known = true;
+        }
       }
+      if (!known) return tool.fail(glider::cli::kUsage, "--fit: '" + id + "' is not a depth-rate effect id");
     }
-    if (!known) {
-      std::fprintf(stderr, "glider-diagnose: --fit: '%s' is not a depth-rate effect id\n", id.c_str());
-      return 2;
+    if (window.size() == 2) {
+      options.window_min_m = window[0];
+      options.window_max_m = window[1];
     }
-  }
-  if (window.size() == 2) {
-    options.window_min_m = window[0];
-    options.window_max_m = window[1];
-  }
-  glider::diagnose::ObservationOptions observation_options;
-  observation_options.track.rate_half_window_s = rate_window_s;
-  observation_options.track.pitch_half_window_s = pitch_window_s;
+    glider::diagnose::ObservationOptions observation_options;
+    observation_options.track.rate_half_window_s = rate_window_s;
+    observation_options.track.pitch_half_window_s = pitch_window_s;
 
-  try {
-    glider::flightlog::ReadOptions read_options;
-    for (const std::string& r : renames) {
-      const std::size_t eq = r.find('=');
-      if (eq == std::string::npos || eq == 0 || eq + 1 == r.size()) {
-        throw std::runtime_error("--rename wants FROM=TO, got '" + r + "'");
+    try {
+      glider::flightlog::ReadOptions read_options;
+      for (const std::string& r : renames) {
+        const std::size_t eq = r.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == r.size()) {
+          throw std::runtime_error("--rename wants FROM=TO, got '" + r + "'");
+        }
+        read_options.rename.emplace_back(r.substr(0, eq), r.substr(eq + 1));
       }
-      read_options.rename.emplace_back(r.substr(0, eq), r.substr(eq + 1));
+      std::vector<glider::slocum::Warning> warnings;
+      const glider::flightlog::FlightLog log = glider::slocum::load_flight_log(log_source, read_options, &warnings);
+      for (const auto& w : warnings) std::fprintf(stderr, "glider-diagnose: warning: %s\n", w.text().c_str());
+      // A log that did not end cleanly is still diagnosed, but the user is told.
+      if (log.end().unfinished() || log.end().state == glider::flightlog::LogEnd::State::kAborted) {
+        std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());
+      }
+      glider::model::VehicleParams vehicle;
+      std::string vehicle_source;
+      const auto metadata = log.vehicle_metadata();
+      if (!vehicle_path.empty()) {
+        vehicle = glider::model::load_vehicle_file(vehicle_path);
+        vehicle_source = "file " + vehicle_path + (metadata.empty() ? "" : "; the log's vehicle metadata is not used");
+      } else if (!metadata.empty()) {
+        std::vector<std::pair<std::string, std::string>> entries;
+        for (const auto& m : metadata) entries.emplace_back(m.key, m.value);
+        vehicle = glider::model::vehicle_from_metadata(entries, log_path);
+        vehicle_source = "the log's vehicle.* metadata";
+      } else if (!default_vehicle.empty()) {
+        vehicle = glider::model::load_vehicle_file(default_vehicle);
+        vehicle_source =
+            "default vehicle " + std::filesystem::path(default_vehicle).filename().string() + " (the log states none)";
+      } else {
+        throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
+      }
+      const auto start = std::chrono::steady_clock::now();
+      // Progress on stderr once a run has taken more than 2 s, at most a line a second.
+      std::size_t fits = 0;
+      double last_line_s = 0.0;
+      const std::size_t rows = log.rows();
+      options.progress = [&](const std::string& fitting) {
+        ++fits;
+        const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (elapsed_s < 2.0 || elapsed_s - last_line_s < 1.0) return;
+        last_line_s = elapsed_s;
+        std::fprintf(stderr, "glider-diagnose: %.0f s, %zu rows: model fit %zu (%s)\n", elapsed_s, rows, fits,
+                     fitting.c_str());
+      };
+      const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log, observation_options);
+      const Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
+      const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (json) {
+        std::printf("%s\n", to_json(d, vehicle_source, wall_s).dump().c_str());
+      } else {
+        print_text(d, log_path, vehicle_source, wall_s);
+      }
+      if (!report_dir.empty()) {
+        std::filesystem::create_directories(report_dir);
+        write_plots(report_dir, vehicle, obs, d, log_path, options);
+        std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json")
+            << to_json(d, vehicle_source, wall_s).dump(2) << '\n';
+        glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
+        extended.name = vehicle.name + "_extended";
+        extended.description =
+            "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();
+        std::ofstream(std::filesystem::path(report_dir) / "extended_vehicle.toml")
+            << "# Written by glider-diagnose. Water effects (vertical velocity, density) belong to the\n"
+            << "# environment, not the vehicle: see diagnosis.json.\n"
+            << glider::model::vehicle_file_text(extended);
+      }
+    } catch (const std::exception& error) {
+      return tool.fail(glider::cli::kError, error.what());
     }
-    std::vector<glider::slocum::Warning> warnings;
-    const glider::flightlog::FlightLog log = glider::slocum::load_flight_log(log_source, read_options, &warnings);
-    for (const auto& w : warnings) std::fprintf(stderr, "glider-diagnose: warning: %s\n", w.text().c_str());
-    // A log that did not end cleanly is still diagnosed, but the user is told.
-    if (log.end().unfinished() || log.end().state == glider::flightlog::LogEnd::State::kAborted) {
-      std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());
-    }
-    glider::model::VehicleParams vehicle;
-    std::string vehicle_source;
-    const auto metadata = log.vehicle_metadata();
-    if (!vehicle_path.empty()) {
-      vehicle = glider::model::load_vehicle_file(vehicle_path);
-      vehicle_source = "file " + vehicle_path + (metadata.empty() ? "" : "; the log's vehicle metadata is not used");
-    } else if (!metadata.empty()) {
-      std::vector<std::pair<std::string, std::string>> entries;
-      for (const auto& m : metadata) entries.emplace_back(m.key, m.value);
-      vehicle = glider::model::vehicle_from_metadata(entries, log_path);
-      vehicle_source = "the log's vehicle.* metadata";
-    } else if (!default_vehicle.empty()) {
-      vehicle = glider::model::load_vehicle_file(default_vehicle);
-      vehicle_source =
-          "default vehicle " + std::filesystem::path(default_vehicle).filename().string() + " (the log states none)";
-    } else {
-      throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
-    }
-    const auto start = std::chrono::steady_clock::now();
-    // Progress on stderr once a run has taken more than 2 s, at most a line a second.
-    std::size_t fits = 0;
-    double last_line_s = 0.0;
-    const std::size_t rows = log.rows();
-    options.progress = [&](const std::string& fitting) {
-      ++fits;
-      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (elapsed_s < 2.0 || elapsed_s - last_line_s < 1.0) return;
-      last_line_s = elapsed_s;
-      std::fprintf(stderr, "glider-diagnose: %.0f s, %zu rows: model fit %zu (%s)\n", elapsed_s, rows, fits,
-                   fitting.c_str());
-    };
-    const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log, observation_options);
-    const Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (json) {
-      std::printf("%s\n", to_json(d, vehicle_source, wall_s).dump().c_str());
-    } else {
-      print_text(d, log_path, vehicle_source, wall_s);
-    }
-    if (!report_dir.empty()) {
-      std::filesystem::create_directories(report_dir);
-      write_plots(report_dir, vehicle, obs, d, log_path, options);
-      std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json")
-          << to_json(d, vehicle_source, wall_s).dump(2) << '\n';
-      glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
-      extended.name = vehicle.name + "_extended";
-      extended.description = "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();
-      std::ofstream(std::filesystem::path(report_dir) / "extended_vehicle.toml")
-          << "# Written by glider-diagnose. Water effects (vertical velocity, density) belong to the\n"
-          << "# environment, not the vehicle: see diagnosis.json.\n"
-          << glider::model::vehicle_file_text(extended);
-    }
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "glider-diagnose: %s\n", error.what());
-    return 2;
-  }
-  return 0;
+    return static_cast<int>(glider::cli::kOk);
+  });
 }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "glider/cli/tool.hpp"
 #include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/flightlog/phases.hpp"
@@ -112,7 +113,8 @@ std::vector<std::string> alternatives(const std::string& spec) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Summarize a flight-log CSV (docs/flight-log.md)"};
+  glider::cli::Tool tool("glider-log-info", "Summarize a flight-log CSV (docs/flight-log.md)");
+  CLI::App& app = tool.app();
   glider::slocum::LogSource source;
   fl::ReadOptions options;
   std::vector<std::string> required;
@@ -125,26 +127,24 @@ int main(int argc, char** argv) {
   app.add_option("--require", required,
                  "a column the log must have, or alternatives as a|b (repeatable; replaces the default "
                  "m_depth|sci_water_pressure, m_pitch, m_ballast_pumped|m_de_oil_vol)");
-  CLI11_PARSE(app, argc, argv);
-  if (!required.empty()) {
-    options.required.clear();
-    for (const std::string& spec : required) options.required.push_back(alternatives(spec));
-  }
+  return tool.run(argc, argv, [&]() -> int {
+    if (!required.empty()) {
+      options.required.clear();
+      for (const std::string& spec : required) options.required.push_back(alternatives(spec));
+    }
 
-  try {
-    std::vector<glider::slocum::Warning> warnings;
-    const fl::FlightLog log = glider::slocum::load_flight_log(source, options, &warnings);
-    for (const auto& w : warnings) std::fprintf(stderr, "glider-log-info: warning: %s\n", w.text().c_str());
-    std::printf("log      : %s\n", log.source().c_str());
-    std::printf("rows     : %zu\n", log.rows());
-    std::printf("end      : %s\n", log.end().describe(log.rows()).c_str());
-    print_time(log);
-    print_phases(log);
-    print_columns(log);
-    print_metadata(log);
-  } catch (const std::exception& error) {  // FlightLogError names file, line and column
-    std::fprintf(stderr, "glider-log-info: %s\n", error.what());
-    return 1;
-  }
-  return 0;
+    {  // errors (FlightLogError names file, line and column) are printed by cli::Tool
+      std::vector<glider::slocum::Warning> warnings;
+      const fl::FlightLog log = glider::slocum::load_flight_log(source, options, &warnings);
+      for (const auto& w : warnings) std::fprintf(stderr, "glider-log-info: warning: %s\n", w.text().c_str());
+      std::printf("log      : %s\n", log.source().c_str());
+      std::printf("rows     : %zu\n", log.rows());
+      std::printf("end      : %s\n", log.end().describe(log.rows()).c_str());
+      print_time(log);
+      print_phases(log);
+      print_columns(log);
+      print_metadata(log);
+    }
+    return static_cast<int>(glider::cli::kOk);
+  });
 }
