@@ -24,9 +24,7 @@ constexpr double m_to_in(double m) { return m / kMetresPerInch; }
 constexpr double deg_to_rad(double deg) { return deg * kRadPerDeg; }
 constexpr double rad_to_deg(double rad) { return rad / kRadPerDeg; }
 constexpr double bar_to_dbar(double bar) { return bar * kDbarPerBar; }
-constexpr double dbar_to_bar(double dbar) { return dbar / kDbarPerBar; }
 constexpr double bar_to_pa(double bar) { return bar * kPascalPerBar; }
-constexpr double pa_to_bar(double pa) { return pa / kPascalPerBar; }
 constexpr double bar_to_approx_depth_m(double bar) { return bar * kApproxMetresPerBar; }
 
 // Fixed-point register values of the Modbus actuators: a register holds
