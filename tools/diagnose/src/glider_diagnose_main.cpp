@@ -13,6 +13,7 @@
 #include "glider/config/toml_document.hpp"
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/diagnosis_json.hpp"
+#include "glider/diagnose/tool_inputs.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/report/report.hpp"
@@ -184,15 +185,10 @@ int main(int argc, char** argv) {
     glider::diagnose::DiagnoseOptions options;
     options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
                                              : glider::diagnose::FlightModelKind::kDynamic;
-    for (const std::string& id : fit_only) {
-      bool known = false;
-      for (std::size_t i = 0; i < glider::diagnose::kEffectCount; ++i) {
-        if (id == info(static_cast<Effect>(i)).id && static_cast<Effect>(i) != Effect::kPitchTrimOffset) {
-          options.fit_only.push_back(static_cast<Effect>(i));
-          known = true;
-        }
-      }
-      if (!known) return tool.fail(glider::cli::kUsage, "--fit: '" + id + "' is not a depth-rate effect id");
+    try {
+      options.fit_only = glider::diagnose::depth_rate_effects(fit_only);
+    } catch (const std::invalid_argument& error) {
+      return tool.fail(glider::cli::kUsage, error.what());
     }
     if (window.size() == 2) {
       options.window_min_m = window[0];
@@ -204,13 +200,7 @@ int main(int argc, char** argv) {
 
     try {
       glider::flightlog::ReadOptions read_options;
-      for (const std::string& r : renames) {
-        const std::size_t eq = r.find('=');
-        if (eq == std::string::npos || eq == 0 || eq + 1 == r.size()) {
-          throw std::runtime_error("--rename wants FROM=TO, got '" + r + "'");
-        }
-        read_options.rename.emplace_back(r.substr(0, eq), r.substr(eq + 1));
-      }
+      read_options.rename = glider::diagnose::column_renames(renames);
       std::vector<glider::slocum::Warning> warnings;
       const glider::flightlog::FlightLog log = glider::slocum::load_flight_log(log_source, read_options, &warnings);
       for (const auto& w : warnings) std::fprintf(stderr, "glider-diagnose: warning: %s\n", w.text().c_str());
@@ -218,24 +208,10 @@ int main(int argc, char** argv) {
       if (log.end().unfinished() || log.end().state == glider::flightlog::LogEnd::State::kAborted) {
         std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());
       }
-      glider::model::VehicleParams vehicle;
-      std::string vehicle_source;
-      const auto metadata = log.vehicle_metadata();
-      if (!vehicle_path.empty()) {
-        vehicle = glider::model::load_vehicle_file(vehicle_path);
-        vehicle_source = "file " + vehicle_path + (metadata.empty() ? "" : "; the log's vehicle metadata is not used");
-      } else if (!metadata.empty()) {
-        std::vector<std::pair<std::string, std::string>> entries;
-        for (const auto& m : metadata) entries.emplace_back(m.key, m.value);
-        vehicle = glider::model::vehicle_from_metadata(entries, log_path);
-        vehicle_source = "the log's vehicle.* metadata";
-      } else if (!default_vehicle.empty()) {
-        vehicle = glider::model::load_vehicle_file(default_vehicle);
-        vehicle_source =
-            "default vehicle " + std::filesystem::path(default_vehicle).filename().string() + " (the log states none)";
-      } else {
-        throw std::runtime_error("no vehicle: give --vehicle FILE (the log has no vehicle.* metadata)");
-      }
+      const glider::diagnose::NominalVehicle nominal =
+          glider::diagnose::nominal_vehicle(vehicle_path, log, log_path, default_vehicle);
+      const glider::model::VehicleParams& vehicle = nominal.params;
+      const std::string& vehicle_source = nominal.source;
       const auto start = std::chrono::steady_clock::now();
       // Progress on stderr once a run has taken more than 2 s, at most a line a second.
       std::size_t fits = 0;

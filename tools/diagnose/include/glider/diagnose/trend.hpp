@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// How one fitted effect changes over a deployment: its per-segment values
+// explained as a constant, a linear trend (fouling: drag grows for weeks) or
+// one step (a lost weight, a pump that starts to leak), whichever the data
+// support. Gliders' per-segment intervals are too narrow (serially
+// correlated residuals), so the shapes are judged on the segments' scatter
+// about them (least squares with the variance estimated from the residuals),
+// never on the per-segment intervals.
+#include <cstddef>
+#include <span>
+#include <string>
+
+namespace glider::diagnose {
+
+enum class TrendShape { kNone, kConstant, kLinear, kStep };
+const char* to_string(TrendShape shape);
+
+struct Interval {
+  double value = 0.0, low = 0.0, high = 0.0;  // estimate and 95 % interval
+};
+
+struct Trend {
+  TrendShape shape = TrendShape::kNone;  // kNone: fewer than 3 segments with a value
+  std::size_t segments = 0;              // with a finite value
+  double first_time_s = 0.0;             // of the first segment with a value: day 0
+  Interval mean;                         // constant: the mean over the segments
+  Interval slope_per_day;                // linear: the rate of change
+  Interval at_start;                     // linear: the value at the first segment's time
+  // Step: between the last segment before and the first after (times in the
+  // input's units), the level before and after, and the change.
+  double step_after_s = 0.0, step_before_s = 0.0;
+  double level_before = 0.0, level_after = 0.0;
+  Interval step_change;
+  // Two-sided p-values of the linear slope and of the best step (the step's
+  // corrected for the number of places it was searched).
+  double p_slope = 1.0, p_step = 1.0;
+  // Bayesian information criterion of each shape (lower is better).
+  double bic_constant = 0.0, bic_linear = 0.0, bic_step = 0.0;
+
+  // The model's value at a time (for plots); NaN for kNone.
+  double at(double time_s) const;
+  std::string describe(const char* unit) const;
+};
+
+struct TrendOptions {
+  double significance = 0.05;     // chance of a spurious line or step in constant data
+  std::size_t min_step_side = 2;  // segments on each side of a step
+};
+
+// time_s: each segment's time (s, increasing); value: its fitted value (NaN
+// where the segment has none, left out).
+Trend fit_trend(std::span<const double> time_s, std::span<const double> value, const TrendOptions& options = {});
+
+}  // namespace glider::diagnose
