@@ -129,7 +129,8 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
 
   // Heading (see the header): yaw rate relaxes toward what fin and roll ask.
   const HeadingModel& hd = vehicle_.heading;
-  const double alpha_effective = h.cl_alpha != 0.0 ? lift_coefficient / h.cl_alpha : 0.0;
+  const double slope = lift_slope_per_rad(h);
+  const double alpha_effective = slope != 0.0 ? lift_coefficient / slope : 0.0;
   const double yaw_rate_target =
       e.speed_m_s * (hd.fin_yaw_gain_per_m * masses.fin_rad +
                      hd.roll_yaw_gain_per_m * alpha_effective * std::sin(hd.roll_offset_rad));

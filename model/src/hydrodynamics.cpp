@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace glider::model {
 namespace {
@@ -16,7 +17,28 @@ double fit_weight(const Hydrodynamics& h, double alpha_rad) {
   return 1.0 - u * u * (3.0 - 2.0 * u);
 }
 
+// Lift slope of the wing by its own area.
+double wing_slope_by_wing_area(const Hydrodynamics& h) {
+  const double ar = h.wing_aspect_ratio;
+  const double tan_sweep = std::tan(h.wing_sweep_rad);
+  return 2.0 * std::numbers::pi * ar / (2.0 + std::sqrt(ar * ar * (1.0 + tan_sweep * tan_sweep) + 4.0));
+}
+
 }  // namespace
+
+double wing_lift_slope_per_rad(const Hydrodynamics& h) {
+  if (!(h.wing_area_m2 > 0.0)) return 0.0;
+  return wing_slope_by_wing_area(h) * h.wing_area_m2 / h.reference_area_m2;
+}
+
+double wing_induced_drag_per_rad2(const Hydrodynamics& h) {
+  if (!(h.wing_area_m2 > 0.0)) return 0.0;
+  const double a_w = wing_slope_by_wing_area(h);
+  return a_w * a_w / (std::numbers::pi * h.wing_oswald_efficiency * h.wing_aspect_ratio) * h.wing_area_m2 /
+         h.reference_area_m2;
+}
+
+double lift_slope_per_rad(const Hydrodynamics& h) { return h.cl_alpha + wing_lift_slope_per_rad(h); }
 
 ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad) {
   const double w = fit_weight(h, alpha_rad);
@@ -25,8 +47,8 @@ ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad) {
     // Beyond its range the polynomial is evaluated at the range's edge (it is
     // then only a fading part of the blend).
     const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
-    fit.lift = h.cl0 + h.cl_alpha * a + h.cl_alpha_abs_alpha * a * std::abs(a);
-    fit.drag = h.cd0 + h.cd_alpha2 * a * a;
+    fit.lift = h.cl0 + lift_slope_per_rad(h) * a + h.cl_alpha_abs_alpha * a * std::abs(a);
+    fit.drag = h.cd0 + (h.cd_alpha2 + wing_induced_drag_per_rad2(h)) * a * a;
   }
   if (w >= 1.0) return fit;
   // Crossflow: normal force ~ sin a |sin a|, axial (skin) force ~ cos a |cos a|,

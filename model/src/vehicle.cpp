@@ -7,6 +7,8 @@ namespace glider::model {
 
 bool has_second_mass(const VehicleParams& v) { return v.second_mass.mass_kg > 0.0; }
 
+bool has_wings(const VehicleParams& v) { return v.hydro.wing_area_m2 > 0.0; }
+
 double dry_mass_kg(const VehicleParams& v) {
   return v.hull_mass_kg + v.offset.mass_kg + v.battery.mass_kg + v.second_mass.mass_kg;
 }
@@ -47,6 +49,12 @@ std::string validate(const VehicleParams& v) {
   if (!(h.cmq_m2 <= 0.0)) return "hydrodynamics.cmq_m2 must not be positive (damping)";
   if (!(h.fit_valid_to_rad > 0.0 && h.crossflow_from_rad > h.fit_valid_to_rad)) {
     return "hydrodynamics: need 0 < fit_valid_to_rad < crossflow_from_rad";
+  }
+  if (has_wings(v) && !(h.wing_aspect_ratio > 0.0 && h.wing_oswald_efficiency > 0.0)) {
+    return "hydrodynamics.wing_area_m2 given: wing_aspect_ratio and wing_oswald_efficiency must be positive";
+  }
+  if (!has_wings(v) && (h.wing_aspect_ratio != 0.0 || h.wing_sweep_rad != 0.0 || h.wing_oswald_efficiency != 0.0)) {
+    return "hydrodynamics.wing_*: the wing keys need wing_area_m2";
   }
   if (!(v.trim_density_kg_m3 > 900.0 && v.trim_density_kg_m3 < 1100.0)) {
     return "buoyancy.trim_density_kg_m3 must be a water density (900..1100)";

@@ -64,6 +64,10 @@ void visit_numbers(VehicleParams& v, Visitor&& visit) {
   visit("hydrodynamics.crossflow_cn90", v.hydro.crossflow_cn90, req, {0.0, 100.0, ""});
   visit("hydrodynamics.fit_valid_to_rad", v.hydro.fit_valid_to_rad, req, {0.01, 1.57, "rad"});
   visit("hydrodynamics.crossflow_from_rad", v.hydro.crossflow_from_rad, req, {0.01, 1.57, "rad"});
+  visit("hydrodynamics.wing_area_m2", v.hydro.wing_area_m2, opt, {0.0, 10.0, "m^2"});
+  visit("hydrodynamics.wing_aspect_ratio", v.hydro.wing_aspect_ratio, opt, {0.0, 50.0, ""});
+  visit("hydrodynamics.wing_sweep_rad", v.hydro.wing_sweep_rad, opt, {0.0, 1.4, "rad"});
+  visit("hydrodynamics.wing_oswald_efficiency", v.hydro.wing_oswald_efficiency, opt, {0.0, 1.0, ""});
   visit("heading.fin_yaw_gain_per_m", v.heading.fin_yaw_gain_per_m, req, {-10.0, 10.0, "1/m"});
   visit("heading.roll_yaw_gain_per_m", v.heading.roll_yaw_gain_per_m, req, {-10.0, 10.0, "1/m"});
   visit("heading.yaw_time_constant_s", v.heading.yaw_time_constant_s, req, {0.01, 1000.0, "s"});
@@ -113,8 +117,10 @@ std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleP
   out.emplace_back("vehicle.name", v.name);
   VehicleParams copy = v;
   const bool second = has_second_mass(v);
-  visit_numbers(copy, [&out, second](const char* key, double& field, Need, const config::Range&) {
+  const bool wings = has_wings(v);
+  visit_numbers(copy, [&out, second, wings](const char* key, double& field, Need, const config::Range&) {
     if (!second && std::string_view(key).starts_with("second_mass.")) return;
+    if (!wings && std::string_view(key).starts_with("hydrodynamics.wing_")) return;
     out.emplace_back(std::string("vehicle.") + key, format_number(field));
   });
   return out;

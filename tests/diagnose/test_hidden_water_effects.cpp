@@ -130,6 +130,19 @@ TEST(DiagnoseHiddenWaterEffects, ThermalExpansionAcrossAThermocline) {
   flown.hull_thermal_expansion_per_k = expansion;
   hidden::FlightSetup deep = setup;
   deep.dive_to_m = 100.0;
+  // The diagnosis refers the expansion to the log's own median temperature
+  // (its constant part is a buoyancy offset, never the expansion). Hidden
+  // about the vehicle's 10 degC, the expansion would also make the glider
+  // a (T_log - 10) V rho lighter in this water - 3 g here, a real buoyancy
+  // offset but below what a log resolves, which a depth profile of vertical
+  // velocity then absorbs together with the expansion. So the glider is
+  // trimmed in this water, as a pilot ballasts it: its expansion is about the
+  // median temperature of a first flight (the second flies the same yos to
+  // within a few hundredths of a degree of that median).
+  flown.hull_reference_temperature_c =
+      diagnose::prepare_observations(
+          flightlog::read_flight_log(fly_and_diagnose(flown, water, "thermal_expansion_trim", deep).log_path))
+          .track.median_temperature_c;
   const Outcome o = fly_and_diagnose(flown, water, "thermal_expansion", deep);
   char hidden_text[64];
   std::snprintf(hidden_text, sizeof hidden_text, "hidden %.4g /K; ", expansion);

@@ -158,7 +158,7 @@ TEST(ConfigFiles, EveryShippedVehicleLoadsAndGlides) {
     CHECK_TRUE_TEXT(trim.trim->within_limits, entry.path().c_str());
     ++count;
   }
-  LONGS_EQUAL(5, count);  // WE01, comet (WE01 as comet flew), Stante's SLOCUM, IIT Madras, USM
+  LONGS_EQUAL(6, count);  // WE01, comet (WE01 as comet flew), the identified shallow Slocum, Stante's, IIT Madras, USM
 }
 
 namespace {
@@ -229,4 +229,30 @@ TEST(ConfigFiles, VehicleFileTextAndLogMetadataRoundTrip) {
   const auto from_log = glider::model::vehicle_from_metadata(entries, "log.csv");
   STRCMP_EQUAL("iitm_lab_glider", from_log.name.c_str());
   DOUBLES_EQUAL(v.ballast.x_m, from_log.ballast.x_m, 0.0);
+}
+
+TEST(ConfigFiles, WingsRoundTripAndStayOutOfWinglessLogs) {
+  const auto v = glider::model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_shallow.toml");
+  const auto back = glider::model::parse_vehicle_text(glider::model::vehicle_file_text(v), "written.toml");
+  DOUBLES_EQUAL(v.hydro.wing_area_m2, back.hydro.wing_area_m2, 0.0);
+  DOUBLES_EQUAL(v.hydro.wing_aspect_ratio, back.hydro.wing_aspect_ratio, 0.0);
+  DOUBLES_EQUAL(v.hydro.wing_sweep_rad, back.hydro.wing_sweep_rad, 0.0);
+  DOUBLES_EQUAL(v.hydro.wing_oswald_efficiency, back.hydro.wing_oswald_efficiency, 0.0);
+  // A vehicle without wings logs no wing keys: its logs are those it wrote before the keys existed.
+  for (const auto& [key, value] : glider::model::vehicle_metadata(glider::model::load_vehicle_file(kVehicle))) {
+    CHECK_TEXT(key.find("wing_") == std::string::npos, key.c_str());
+  }
+}
+
+TEST(ConfigFiles, WingKeysNeedEachOther) {
+  std::string no_area = vehicle;
+  replace(no_area, "cd0 = 0.214", "cd0 = 0.214\nwing_aspect_ratio = 7.0");
+  STRCMP_CONTAINS("the wing keys need wing_area_m2", vehicle_error(no_area).c_str());
+  std::string no_shape = vehicle;
+  replace(no_shape, "cd0 = 0.214", "cd0 = 0.214\nwing_area_m2 = 0.1");
+  STRCMP_CONTAINS("wing_aspect_ratio and wing_oswald_efficiency must be positive", vehicle_error(no_shape).c_str());
+  std::string swept_back = vehicle;
+  replace(swept_back, "cd0 = 0.214", "cd0 = 0.214\nwing_sweep_rad = 2.0");
+  STRCMP_CONTAINS("hydrodynamics.wing_sweep_rad: value 2 is outside the allowed range [0, 1.4] rad",
+                  vehicle_error(swept_back).c_str());
 }

@@ -685,6 +685,7 @@ const char* to_string(FlightModelKind kind) { return kind == FlightModelKind::kD
 Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, const DiagnoseOptions& options) {
   Diagnosis d;
   d.vehicle = given.name;
+  d.thermal_reference_c = obs.track.median_temperature_c;
   model::VehicleParams nominal = given;
   if (const auto rho = retrim_density(given, obs, options.retrim_tolerance_kg_m3)) {
     d.retrimmed_from_kg_m3 = given.trim_density_kg_m3;

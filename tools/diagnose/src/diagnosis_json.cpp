@@ -62,6 +62,7 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                         {"gain", f.gain},
                         {"fitted", f.fitted}});
     if (f.heldout_rms_battpos_in) findings.back()["heldout_rms_battpos_in"] = *f.heldout_rms_battpos_in;
+    if (f.effect == Effect::kThermalExpansion) findings.back()["reference_temperature_c"] = d.thermal_reference_c;
   }
   j["findings"] = findings;
   j["cause"] = d.cause;

@@ -40,7 +40,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
   if (depth_rate != nullptr) depth_rate->assign(samples.size(), kNaN);
   if (speed != nullptr) speed->assign(samples.size(), kNaN);
   if (!(x[static_cast<std::size_t>(Effect::kDragChange)] > 0.0)) return;  // no negative drag
-  const model::VehicleParams v = apply(nominal_, x);
+  const model::VehicleParams v = apply(nominal_, x, track_.median_temperature_c);
   const model::PrescribedPitchDynamics dynamics(v);
   const double lag_s = v.ballast.lag_s;
   const double constant_density = v.trim_density_kg_m3 + x[static_cast<std::size_t>(Effect::kWaterDensity)];

@@ -33,11 +33,18 @@ const std::array<EffectInfo, kEffectCount> kInfo{{
 
 }  // namespace
 
-model::VehicleParams apply(model::VehicleParams v, const EffectValues& x) {
+model::VehicleParams apply(model::VehicleParams v, const EffectValues& x, double log_temperature_c) {
   v.buoyancy_offset_kg += x[0] * 1e-3;
   v.hydro.cd0 *= x[1];
   v.hull_compressibility_per_pa += x[2];
-  v.hull_thermal_expansion_per_k += x[3];
+  // The nominal's a0 (T - T0) plus the effect's a (T - T_log) is one
+  // expansion (a0 + a)(T - T0') with T0' = (a0 T0 + a T_log) / (a0 + a):
+  // T_log itself for a vehicle without a nominal expansion.
+  const double a0 = v.hull_thermal_expansion_per_k, a = x[3];
+  if (a != 0.0 && std::isfinite(log_temperature_c) && a0 + a != 0.0) {
+    v.hull_reference_temperature_c = (a0 * v.hull_reference_temperature_c + a * log_temperature_c) / (a0 + a);
+  }
+  v.hull_thermal_expansion_per_k = a0 + a;
   v.battery.x_at_zero_m += in_to_m(x[6]);  // pitch trim: the battery's zero moves forward
   v.ballast.lag_s += std::abs(x[7]);       // a lag has no sign: |value| keeps the fit smooth through 0
   return v;
@@ -73,7 +80,7 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
   if (!(x[1] > 0.0)) return;  // no negative drag
   // A negative compressibility relative to nominal is allowed: the model's
   // water is incompressible, so "lighter with depth" is a real possibility.
-  const model::VehicleParams v = apply(nominal_, x);
+  const model::VehicleParams v = apply(nominal_, x, obs_.track.median_temperature_c);
   const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
   const model::PitchGlideSolver solver(v.hydro);
   for (std::size_t k = 0; k < samples.size(); ++k) {
@@ -93,7 +100,7 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
 
 double FlightModel::equilibrium_pitch_rad(std::size_t i, const EffectValues& values) const {
   if (!std::isfinite(obs_.battpos_in[i])) return kNaN;
-  const model::VehicleParams v = apply(nominal_, values);
+  const model::VehicleParams v = apply(nominal_, values, obs_.track.median_temperature_c);
   const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
   model::MassInputs masses;
   masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
@@ -103,7 +110,7 @@ double FlightModel::equilibrium_pitch_rad(std::size_t i, const EffectValues& val
 }
 
 double FlightModel::required_battpos_in(std::size_t i, const EffectValues& values) const {
-  const model::VehicleParams v = apply(nominal_, values);
+  const model::VehicleParams v = apply(nominal_, values, obs_.track.median_temperature_c);
   const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
   model::MassInputs masses;
   masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);

@@ -59,6 +59,10 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
   for (const auto& f : d.findings) {
     std::printf("    %-24s %+.4g %s  (95%% CI %.4g .. %.4g)  held-out RMS %.4f m/s, gain %.0f %%\n", info(f.effect).id,
                 f.value, info(f.effect).unit, f.ci95_low, f.ci95_high, f.heldout_rms_m_s, 100.0 * f.gain);
+    if (f.effect == glider::diagnose::Effect::kThermalExpansion) {
+      std::printf("      (about the log's median temperature, %.2f degC: the buoyancy there is the offset's)\n",
+                  d.thermal_reference_c);
+    }
   }
   std::printf(
       "  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f "
@@ -238,7 +242,7 @@ int main(int argc, char** argv) {
         write_plots(report_dir, vehicle, obs, d, log_path, options);
         std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json")
             << to_json(d, vehicle_source, wall_s).dump(2) << '\n';
-        glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended);
+        glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended, d.thermal_reference_c);
         extended.name = vehicle.name + "_extended";
         extended.description =
             "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();

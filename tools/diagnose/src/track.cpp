@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/track.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -187,6 +188,16 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
         time[i] - run_start_s >= options.spin_up_s) {
       track.scored.push_back(k);
     }
+  }
+  std::vector<double> temperatures;
+  for (double t : track.temperature_c) {
+    if (std::isfinite(t)) temperatures.push_back(t);
+  }
+  track.median_temperature_c = NAN;
+  if (!temperatures.empty()) {
+    const auto middle = temperatures.begin() + static_cast<long>(temperatures.size() / 2);
+    std::nth_element(temperatures.begin(), middle, temperatures.end());
+    track.median_temperature_c = *middle;
   }
   return track;
 }

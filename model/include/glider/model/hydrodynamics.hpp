@@ -16,6 +16,17 @@ struct ForceCoefficients {
 
 ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad);
 
+// The wings' share (0 without wings), by the reference area: the lift slope
+// of a swept finite wing, a_w = 2 pi AR / (2 + sqrt(AR^2 (1 + tan^2 sweep) + 4))
+// (the Helmbold/DATCOM form Merckelbach et al. 2019 use in gliderflight), and
+// its induced drag C_L^2 / (pi e AR), i.e. a_w^2 / (pi e AR) per rad^2; both
+// times wing area / reference area.
+double wing_lift_slope_per_rad(const Hydrodynamics& h);
+double wing_induced_drag_per_rad2(const Hydrodynamics& h);
+
+// The whole vehicle's lift slope at zero angle (hull cl_alpha + wings).
+double lift_slope_per_rad(const Hydrodynamics& h);
+
 // Viscous pitching moment coefficient (m), without damping and without Munk:
 // cm0 + cm_alpha a inside the fit, cm_alpha sin a cos a in crossflow.
 double moment_coefficient(const Hydrodynamics& h, double alpha_rad);

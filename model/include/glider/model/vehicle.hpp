@@ -53,6 +53,13 @@ struct Hydrodynamics {
   double crossflow_cn90 = 0.0;      // normal-force coefficient broadside (a = 90 deg)
   double fit_valid_to_rad = 0.0;    // the fits above hold up to |a| = this ...
   double crossflow_from_rad = 0.0;  // ... and crossflow alone beyond this
+  // Optional wings (area 0 = none): their lift slope and induced drag come
+  // from the planform (hydrodynamics.hpp) and add to cl_alpha and cd_alpha2,
+  // which are then the hull's alone.
+  double wing_area_m2 = 0.0;
+  double wing_aspect_ratio = 0.0;
+  double wing_sweep_rad = 0.0;  // of the quarter chord
+  double wing_oswald_efficiency = 0.0;
 };
 
 // Heading in the spirit of the vertical-plane model (see dynamics.hpp): the
@@ -95,6 +102,7 @@ struct VehicleParams {
 };
 
 bool has_second_mass(const VehicleParams& v);
+bool has_wings(const VehicleParams& v);  // hydrodynamics.wing_area_m2 > 0
 
 // Mass of the vehicle at zero pumped volume (hull + offset + moving masses).
 double dry_mass_kg(const VehicleParams& v);

@@ -79,6 +79,9 @@ struct Diagnosis {
   // Set when the log's water was far from the vehicle's trim density: the
   // vehicle was taken as ballasted for the log's median density.
   std::optional<double> retrimmed_from_kg_m3, retrimmed_to_kg_m3;
+  // The log's median temperature (NaN without one): the thermal_expansion
+  // effect is about it (apply's log_temperature_c).
+  double thermal_reference_c = 0.0;
 };
 
 struct DiagnoseOptions {

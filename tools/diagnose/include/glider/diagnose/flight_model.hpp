@@ -58,7 +58,10 @@ struct VerticalVelocityProfile {
 // The nominal vehicle with the vehicle effects applied (buoyancy offset,
 // drag, hull compressibility and thermal expansion, pitch trim); the water
 // effects (vertical velocity, density) belong to the environment.
-model::VehicleParams apply(model::VehicleParams nominal, const EffectValues& values);
+// The thermal expansion is about the log's own (median) temperature
+// `log_temperature_c`: it explains how the volume varies with the water's
+// temperature, never a constant that a buoyancy offset already names.
+model::VehicleParams apply(model::VehicleParams nominal, const EffectValues& values, double log_temperature_c);
 
 // Density at the deepest sample with a finite density, minus `nominal`
 // (the water_density value); NaN if there is none.

@@ -25,6 +25,9 @@ struct Track {
   std::vector<std::size_t> scored;     // samples whose depth rate the fit compares (sorted)
   double rate_half_window_s = 0.0, max_gap_s = 0.0;  // how depth_rate_m_s was estimated
   double spin_up_s = 0.0;  // from the start of each run: not scored (the model's start state is fitted there)
+  // Median of the logged temperatures (NaN without any): the reference of the
+  // thermal_expansion effect (flight_model.hpp's apply).
+  double median_temperature_c = 0.0;
   std::size_t size() const { return time_s.size(); }
   std::size_t run_end(std::size_t run) const { return run + 1 < run_first.size() ? run_first[run + 1] : size(); }
 };
