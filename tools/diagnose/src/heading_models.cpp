@@ -73,8 +73,8 @@ std::vector<std::size_t> servo_rows(const HeadingTrack& t) {
 std::vector<std::size_t> autopilot_rows(const HeadingTrack& t) {
   std::vector<std::size_t> rows;
   for (std::size_t i = 1; i < t.row_time_s.size(); ++i) {
-    const bool active = std::isfinite(t.row_command_rad[i]) && t.row_depth_m[i] >= kSubmergedM;
-    const bool was_active = std::isfinite(t.row_command_rad[i - 1]) && t.row_depth_m[i - 1] >= kSubmergedM;
+    const bool active = std::isfinite(t.row_command_rad[i]) && t.row_gliding[i];
+    const bool was_active = std::isfinite(t.row_command_rad[i - 1]) && t.row_gliding[i - 1];
     if (active && was_active && std::isfinite(t.row_fin_command_rad[i]) && std::isfinite(t.row_heading_rad[i]) &&
         t.row_yo[i] >= 0) {
       rows.push_back(i);
@@ -95,34 +95,33 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
   double fin = kNaN;
   double command = 0.0;
   std::size_t next_command = 0;  // first row whose command has not acted yet
-  auto take_commands = [&](double now) {
-    while (next_command < n && t.row_time_s[next_command] + delay < now) {
+  // Moves the fin to `until`, switching to each command exactly when it
+  // acts (row time + dead time): the prediction is continuous in the delay.
+  double clock = t.row_time_s.empty() ? 0.0 : t.row_time_s.front();
+  auto advance = [&](double until) {
+    while (true) {
+      const bool switch_first = next_command < n && t.row_time_s[next_command] + delay < until;
+      const double to = switch_first ? std::max(clock, t.row_time_s[next_command] + delay) : until;
+      if (std::isfinite(fin)) fin += std::clamp(command - fin, -rate * (to - clock), rate * (to - clock));
+      clock = to;
+      if (!switch_first) return;
       if (std::isfinite(t.row_fin_command_rad[next_command])) command = t.row_fin_command_rad[next_command];
       ++next_command;
     }
   };
   for (std::size_t i = 0; i < n; ++i) {
     const double now = t.row_time_s[i];
-    if (i > 0 && std::isfinite(fin) && now - t.row_time_s[i - 1] <= t.max_gap_s) {
-      double s = t.row_time_s[i - 1];
-      while (s < now) {
-        const double h = std::min(kStepS, now - s);
-        take_commands(s + h);
-        fin += std::clamp(command - fin, -rate * h, rate * h);
-        s += h;
-      }
-      predicted[i] = fin;
-    } else {
-      take_commands(now);
-    }
-    if (!std::isfinite(fin) || (i > 0 && now - t.row_time_s[i - 1] > t.max_gap_s)) fin = t.row_fin_rad[i];
+    const bool continuous = i > 0 && std::isfinite(fin) && now - t.row_time_s[i - 1] <= t.max_gap_s;
+    advance(now);
+    if (continuous) predicted[i] = fin;
+    if (!continuous) fin = t.row_fin_rad[i];
   }
   pick(predicted, rows, out);
 }
 
 // Slocum's law replayed on the logged heading: the error and rate are read
-// a delay before each command; the integrator starts at zero whenever the
-// autopilot takes over again (at every dive from the surface).
+// a delay before each command; the integrator runs from the log's start and
+// is held while the fin is centred (surface, turns), as the firmware's.
 void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& values,
                            std::span<const std::size_t> rows, std::vector<double>& out) {
   const double kp = value(values, HeadingEffect::kAutopilotGain);
@@ -136,10 +135,8 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
   double integrator = 0.0;
   double last_heading = kNaN;
   for (std::size_t i = 0; i < n; ++i) {
-    const bool active = std::isfinite(t.row_command_rad[i]) && t.row_depth_m[i] >= kSubmergedM;
-    if (!active) {
-      integrator = 0.0;
-      last_heading = kNaN;
+    if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
+      last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
       continue;
     }
     const double when = time[i] - delay;
@@ -152,7 +149,7 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
     double rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
     if (std::abs(rate) < settings.rate_deadband_rad_s) rate = 0.0;
     last_heading = heading;
-    integrator = std::clamp(integrator + ki * error * dt, -fin_max, fin_max);
+    integrator += ki * error * dt;  // unconditional, as Slocum's: only the output is clamped
     predicted[i] = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
   }
   pick(predicted, rows, out);

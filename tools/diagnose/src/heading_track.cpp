@@ -103,6 +103,14 @@ HeadingTrack prepare_heading_track(const flightlog::FlightLog& log, const model:
   t.row_fin_command_rad = fin_command;
   t.row_depth_m = c.depth_m;
   t.row_yo = c.yo;
+  const flightlog::Column* state = log.find("m_depth_state");
+  const flightlog::Column state_held =
+      state != nullptr ? flightlog::forward_fill(time, *state, gap) : flightlog::Column(time.size(), kNaN);
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    const bool by_phase =
+        (c.phase[k] == flightlog::Phase::kDive || c.phase[k] == flightlog::Phase::kClimb) && c.depth_m[k] >= 1.0;
+    t.row_gliding.push_back(state != nullptr ? (state_held[k] == 1.0 || state_held[k] == 2.0) : by_phase);
+  }
   t.fin_max_rad = logged_setting(log, "f_fin_safety_max").value_or(vehicle.heading.fin_max_rad);
 
   const flightlog::Column* roll_column = log.find("m_roll");

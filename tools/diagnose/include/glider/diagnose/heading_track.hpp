@@ -42,6 +42,10 @@ struct HeadingTrack {
   std::vector<double> row_time_s, row_heading_rad, row_command_rad, row_fin_rad, row_fin_command_rad, row_depth_m;
   std::vector<double> row_fin_filled_rad;  // m_fin interpolated across gaps up to max_gap_s (the yaw model's input)
   std::vector<int> row_yo;
+  // The autopilot flies this row: m_depth_state diving (1) or climbing (2)
+  // where the log has it (the flight computer's own phase), else a dive or
+  // climb of the depth below 1 m.
+  std::vector<bool> row_gliding;
 
   bool roll_logged = false;
   double median_roll_rad = 0.0;  // over the runs (NaN-free)
