@@ -12,6 +12,7 @@
 #include <unsupported/Eigen/NumericalDiff>
 
 #include "glider/diagnose/dynamic_flight_model.hpp"
+#include "glider/diagnose/thin.hpp"
 #include "glider/units.hpp"
 
 namespace glider::diagnose {
@@ -476,15 +477,6 @@ std::optional<double> retrim_density(const model::VehicleParams& nominal, const 
   const double median = rho[rho.size() / 2];
   if (std::abs(median - nominal.trim_density_kg_m3) <= tolerance_kg_m3) return std::nullopt;
   return median;
-}
-
-// Every k-th sample so that at most `max_samples` remain (the fits' cost).
-void thin(std::vector<std::size_t>& samples, std::size_t max_samples) {
-  if (samples.size() <= max_samples) return;
-  const std::size_t stride = (samples.size() + max_samples - 1) / max_samples;
-  std::vector<std::size_t> kept;
-  for (std::size_t k = 0; k < samples.size(); k += stride) kept.push_back(samples[k]);
-  samples = std::move(kept);
 }
 
 // The scored samples of the depth window, split into the yos fitted and

@@ -8,11 +8,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/diagnosis_json.hpp"
+#include "glider/diagnose/heading_report.hpp"
 #include "glider/diagnose/tool_inputs.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -148,6 +150,7 @@ int main(int argc, char** argv) {
   bool json = false;
   std::vector<std::string> renames;
   std::string flight_model = "dynamic";
+  std::string plane = "both";
   std::vector<std::string> fit_only;
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
@@ -172,6 +175,10 @@ int main(int argc, char** argv) {
                  "flight model fitted: dynamic (the project's dynamics driven by the measured pitch, turns "
                  "included) or steady (steady glides at the measured pitch; faster, blind to turns)")
       ->check(CLI::IsMember({"dynamic", "steady"}));
+  app.add_option("--plane", plane,
+                 "which plane to diagnose: vertical (depth rate), heading (servo, yaw, autopilot) or both")
+      ->check(CLI::IsMember({"vertical", "heading", "both"}))
+      ->capture_default_str();
   app.add_option("--fit", fit_only,
                  "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
       ->delimiter(',');
@@ -189,11 +196,26 @@ int main(int argc, char** argv) {
     glider::diagnose::DiagnoseOptions options;
     options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
                                              : glider::diagnose::FlightModelKind::kDynamic;
-    try {
-      options.fit_only = glider::diagnose::depth_rate_effects(fit_only);
-    } catch (const std::invalid_argument& error) {
-      return tool.fail(glider::cli::kUsage, error.what());
+    glider::diagnose::HeadingDiagnoseOptions heading_options;
+    std::vector<std::string> depth_rate_ids;
+    for (const std::string& id : fit_only) {
+      bool heading_id = false;
+      for (std::size_t i = 0; i < glider::diagnose::kHeadingEffectCount; ++i) {
+        const auto e = static_cast<glider::diagnose::HeadingEffect>(i);
+        if (id == glider::diagnose::info(e).id) {
+          heading_options.fit_only.push_back(e);
+          heading_id = true;
+        }
+      }
+      if (!heading_id) depth_rate_ids.push_back(id);
     }
+    try {
+      options.fit_only = glider::diagnose::depth_rate_effects(depth_rate_ids);
+    } catch (const std::invalid_argument& error) {
+      return tool.fail(glider::cli::kUsage, std::string(error.what()) + " (nor a heading effect id)");
+    }
+    const bool vertical_plane = plane != "heading";
+    const bool heading_plane = plane != "vertical";
     if (window.size() == 2) {
       options.window_min_m = window[0];
       options.window_max_m = window[1];
@@ -229,20 +251,45 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "glider-diagnose: %.0f s, %zu rows: model fit %zu (%s)\n", elapsed_s, rows, fits,
                      fitting.c_str());
       };
-      const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log, observation_options);
-      const Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
+      // The heading plane first: a log it cannot read is said so, and the vertical plane still runs.
+      std::optional<glider::diagnose::HeadingDiagnosis> heading;
+      ordered_json heading_object;
+      if (heading_plane) {
+        try {
+          heading = glider::diagnose::diagnose_heading(vehicle, log, heading_options);
+          heading_object = glider::diagnose::heading_json(*heading);
+        } catch (const glider::diagnose::HeadingUnavailable& why) {
+          if (!vertical_plane) throw;
+          std::fprintf(stderr, "glider-diagnose: heading plane: %s\n", why.what());
+          heading_object = glider::diagnose::heading_unavailable_json(why.what());
+        }
+      }
+      std::optional<glider::diagnose::Observations> obs;
+      std::optional<Diagnosis> vertical;
+      if (vertical_plane) {
+        obs = glider::diagnose::prepare_observations(log, observation_options);
+        vertical = glider::diagnose::diagnose(vehicle, *obs, options);
+      }
       const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      auto document = [&] {
+        ordered_json j = vertical ? to_json(*vertical, vehicle_source, wall_s)
+                                  : ordered_json{{"vehicle", vehicle.name}, {"vehicle_source", vehicle_source}};
+        if (heading_plane) j["heading"] = heading_object;
+        return j;
+      };
       if (json) {
-        std::printf("%s\n", to_json(d, vehicle_source, wall_s).dump().c_str());
+        std::printf("%s\n", document().dump().c_str());
       } else {
-        print_text(d, log_path, vehicle_source, wall_s);
+        if (vertical) print_text(*vertical, log_path, vehicle_source, wall_s);
+        if (heading) std::printf("%s", glider::diagnose::heading_text(*heading).c_str());
       }
       if (!report_dir.empty()) {
         std::filesystem::create_directories(report_dir);
-        write_plots(report_dir, vehicle, obs, d, log_path, options);
-        std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json")
-            << to_json(d, vehicle_source, wall_s).dump(2) << '\n';
-        glider::model::VehicleParams extended = glider::diagnose::apply(vehicle, d.extended, d.thermal_reference_c);
+        if (vertical) write_plots(report_dir, vehicle, *obs, *vertical, log_path, options);
+        std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << document().dump(2) << '\n';
+        glider::model::VehicleParams extended =
+            vertical ? glider::diagnose::apply(vehicle, vertical->extended, vertical->thermal_reference_c) : vehicle;
+        if (heading) extended = glider::diagnose::apply(extended, *heading);
         extended.name = vehicle.name + "_extended";
         extended.description =
             "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();

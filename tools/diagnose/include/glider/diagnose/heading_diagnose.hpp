@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The science loop in the heading plane: each link of the heading loop
+// (servo, vehicle, autopilot; heading_effects.hpp) replayed on the log with
+// its nominal model, its effects selected on alternate yos and scored on the
+// others, the named cause, the extended vehicle and the autopilot flown.
+#include <string>
+#include <vector>
+
+#include "glider/diagnose/heading_fit.hpp"
+#include "glider/diagnose/heading_models.hpp"
+#include "glider/diagnose/heading_track.hpp"
+#include "glider/flightlog/flight_log.hpp"
+#include "glider/model/vehicle.hpp"
+
+namespace glider::diagnose {
+
+struct HeadingDiagnosis {
+  std::string vehicle;
+  AutopilotSettings configured;  // the law the log's header states
+  double fin_max_rad = 0.0;
+  bool roll_logged = false;
+  double logged_roll_rad = 0.0;  // median m_roll on the glides used
+  std::size_t runs = 0;          // glides under a heading command
+  LinkFit servo, yaw, autopilot;
+  HeadingValues values{};      // every link's nominal with its findings
+  std::string cause = "none";  // the finding with the largest gain of its link
+  // The loop's dead time by where it sits (s): heading reading -> c_fin
+  // (the autopilot's cycle), c_fin -> m_fin (the servo), m_fin -> yaw
+  // response (compass filtering, the vehicle).
+  double delay_autopilot_s = 0.0, delay_servo_s = 0.0, delay_after_fin_s = 0.0;
+};
+
+struct HeadingDiagnoseOptions {
+  HeadingTrackOptions track;
+  std::size_t max_fit_samples = 4000;   // per half, even stride (the fits' cost)
+  std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
+};
+
+// The configured autopilot from the log's settings_at_file_open
+// (u_hd_fin_ap_gain, _igain, _dgain, u_heading_rate_deadband).
+AutopilotSettings configured_autopilot(const flightlog::FlightLog& log);
+
+// Throws HeadingUnavailable (names what the log lacks).
+HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
+                                  const HeadingDiagnoseOptions& options = {});
+
+// The nominal vehicle with the vehicle and servo findings: fin dead time =
+// servo + after-fin delay, fin yaw gain x effectiveness, yaw time constant,
+// roll = the log's median roll + the offset found.
+model::VehicleParams apply(model::VehicleParams nominal, const HeadingDiagnosis& d);
+
+}  // namespace glider::diagnose

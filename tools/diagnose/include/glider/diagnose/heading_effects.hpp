@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The heading plane's vocabulary (docs/diagnose/README.md, "Heading plane"):
+// what can make the simulated heading differ from a log's. Three links of
+// the loop, each scored on what the log measures of it:
+// - the fin servo, c_fin -> m_fin (both logged: measured directly);
+// - the vehicle, m_fin -> yaw rate (the heading's slope);
+// - the autopilot actually flown, heading error -> c_fin (the log's own
+//   commands against the law its header configures).
+#include <array>
+#include <cstddef>
+
+namespace glider::diagnose {
+
+enum class HeadingEffect : int {
+  kFinDelay = 0,       // servo: dead time c_fin -> m_fin (s; nominal: the vehicle file's)
+  kYawDelay,           // vehicle: dead time m_fin -> yaw response (compass filter, vehicle) (s)
+  kFinEffectiveness,   // vehicle: factor on the yaw rate per fin angle and speed
+  kRollOffset,         // vehicle: static roll the log's m_roll does not show (rad)
+  kYawTimeConstant,    // vehicle: first-order lag of the yaw rate (s; nominal: the vehicle file's)
+  kAutopilotGain,      // autopilot: proportional gain flown (rad of fin per rad of error)
+  kAutopilotIntegral,  // autopilot: integral gain flown (rad of fin per rad s)
+  kAutopilotDgain,     // autopilot: gain on the heading rate flown (rad of fin per rad/s)
+  kAutopilotDelay,     // autopilot: heading reading -> c_fin (the loop's cycle) (s)
+  kCount
+};
+constexpr std::size_t kHeadingEffectCount = static_cast<std::size_t>(HeadingEffect::kCount);
+
+// Which measured signal an effect explains.
+enum class HeadingLink { kServo, kVehicle, kAutopilot };
+
+struct HeadingEffectInfo {
+  const char* id;
+  const char* unit;
+  HeadingLink link;
+  double scale;  // typical size, for the optimiser's conditioning
+  double plausible_min, plausible_max;
+  bool magnitude;  // fitted as |x| (a delay or time constant has no sign)
+};
+
+const HeadingEffectInfo& info(HeadingEffect effect);
+const char* to_string(HeadingLink link);
+
+// Values in the reported units; the nominal ones come from the vehicle file
+// and the log's configured autopilot (not constants: see heading_diagnose.hpp).
+using HeadingValues = std::array<double, kHeadingEffectCount>;
+
+inline double& at(HeadingValues& v, HeadingEffect e) { return v[static_cast<std::size_t>(e)]; }
+inline double at(const HeadingValues& v, HeadingEffect e) { return v[static_cast<std::size_t>(e)]; }
+
+}  // namespace glider::diagnose

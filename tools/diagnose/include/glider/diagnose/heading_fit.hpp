@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Selection of heading effects for one link of the loop: the nominal
+// model's held-out error, each candidate fitted (Levenberg-Marquardt) on the
+// fitted yos and scored on the held-out ones, forward selection while the
+// held-out error drops by the margins and the BIC agrees, a backward check
+// of the joint fit, 95 % intervals from the Jacobian with the noise counted
+// over the effective number of independent samples.
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "glider/diagnose/heading_effects.hpp"
+
+namespace glider::diagnose {
+
+// Residuals (model - measured) at `samples` with these values (every effect
+// not being fitted stays at its nominal value).
+using HeadingResiduals =
+    std::function<void(const HeadingValues& values, std::span<const std::size_t> samples, std::vector<double>& out)>;
+
+struct HeadingFinding {
+  HeadingEffect effect = HeadingEffect::kFinDelay;
+  double value = 0.0, nominal = 0.0;
+  double ci95_low = 0.0, ci95_high = 0.0;
+  double heldout_rms = 0.0;  // with this and the stronger findings
+  double gain = 0.0;         // fraction of the baseline held-out error removed so far
+};
+
+struct LinkFit {
+  HeadingLink link = HeadingLink::kVehicle;
+  std::vector<HeadingEffect> candidates;
+  std::size_t samples = 0, train_samples = 0, heldout_samples = 0;
+  double baseline_rms = 0.0, baseline_rms_dive = 0.0, baseline_rms_climb = 0.0;  // all samples
+  double baseline_heldout_rms = 0.0;
+  std::vector<HeadingFinding> findings;  // strongest first
+  HeadingValues values{};                // nominal with the findings
+  double extended_rms = 0.0, extended_heldout_rms = 0.0;
+  double gain = 0.0;
+};
+
+struct HeadingSelectOptions {
+  double min_relative_improvement = 0.03;
+  double min_absolute_improvement = 0.0;  // in the link's unit (rad, rad/s)
+  std::vector<HeadingEffect> fit_only;    // fit exactly these (no selection)
+  bool select = true;                     // false (and no fit_only): the baseline alone
+};
+
+struct LinkSamples {
+  std::vector<std::size_t> all, train, heldout, dives, climbs;
+};
+
+LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect>& candidates,
+                               const HeadingValues& nominal, const HeadingResiduals& residuals,
+                               const LinkSamples& samples, const HeadingSelectOptions& options);
+
+}  // namespace glider::diagnose

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// What the heading plane works on: the log's steady glides under a heading
+// command, grouped in runs (one per glide), with the speed through the water
+// and the lift factor the yaw model needs, and the measured yaw rate; plus
+// the whole log's heading, command and fin rows for the servo and the
+// autopilot, which act at every cycle.
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "glider/flightlog/flight_log.hpp"
+#include "glider/flightlog/phases.hpp"
+#include "glider/model/vehicle.hpp"
+
+namespace glider::diagnose {
+
+// The log cannot be diagnosed in the heading plane (names what is missing).
+class HeadingUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct HeadingTrack {
+  // One entry per glide sample used, runs back to back.
+  std::vector<double> time_s;          // s from the log's first row
+  std::vector<double> heading_rad;     // m_heading, unwrapped along the run
+  std::vector<double> speed_m_s;       // |depth rate| / |sin(glide path at the logged pitch)|
+  std::vector<double> lift_factor;     // a_eff = C_L / cl_alpha at that glide's angle of attack
+  std::vector<double> roll_rad;        // the run's median m_roll (the vehicle's roll where the log has none)
+  std::vector<double> yaw_rate_rad_s;  // measured: the slope of heading_rad (estimator of track.hpp)
+  std::vector<flightlog::Phase> phase;
+  std::vector<int> yo;
+  std::vector<std::size_t> run_first;
+  std::vector<std::size_t> scored;  // samples compared (after each run's settling)
+  double rate_half_window_s = 0.0, max_gap_s = 0.0;
+
+  // Every log row (NaN where not logged): the servo and the autopilot.
+  std::vector<double> row_time_s, row_heading_rad, row_command_rad, row_fin_rad, row_fin_command_rad, row_depth_m;
+  std::vector<double> row_fin_filled_rad;  // m_fin interpolated across gaps up to max_gap_s (the yaw model's input)
+  std::vector<int> row_yo;
+  // The autopilot flies this row: m_depth_state diving (1) or climbing (2)
+  // where the log has it (the flight computer's own phase), else a dive or
+  // climb of the depth below 1 m.
+  std::vector<bool> row_gliding;
+
+  bool roll_logged = false;
+  double median_roll_rad = 0.0;  // over the runs (NaN-free)
+  double fin_max_rad = 0.0;      // the log's f_fin_safety_max, else the vehicle's
+  std::size_t size() const { return time_s.size(); }
+  std::size_t run_end(std::size_t run) const { return run + 1 < run_first.size() ? run_first[run + 1] : size(); }
+};
+
+struct HeadingTrackOptions {
+  double min_depth_m = 2.0;
+  double min_pitch_rad = 0.1745;  // flatter is no steady glide (the speed estimate fails)
+  double settle_s = 20.0;         // not scored after a run starts
+  double min_run_s = 60.0;
+  double max_gap_s = 30.0;
+  double rate_half_window_s = 5.0;  // the yaw rate: slope of the heading over +-this
+};
+
+// A setting the log states in its `settings_at_file_open` metadata
+// ("u_hd_fin_ap_gain=1.5 ..."), as a Slocum log records them at file open.
+std::optional<double> logged_setting(const flightlog::FlightLog& log, std::string_view name);
+
+// Throws HeadingUnavailable when the log lacks m_heading, c_heading (with
+// values under water), m_fin or c_fin, or has no glide under a heading
+// command; flightlog::FlightLogError as the vertical plane for bad rows.
+HeadingTrack prepare_heading_track(const flightlog::FlightLog& log, const model::VehicleParams& vehicle,
+                                   const HeadingTrackOptions& options = {});
+
+}  // namespace glider::diagnose

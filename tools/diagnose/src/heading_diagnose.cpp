@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/diagnose/heading_diagnose.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "glider/diagnose/thin.hpp"
+
+namespace glider::diagnose {
+namespace {
+
+// Plausible ranges: a dead time beyond a minute is a broken servo or loop,
+// not a lag; a fin with a tenth or ten times the assumed authority is a
+// different vehicle; a roll of 20 deg would show in any attitude sensor; an
+// autopilot gain beyond 5 rad/rad saturates the fin at a degree of error.
+const std::array<HeadingEffectInfo, kHeadingEffectCount> kInfo{{
+    {"fin_delay", "s", HeadingLink::kServo, 2.0, 0.0, 60.0, true},
+    {"yaw_delay", "s", HeadingLink::kVehicle, 2.0, 0.0, 60.0, true},
+    {"fin_effectiveness", "ratio", HeadingLink::kVehicle, 0.2, 0.1, 10.0, false},
+    {"roll_offset", "rad", HeadingLink::kVehicle, 0.02, -0.35, 0.35, false},
+    {"yaw_time_constant", "s", HeadingLink::kVehicle, 2.0, 0.05, 60.0, true},
+    {"autopilot_gain", "rad/rad", HeadingLink::kAutopilot, 0.2, 0.0, 5.0, false},
+    {"autopilot_integral", "1/s", HeadingLink::kAutopilot, 0.005, -0.2, 0.2, false},
+    {"autopilot_dgain", "s", HeadingLink::kAutopilot, 1.0, -30.0, 30.0, false},
+    {"autopilot_delay", "s", HeadingLink::kAutopilot, 2.0, 0.0, 60.0, true},
+}};
+
+// A finding must also cut the held-out error by this much (the link's unit):
+// a tenth of a degree of fin, a hundredth of a degree per second of yaw.
+double min_absolute_improvement(HeadingLink link) { return link == HeadingLink::kVehicle ? 0.0002 : 0.002; }
+
+// Alternate yos fit and are held out; phases from the depth's direction.
+LinkSamples split(const std::vector<std::size_t>& all, const std::vector<int>& yo, const std::vector<bool>& diving,
+                  std::size_t max_samples) {
+  LinkSamples s;
+  s.all = all;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const std::size_t i = all[k];
+    (yo[i] % 2 == 0 ? s.train : s.heldout).push_back(i);
+    (diving[k] ? s.dives : s.climbs).push_back(i);
+  }
+  thin(s.train, max_samples);
+  thin(s.heldout, max_samples);
+  return s;
+}
+
+std::vector<HeadingEffect> effects_of(HeadingLink link, const std::vector<HeadingEffect>& among) {
+  std::vector<HeadingEffect> out;
+  for (HeadingEffect e : among) {
+    if (info(e).link == link) out.push_back(e);
+  }
+  return out;
+}
+
+std::vector<HeadingEffect> all_effects() {
+  std::vector<HeadingEffect> out;
+  for (std::size_t i = 0; i < kHeadingEffectCount; ++i) out.push_back(static_cast<HeadingEffect>(i));
+  return out;
+}
+
+// Residuals of a prediction against a measured series.
+HeadingResiduals against(
+    std::function<void(const HeadingValues&, std::span<const std::size_t>, std::vector<double>&)> predict,
+    const std::vector<double>& measured) {
+  return [predict = std::move(predict), &measured](const HeadingValues& v, std::span<const std::size_t> which,
+                                                   std::vector<double>& out) {
+    predict(v, which, out);
+    for (std::size_t k = 0; k < which.size(); ++k) out[k] -= measured[which[k]];
+  };
+}
+
+LinkFit run_link(HeadingLink link, const HeadingValues& nominal, const HeadingResiduals& residuals,
+                 const LinkSamples& samples, const HeadingDiagnoseOptions& options) {
+  HeadingSelectOptions select;
+  select.min_absolute_improvement = min_absolute_improvement(link);
+  const std::vector<HeadingEffect> candidates = effects_of(link, all_effects());
+  if (!options.fit_only.empty()) {
+    select.fit_only = effects_of(link, options.fit_only);
+    select.select = false;
+  }
+  return select_heading_effects(link, candidates, nominal, residuals, samples, select);
+}
+
+}  // namespace
+
+const HeadingEffectInfo& info(HeadingEffect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
+
+const char* to_string(HeadingLink link) {
+  switch (link) {
+    case HeadingLink::kServo:
+      return "servo";
+    case HeadingLink::kVehicle:
+      return "vehicle";
+    case HeadingLink::kAutopilot:
+      return "autopilot";
+  }
+  return "?";
+}
+
+AutopilotSettings configured_autopilot(const flightlog::FlightLog& log) {
+  AutopilotSettings s;
+  const auto gain = logged_setting(log, "u_hd_fin_ap_gain");
+  const auto igain = logged_setting(log, "u_hd_fin_ap_igain");
+  const auto dgain = logged_setting(log, "u_hd_fin_ap_dgain");
+  const auto deadband = logged_setting(log, "u_heading_rate_deadband");
+  s.stated = gain || igain || dgain;
+  s.gain = gain.value_or(s.gain);
+  s.igain = igain.value_or(s.igain);
+  s.dgain = dgain.value_or(s.dgain);
+  s.rate_deadband_rad_s = deadband.value_or(s.rate_deadband_rad_s);
+  return s;
+}
+
+HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
+                                  const HeadingDiagnoseOptions& options) {
+  const HeadingTrack track = prepare_heading_track(log, nominal, options.track);
+  HeadingDiagnosis d;
+  d.vehicle = nominal.name;
+  d.configured = configured_autopilot(log);
+  d.fin_max_rad = track.fin_max_rad;
+  d.roll_logged = track.roll_logged;
+  d.logged_roll_rad = track.median_roll_rad;
+  d.runs = track.run_first.size();
+  const HeadingValues base = nominal_heading_values(nominal, d.configured);
+
+  // The servo and the autopilot act at every cycle under water: their rows.
+  auto row_split = [&](const std::vector<std::size_t>& rows) {
+    std::vector<bool> diving;
+    for (std::size_t i : rows) {
+      const std::size_t j = i + 1 < track.row_depth_m.size() ? i + 1 : i;
+      diving.push_back(track.row_depth_m[j] >= track.row_depth_m[i > 0 ? i - 1 : i]);
+    }
+    return split(rows, track.row_yo, diving, options.max_fit_samples);
+  };
+  const LinkSamples servo_samples = row_split(servo_rows(track));
+  d.servo = run_link(HeadingLink::kServo, base,
+                     against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                                 std::vector<double>& o) { predict_servo_fin(track, nominal, v, w, o); },
+                             track.row_fin_rad),
+                     servo_samples, options);
+  const LinkSamples autopilot_samples = row_split(autopilot_rows(track));
+  d.autopilot = run_link(HeadingLink::kAutopilot, base,
+                         against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                                     std::vector<double>& o) { predict_autopilot_fin(track, d.configured, v, w, o); },
+                                 track.row_fin_command_rad),
+                         autopilot_samples, options);
+  std::vector<bool> diving;
+  for (std::size_t i : track.scored) diving.push_back(track.phase[i] == flightlog::Phase::kDive);
+  const LinkSamples yaw_samples = split(track.scored, track.yo, diving, options.max_fit_samples);
+  d.yaw = run_link(HeadingLink::kVehicle, base,
+                   against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                               std::vector<double>& o) { predict_yaw_rate(track, nominal, v, w, o); },
+                           track.yaw_rate_rad_s),
+                   yaw_samples, options);
+
+  d.values = base;
+  double best_gain = 0.0;
+  for (const LinkFit* link : {&d.servo, &d.yaw, &d.autopilot}) {
+    for (const HeadingFinding& f : link->findings) at(d.values, f.effect) = f.value;
+    if (!link->findings.empty() && link->gain > best_gain) {
+      best_gain = link->gain;
+      d.cause = info(link->findings.front().effect).id;
+    }
+  }
+  d.delay_autopilot_s = at(d.values, HeadingEffect::kAutopilotDelay);
+  d.delay_servo_s = at(d.values, HeadingEffect::kFinDelay);
+  d.delay_after_fin_s = at(d.values, HeadingEffect::kYawDelay);
+  return d;
+}
+
+model::VehicleParams apply(model::VehicleParams v, const HeadingDiagnosis& d) {
+  v.heading.fin_delay_s = d.delay_servo_s + d.delay_after_fin_s;
+  v.heading.fin_yaw_gain_per_m *= at(d.values, HeadingEffect::kFinEffectiveness);
+  v.heading.yaw_time_constant_s = at(d.values, HeadingEffect::kYawTimeConstant);
+  v.heading.roll_offset_rad =
+      (d.roll_logged ? d.logged_roll_rad : v.heading.roll_offset_rad) + at(d.values, HeadingEffect::kRollOffset);
+  return v;
+}
+
+}  // namespace glider::diagnose

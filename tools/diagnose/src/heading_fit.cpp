@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/diagnose/heading_fit.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
+
+namespace glider::diagnose {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A sample a model cannot predict (NaN) counts as this many of the link's
+// typical errors: an effect must not "improve" the fit by losing samples.
+constexpr double kMissingPenalty = 1.0;
+
+struct Trial {
+  std::vector<HeadingEffect> fitted;
+  HeadingValues values{};
+  std::vector<double> sigma;  // per fitted effect, reported units
+  double train_rss = 0.0, heldout_rms = 0.0, bic = 0.0;
+};
+
+class Problem {
+ public:
+  Problem(const HeadingValues& nominal, const HeadingResiduals& residuals, const LinkSamples& samples)
+      : nominal_(nominal), residuals_(residuals), samples_(samples) {}
+
+  HeadingValues unpack(const std::vector<HeadingEffect>& fitted, const Eigen::VectorXd& p) const {
+    HeadingValues v = nominal_;
+    for (std::size_t j = 0; j < fitted.size(); ++j) {
+      const HeadingEffectInfo& e = info(fitted[j]);
+      const double x = at(nominal_, fitted[j]) + e.scale * p[static_cast<Eigen::Index>(j)];
+      at(v, fitted[j]) = e.magnitude ? std::abs(x) : x;
+    }
+    return v;
+  }
+
+  // Residuals with NaN replaced by the penalty (scaled by the baseline's RMS).
+  void residuals(const HeadingValues& v, std::span<const std::size_t> which, std::vector<double>& out) const {
+    residuals_(v, which, out);
+    for (double& r : out) {
+      if (!std::isfinite(r)) r = kMissingPenalty * penalty_scale_;
+    }
+  }
+
+  double rms(const HeadingValues& v, std::span<const std::size_t> which) const {
+    std::vector<double> r;
+    residuals(v, which, r);
+    double s = 0.0;
+    for (double x : r) s += x * x;
+    return r.empty() ? kNaN : std::sqrt(s / static_cast<double>(r.size()));
+  }
+
+  void set_penalty_scale(double s) { penalty_scale_ = s; }
+  const LinkSamples& samples() const { return samples_; }
+  const HeadingValues& nominal() const { return nominal_; }
+
+ private:
+  HeadingValues nominal_;
+  const HeadingResiduals& residuals_;
+  const LinkSamples& samples_;
+  double penalty_scale_ = 1.0;
+};
+
+struct Functor {
+  using Scalar = double;
+  using InputType = Eigen::VectorXd;
+  using ValueType = Eigen::VectorXd;
+  using JacobianType = Eigen::MatrixXd;
+  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+  const Problem& problem;
+  const std::vector<HeadingEffect>& fitted;
+  mutable std::vector<double> buffer;
+  int inputs() const { return static_cast<int>(fitted.size()); }
+  int values() const { return static_cast<int>(problem.samples().train.size()); }
+  int operator()(const Eigen::VectorXd& p, Eigen::VectorXd& f) const {
+    problem.residuals(problem.unpack(fitted, p), problem.samples().train, buffer);
+    for (std::size_t k = 0; k < buffer.size(); ++k) f[static_cast<Eigen::Index>(k)] = buffer[k];
+    return 0;
+  }
+};
+
+// Independent samples among n serially correlated ones: n (1 - r1) / (1 + r1).
+double independent_samples(const std::vector<double>& r) {
+  double var = 0.0, lag1 = 0.0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    var += r[i] * r[i];
+    if (i > 0) lag1 += r[i] * r[i - 1];
+  }
+  const double rho = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
+  return static_cast<double>(r.size()) * (1.0 - rho) / (1.0 + rho);
+}
+
+Eigen::VectorXd minimise(const Problem& problem, const std::vector<HeadingEffect>& fitted, Eigen::VectorXd p) {
+  Functor functor{problem, fitted, {}};
+  Eigen::NumericalDiff<Functor> numeric(functor);
+  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Functor>> lm(numeric);
+  lm.parameters.maxfev = 300;
+  lm.minimize(p);
+  return p;
+}
+
+double train_rss(const Problem& problem, const std::vector<HeadingEffect>& fitted, const Eigen::VectorXd& p) {
+  std::vector<double> r;
+  problem.residuals(problem.unpack(fitted, p), problem.samples().train, r);
+  double s = 0.0;
+  for (double x : r) s += x * x;
+  return s;
+}
+
+Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
+  Trial trial;
+  trial.fitted = fitted;
+  const auto k = static_cast<Eigen::Index>(fitted.size());
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(k);
+  // A magnitude at 0 has no gradient: start one scale away.
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
+    if (info(e).magnitude && at(problem.nominal(), e) == 0.0) p[j] = 1.0;
+  }
+  Functor functor{problem, fitted, {}};
+  if (k > 0) {
+    // Clamps (a saturated integrator, a fin at its limit) flatten the
+    // landscape around the nominal: each effect with a non-zero nominal is
+    // also started at zero ("it does not act"), the better fit is kept.
+    Eigen::VectorXd best = minimise(problem, fitted, p);
+    double best_rss = train_rss(problem, fitted, best);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
+      if (at(problem.nominal(), e) == 0.0 || info(e).magnitude) continue;
+      Eigen::VectorXd start = p;
+      start[j] = -at(problem.nominal(), e) / info(e).scale;
+      const Eigen::VectorXd other = minimise(problem, fitted, start);
+      const double rss = train_rss(problem, fitted, other);
+      if (rss < best_rss) {
+        best = other;
+        best_rss = rss;
+      }
+    }
+    p = best;
+  }
+  trial.values = problem.unpack(fitted, p);
+  std::vector<double> r;
+  problem.residuals(trial.values, problem.samples().train, r);
+  for (double x : r) trial.train_rss += x * x;
+  const double n = static_cast<double>(r.size());
+  trial.bic = n * std::log(trial.train_rss / n) + static_cast<double>(k) * std::log(n);
+  if (k > 0) {
+    Eigen::NumericalDiff<Functor> numeric(functor);
+    Eigen::MatrixXd jac(static_cast<Eigen::Index>(r.size()), k);
+    numeric.df(p, jac);
+    const double n_eff = std::max(independent_samples(r), static_cast<double>(k) + 2.0);
+    const double variance = trial.train_rss / (n_eff - static_cast<double>(k));
+    const Eigen::MatrixXd cov = (jac.transpose() * jac).completeOrthogonalDecomposition().pseudoInverse() * variance;
+    for (Eigen::Index j = 0; j < k; ++j) {
+      trial.sigma.push_back(std::sqrt(std::max(cov(j, j), 0.0)) * info(fitted[static_cast<std::size_t>(j)]).scale);
+    }
+  }
+  trial.heldout_rms = problem.rms(trial.values, problem.samples().heldout);
+  return trial;
+}
+
+bool plausible(HeadingEffect e, double v) { return v >= info(e).plausible_min && v <= info(e).plausible_max; }
+
+bool improves(const Trial& better, const Trial& than, const HeadingSelectOptions& o) {
+  return better.heldout_rms < than.heldout_rms * (1.0 - o.min_relative_improvement) &&
+         better.heldout_rms < than.heldout_rms - o.min_absolute_improvement && better.bic < than.bic;
+}
+
+// Forward: the candidate that cuts the held-out error most enters while it
+// helps by the margins with a plausible value.
+Trial forward(const Problem& problem, std::vector<HeadingEffect> remaining, Trial current,
+              const HeadingSelectOptions& options) {
+  while (!remaining.empty()) {
+    std::optional<Trial> best;
+    std::size_t best_index = 0;
+    for (std::size_t c = 0; c < remaining.size(); ++c) {
+      std::vector<HeadingEffect> fitted = current.fitted;
+      fitted.push_back(remaining[c]);
+      Trial t = fit(problem, fitted);
+      if (!best || t.heldout_rms < best->heldout_rms) {
+        best = std::move(t);
+        best_index = c;
+      }
+    }
+    const HeadingEffect e = remaining[best_index];
+    if (!improves(*best, current, options) || !plausible(e, at(best->values, e))) break;
+    current = std::move(*best);
+    remaining.erase(remaining.begin() + static_cast<long>(best_index));
+  }
+  return current;
+}
+
+// Backward: an effect the joint fit no longer needs (without it the held-out
+// error is as good within the margin) leaves.
+Trial backward(const Problem& problem, Trial current, const HeadingSelectOptions& options) {
+  bool dropped = true;
+  while (dropped && current.fitted.size() > 1) {
+    dropped = false;
+    for (std::size_t j = 0; j < current.fitted.size(); ++j) {
+      std::vector<HeadingEffect> fewer = current.fitted;
+      fewer.erase(fewer.begin() + static_cast<long>(j));
+      Trial t = fit(problem, fewer);
+      if (!improves(current, t, options)) {
+        current = std::move(t);
+        dropped = true;
+        break;
+      }
+    }
+  }
+  return current;
+}
+
+double rms_of(const Problem& problem, const HeadingValues& v, const std::vector<std::size_t>& which) {
+  return which.empty() ? kNaN : problem.rms(v, which);
+}
+
+}  // namespace
+
+LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect>& candidates,
+                               const HeadingValues& nominal, const HeadingResiduals& residuals,
+                               const LinkSamples& samples, const HeadingSelectOptions& options) {
+  LinkFit out;
+  out.link = link;
+  out.candidates = candidates;
+  out.samples = samples.all.size();
+  out.train_samples = samples.train.size();
+  out.heldout_samples = samples.heldout.size();
+  out.values = nominal;
+  if (samples.train.empty() || samples.heldout.empty()) return out;
+  Problem problem(nominal, residuals, samples);
+  problem.set_penalty_scale(std::max(1e-6, problem.rms(nominal, samples.all)));
+  out.baseline_rms = rms_of(problem, nominal, samples.all);
+  out.baseline_rms_dive = rms_of(problem, nominal, samples.dives);
+  out.baseline_rms_climb = rms_of(problem, nominal, samples.climbs);
+  const Trial baseline = fit(problem, {});
+  out.baseline_heldout_rms = baseline.heldout_rms;
+  Trial final_fit = baseline;
+  if (!options.fit_only.empty()) {
+    final_fit = fit(problem, options.fit_only);
+  } else if (options.select) {
+    final_fit = backward(problem, forward(problem, candidates, baseline, options), options);
+  }
+  // Rank: the order each effect alone would cut the held-out error, the
+  // cumulative gain along it.
+  std::vector<std::pair<double, HeadingEffect>> ranked;
+  for (HeadingEffect e : final_fit.fitted) ranked.emplace_back(fit(problem, {e}).heldout_rms, e);
+  std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<HeadingEffect> so_far;
+  for (const auto& [alone, e] : ranked) {
+    so_far.push_back(e);
+    const double heldout =
+        so_far.size() == final_fit.fitted.size() ? final_fit.heldout_rms : fit(problem, so_far).heldout_rms;
+    const auto j = static_cast<std::size_t>(std::find(final_fit.fitted.begin(), final_fit.fitted.end(), e) -
+                                            final_fit.fitted.begin());
+    HeadingFinding f;
+    f.effect = e;
+    f.value = at(final_fit.values, e);
+    f.nominal = at(nominal, e);
+    const double half = 1.96 * final_fit.sigma[j];
+    f.ci95_low = info(e).magnitude ? std::max(0.0, f.value - half) : f.value - half;
+    f.ci95_high = f.value + half;
+    f.heldout_rms = heldout;
+    f.gain = 1.0 - heldout / out.baseline_heldout_rms;
+    out.findings.push_back(f);
+  }
+  out.values = final_fit.values;
+  out.extended_rms = rms_of(problem, final_fit.values, samples.all);
+  out.extended_heldout_rms = final_fit.heldout_rms;
+  out.gain = 1.0 - final_fit.heldout_rms / out.baseline_heldout_rms;
+  return out;
+}
+
+}  // namespace glider::diagnose

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/diagnose/heading_models.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "glider/diagnose/track.hpp"
+
+namespace glider::diagnose {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double wrap_pi(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
+
+// Rows are under water (the fin and the autopilot act) below this depth.
+constexpr double kSubmergedM = 1.0;
+// Integration step of the servo and yaw replays (s), at most.
+constexpr double kStepS = 0.25;
+
+// Index of the last row at or before t (rows sorted); SIZE_MAX before the first.
+std::size_t row_at_or_before(std::span<const double> time, double t) {
+  const auto it = std::upper_bound(time.begin(), time.end(), t);
+  return it == time.begin() ? SIZE_MAX : static_cast<std::size_t>(it - time.begin()) - 1;
+}
+
+// Linear interpolation of a row series at t (NaN outside or across a NaN);
+// `angle`: across the shorter way round.
+double interpolate(std::span<const double> time, std::span<const double> x, double t, bool angle = false) {
+  const std::size_t j = row_at_or_before(time, t);
+  if (j == SIZE_MAX || j + 1 >= time.size()) return j + 1 == time.size() && time[j] == t ? x[j] : kNaN;
+  const double w = (t - time[j]) / (time[j + 1] - time[j]);
+  const double step = angle ? wrap_pi(x[j + 1] - x[j]) : x[j + 1] - x[j];
+  return x[j] + w * step;
+}
+
+double value(const HeadingValues& v, HeadingEffect e) { return at(v, e); }
+
+void pick(const std::vector<double>& series, std::span<const std::size_t> at_index, std::vector<double>& out) {
+  out.resize(at_index.size());
+  for (std::size_t k = 0; k < at_index.size(); ++k) out[k] = series[at_index[k]];
+}
+
+}  // namespace
+
+HeadingValues nominal_heading_values(const model::VehicleParams& vehicle, const AutopilotSettings& autopilot) {
+  HeadingValues v{};
+  at(v, HeadingEffect::kFinDelay) = vehicle.heading.fin_delay_s;
+  at(v, HeadingEffect::kYawDelay) = 0.0;
+  at(v, HeadingEffect::kFinEffectiveness) = 1.0;
+  at(v, HeadingEffect::kRollOffset) = 0.0;
+  at(v, HeadingEffect::kYawTimeConstant) = vehicle.heading.yaw_time_constant_s;
+  at(v, HeadingEffect::kAutopilotGain) = autopilot.gain;
+  at(v, HeadingEffect::kAutopilotIntegral) = autopilot.igain;
+  at(v, HeadingEffect::kAutopilotDgain) = autopilot.dgain;
+  at(v, HeadingEffect::kAutopilotDelay) = 0.0;
+  return v;
+}
+
+std::vector<std::size_t> servo_rows(const HeadingTrack& t) {
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 1; i < t.row_time_s.size(); ++i) {
+    if (std::isfinite(t.row_fin_rad[i]) && std::isfinite(t.row_fin_command_rad[i - 1]) &&
+        t.row_depth_m[i] >= kSubmergedM && t.row_yo[i] >= 0 && t.row_time_s[i] - t.row_time_s[i - 1] <= t.max_gap_s) {
+      rows.push_back(i);
+    }
+  }
+  return rows;
+}
+
+std::vector<std::size_t> autopilot_rows(const HeadingTrack& t) {
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 1; i < t.row_time_s.size(); ++i) {
+    const bool active = std::isfinite(t.row_command_rad[i]) && t.row_gliding[i];
+    const bool was_active = std::isfinite(t.row_command_rad[i - 1]) && t.row_gliding[i - 1];
+    if (active && was_active && std::isfinite(t.row_fin_command_rad[i]) && std::isfinite(t.row_heading_rad[i]) &&
+        t.row_yo[i] >= 0) {
+      rows.push_back(i);
+    }
+  }
+  return rows;
+}
+
+// The servo: from each row the fin moves at the vehicle's speed toward the
+// last command issued a dead time ago (a row's own command acts after its
+// own measurement: c_fin is computed at the end of the cycle that read m_fin).
+void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
+                       std::span<const std::size_t> rows, std::vector<double>& out) {
+  const double delay = std::abs(value(values, HeadingEffect::kFinDelay));
+  const double rate = vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9;
+  const std::size_t n = t.row_time_s.size();
+  std::vector<double> predicted(n, kNaN);
+  double fin = kNaN;
+  double command = 0.0;
+  std::size_t next_command = 0;  // first row whose command has not acted yet
+  // Moves the fin to `until`, switching to each command exactly when it
+  // acts (row time + dead time): the prediction is continuous in the delay.
+  double clock = t.row_time_s.empty() ? 0.0 : t.row_time_s.front();
+  auto advance = [&](double until) {
+    while (true) {
+      const bool switch_first = next_command < n && t.row_time_s[next_command] + delay < until;
+      const double to = switch_first ? std::max(clock, t.row_time_s[next_command] + delay) : until;
+      if (std::isfinite(fin)) fin += std::clamp(command - fin, -rate * (to - clock), rate * (to - clock));
+      clock = to;
+      if (!switch_first) return;
+      if (std::isfinite(t.row_fin_command_rad[next_command])) command = t.row_fin_command_rad[next_command];
+      ++next_command;
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const double now = t.row_time_s[i];
+    const bool continuous = i > 0 && std::isfinite(fin) && now - t.row_time_s[i - 1] <= t.max_gap_s;
+    advance(now);
+    if (continuous) predicted[i] = fin;
+    if (!continuous) fin = t.row_fin_rad[i];
+  }
+  pick(predicted, rows, out);
+}
+
+// Slocum's law replayed on the logged heading: the error and rate are read
+// a delay before each command; the integrator runs from the log's start and
+// is held while the fin is centred (surface, turns), as the firmware's.
+void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& values,
+                           std::span<const std::size_t> rows, std::vector<double>& out) {
+  const double kp = value(values, HeadingEffect::kAutopilotGain);
+  const double ki = value(values, HeadingEffect::kAutopilotIntegral);
+  const double kd = value(values, HeadingEffect::kAutopilotDgain);
+  const double delay = std::abs(value(values, HeadingEffect::kAutopilotDelay));
+  const double fin_max = t.fin_max_rad;
+  const std::size_t n = t.row_time_s.size();
+  std::vector<double> predicted(n, kNaN);
+  const std::span<const double> time(t.row_time_s);
+  double integrator = 0.0;
+  double last_heading = kNaN;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
+      last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
+      continue;
+    }
+    const double when = time[i] - delay;
+    const double heading = interpolate(time, t.row_heading_rad, when, true);
+    const std::size_t c = row_at_or_before(time, when);
+    const double command = c == SIZE_MAX ? kNaN : t.row_command_rad[c];
+    if (!std::isfinite(heading) || !std::isfinite(command)) continue;
+    const double error = wrap_pi(command - heading);
+    const double dt = i > 0 ? time[i] - time[i - 1] : 0.0;
+    double rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
+    if (std::abs(rate) < settings.rate_deadband_rad_s) rate = 0.0;
+    last_heading = heading;
+    integrator += ki * error * dt;  // unconditional, as Slocum's: only the output is clamped
+    predicted[i] = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
+  }
+  pick(predicted, rows, out);
+}
+
+// The model's yaw (dynamics.hpp): the yaw rate relaxes toward
+// V (fin_gain eff fin(t - delay) + roll_gain a_eff sin(roll + offset)),
+// from the run's first heading and the steady rate there; its heading goes
+// through the measured yaw rate's estimator.
+void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
+                      std::span<const std::size_t> samples, std::vector<double>& out) {
+  const model::HeadingModel& hd = vehicle.heading;
+  const double delay = std::abs(value(values, HeadingEffect::kYawDelay));
+  const double fin_gain = hd.fin_yaw_gain_per_m * value(values, HeadingEffect::kFinEffectiveness);
+  const double roll_offset = value(values, HeadingEffect::kRollOffset);
+  const double tau = std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)));
+  std::vector<double> rate(t.size(), kNaN);
+  const std::span<const double> row_time(t.row_time_s);
+  std::vector<double> model_heading;
+  std::size_t wanted = 0;
+  for (std::size_t run = 0; run < t.run_first.size(); ++run) {
+    const std::size_t first = t.run_first[run], end = t.run_end(run);
+    if (wanted >= samples.size()) break;
+    if (samples[wanted] >= end) continue;
+    const double roll = t.roll_rad[first] + roll_offset;
+    auto target = [&](std::size_t k, double w, double now) {
+      const double speed = t.speed_m_s[k] + w * (t.speed_m_s[k + 1] - t.speed_m_s[k]);
+      const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
+      const double fin = interpolate(row_time, t.row_fin_filled_rad, now - delay);
+      return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
+    };
+    model_heading.assign(1, t.heading_rad[first]);
+    double yaw_rate = target(first, 0.0, t.time_s[first]);
+    double psi = t.heading_rad[first];
+    for (std::size_t k = first; k + 1 < end; ++k) {
+      double s = t.time_s[k];
+      const double span = t.time_s[k + 1] - s;
+      while (s < t.time_s[k + 1]) {
+        const double h = std::min(kStepS, t.time_s[k + 1] - s);
+        const double goal = target(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
+        const double next = goal + (yaw_rate - goal) * std::exp(-h / tau);
+        psi += 0.5 * h * (yaw_rate + next);
+        yaw_rate = next;
+        s += h;
+      }
+      model_heading.push_back(psi);
+    }
+    const flightlog::Column slope = depth_rate_estimate(std::span<const double>(t.time_s.data() + first, end - first),
+                                                        model_heading, t.rate_half_window_s, t.max_gap_s);
+    std::copy(slope.begin(), slope.end(), rate.begin() + static_cast<long>(first));
+    while (wanted < samples.size() && samples[wanted] < end) ++wanted;
+  }
+  pick(rate, samples, out);
+}
+
+}  // namespace glider::diagnose

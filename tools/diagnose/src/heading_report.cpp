@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/diagnose/heading_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "glider/units.hpp"
+
+namespace glider::diagnose {
+namespace {
+
+using nlohmann::ordered_json;
+
+ordered_json number_or_null(double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr); }
+
+// What each link's residual measures.
+const char* measured_of(HeadingLink link) {
+  switch (link) {
+    case HeadingLink::kServo:
+      return "m_fin (rad) from the logged c_fin";
+    case HeadingLink::kVehicle:
+      return "yaw rate (rad/s, slope of m_heading) from the logged m_fin";
+    case HeadingLink::kAutopilot:
+      return "c_fin (rad) from the logged m_heading and c_heading";
+  }
+  return "?";
+}
+
+ordered_json link_json(const LinkFit& f) {
+  ordered_json j;
+  j["measured"] = measured_of(f.link);
+  j["samples"] = f.samples;
+  j["train_samples"] = f.train_samples;
+  j["heldout_samples"] = f.heldout_samples;
+  j["baseline"] = {{"rms", number_or_null(f.baseline_rms)},
+                   {"rms_dive", number_or_null(f.baseline_rms_dive)},
+                   {"rms_climb", number_or_null(f.baseline_rms_climb)},
+                   {"heldout_rms", number_or_null(f.baseline_heldout_rms)}};
+  ordered_json findings = ordered_json::array();
+  for (const HeadingFinding& x : f.findings) {
+    findings.push_back({{"effect", info(x.effect).id},
+                        {"value", x.value},
+                        {"nominal", x.nominal},
+                        {"unit", info(x.effect).unit},
+                        {"ci95", {x.ci95_low, x.ci95_high}},
+                        {"heldout_rms", x.heldout_rms},
+                        {"gain", x.gain}});
+  }
+  j["findings"] = findings;
+  j["extended"] = {{"rms", number_or_null(f.extended_rms)}, {"heldout_rms", number_or_null(f.extended_heldout_rms)}};
+  j["gain"] = number_or_null(f.gain);
+  ordered_json candidates = ordered_json::array();
+  for (HeadingEffect e : f.candidates) candidates.push_back(info(e).id);
+  j["candidates"] = candidates;
+  return j;
+}
+
+}  // namespace
+
+ordered_json heading_json(const HeadingDiagnosis& d) {
+  ordered_json j;
+  j["available"] = true;
+  j["runs"] = d.runs;
+  j["roll_logged"] = d.roll_logged;
+  j["logged_roll_rad"] = d.logged_roll_rad;
+  j["fin_max_rad"] = d.fin_max_rad;
+  j["configured_autopilot"] = {{"gain", d.configured.gain},
+                               {"igain", d.configured.igain},
+                               {"dgain", d.configured.dgain},
+                               {"rate_deadband_rad_s", d.configured.rate_deadband_rad_s},
+                               {"stated_by_log", d.configured.stated}};
+  j["flown_autopilot"] = {{"gain", at(d.values, HeadingEffect::kAutopilotGain)},
+                          {"igain", at(d.values, HeadingEffect::kAutopilotIntegral)},
+                          {"dgain", at(d.values, HeadingEffect::kAutopilotDgain)},
+                          {"delay_s", at(d.values, HeadingEffect::kAutopilotDelay)}};
+  j["delay_s"] = {{"autopilot", d.delay_autopilot_s},
+                  {"servo", d.delay_servo_s},
+                  {"after_fin", d.delay_after_fin_s},
+                  {"total", d.delay_autopilot_s + d.delay_servo_s + d.delay_after_fin_s}};
+  j["links"] = {{"servo", link_json(d.servo)}, {"vehicle", link_json(d.yaw)}, {"autopilot", link_json(d.autopilot)}};
+  j["cause"] = d.cause;
+  ordered_json parameters;
+  for (std::size_t i = 0; i < kHeadingEffectCount; ++i)
+    parameters[info(static_cast<HeadingEffect>(i)).id] = d.values[i];
+  j["parameters"] = parameters;
+  return j;
+}
+
+ordered_json heading_unavailable_json(const std::string& reason) { return {{"available", false}, {"reason", reason}}; }
+
+std::string heading_text(const HeadingDiagnosis& d) {
+  std::string out;
+  char line[512];
+  auto add = [&](const char* fmt, auto... args) {
+    std::snprintf(line, sizeof line, fmt, args...);
+    out += line;
+  };
+  add("Heading plane: %zu glides under a heading command; roll %s %.1f deg; fin limit %.3f rad\n", d.runs,
+      d.roll_logged ? "logged, median" : "not logged, the vehicle's", rad_to_deg(d.logged_roll_rad), d.fin_max_rad);
+  add("  configured autopilot%s: gain %.3g, igain %.3g, dgain %.3g\n",
+      d.configured.stated ? "" : " (not stated: defaults)", d.configured.gain, d.configured.igain, d.configured.dgain);
+  for (const LinkFit* f : {&d.servo, &d.yaw, &d.autopilot}) {
+    add("  %-9s %s: baseline RMS %.4g (dives %.4g, climbs %.4g), held-out %.4g over %zu samples\n", to_string(f->link),
+        measured_of(f->link), f->baseline_rms, f->baseline_rms_dive, f->baseline_rms_climb, f->baseline_heldout_rms,
+        f->samples);
+    if (f->findings.empty()) add("            findings: none\n");
+    for (const HeadingFinding& x : f->findings) {
+      add("            %-20s %+.4g %s (nominal %.4g; 95%% CI %.4g .. %.4g) held-out %.4g, gain %.0f %%\n",
+          info(x.effect).id, x.value, info(x.effect).unit, x.nominal, x.ci95_low, x.ci95_high, x.heldout_rms,
+          100.0 * x.gain);
+    }
+  }
+  add("  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
+      d.delay_servo_s, d.delay_after_fin_s);
+  add("  heading cause: %s\n", d.cause.c_str());
+  return out;
+}
+
+}  // namespace glider::diagnose
