@@ -164,3 +164,30 @@ TEST(DiagnoseHiddenEffects, PumpLag) {
                                                    diagnose::prepare_observations(log), steady);
   for (const auto& finding : d.findings) CHECK(finding.effect != diagnose::Effect::kPumpLag);
 }
+
+TEST(DiagnoseHiddenEffects, LiftChange) {
+  // The lift slope off the nominal (a fouled or damaged wing, another wing
+  // set): the angle of attack, hence the speed along the measured pitch,
+  // differs, which is what dead reckoning and turbulence science need. The
+  // dynamic model sees it in the turns and transients, where the angle of
+  // attack swings. Within 5 %: above nominal, thinned logs read 2-4 % high
+  // (1.25 read 1.280, 1.5 read 1.566; at 1 Hz 1.255 and 1.506), below it
+  // within 0.5 % (0.7 read 0.700, 0.8 read 0.801). Its 95 % interval is not
+  // tested: like the other effects' it is too narrow (issue 14, part 3): it
+  // missed 0.836 by 0.0002 (0.838, CI 0.8363 .. 0.8396) and 1.25 by 0.01.
+  const double ratio = rng() % 2 ? uniform(rng, 0.65, 0.85) : uniform(rng, 1.25, 1.5);
+  model::VehicleParams flown = we01();
+  flown.hydro.cl_alpha *= ratio;
+  flown.hydro.cl_alpha_abs_alpha *= ratio;
+  const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "lift_change", 80.0, gaps);
+  std::string text = "hidden ratio " + std::to_string(ratio) + "; cause " + o.diagnosis.cause + ":";
+  for (const auto& f : o.diagnosis.findings) {
+    text += std::string(" ") + diagnose::info(f.effect).id + " " + std::to_string(f.value) + " (CI " +
+            std::to_string(f.ci95_low) + " .. " + std::to_string(f.ci95_high) + ")";
+  }
+  UT_PRINT(text.c_str());
+  STRCMP_EQUAL("lift_change", o.diagnosis.cause.c_str());
+  LONGS_EQUAL(1, o.diagnosis.findings.size());
+  DOUBLES_EQUAL(ratio, o.diagnosis.findings.front().value, 0.05 * ratio);
+  CHECK(o.diagnosis.gain > 0.5);
+}

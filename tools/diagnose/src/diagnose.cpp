@@ -347,25 +347,59 @@ double rms_difference(const std::vector<double>& a, std::span<const double> b, s
   return count ? std::sqrt(s / static_cast<double>(count)) : kNaN;
 }
 
-std::optional<SpeedScore> score_speed(const DynamicFlightModel& model, const Track& track,
-                                      std::span<const std::size_t> all, std::span<const std::size_t> heldout,
+// The two models' speed error yo by yo (`nominal`, `extended` at `measured`).
+std::vector<SpeedOfYo> speed_by_yo(const std::vector<double>& nominal, const std::vector<double>& extended,
+                                   std::span<const double> truth, std::span<const std::size_t> measured,
+                                   std::span<const int> yo, std::span<const std::size_t> measured_heldout) {
+  std::vector<SpeedOfYo> out;
+  for (std::size_t k = 0; k < measured.size(); ++k) {
+    const std::size_t i = measured[k];
+    if (!std::isfinite(nominal[k]) || !std::isfinite(extended[k])) continue;
+    if (out.empty() || out.back().yo != yo[i]) {
+      out.emplace_back();
+      out.back().yo = yo[i];
+      out.back().heldout = std::binary_search(measured_heldout.begin(), measured_heldout.end(), i);
+    }
+    SpeedOfYo& s = out.back();
+    ++s.samples;
+    s.measured_mean_m_s += truth[i];
+    s.nominal_mean_m_s += nominal[k];
+    s.nominal_rms_m_s += (nominal[k] - truth[i]) * (nominal[k] - truth[i]);
+    s.extended_mean_m_s += extended[k];
+    s.extended_rms_m_s += (extended[k] - truth[i]) * (extended[k] - truth[i]);
+  }
+  for (SpeedOfYo& s : out) {
+    const auto n = static_cast<double>(s.samples);
+    s.measured_mean_m_s /= n;
+    s.nominal_mean_m_s /= n;
+    s.nominal_rms_m_s = std::sqrt(s.nominal_rms_m_s / n);
+    s.extended_mean_m_s /= n;
+    s.extended_rms_m_s = std::sqrt(s.extended_rms_m_s / n);
+  }
+  return out;
+}
+
+std::optional<SpeedScore> score_speed(const DepthRateModel& model, std::span<const std::size_t> all,
+                                      std::span<const std::size_t> heldout, std::span<const int> yo,
                                       const Parameters& extended, bool ctd) {
+  const std::span<const double> truth = model.measured_speed_m_s();
   std::vector<std::size_t> measured, measured_heldout;
   for (std::size_t i : all) {
-    if (std::isfinite(track.speed_through_water_m_s[i])) measured.push_back(i);
+    if (std::isfinite(truth[i])) measured.push_back(i);
   }
   for (std::size_t i : heldout) {
-    if (std::isfinite(track.speed_through_water_m_s[i])) measured_heldout.push_back(i);
+    if (std::isfinite(truth[i])) measured_heldout.push_back(i);
   }
   if (measured.empty()) return std::nullopt;
   SpeedScore score;
   std::vector<double> u;
-  const std::span<const double> truth = track.speed_through_water_m_s;
   for (std::size_t i : measured) score.measured_mean_m_s += truth[i] / static_cast<double>(measured.size());
-  model.predict_speed(nominal_values(), false, measured, u);
-  score.nominal_rms_m_s = rms_difference(u, truth, measured, score.samples);
+  std::vector<double> u_nominal;
+  model.predict_speed(nominal_values(), false, measured, u_nominal);
+  score.nominal_rms_m_s = rms_difference(u_nominal, truth, measured, score.samples);
   model.predict_speed(extended.values, ctd, measured, u);
   score.extended_rms_m_s = rms_difference(u, truth, measured, score.samples);
+  score.by_yo = speed_by_yo(u_nominal, u, truth, measured, yo, measured_heldout);
   model.predict_speed(nominal_values(), false, measured_heldout, u);
   score.heldout_nominal_rms_m_s = rms_difference(u, truth, measured_heldout, score.heldout_samples);
   model.predict_speed(extended.values, ctd, measured_heldout, u);
@@ -555,6 +589,7 @@ std::vector<Effect> candidate_pool(const Observations& obs, bool dynamic) {
   if (obs.has_temperature) pool.push_back(Effect::kThermalExpansion);
   if (obs.has_ctd) pool.push_back(Effect::kWaterDensity);
   if (dynamic) pool.push_back(Effect::kPumpLag);
+  pool.push_back(Effect::kLiftChange);
   return pool;
 }
 
@@ -712,16 +747,20 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   d.extended_all = rms_where(r_ext, s.all);
   d.extended_heldout_rms_m_s = current_fit.heldout_rms;
   d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
-  if (dynamic) {
-    d.speed_through_water =
-        score_speed(dynamic_model, obs.track, s.all, s.heldout, current_fit.parameters, current.ctd_density);
-  }
+  d.speed_through_water = score_speed(set.model, s.all, s.heldout, set.yo, current_fit.parameters, current.ctd_density);
   diagnose_pitch_trim_last(steady_model, obs, options, d);
   return d;
 }
 
-Predictions predict_all(const model::VehicleParams& nominal, const Observations& obs, const Diagnosis& d,
+model::VehicleParams diagnosed_nominal(const model::VehicleParams& given, const Diagnosis& d) {
+  model::VehicleParams nominal = given;
+  if (d.retrimmed_to_kg_m3) nominal.trim_density_kg_m3 = *d.retrimmed_to_kg_m3;
+  return nominal;
+}
+
+Predictions predict_all(const model::VehicleParams& given, const Observations& obs, const Diagnosis& d,
                         const DiagnoseOptions& options) {
+  const model::VehicleParams nominal = diagnosed_nominal(given, d);
   const FlightModel steady_model(nominal, obs);
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
   const SampleSet set =
@@ -744,6 +783,11 @@ Predictions predict_all(const model::VehicleParams& nominal, const Observations&
   set.model.predict(nominal_values(), false, set.usable, p.nominal_m_s);
   set.model.predict(d.extended, d.extended_uses_ctd_density, set.usable, p.extended_m_s,
                     d.extended_profile ? &*d.extended_profile : nullptr);
+  if (d.speed_through_water) {
+    for (std::size_t i : set.usable) p.speed_measured_m_s.push_back(set.model.measured_speed_m_s()[i]);
+    set.model.predict_speed(nominal_values(), false, set.usable, p.speed_nominal_m_s);
+    set.model.predict_speed(d.extended, d.extended_uses_ctd_density, set.usable, p.speed_extended_m_s);
+  }
   return p;
 }
 

@@ -84,6 +84,18 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                                 {"heldout_samples", u.heldout_samples},
                                 {"heldout_rms_nominal_m_s", number_or_null(u.heldout_nominal_rms_m_s)},
                                 {"heldout_rms_extended_m_s", number_or_null(u.heldout_extended_rms_m_s)}};
+    ordered_json by_yo = ordered_json::array();
+    for (const SpeedOfYo& y : u.by_yo) {
+      by_yo.push_back({{"yo", y.yo},
+                       {"heldout", y.heldout},
+                       {"samples", y.samples},
+                       {"measured_mean_m_s", y.measured_mean_m_s},
+                       {"nominal_mean_m_s", y.nominal_mean_m_s},
+                       {"rms_nominal_m_s", y.nominal_rms_m_s},
+                       {"extended_mean_m_s", y.extended_mean_m_s},
+                       {"rms_extended_m_s", y.extended_rms_m_s}});
+    }
+    j["speed_through_water"]["by_yo"] = by_yo;
   }
   j["wall_s"] = wall_s;
   return j;

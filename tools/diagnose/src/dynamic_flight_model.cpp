@@ -39,7 +39,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
                              const VerticalVelocityProfile* profile) const {
   if (depth_rate != nullptr) depth_rate->assign(samples.size(), kNaN);
   if (speed != nullptr) speed->assign(samples.size(), kNaN);
-  if (!(x[static_cast<std::size_t>(Effect::kDragChange)] > 0.0)) return;  // no negative drag
+  if (!flyable(x)) return;  // no negative drag or lift
   const model::VehicleParams v = apply(nominal_, x, track_.median_temperature_c);
   const model::PrescribedPitchDynamics dynamics(v);
   const double lag_s = v.ballast.lag_s;

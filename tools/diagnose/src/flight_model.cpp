@@ -19,7 +19,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // 100 m, five times a soft Seaglider hull (~3e-10 /Pa, Eriksen et al. 2001);
 // thermal expansion 3e-4 /K is four times Seaglider's therm_expan; a vertical
 // velocity of 0.2 m/s is convection at its strongest; a pump lag beyond two
-// minutes is a broken pump, not a lag.
+// minutes is a broken pump, not a lag; a lift slope a third or three times
+// the vehicle's is another wing, not a change of it.
 const std::array<EffectInfo, kEffectCount> kInfo{{
     {"buoyancy_offset", "g", 0.0, 20.0, -1000.0, 1000.0},
     {"drag_change", "ratio", 1.0, 0.1, 0.3, 5.0},
@@ -29,6 +30,7 @@ const std::array<EffectInfo, kEffectCount> kInfo{{
     {"water_density", "kg/m^3", 0.0, 1.0, -40.0, 40.0},
     {"pitch_trim_offset", "in", 0.0, 0.01, -2.0, 2.0},
     {"pump_lag", "s", 0.0, 5.0, -120.0, 120.0},
+    {"lift_change", "ratio", 1.0, 0.1, 0.3, 3.0},
 }};
 
 }  // namespace
@@ -47,6 +49,12 @@ model::VehicleParams apply(model::VehicleParams v, const EffectValues& x, double
   v.hull_thermal_expansion_per_k = a0 + a;
   v.battery.x_at_zero_m += in_to_m(x[6]);  // pitch trim: the battery's zero moves forward
   v.ballast.lag_s += std::abs(x[7]);       // a lag has no sign: |value| keeps the fit smooth through 0
+  // Lift: the hull's slope and the wings' share scale alike (as more or less
+  // wing would: its induced drag with it).
+  v.hydro.cl0 *= x[8];
+  v.hydro.cl_alpha *= x[8];
+  v.hydro.cl_alpha_abs_alpha *= x[8];
+  v.hydro.wing_area_m2 *= x[8];
   return v;
 }
 
@@ -74,10 +82,25 @@ double VerticalVelocityProfile::at(double depth_m) const {
   return w_m_s[static_cast<std::size_t>(index)];
 }
 
+bool flyable(const EffectValues& x) {
+  return x[static_cast<std::size_t>(Effect::kDragChange)] > 0.0 &&
+         x[static_cast<std::size_t>(Effect::kLiftChange)] > 0.0;
+}
+
 void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span<const std::size_t> samples,
                           std::vector<double>& out, const VerticalVelocityProfile* profile) const {
+  glide(x, use_ctd_density, samples, out, profile, false);
+}
+
+void FlightModel::predict_speed(const EffectValues& x, bool use_ctd_density, std::span<const std::size_t> samples,
+                                std::vector<double>& out) const {
+  glide(x, use_ctd_density, samples, out, nullptr, true);
+}
+
+void FlightModel::glide(const EffectValues& x, bool use_ctd_density, std::span<const std::size_t> samples,
+                        std::vector<double>& out, const VerticalVelocityProfile* profile, bool speed) const {
   out.assign(samples.size(), kNaN);
-  if (!(x[1] > 0.0)) return;  // no negative drag
+  if (!flyable(x)) return;  // no negative drag or lift
   // A negative compressibility relative to nominal is allowed: the model's
   // water is incompressible, so "lighter with depth" is a real possibility.
   const model::VehicleParams v = apply(nominal_, x, obs_.track.median_temperature_c);
@@ -92,9 +115,9 @@ void FlightModel::predict(const EffectValues& x, bool use_ctd_density, std::span
     model::MassInputs masses;
     masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
     const double m0 = dynamics.net_buoyancy_kg(obs_.depth_m[i], water, masses);
-    const auto glide = solver.solve(water.density_kg_m3, obs_.pitch_rad[i], m0);
+    const auto steady = solver.solve(water.density_kg_m3, obs_.pitch_rad[i], m0);
     const double w = profile != nullptr ? profile->at(obs_.depth_m[i]) : x[4];
-    if (glide.glide) out[k] = glide.glide->depth_rate_m_s + w;
+    if (steady.glide) out[k] = speed ? steady.glide->speed_m_s : steady.glide->depth_rate_m_s + w;
   }
 }
 

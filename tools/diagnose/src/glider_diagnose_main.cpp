@@ -2,6 +2,7 @@
 // glider-diagnose: what the simulation gets wrong in a flight log, the named
 // cause, the fitted effect and the gain on held-out yos.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,6 +32,33 @@ using nlohmann::ordered_json;
 
 ordered_json to_json(const Diagnosis& d, const std::string& vehicle_source, double wall_s) {
   return glider::diagnose::diagnosis_json(d, vehicle_source, wall_s);
+}
+
+// The yo the extended model's speed misses most, and the RMS without it.
+void print_worst_yo(const glider::diagnose::SpeedScore& u) {
+  if (u.by_yo.size() < 2) return;
+  const auto worst = std::max_element(u.by_yo.begin(), u.by_yo.end(), [](const auto& a, const auto& b) {
+    return a.extended_rms_m_s < b.extended_rms_m_s;
+  });
+  // RMS over the other yos (all, held out) from each yo's RMS and count.
+  auto without_worst = [&](bool heldout_only, double glider::diagnose::SpeedOfYo::*rms) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (auto y = u.by_yo.begin(); y != u.by_yo.end(); ++y) {
+      if (y == worst || (heldout_only && !y->heldout)) continue;
+      sum += (*y).*rms * (*y).*rms * static_cast<double>(y->samples);
+      n += y->samples;
+    }
+    return n ? std::sqrt(sum / static_cast<double>(n)) : NAN;
+  };
+  using Yo = glider::diagnose::SpeedOfYo;
+  std::printf(
+      "  speed, worst yo: yo %d (%s, %zu samples) measured %.3f m/s, nominal %.3f, extended %.3f; without it: "
+      "RMS nominal %.4f, extended %.4f m/s; held-out yos: nominal %.4f, extended %.4f m/s\n",
+      worst->yo, worst->heldout ? "held out" : "fitted", worst->samples, worst->measured_mean_m_s,
+      worst->nominal_mean_m_s, worst->extended_mean_m_s, without_worst(false, &Yo::nominal_rms_m_s),
+      without_worst(false, &Yo::extended_rms_m_s), without_worst(true, &Yo::nominal_rms_m_s),
+      without_worst(true, &Yo::extended_rms_m_s));
 }
 
 void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source, double wall_s) {
@@ -78,6 +106,7 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
         "extended %.4f m/s; held-out yos (%zu): nominal %.4f, extended %.4f m/s\n",
         u.samples, u.measured_mean_m_s, u.nominal_rms_m_s, u.extended_rms_m_s, u.heldout_samples,
         u.heldout_nominal_rms_m_s, u.heldout_extended_rms_m_s);
+    print_worst_yo(u);
   }
   std::printf("  wall time: %.2f s (reading the log excluded)\n", wall_s);
 }
@@ -134,6 +163,14 @@ void write_plots(const std::string& dir, const glider::model::VehicleParams& veh
                 "set xlabel 'pitch (deg)'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
                 "plot 'pitch.dat' u 3:2 w p pt 7 ps 0.3 t 'measured', '' u 4:2 w p pt 7 ps 0.3 t 'nominal', "
                 "'' u 5:2 w p pt 7 ps 0.3 t 'extended'");
+  }
+  if (!p.speed_measured_m_s.empty()) {
+    report.data("speed.dat", {"minutes", "depth_m", "measured", "nominal", "extended"},
+                {minutes, p.depth_m, p.speed_measured_m_s, p.speed_nominal_m_s, p.speed_extended_m_s});
+    report.plot("speed_time", "Speed through water: measured (never fitted), nominal model, extended model",
+                "set xlabel 'minutes'\nset ylabel 'speed through water (m/s)'\n"
+                "plot 'speed.dat' u 1:3 w p pt 7 ps 0.3 t 'measured', '' u 1:4 w p pt 7 ps 0.3 t 'nominal', "
+                "'' u 1:5 w p pt 7 ps 0.3 t 'extended'");
   }
   if (!report.finish()) throw std::runtime_error("the plots could not be rendered (gnuplot)");
 }
@@ -288,7 +325,9 @@ int main(int argc, char** argv) {
         if (vertical) write_plots(report_dir, vehicle, *obs, *vertical, log_path, options);
         std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << document().dump(2) << '\n';
         glider::model::VehicleParams extended =
-            vertical ? glider::diagnose::apply(vehicle, vertical->extended, vertical->thermal_reference_c) : vehicle;
+            vertical ? glider::diagnose::apply(glider::diagnose::diagnosed_nominal(vehicle, *vertical),
+                                               vertical->extended, vertical->thermal_reference_c)
+                     : vehicle;
         if (heading) extended = glider::diagnose::apply(extended, *heading);
         extended.name = vehicle.name + "_extended";
         extended.description =

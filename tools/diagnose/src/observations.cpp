@@ -21,6 +21,9 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
                                      ? flightlog::interpolate_linear(time, log.column("m_depth_rate"), 30.0)
                                      : flightlog::derive_depth_rate(time, c.depth_m, 30.0);
 
+  const flightlog::Column* logged_speed = log.find("sci_speed_through_water");
+  const flightlog::Column speed = logged_speed != nullptr ? flightlog::interpolate_linear(time, *logged_speed, 5.0)
+                                                          : flightlog::Column(time.size(), NAN);
   Observations obs;
   obs.has_battpos = c.has_battpos;
   for (const flightlog::Segment& seg : c.segments) {
@@ -43,6 +46,7 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
       obs.battpos_in.push_back(c.battpos_in[i]);
       obs.temperature_c.push_back(c.temperature_c[i]);
       obs.density_kg_m3.push_back(c.density_kg_m3[i]);
+      obs.speed_through_water_m_s.push_back(speed[i]);
       obs.has_temperature |= std::isfinite(c.temperature_c[i]);
       obs.has_ctd |= std::isfinite(c.density_kg_m3[i]);
       obs.diving.push_back(dive);

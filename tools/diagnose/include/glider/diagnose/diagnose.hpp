@@ -53,11 +53,23 @@ const char* to_string(FlightModelKind kind);
 
 // The modelled speed through the water against a measured one (a DVL's
 // sci_speed_through_water), which the fit never sees: an independent check.
+// One yo's share of it: a yo whose measured speed departs from the others
+// flown at the same pitch, ballast and depth rate is the instrument's, not
+// the model's, and the RMS without it says what it costs.
+struct SpeedOfYo {
+  int yo = 0;
+  bool heldout = false;
+  std::size_t samples = 0;
+  double measured_mean_m_s = 0.0;
+  double nominal_mean_m_s = 0.0, nominal_rms_m_s = 0.0;
+  double extended_mean_m_s = 0.0, extended_rms_m_s = 0.0;
+};
 struct SpeedScore {
   std::size_t samples = 0, heldout_samples = 0;
   double measured_mean_m_s = 0.0;
   double nominal_rms_m_s = 0.0, extended_rms_m_s = 0.0;                  // all samples with a measurement
   double heldout_nominal_rms_m_s = 0.0, heldout_extended_rms_m_s = 0.0;  // on the held-out yos
+  std::vector<SpeedOfYo> by_yo;                                          // yo by yo
 };
 
 struct Diagnosis {
@@ -75,7 +87,7 @@ struct Diagnosis {
   double extended_heldout_rms_m_s = 0.0;
   double gain = 0.0;
   std::vector<std::string> candidates_tried;
-  std::optional<SpeedScore> speed_through_water;  // dynamic model, when the log measures it
+  std::optional<SpeedScore> speed_through_water;  // when the log measures it (either model)
   // Set when the log's water was far from the vehicle's trim density: the
   // vehicle was taken as ballasted for the log's median density.
   std::optional<double> retrimmed_from_kg_m3, retrimmed_to_kg_m3;
@@ -114,11 +126,19 @@ struct DiagnoseOptions {
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& observations,
                    const DiagnoseOptions& options = {});
 
+// The nominal vehicle a diagnosis used: the given one, re-trimmed for the
+// log's water when the diagnosis says so (retrimmed_to_kg_m3). The extended
+// vehicle is this one with the effects applied.
+model::VehicleParams diagnosed_nominal(const model::VehicleParams& given, const Diagnosis& d);
+
 // Depth rate of every scored sample by the nominal model and by the extended
 // one (NaN where a model cannot fly it), with the measurement: what the
 // report plots.
 struct Predictions {
   std::vector<double> time_s, depth_m, measured_m_s, nominal_m_s, extended_m_s;
+  // Speed through water at the same samples where the log measures it (a
+  // DVL's; NaN elsewhere), and the two models' (empty without a measurement).
+  std::vector<double> speed_measured_m_s, speed_nominal_m_s, speed_extended_m_s;
   // Pitch on the steady glides: measured, and the equilibrium pitch of the
   // nominal and extended vehicles for the logged ballast and battery (empty
   // without m_battpos).

@@ -26,10 +26,9 @@ class DynamicFlightModel final : public DepthRateModel {
   void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
                std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
 
-  // Speed through the water (m/s) at `samples`, as predict() flies them: to
-  // score against a measured one (a DVL's), which the fit never sees.
   void predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-                     std::vector<double>& out) const;
+                     std::vector<double>& out) const override;
+  std::span<const double> measured_speed_m_s() const override { return track_.speed_through_water_m_s; }
 
   // Density at the deepest CTD sample of the track minus the nominal.
   double ctd_density_anomaly() const override;

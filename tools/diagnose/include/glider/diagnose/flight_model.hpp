@@ -24,6 +24,7 @@ enum class Effect : int {
   kWaterDensity,
   kPitchTrimOffset,  // explains the battery position, not the depth rate
   kPumpLag,          // only the dynamic model (turns) can see it
+  kLiftChange,       // the lift slope: sets the angle of attack, so the speed along a measured pitch
   kCount
 };
 constexpr std::size_t kEffectCount = static_cast<std::size_t>(Effect::kCount);
@@ -56,12 +57,15 @@ struct VerticalVelocityProfile {
 };
 
 // The nominal vehicle with the vehicle effects applied (buoyancy offset,
-// drag, hull compressibility and thermal expansion, pitch trim); the water
+// drag, hull compressibility and thermal expansion, pitch trim, lift); the water
 // effects (vertical velocity, density) belong to the environment.
 // The thermal expansion is about the log's own (median) temperature
 // `log_temperature_c`: it explains how the volume varies with the water's
 // temperature, never a constant that a buoyancy offset already names.
 model::VehicleParams apply(model::VehicleParams nominal, const EffectValues& values, double log_temperature_c);
+
+// Whether a model can fly the values at all (positive drag and lift).
+bool flyable(const EffectValues& values);
 
 // Density at the deepest sample with a finite density, minus `nominal`
 // (the water_density value); NaN if there is none.
@@ -80,6 +84,12 @@ class DepthRateModel {
                        std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const = 0;
   // Density at the deepest CTD sample minus the nominal (the water_density value).
   virtual double ctd_density_anomaly() const = 0;
+  // Speed through the water (m/s) at `samples`, as predict() flies them: to
+  // score against a measured one (a DVL's), which the fit never sees.
+  virtual void predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                             std::vector<double>& out) const = 0;
+  // The measured speed through water of every sample (NaN where none).
+  virtual std::span<const double> measured_speed_m_s() const = 0;
 };
 
 // The steady model: each steady-glide sample is the steady glide at its
@@ -91,6 +101,9 @@ class FlightModel final : public DepthRateModel {
   // NaN where the model has no steady glide (stall).
   void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
                std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
+  void predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                     std::vector<double>& out) const override;
+  std::span<const double> measured_speed_m_s() const override { return obs_.speed_through_water_m_s; }
 
   // Pitch of the model's forward equilibrium (logged ballast and battery)
   // for a sample, with the vehicle effects `values` applied; NaN without
@@ -108,6 +121,10 @@ class FlightModel final : public DepthRateModel {
   const model::VehicleParams& vehicle() const { return nominal_; }
 
  private:
+  // The steady glide of every sample: its depth rate (+ the water's) or its speed.
+  void glide(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+             std::vector<double>& out, const VerticalVelocityProfile* profile, bool speed) const;
+
   model::VehicleParams nominal_;
   const Observations& obs_;
 };

@@ -14,8 +14,9 @@ namespace glider::diagnose {
 struct Observations {
   // One entry per steady-glide sample used.
   std::vector<double> time_s, depth_m, depth_rate_m_s, pitch_rad, ballast_cc, battpos_in;
-  std::vector<double> temperature_c;  // NaN where the log has none
-  std::vector<double> density_kg_m3;  // TEOS-10 from the CTD; NaN where not available
+  std::vector<double> temperature_c;            // NaN where the log has none
+  std::vector<double> density_kg_m3;            // TEOS-10 from the CTD; NaN where not available
+  std::vector<double> speed_through_water_m_s;  // measured (a DVL's: never fitted, only scored); NaN where none
   std::vector<bool> diving;
   std::vector<int> yo;  // yo number (a dive and the climb after it)
   bool has_battpos = false, has_temperature = false, has_ctd = false;
