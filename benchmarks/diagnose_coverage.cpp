@@ -76,6 +76,7 @@ struct Result {
 struct Setup {
   std::string source_dir, out_dir;
   model::VehicleParams nominal;
+  diagnose::DiagnoseOptions options;
 };
 
 std::string flight_log(const Setup& s, const Draw& d, const std::string& name, std::uint64_t seed) {
@@ -121,6 +122,11 @@ Draw draw_case(const std::string& id, const Setup& s, std::mt19937_64& rng) {
       const double lag_s = uniform(rng, 5.0, 15.0);
       d.flown.ballast.lag_s = lag_s;
       d.truth[Effect::kPumpLag] = lag_s;
+    } else if (one == "lift_change") {
+      const double ratio = (rng() % 2) != 0U ? uniform(rng, 0.65, 0.85) : uniform(rng, 1.25, 1.5);
+      d.flown.hydro.cl_alpha *= ratio;
+      d.flown.hydro.cl_alpha_abs_alpha *= ratio;
+      d.truth[Effect::kLiftChange] = ratio;
     } else if (one == "vertical_water_velocity") {
       const double w = uniform(rng, 0.02, 0.04) * sign(rng);
       const std::vector<model::ProfileNode> nodes{{20.0, {1025.0, 10.0, 0.0, 0.0, 0.0}},
@@ -201,7 +207,7 @@ Result run_draw(const Setup& s, const std::string& case_id, std::uint64_t seed) 
     r.truth = d.truth;
     r.stratified = d.stratified;
     truth_from_log(log, d, r.truth);
-    r.diagnosis = diagnose::diagnose(s.nominal, diagnose::prepare_observations(log));
+    r.diagnosis = diagnose::diagnose(s.nominal, diagnose::prepare_observations(log), s.options);
     r.ok = true;
   } catch (const std::exception& error) {
     r.error = error.what();
@@ -293,6 +299,7 @@ int main(int argc, char** argv) {
                                  "hull_compressibility",
                                  "pitch_trim_offset",
                                  "pump_lag",
+                                 "lift_change",
                                  "vertical_water_velocity",
                                  "water_density",
                                  "thermal_expansion",
@@ -307,8 +314,14 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "draw i of a case uses seed + i");
   app.add_option("--cases", cases, "cases: effect ids, 'a+b' pairs, 'none' (clean logs)")->delimiter(',');
   app.add_option("--out", setup.out_dir, "directory for the SIL logs");
+  std::string intervals = "lag1";
+  app.add_option("--intervals", intervals, "how the diagnosis's intervals respect serial correlation")
+      ->check(CLI::IsMember({"glides", "yos", "lag1"}));
   return tool.run(argc, argv, [&]() -> int {
     std::filesystem::create_directories(setup.out_dir);
+    setup.options.intervals = intervals == "yos"      ? diagnose::DiagnoseOptions::Intervals::kYos
+                              : intervals == "glides" ? diagnose::DiagnoseOptions::Intervals::kGlides
+                                                      : diagnose::DiagnoseOptions::Intervals::kLag1;
     setup.nominal = model::load_vehicle_file(setup.source_dir + "/boards/vehicles/slocum_we01.toml");
     std::vector<std::pair<std::string, std::uint64_t>> work;
     for (const std::string& c : cases) {

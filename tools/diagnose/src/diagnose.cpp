@@ -3,8 +3,10 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -155,6 +157,41 @@ struct FitFunctor {
   }
 };
 
+// Covariance of the fitted (scaled) parameters. Glider residuals are not
+// independent noise: a glide's samples share one model error. kGlides/kYos:
+// the cluster-robust sandwich (J'J)^-1 [sum_g (J_g' r_g)(J_g' r_g)'] (J'J)^-1
+// with the small-sample factor G/(G-1) (n-1)/(n-k), and a Student-t quantile
+// on G-1 degrees of freedom (returned as a factor on 1.96). kLag1: the noise
+// variance over the effective sample count of an AR(1) fit to the residuals.
+Eigen::MatrixXd parameter_covariance(const SampleSet& set, std::span<const std::size_t> train,
+                                     const Eigen::MatrixXd& jac, const std::vector<double>& r,
+                                     DiagnoseOptions::Intervals intervals, double& t_over_normal) {
+  const auto k = static_cast<double>(jac.cols());
+  const double n = static_cast<double>(r.size());
+  const Eigen::MatrixXd bread = (jac.transpose() * jac).completeOrthogonalDecomposition().pseudoInverse();
+  t_over_normal = 1.0;
+  if (intervals == DiagnoseOptions::Intervals::kLag1) {
+    double rss = 0.0;
+    for (double v : r) rss += v * v;
+    const double n_eff = std::max(effective_sample_count(r, 0.0), k + 2.0);
+    return bread * (rss / (n_eff - k));  // RSS / (n_eff - k) = s^2 n / n_eff: inflated for correlation
+  }
+  std::map<std::pair<int, int>, Eigen::VectorXd> score;  // per cluster: J_g' r_g
+  for (std::size_t i = 0; i < train.size(); ++i) {
+    const std::size_t sample = train[i];
+    const int glide = intervals == DiagnoseOptions::Intervals::kYos ? 0 : static_cast<int>(set.phase[sample]);
+    auto [it, added] = score.try_emplace({set.yo[sample], glide}, Eigen::VectorXd::Zero(jac.cols()));
+    it->second += jac.row(static_cast<Eigen::Index>(i)).transpose() * r[i];
+  }
+  const double g = static_cast<double>(score.size());
+  if (g < 2.0) return bread * std::numeric_limits<double>::infinity();  // one cluster: no spread to see
+  Eigen::MatrixXd meat = Eigen::MatrixXd::Zero(jac.cols(), jac.cols());
+  for (const auto& [cluster, s] : score) meat += s * s.transpose();
+  const double small_sample = g / (g - 1.0) * (n - 1.0) / std::max(1.0, n - k);
+  t_over_normal = boost::math::quantile(boost::math::students_t_distribution<double>(g - 1.0), 0.975) / 1.96;
+  return bread * meat * bread * small_sample;
+}
+
 struct FitResult {
   Parameters parameters;
   std::vector<double> sigma;  // per fitted effect, reported units (the mean's, for a profile)
@@ -164,7 +201,7 @@ struct FitResult {
 };
 
 FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
-              std::span<const std::size_t> heldout) {
+              std::span<const std::size_t> heldout, DiagnoseOptions::Intervals intervals) {
   FitResult result;
   const Layout layout = make_layout(candidate, set, train);
   const std::size_t k = layout.size;
@@ -188,19 +225,14 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   for (double v : r) result.train_rss += v * v;
   result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
 
-  // Parameter uncertainty from the Jacobian at the solution. Samples of a log
-  // are serially correlated (1-4 s apart on minute-long glides): the noise
-  // variance is counted over the effective number of independent samples
-  // (from the lag-1 autocorrelation of the residuals).
+  // Parameter uncertainty from the Jacobian at the solution, with the
+  // residuals' serial correlation respected (DiagnoseOptions::intervals).
+  double t_over_normal = 1.0;  // Student-t quantile / 1.96, folded into sigma
   if (k > 0) {
     Eigen::NumericalDiff<FitFunctor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
     numeric.df(p, jac);
-    const double n_eff = std::max(effective_sample_count(r, 0.0), static_cast<double>(k) + 2.0);
-    // RSS / (n_eff - k) = s^2 n / n_eff: the noise variance, inflated for correlation.
-    const double variance = result.train_rss / (n_eff - static_cast<double>(k));
-    const Eigen::MatrixXd normal = jac.transpose() * jac;
-    const Eigen::MatrixXd cov = normal.completeOrthogonalDecomposition().pseudoInverse() * variance;
+    const Eigen::MatrixXd cov = parameter_covariance(set, train, jac, r, intervals, t_over_normal);
     for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
       const Effect e = candidate.fitted[j];
       const auto o = static_cast<Eigen::Index>(layout.offset[j]);
@@ -216,7 +248,7 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
       } else {
         var_value = cov(o, o);
       }
-      result.sigma.push_back(std::sqrt(std::max(var_value, 0.0)) * info(e).scale);
+      result.sigma.push_back(std::sqrt(std::max(var_value, 0.0)) * info(e).scale * t_over_normal);
     }
   }
   std::vector<double> h;
@@ -237,7 +269,7 @@ FitResult fit_reported(const SampleSet& set, const Candidate& candidate, std::sp
     }
     options.progress(what.empty() ? "nominal" : what);
   }
-  return fit(set, candidate, train, heldout);
+  return fit(set, candidate, train, heldout, options.intervals);
 }
 
 Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx) {

@@ -109,6 +109,19 @@ struct DiagnoseOptions {
   std::size_t max_fit_samples = 8000;
   FlightModelKind model = FlightModelKind::kDynamic;
   double max_step_s = 1.0;  // the dynamic model's integration step (RK4), at most
+  // How the 95 % intervals respect the serial correlation of glider
+  // residuals (a glide's samples share one model error, not independent
+  // noise). kLag1 (default): the Jacobian covariance with the noise counted
+  // over the effective sample count of an AR(1) fitted to the residuals.
+  // kGlides / kYos: cluster-robust (sandwich) covariance with each glide (a
+  // dive, a climb or a turn of one yo) or each yo as a cluster and a
+  // Student-t quantile on clusters - 1 degrees of freedom: the analytic form
+  // of a block bootstrap over glides or yos. bench_diagnose_coverage
+  // compares them (docs/diagnose/README.md): none reaches 90 % coverage on
+  // thinned SIL logs, whose errors are a bias (the input reconstruction
+  // between thinned samples), not noise.
+  enum class Intervals { kLag1, kGlides, kYos };
+  Intervals intervals = Intervals::kLag1;
   // Fit exactly these effects (no selection, no significance test), e.g. to
   // compare with another tool's fit of the same parameters. Empty: select.
   std::vector<Effect> fit_only;
