@@ -28,7 +28,25 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
 }
 
 GliderDynamics::GliderDynamics(const VehicleParams& vehicle, const Environment& environment)
-    : vehicle_(vehicle), environment_(environment), nominal_volume_m3_(model::displaced_volume_m3(vehicle)) {}
+    : vehicle_(vehicle),
+      environment_(environment),
+      nominal_volume_m3_(model::displaced_volume_m3(vehicle)),
+      sin_roll_offset_(std::sin(vehicle.heading.roll_offset_rad)) {}
+
+const GliderDynamics::MassProperties& GliderDynamics::MassCache::get(const GliderDynamics& dynamics,
+                                                                     const MassInputs& masses, double water_density) {
+  const bool same =
+      valid_ && masses.pumped_volume_m3 == masses_.pumped_volume_m3 && masses.battery_pos_m == masses_.battery_pos_m &&
+      masses.battery_rate_m_s == masses_.battery_rate_m_s && masses.second_pos_m == masses_.second_pos_m &&
+      masses.second_rate_m_s == masses_.second_rate_m_s && water_density == water_density_;
+  if (!same) {
+    value_ = dynamics.mass_properties(masses, water_density);
+    masses_ = masses;
+    water_density_ = water_density;
+    valid_ = true;
+  }
+  return value_;
+}
 
 GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses, double water_density) const {
   const VehicleParams& v = vehicle_;
@@ -63,6 +81,9 @@ GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs&
   const double m1 = v.battery.mass_kg * masses.battery_rate_m_s;
   const double m2 = v.second_mass.mass_kg * masses.second_rate_m_s;
   p.b << m1 + m2, 0.0, m1 * v.battery.z_m + m2 * v.second_mass.z_m;
+  // A is symmetric positive definite and 3x3: the closed-form inverse is
+  // exact enough (condition ~1e3) and several times faster than a factorisation.
+  p.a_inverse = p.a.inverse();
   return p;
 }
 
@@ -86,15 +107,14 @@ double GliderDynamics::net_buoyancy_kg(double z_m, const WaterSample& water, con
   return mass_properties(masses, water.density_kg_m3).total_kg - water.density_kg_m3 * displaced_volume_m3(z_m, water);
 }
 
-Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInputs& masses) const {
+Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInputs& masses, MassCache* cache) const {
   Evaluation e;
   e.water = environment_.water.at(s[kZ], time_s);
   const double rho = e.water.density_kg_m3;
-  const MassProperties mp = mass_properties(masses, rho);
+  MassProperties computed;
+  const MassProperties& mp = cache ? cache->get(*this, masses, rho) : (computed = mass_properties(masses, rho));
   const Eigen::Vector3d impulse(s[kP1], s[kP3], s[kPi2]);
-  // A is symmetric positive definite and 3x3: the closed-form inverse is
-  // exact enough (condition ~1e3) and several times faster than a factorisation.
-  const Eigen::Vector3d xi = mp.a.inverse() * (impulse - mp.b);
+  const Eigen::Vector3d xi = mp.a_inverse * (impulse - mp.b);
   e.v1 = xi[0];
   e.v3 = xi[1];
   e.q = xi[2];
@@ -131,9 +151,8 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
   const HeadingModel& hd = vehicle_.heading;
   const double slope = lift_slope_per_rad(h);
   const double alpha_effective = slope != 0.0 ? lift_coefficient / slope : 0.0;
-  const double yaw_rate_target =
-      e.speed_m_s * (hd.fin_yaw_gain_per_m * masses.fin_rad +
-                     hd.roll_yaw_gain_per_m * alpha_effective * std::sin(hd.roll_offset_rad));
+  const double yaw_rate_target = e.speed_m_s * (hd.fin_yaw_gain_per_m * masses.fin_rad +
+                                                hd.roll_yaw_gain_per_m * alpha_effective * sin_roll_offset_);
 
   e.horizontal_speed_m_s = e.v1 * cos_t + e.v3 * sin_t;
   const double psi = s[kPsi];

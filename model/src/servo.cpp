@@ -18,6 +18,11 @@ double RateLimitedServo::position_after(double t) const {
   return position_ + std::copysign(reach, gap);
 }
 
+double RateLimitedServo::time_to_target() const {
+  const double gap = std::abs(target_ - position_);
+  return gap > 0.0 && rate_ > 0.0 ? gap / rate_ : 0.0;
+}
+
 double RateLimitedServo::velocity_after(double t) const {
   const double gap = target_ - position_;
   if (gap == 0.0 || std::abs(gap) <= rate_ * t) return 0.0;

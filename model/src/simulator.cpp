@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/model/simulator.hpp"
 
+#include <algorithm>
 #include <boost/numeric/odeint/external/eigen/eigen_algebra.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <cmath>
@@ -27,6 +28,7 @@ RateLimitedServo make_slide(const SlidingMass& m, double initial) {
 GliderSimulator::GliderSimulator(const VehicleParams& vehicle, const Environment& environment, double step_s)
     : dynamics_(vehicle, environment),
       step_s_(step_s),
+      surface_zone_m_(vehicle.hull_diameter_m + kSurfaceZoneMarginM),
       pump_(vehicle.ballast.volume_min_m3, vehicle.ballast.volume_max_m3, vehicle.ballast.rate_m3_s, 0.0),
       battery_(make_slide(vehicle.battery, 0.0)),
       second_(make_slide(vehicle.second_mass, 0.0)),
@@ -35,8 +37,8 @@ GliderSimulator::GliderSimulator(const VehicleParams& vehicle, const Environment
 double GliderSimulator::displaced_pump_volume_after(double t) const {
   const double lag = dynamics_.vehicle().ballast.lag_s;
   if (!(lag > 0.0)) return pump_.position_after(t);
-  // The servo's path over the step is close to linear (it can stop inside
-  // one 0.1 s step at most once): lag its mean slope exactly.
+  // The servo's path over a step is linear (no step carries a servo's
+  // stop, see advance()): the lag of a linear input is exact.
   return first_order_lag_after(displaced_pump_volume_m3_, pump_.position(), pump_.position_after(t), t, lag);
 }
 
@@ -59,6 +61,7 @@ void GliderSimulator::reset_servos(double pumped_volume_m3, double battery_pos_m
   second_ = make_slide(v.second_mass, 0.0);
   fin_ = RateLimitedServo(-v.heading.fin_max_rad, v.heading.fin_max_rad, v.heading.fin_rate_rad_s, 0.0);
   pending_count_ = 0;
+  current_.reset();
 }
 
 void GliderSimulator::reset_at_depth(double depth_m, double pumped_volume_m3, double battery_pos_m,
@@ -82,6 +85,12 @@ void GliderSimulator::reset_at_surface(double pumped_volume_m3, double battery_p
   };
   const double d = dynamics_.vehicle().hull_diameter_m;
   state_[kZ] = bracketed_root(net_buoyancy_at, -d, d);
+  current_.reset();
+}
+
+const Evaluation& GliderSimulator::current() const {
+  if (!current_) current_ = dynamics_.evaluate(time_s_, state_, masses_after(0.0), &mass_cache_);
+  return *current_;
 }
 
 void GliderSimulator::step(double h) {
@@ -89,8 +98,13 @@ void GliderSimulator::step(double h) {
   // The servos' paths over [t, t + h] are closed-form: evaluate them at each
   // RK4 stage time instead of holding them constant over the step.
   const double t0 = time_s_;
-  auto rhs = [this, t0](const State& s, State& ds, double t) { ds = dynamics_.derivative(t, s, masses_after(t - t0)); };
-  stepper.do_step(rhs, state_, t0, h);
+  auto rhs = [this, t0](const State& s, State& ds, double t) {
+    ds = dynamics_.evaluate(t, s, masses_after(t - t0), &mass_cache_).state_dot;
+  };
+  // The first stage is the derivative at the current state: current() has it
+  // when the log or the sensors asked for it this cycle.
+  stepper.do_step(rhs, state_, current().state_dot, t0, h);
+  current_.reset();
   displaced_pump_volume_m3_ = displaced_pump_volume_after(h);
   pump_.advance(h);
   battery_.advance(h);
@@ -99,14 +113,20 @@ void GliderSimulator::step(double h) {
   time_s_ += h;
 }
 
+void GliderSimulator::retarget(RateLimitedServo& servo, double target) {
+  const double before = servo.target();
+  servo.set_target(target);
+  if (servo.target() != before) current_.reset();
+}
+
 void GliderSimulator::command_fin_rad(double angle) {
   const double delay = dynamics_.vehicle().heading.fin_delay_s;
   if (!(delay > 0.0)) {
-    fin_.set_target(angle);
+    retarget(fin_, angle);
     return;
   }
   if (pending_count_ == kMaxPendingFin) {  // a command per step at most: drop the oldest
-    fin_.set_target(pending_fin_[pending_first_].angle_rad);
+    retarget(fin_, pending_fin_[pending_first_].angle_rad);
     pending_first_ = (pending_first_ + 1) % kMaxPendingFin;
     --pending_count_;
   }
@@ -117,19 +137,39 @@ void GliderSimulator::command_fin_rad(double angle) {
 void GliderSimulator::advance(double duration_s) {
   double remaining = duration_s;
   while (remaining > 1e-12) {
-    while (pending_count_ > 0 && pending_fin_[pending_first_].due_s <= time_s_ + 1e-9) {
-      fin_.set_target(pending_fin_[pending_first_].angle_rad);
-      pending_first_ = (pending_first_ + 1) % kMaxPendingFin;
-      --pending_count_;
-    }
-    const double h = remaining < step_s_ * (1.0 + 1e-9) ? remaining : step_s_;
+    apply_due_fin_commands();
+    // Near the surface the waterplane makes the heave mode fast: the step
+    // there is at most kSurfaceStepS (see the header).
+    const double max_h = state_[kZ] < surface_zone_m_ ? std::min(step_s_, kSurfaceStepS) : step_s_;
+    double h = remaining < max_h * (1.0 + 1e-9) ? remaining : max_h;
+    // A fin command waiting out its dead time starts the servo exactly when
+    // due: the step ends there (not at the next step boundary).
+    if (pending_count_ > 0) h = step_until(pending_fin_[pending_first_].due_s - time_s_, h);
+    // Nor does a step carry a servo's stop inside it: the masses' path (and
+    // the pump lag's input) is then smooth over every step, as RK4 needs.
+    for (const RateLimitedServo* servo : {&pump_, &battery_, &second_, &fin_})
+      h = step_until(servo->time_to_target(), h);
     step(h);
     remaining -= h;
   }
 }
 
+double GliderSimulator::step_until(double event_s, double h) {
+  // Events closer than kMinEventStepS are left inside the step (a servo
+  // rounding its last micrometre), as are those at its end.
+  return event_s > kMinEventStepS && event_s < h * (1.0 - 1e-9) ? event_s : h;
+}
+
+void GliderSimulator::apply_due_fin_commands() {
+  while (pending_count_ > 0 && pending_fin_[pending_first_].due_s <= time_s_ + 1e-9) {
+    retarget(fin_, pending_fin_[pending_first_].angle_rad);
+    pending_first_ = (pending_first_ + 1) % kMaxPendingFin;
+    --pending_count_;
+  }
+}
+
 Truth GliderSimulator::truth() const {
-  const Evaluation e = dynamics_.evaluate(time_s_, state_, masses_after(0.0));
+  const Evaluation& e = current();
   Truth t;
   t.time_s = time_s_;
   t.east_m = state_[kEast];

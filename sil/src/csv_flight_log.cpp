@@ -95,7 +95,8 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   if (thinned_out(r)) return true;  // not logged by design: not a lost row
   const model::Truth t = sim_.truth();
   char line[fw::kLogFieldsMaxChars + 1024];
-  std::size_t at = fw::format_log_fields(r, r.time_us, line, sizeof line);
+  std::size_t at = formatter_.fields(r, r.time_us, line, sizeof line);
+  std::size_t column = 0;
   // The science bay is off at the surface (m_depth_state 0), as in real logs.
   const bool science_missed = gaps_.enabled && gap_random_.uniform() < gaps_.sci_blank_fraction;
   const CtdReading ctd = science_missed ? CtdReading{} : ctd_.sample(t, r.m_depth_state != 0);
@@ -123,7 +124,7 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
                              t.water.vertical_velocity_m_s,
                              t.water.temperature_c,
                              t.water.practical_salinity}) {
-    const std::size_t n = at > 0 ? fw::format_log_number(value, line + at, sizeof line - at) : 0;
+    const std::size_t n = at > 0 ? formatter_.number(column++, value, line + at, sizeof line - at) : 0;
     at = n > 0 ? at + n : 0;
   }
   if (at == 0) {

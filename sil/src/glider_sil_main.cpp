@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
   double launch_lat = std::nan("");
   double launch_lon = std::nan("");
   bool quiet = false;
+  double integration_step_s = glider::model::GliderSimulator::kDefaultStepS;
   tool.add_vehicle_option(vehicle_path);
   app.add_option("--mission,mission", mission_path, "mission file: Slocum .mi, or TOML")
       ->required()
@@ -119,6 +120,10 @@ int main(int argc, char** argv) {
   app.add_option("--launch-lat", launch_lat, "launch latitude, decimal degrees (default: comet 2019's first fix)");
   app.add_option("--launch-lon", launch_lon, "launch longitude, decimal degrees");
   app.add_flag("--quiet", quiet, "print nothing but errors");
+  app.add_option("--integration-step-s", integration_step_s,
+                 "the vehicle model's integration step (accuracy: docs/sil.md, Speed)")
+      ->check(CLI::Range(1e-3, 1.0))
+      ->capture_default_str();
   bool check_mission = false;
   app.add_flag("--check-mission", check_mission, "read the vehicle and the mission, report, exit (nothing flown)");
   app.add_option("--summary-json", summary_json_path,
@@ -174,6 +179,7 @@ int main(int argc, char** argv) {
     if (std::isfinite(launch_lat) && std::isfinite(launch_lon))
       options.peripherals.gps.launch = {launch_lat, launch_lon};
     options.seed = seed;
+    options.integration_step_s = integration_step_s;
     options.heading_deg = heading_deg;
     options.log_path = out_path;
     options.metadata = {

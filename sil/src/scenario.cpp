@@ -51,7 +51,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   }
   if (!result.error.empty()) return result;
 
-  model::GliderSimulator sim(vehicle, options.environment);
+  model::GliderSimulator sim(vehicle, options.environment, options.integration_step_s);
   sim.reset_at_surface(cc_to_m3(config.limits.ballast_max_cc), 0.0, deg_to_rad(options.heading_deg));
   SimClock clock;
   SimHal sim_hal(sim, clock, options.noise, options.seed, options.peripherals);

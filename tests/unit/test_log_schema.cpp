@@ -124,3 +124,32 @@ TEST(LogSchema, Trailer) {
   STRCMP_EQUAL("# end: aborted depth_sensor rows=12 lost=3\n", std::string(text, n).c_str());
   CHECK_EQUAL(0u, fw::format_log_trailer("stopped signal", 1, 1, text, 10));
 }
+
+TEST(LogSchema, RowFormatterWritesTheSameBytes) {
+  // The SIL's remembering formatter against the stateless one, row after
+  // row: values repeated, changed, changed back, -0 after 0, NaN, and a
+  // buffer too small for the remembered text.
+  fw::LogRowFormatter formatter;
+  hal::FlightLogRecord r;
+  const double extras[] = {0.0, -0.0, 0.1 + 0.2, std::numeric_limits<double>::quiet_NaN(), 1e-300, 250.0};
+  char expected[fw::kLogFieldsMaxChars];
+  char actual[fw::kLogFieldsMaxChars];
+  for (int row = 0; row < 40; ++row) {
+    r.m_depth = row % 3 == 0 ? 12.5 : 0.1 * row;
+    r.m_pitch = row % 2 == 0 ? 0.0 : -0.0;
+    r.m_roll = row % 5 == 0 ? std::numeric_limits<double>::quiet_NaN() : -1.0 / 3.0;
+    r.c_ballast_pumped = row < 20 ? -250.0 : 250.0;
+    r.x_yo_count = row / 7;
+    const auto time_us = static_cast<hal::Micros>(row) * 1'000'000 + 250'000;
+    const std::size_t n = fw::format_log_fields(r, time_us, expected, sizeof expected);
+    CHECK_EQUAL(n, formatter.fields(r, time_us, actual, sizeof actual));
+    STRCMP_EQUAL(std::string(expected, n).c_str(), std::string(actual, n).c_str());
+    const double extra = extras[static_cast<std::size_t>(row / 4) % std::size(extras)];
+    const std::size_t m = fw::format_log_number(extra, expected, sizeof expected);
+    CHECK_EQUAL(m, formatter.number(0, extra, actual, sizeof actual));
+    STRCMP_EQUAL(std::string(expected, m).c_str(), std::string(actual, m).c_str());
+  }
+  // A remembered text that does not fit is refused as format_log_number refuses it.
+  CHECK_EQUAL(0u, formatter.number(0, 250.0, actual, 2));
+  CHECK_EQUAL(0u, formatter.fields(r, 0, actual, 20));
+}

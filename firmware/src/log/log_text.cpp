@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/log/log_text.hpp"
 
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -69,10 +70,16 @@ std::size_t format_log_number(double value, char* out, std::size_t capacity) {
   return put_char(out, capacity, at, ',') ? at : 0;
 }
 
-std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out,
-                              std::size_t capacity) {
+namespace {
+
+// The firmware fields of a row; `number(i, value, out, capacity)` writes the
+// kNumber column i as format_log_number does.
+template <typename NumberText>
+std::size_t format_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out, std::size_t capacity,
+                          NumberText number) {
   std::size_t at = 0;
-  for (const hal::LogColumn& column : hal::kLogColumns) {
+  for (std::size_t i = 0; i < hal::kLogColumns.size(); ++i) {
+    const hal::LogColumn& column = hal::kLogColumns[i];
     bool ok = true;
     switch (column.kind) {
       case hal::LogColumnKind::kTime:
@@ -83,7 +90,7 @@ std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros ti
              put_char(out, capacity, at, ',');
         break;
       case hal::LogColumnKind::kNumber: {
-        const std::size_t n = format_log_number(column.value(record), out + at, capacity - at);
+        const std::size_t n = number(i, column.value(record), out + at, capacity - at);
         ok = n > 0;
         at += n;
         break;
@@ -92,6 +99,46 @@ std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros ti
     if (!ok) return 0;
   }
   return at;
+}
+
+}  // namespace
+
+std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out,
+                              std::size_t capacity) {
+  return format_fields(record, time_us, out, capacity, [](std::size_t, double value, char* text, std::size_t room) {
+    return format_log_number(value, text, room);
+  });
+}
+
+std::size_t LogRowFormatter::remembered(Memo& memo, double value, char* out, std::size_t capacity) {
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  if (memo.length > 0 && memo.bits == bits) {
+    if (memo.length > capacity) return 0;
+    std::memcpy(out, memo.text, memo.length);
+    return memo.length;
+  }
+  const std::size_t n = format_log_number(value, out, capacity);
+  if (n > 0 && n <= sizeof memo.text) {
+    std::memcpy(memo.text, out, n);
+    memo.length = static_cast<std::uint8_t>(n);
+    memo.bits = bits;
+  } else {
+    memo.length = 0;
+  }
+  return n;
+}
+
+std::size_t LogRowFormatter::fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out,
+                                    std::size_t capacity) {
+  return format_fields(record, time_us, out, capacity,
+                       [this](std::size_t i, double value, char* text, std::size_t room) {
+                         return remembered(firmware_[i], value, text, room);
+                       });
+}
+
+std::size_t LogRowFormatter::number(std::size_t column, double value, char* out, std::size_t capacity) {
+  if (column >= extra_.size()) return format_log_number(value, out, capacity);
+  return remembered(extra_[column], value, out, capacity);
 }
 
 std::size_t format_log_trailer(std::string_view outcome, std::uint64_t rows, std::uint64_t lost, char* out,

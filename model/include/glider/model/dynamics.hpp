@@ -90,16 +90,33 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
 class GliderDynamics {
  public:
   struct MassProperties {
-    Eigen::Matrix3d a;      // generalized mass matrix
-    Eigen::Vector3d b;      // impulse of the moving battery relative to the hull
-    double total_kg = 0.0;  // all rigid masses (no added mass)
-    double first_x = 0.0;   // sum m x
-    double first_z = 0.0;   // sum m z
+    Eigen::Matrix3d a;          // generalized mass matrix
+    Eigen::Vector3d b;          // impulse of the moving battery relative to the hull
+    double total_kg = 0.0;      // all rigid masses (no added mass)
+    double first_x = 0.0;       // sum m x
+    double first_z = 0.0;       // sum m z
+    Eigen::Matrix3d a_inverse;  // A^-1: impulse to velocities
+  };
+
+  // The last mass properties computed, for a caller that evaluates the
+  // dynamics many times with the internal masses at rest (the simulator:
+  // most integration steps move no servo). Same inputs, same bits: the cache
+  // changes no result. One per caller (evaluate() stays const and shareable).
+  class MassCache {
+   public:
+    const MassProperties& get(const GliderDynamics& dynamics, const MassInputs& masses, double water_density);
+
+   private:
+    bool valid_ = false;
+    MassInputs masses_{};  // fin_rad ignored: it moves no mass
+    double water_density_ = 0.0;
+    MassProperties value_;
   };
 
   GliderDynamics(const VehicleParams& vehicle, const Environment& environment);
 
-  Evaluation evaluate(double time_s, const State& state, const MassInputs& masses) const;
+  // `cache` (optional) holds the last mass properties between calls.
+  Evaluation evaluate(double time_s, const State& state, const MassInputs& masses, MassCache* cache = nullptr) const;
   State derivative(double time_s, const State& state, const MassInputs& masses) const {
     return evaluate(time_s, state, masses).state_dot;
   }
@@ -133,6 +150,7 @@ class GliderDynamics {
   VehicleParams vehicle_;
   Environment environment_;
   double nominal_volume_m3_;
+  double sin_roll_offset_;  // constant: the roll term of the yaw rate
 };
 
 }  // namespace glider::model

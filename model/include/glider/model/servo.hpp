@@ -19,6 +19,9 @@ class RateLimitedServo {
   double position_after(double t) const;
   double velocity_after(double t) const;
 
+  // Seconds until it reaches the target and stops (0 if it is there).
+  double time_to_target() const;
+
   void advance(double dt) { position_ = position_after(dt); }
 
  private:

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 #include <array>
+#include <optional>
 
 #include "glider/model/dynamics.hpp"
 #include "glider/model/servo.hpp"
@@ -33,13 +34,19 @@ struct Truth {
 // fixed-step classic Runge-Kutta 4 (Boost.Odeint).
 class GliderSimulator {
  public:
-  // Integration step. The fastest mode of the SLOCUM model is the heave/
-  // angle-of-attack mode (lift slope / heave mass ~ 1 s^-1; ~2 s^-1 when
-  // bobbing at the surface), the pitch pendulum is ~0.4 rad/s: 0.1 s keeps
-  // |lambda h| <= 0.3, where RK4's error per step is ~1e-5 relative and far
-  // inside its stability limit (2.8). tests/unit/test_dynamics.cpp checks the
-  // eigenvalues of the linearized model against this.
-  static constexpr double kDefaultStepS = 0.1;
+  // Integration step (classic RK4) while submerged. tests/unit/
+  // test_dynamics.cpp checks the linearized model's eigenvalues against it
+  // (the fastest submerged mode, heave / angle of attack, is ~1 s^-1: RK4 is
+  // stable to |lambda h| = 2.8) and tests/unit/test_integration_accuracy.cpp
+  // checks glides, turns and surfacing against a run at 0.01 s.
+  static constexpr double kDefaultStepS = 1.0;
+  // At the surface the waterplane (the buoyancy of a partly immersed hull
+  // changes over one hull diameter) makes heave several times faster
+  // (~5 s^-1 for a Slocum): within a hull diameter plus this margin of the
+  // surface the step is at most kSurfaceStepS. The margin is more than a
+  // glider travels vertically in one submerged step.
+  static constexpr double kSurfaceStepS = 0.1;
+  static constexpr double kSurfaceZoneMarginM = 1.5;
 
   GliderSimulator(const VehicleParams& vehicle, const Environment& environment, double step_s = kDefaultStepS);
 
@@ -48,11 +55,11 @@ class GliderSimulator {
   // At rest at depth (pitch at its static value).
   void reset_at_depth(double depth_m, double pumped_volume_m3, double battery_pos_m, double heading_rad = 0.0);
 
-  void command_pumped_volume_m3(double volume) { pump_.set_target(volume); }
-  void command_battery_pos_m(double position) { battery_.set_target(position); }
-  void command_second_pos_m(double position) { second_.set_target(position); }
+  void command_pumped_volume_m3(double volume) { retarget(pump_, volume); }
+  void command_battery_pos_m(double position) { retarget(battery_, position); }
+  void command_second_pos_m(double position) { retarget(second_, position); }
   // The fin starts toward a command heading.fin_delay_s after it is given
-  // (to the integration step): the servo's dead time.
+  // (an integration step ends there): the servo's dead time.
   void command_fin_rad(double angle);
 
   // Advance by `duration_s` (a whole number of integration steps; the last
@@ -60,6 +67,10 @@ class GliderSimulator {
   void advance(double duration_s);
 
   Truth truth() const;
+  // The dynamics evaluated at the current state and servo commands; computed
+  // once and kept until the state or a command changes (the log, GPS, power
+  // model and the next integration step all ask for it).
+  const Evaluation& current() const;
   double time_s() const { return time_s_; }
   const State& state() const { return state_; }
   const GliderDynamics& dynamics() const { return dynamics_; }
@@ -70,12 +81,20 @@ class GliderSimulator {
 
  private:
   void step(double h);
+  void apply_due_fin_commands();
+  // Sets a servo's target; current() is recomputed only if the target moved
+  // (the firmware repeats most commands every cycle).
+  void retarget(RateLimitedServo& servo, double target);
+  // The step shortened to end at an event `event_s` ahead, if it falls inside it.
+  static double step_until(double event_s, double h);
+  static constexpr double kMinEventStepS = 1e-6;
   void reset_servos(double pumped_volume_m3, double battery_pos_m);
   MassInputs masses_after(double t) const;
   double displaced_pump_volume_after(double t) const;
 
   GliderDynamics dynamics_;
   double step_s_;
+  double surface_zone_m_;  // depth above which the step is at most kSurfaceStepS
   RateLimitedServo pump_;
   RateLimitedServo battery_;
   RateLimitedServo second_;
@@ -92,6 +111,8 @@ class GliderSimulator {
   double displaced_pump_volume_m3_ = 0.0;  // lags pump_ by ballast.lag_s (0: equal)
   State state_ = State::Zero();
   double time_s_ = 0.0;
+  mutable GliderDynamics::MassCache mass_cache_;
+  mutable std::optional<Evaluation> current_;  // current(): empty when stale
 };
 
 }  // namespace glider::model

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "glider/firmware/log/log_text.hpp"
 #include "glider/hal/log_record.hpp"
 #include "glider/model/environment.hpp"
 #include "glider/model/simulator.hpp"
@@ -76,6 +77,7 @@ class CsvFlightLog final : public hal::LogSink {
   std::uint64_t flushed_bytes_ = 0;  // the file's length: always a row boundary
   const model::GliderSimulator& sim_;
   SimCtd ctd_;
+  fw::LogRowFormatter formatter_;  // the same bytes as fw::format_log_fields, faster
   LogGaps gaps_;
   PortableRandom gap_random_;
   hal::Micros next_row_us_ = 0;          // thinning: the earliest time of the next row

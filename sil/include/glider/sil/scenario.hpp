@@ -26,6 +26,8 @@ struct ScenarioOptions {
   model::Environment environment{};
   double max_sim_time_s = 6.0 * 3600.0;  // the runner's own stop, beyond the mission's
   hal::Micros period_us = fw::Executive::kDefaultPeriodUs;
+  // The plant's integration step (model::GliderSimulator; docs/sil.md, Speed).
+  double integration_step_s = model::GliderSimulator::kDefaultStepS;
   std::string log_path;  // empty: no CSV file
   Metadata metadata;     // extra `# key: value` lines (vehicle.* are added)
   LogGaps log_gaps;      // thin the CSV like a real Slocum log (off by default)

@@ -5,6 +5,7 @@
 // fields as the shortest round-trip number text (std::to_chars), and the
 // trailer that marks a finished log. Formatting allocates nothing and never
 // throws: the target's writer thread and the SIL call it per row.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -28,6 +29,33 @@ std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros ti
 // The shortest round-trip text of `value` and a ',' (NaN or inf: the ',' alone).
 // Returns the characters written, 0 if they do not fit.
 std::size_t format_log_number(double value, char* out, std::size_t capacity);
+
+// Formats rows with the same bytes as format_log_fields and
+// format_log_number, for a writer that formats every row of a log in order
+// (the SIL's CSV): it keeps each column's last value and text, and a value
+// with the same bits as in the previous row (most columns of most rows:
+// commands, counters, an idle servo, the water) is copied, not formatted
+// again. Allocates nothing.
+class LogRowFormatter {
+ public:
+  static constexpr std::size_t kMaxExtraColumns = 32;  // a writer's own columns after the firmware's
+
+  // As format_log_fields.
+  std::size_t fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out, std::size_t capacity);
+  // As format_log_number, for the writer's extra column `column` (< kMaxExtraColumns).
+  std::size_t number(std::size_t column, double value, char* out, std::size_t capacity);
+
+ private:
+  struct Memo {
+    std::uint64_t bits = 0;
+    std::uint8_t length = 0;  // 0: nothing remembered
+    char text[31] = {};       // the number and its ','
+  };
+  static std::size_t remembered(Memo& memo, double value, char* out, std::size_t capacity);
+
+  std::array<Memo, hal::kLogColumns.size()> firmware_{};
+  std::array<Memo, kMaxExtraColumns> extra_{};
+};
 
 // How a log ended (the last line of a finished log, docs/flight-log.md):
 //   # end: complete rows=N lost=M
