@@ -639,8 +639,9 @@ void fit_requested(const SampleSet& set, const Split& s, const DiagnoseOptions& 
   for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
 }
 
-// Forward selection: the candidate that cuts the held-out error most enters
-// if it cuts it by the margins, lowers the BIC and has a plausible value.
+// Forward selection: of the candidates with a plausible value, the one that
+// cuts the held-out error most enters if it cuts it by the margins and lowers
+// the BIC.
 // The measured density is a known input, not a fitted number: where the log
 // has a CTD it is tried alone at the start of every round until it is taken,
 // so that a fitted effect of the same shape (a negative hull compressibility
@@ -663,6 +664,8 @@ void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions&
         trial.fitted.push_back(remaining[c]);
       }
       FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
+      // An implausible value is another effect's stand-in: the next best competes instead.
+      if (!is_ctd && !plausible(remaining[c], f.parameters.values[static_cast<std::size_t>(remaining[c])])) continue;
       if (!best || f.heldout_rms < best->second.heldout_rms) {
         best = std::make_pair(c, f);
         best_candidate = trial;
@@ -676,10 +679,8 @@ void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions&
     const bool bic_better = f.bic < current_fit.bic;
     // Its interval is judged in the final joint fit (backward step):
     // while another effect is still missing, the residuals are serially
-    // correlated and inflate every interval.
-    const bool is_plausible =
-        effect == Effect::kWaterDensity || plausible(effect, f.parameters.values[static_cast<std::size_t>(effect)]);
-    if (!(helps && bic_better && is_plausible)) {
+    // correlated and inflate every interval. (Only plausible values compete.)
+    if (!(helps && bic_better)) {
       if (!ctd_alone) break;
       ctd_declined_this_round = true;  // not yet: the other effects get their turn
       continue;

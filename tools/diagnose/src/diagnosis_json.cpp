@@ -74,6 +74,11 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
     parameters[info(static_cast<Effect>(i)).id] = d.extended[i];
   }
   j["parameters"] = parameters;
+  if (d.extended_profile) {
+    j["vertical_velocity_profile"] = {{"first_m", d.extended_profile->first_m},
+                                      {"bin_m", d.extended_profile->bin_m},
+                                      {"w_m_s", d.extended_profile->w_m_s}};
+  }
   j["candidates"] = d.candidates_tried;
   if (d.speed_through_water) {
     const auto& u = *d.speed_through_water;

@@ -17,8 +17,11 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Plausible ranges: a glider a kilogram off trim could not fly its yos;
 // hull compressibility of 1.5e-9 /Pa would be a 0.15 % volume change per
 // 100 m, five times a soft Seaglider hull (~3e-10 /Pa, Eriksen et al. 2001);
-// thermal expansion 3e-4 /K is four times Seaglider's therm_expan; a vertical
-// velocity of 0.2 m/s is convection at its strongest; a pump lag beyond two
+// thermal expansion 3e-4 /K is four times Seaglider's therm_expan; the
+// vertical velocity's value is its mean over the log's hours, and a mean of
+// 2 cm/s is 72 m of water rising or sinking every hour for hours (internal
+// waves average out; convective plumes reach 0.1 m/s but sink between rising
+// water): beyond, it stands in for a buoyancy offset; a pump lag beyond two
 // minutes is a broken pump, not a lag; a lift slope a third or three times
 // the vehicle's is another wing, not a change of it.
 const std::array<EffectInfo, kEffectCount> kInfo{{
@@ -26,7 +29,7 @@ const std::array<EffectInfo, kEffectCount> kInfo{{
     {"drag_change", "ratio", 1.0, 0.1, 0.3, 5.0},
     {"hull_compressibility", "1/Pa", 0.0, 1e-10, -1.5e-9, 1.5e-9},
     {"thermal_expansion", "1/K", 0.0, 1e-5, -3e-4, 3e-4},
-    {"vertical_water_velocity", "m/s", 0.0, 0.01, -0.2, 0.2},
+    {"vertical_water_velocity", "m/s", 0.0, 0.01, -0.02, 0.02},
     {"water_density", "kg/m^3", 0.0, 1.0, -40.0, 40.0},
     {"pitch_trim_offset", "in", 0.0, 0.01, -2.0, 2.0},
     {"pump_lag", "s", 0.0, 5.0, -120.0, 120.0},
