@@ -250,9 +250,13 @@ void add(Tally& t, const Result& r) {
     if (f->ci95_low <= truth && truth <= f->ci95_high) ++t.covered;
   }
   if (all_named) ++t.named;
-  if (r.truth.empty()
-          ? r.diagnosis.cause == "none"
-          : r.truth.contains(r.diagnosis.findings.empty() ? Effect::kCount : r.diagnosis.findings.front().effect)) {
+  // The cause: the first finding that is a claim (the measured density is an
+  // input, ranked first in stratified water) must be a hidden effect.
+  const diagnose::Finding* first_claim = nullptr;
+  for (const auto& f : r.diagnosis.findings) {
+    if (first_claim == nullptr && (f.fitted || r.truth.contains(f.effect))) first_claim = &f;
+  }
+  if (r.truth.empty() ? first_claim == nullptr : first_claim != nullptr && r.truth.contains(first_claim->effect)) {
     ++t.cause;
   }
   int extra = 0;
