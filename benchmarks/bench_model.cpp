@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Speed of the vehicle model: one RK4 step of the full dynamics, one
+// Speed of the vehicle model: one submerged RK4 step of the full dynamics, one
 // derivative evaluation, and the steady-glide solvers. Run:
 //   build/release/benchmarks/bench_model
 #include <benchmark/benchmark.h>
@@ -25,7 +25,8 @@ void BM_DerivativeEvaluation(benchmark::State& state) {
 }
 BENCHMARK(BM_DerivativeEvaluation);
 
-// One integration step (0.1 s of flight, 4 evaluations), servos moving.
+// One submerged integration step (1 s of flight, 4 evaluations; shorter
+// where a servo stops inside it), servos moving.
 void BM_SimulatorStep(benchmark::State& state) {
   GliderSimulator sim(vehicle(), Environment{});
   sim.reset_at_depth(100.0, 0.0, 0.0);

@@ -26,7 +26,7 @@ import tempfile
 
 PARTS = ("model", "firmware", "sil", "log", "other")
 RULES = (  # first match wins
-    ("log", re.compile(r"CsvFlightLog|LogRowFormatter|glider::fw::format_log|glider::fw::\(anonymous namespace\)::put"
+    ("log", re.compile(r"CsvFlightLog|LogRowFormatter|BinaryRowEncoder|glider::fw::format_log|glider::fw::\(anonymous namespace\)::put"
                        r"|glider::fw::\(anonymous namespace\)::format_fields|glider::sil::SimCtd")),
     ("model", re.compile(r"glider::model::|boost::numeric::odeint|Eigen::")),
     ("firmware", re.compile(r"glider::fw::|glider::hal::")),
@@ -126,8 +126,11 @@ def split_costs(path, program):
 def fly(sil, sil_args, mission, vehicle, sim_time_s, workdir, tag):
     out = os.path.join(workdir, f"{tag}_{int(sim_time_s)}.callgrind")
     log = os.path.join(workdir, f"{tag}.csv")
+    options = [option.replace("{dir}", workdir) for option in sil_args]
+    if "--out" not in options:
+        options += ["--out", log]
     command = ["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", sil, "--mission", mission,
-               "--vehicle", vehicle, "--out", log, "--quiet", "--max-sim-time-s", str(sim_time_s)] + sil_args
+               "--vehicle", vehicle, "--quiet", "--max-sim-time-s", str(sim_time_s)] + options
     run = subprocess.run(command, capture_output=True, text=True)
     if run.returncode not in (0, 3):  # 3: stopped by the time limit, as asked
         sys.exit(f"sil_instructions: {' '.join(command)} failed ({run.returncode}):\n{run.stderr}")
@@ -147,7 +150,8 @@ def main():
     parser.add_argument("--sil", required=True, help="glider-sil to measure")
     parser.add_argument("--baseline", help="another glider-sil (today's): the ratios are printed against it")
     parser.add_argument("--variant", action="append", default=[],
-                        help="LABEL=OPTIONS: also measure --sil with these glider-sil options (repeatable)")
+                        help="LABEL=OPTIONS: also measure --sil with these glider-sil options (repeatable; "
+                        "'{dir}' is a temporary directory; default --out: a CSV log there)")
     parser.add_argument("--mission", required=True)
     parser.add_argument("--vehicle", required=True)
     parser.add_argument("--times", default="1800,9000", help="the two simulated times, s")
@@ -164,7 +168,7 @@ def main():
             costs = per_sim_second(sil, options, args.mission, args.vehicle, times, workdir, f"run{index}")
             runs.append((label, costs))
     print(f"  instructions per simulated second (callgrind; {os.path.basename(args.mission)} from "
-          f"{times[0]:.0f} to {times[1]:.0f} s; CSV log written):")
+          f"{times[0]:.0f} to {times[1]:.0f} s; CSV log written unless said):")
     print("    %-14s %9s %9s %9s %9s %9s %9s" % ("", *PARTS, "total"))
     for label, costs in runs:
         ratio = ""

@@ -4,6 +4,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
 
@@ -27,8 +29,8 @@ const char* kSimColumns =
 std::string CsvFlightLog::header() { return fw::log_header() + "," + kSimColumns; }
 
 CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
-                           const SimCtd& ctd, const LogGaps& gaps, std::uint64_t gap_seed)
-    : path_(path), sim_(sim), ctd_(ctd), gaps_(gaps), gap_random_(gap_seed) {
+                           const SimCtd& ctd, const LogGaps& gaps, std::uint64_t gap_seed, LogEncoding encoding)
+    : path_(path), sim_(sim), ctd_(ctd), encoding_(encoding), gaps_(gaps), gap_random_(gap_seed) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0) {
     ok_ = false;
@@ -37,6 +39,7 @@ CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, co
   }
   pending_.reserve(kFlushBytes + 4096);
   pending_ += "# writer: glider-sil\n";  // one of our writers: the log ends with a trailer (docs/flight-log.md)
+  if (encoding_ == LogEncoding::kBinary) pending_ += fw::kBinaryEncodingLine;
   for (const auto& [key, value] : metadata) {
     pending_ += "# " + key + ": " + value + '\n';
   }
@@ -94,36 +97,52 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   if (!ok_) return false;
   if (thinned_out(r)) return true;  // not logged by design: not a lost row
   const model::Truth t = sim_.truth();
-  char line[fw::kLogFieldsMaxChars + 1024];
-  std::size_t at = formatter_.fields(r, r.time_us, line, sizeof line);
-  std::size_t column = 0;
   // The science bay is off at the surface (m_depth_state 0), as in real logs.
   const bool science_missed = gaps_.enabled && gap_random_.uniform() < gaps_.sci_blank_fraction;
   const CtdReading ctd = science_missed ? CtdReading{} : ctd_.sample(t, r.m_depth_state != 0);
-  for (const double value : {ctd.temperature_c,
-                             ctd.conductivity_s_m,
-                             ctd.pressure_bar,
-                             t.east_m,
-                             t.north_m,
-                             t.depth_m,
-                             t.heading_rad,
-                             t.pitch_rad,
-                             t.speed_m_s,
-                             t.alpha_rad,
-                             t.glide_path_rad,
-                             t.horizontal_speed_m_s,
-                             t.depth_rate_m_s,
-                             t.net_buoyancy_kg,
-                             m3_to_cc(t.pumped_volume_m3),
-                             m_to_in(t.battery_pos_m),
-                             t.fin_rad,
-                             t.yaw_rate_rad_s,
-                             t.water.density_kg_m3,
-                             t.water.current_east_m_s,
-                             t.water.current_north_m_s,
-                             t.water.vertical_velocity_m_s,
-                             t.water.temperature_c,
-                             t.water.practical_salinity}) {
+  const std::array sim_values{ctd.temperature_c,
+                              ctd.conductivity_s_m,
+                              ctd.pressure_bar,
+                              t.east_m,
+                              t.north_m,
+                              t.depth_m,
+                              t.heading_rad,
+                              t.pitch_rad,
+                              t.speed_m_s,
+                              t.alpha_rad,
+                              t.glide_path_rad,
+                              t.horizontal_speed_m_s,
+                              t.depth_rate_m_s,
+                              t.net_buoyancy_kg,
+                              m3_to_cc(t.pumped_volume_m3),
+                              m_to_in(t.battery_pos_m),
+                              t.fin_rad,
+                              t.yaw_rate_rad_s,
+                              t.water.density_kg_m3,
+                              t.water.current_east_m_s,
+                              t.water.current_north_m_s,
+                              t.water.vertical_velocity_m_s,
+                              t.water.temperature_c,
+                              t.water.practical_salinity};
+  if (encoding_ == LogEncoding::kBinary) {
+    constexpr std::size_t kFirmware = hal::kLogColumns.size();
+    std::array<double, kFirmware + sim_values.size()> values{};
+    for (std::size_t i = 1; i < kFirmware; ++i) values[i] = hal::kLogColumns[i].value(r);
+    std::copy(sim_values.begin(), sim_values.end(), values.begin() + kFirmware);
+    char record[fw::kMaxBinaryRecordBytes];
+    pending_.append(record, encoder_.encode(r.time_us, values.data(), values.size(), record));
+  } else if (!append_csv_row(r, sim_values)) {
+    return false;
+  }
+  ++rows_;
+  return pending_.size() < kFlushBytes || flush();
+}
+
+bool CsvFlightLog::append_csv_row(const hal::FlightLogRecord& r, std::span<const double> sim_values) {
+  char line[fw::kLogFieldsMaxChars + 1024];
+  std::size_t at = formatter_.fields(r, r.time_us, line, sizeof line);
+  std::size_t column = 0;
+  for (const double value : sim_values) {
     const std::size_t n = at > 0 ? formatter_.number(column++, value, line + at, sizeof line - at) : 0;
     at = n > 0 ? at + n : 0;
   }
@@ -134,8 +153,7 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   }
   line[at - 1] = '\n';
   pending_.append(line, at);
-  ++rows_;
-  return pending_.size() < kFlushBytes || flush();
+  return true;
 }
 
 bool CsvFlightLog::finish(std::string_view outcome, std::uint64_t lost) {

@@ -97,7 +97,9 @@ int main(int argc, char** argv) {
   app.add_option("--mission,mission", mission_path, "mission file: Slocum .mi, or TOML")
       ->required()
       ->check(CLI::ExistingFile);
-  app.add_option("--out", out_path, "flight log to write (CSV, docs/flight-log.md)");
+  app.add_option("--out", out_path,
+                 "flight log to write (CSV, docs/flight-log.md; a name ending in .glb: its binary form, "
+                 "several times faster to write, read by every tool, glider-log-info --to-csv converts)");
   app.add_option("--env", env_path, "environment file: water profile, currents, tide (TOML)")->check(CLI::ExistingFile);
   app.add_option("--seed", seed, "seed of the sensor noise")->capture_default_str();
   app.add_option("--heading-deg", heading_deg, "initial heading (TOML missions fly it with the fin centred)")

@@ -66,8 +66,10 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   NullLogSink no_file;
   std::optional<CsvFlightLog> csv;
   if (!options.log_path.empty()) {
+    const bool binary = options.log_path.ends_with(kBinaryLogSuffix);
     csv.emplace(options.log_path, metadata, sim, SimCtd(options.noise, derived_seed(options.seed, kCtdStream)),
-                options.log_gaps, derived_seed(options.seed, kLogGapStream));
+                options.log_gaps, derived_seed(options.seed, kLogGapStream),
+                binary ? LogEncoding::kBinary : LogEncoding::kCsv);
     if (!csv->ok()) {
       result.error = csv->error();
       return result;

@@ -31,7 +31,9 @@ namespace {
 namespace regs = hal_linux::regs;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kStepS = model::GliderSimulator::kDefaultStepS;
+// The plant's real-time tick: the actuator axes, the sensors and the model
+// advance this often (the model's own steps are at most this long then).
+constexpr double kStepS = 0.1;
 constexpr hal::Micros kStepUs = 100'000;
 constexpr double kStandardGravity = 9.80665;   // as the firmware's Keller driver converts
 constexpr double kUtcAtLaunchS = 12 * 3600.0;  // the NMEA time of day (the firmware does not use it)

@@ -72,25 +72,27 @@ std::size_t format_log_number(double value, char* out, std::size_t capacity) {
 
 namespace {
 
-// The firmware fields of a row; `number(i, value, out, capacity)` writes the
-// kNumber column i as format_log_number does.
-template <typename NumberText>
-std::size_t format_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out, std::size_t capacity,
+// The fields of a row of `count` columns (the firmware's first, in
+// hal::kLogColumns order; any after them are numbers): `value(i)` is column
+// i's value, `number(i, value, out, capacity)` writes a kNumber column as
+// format_log_number does.
+template <typename Value, typename NumberText>
+std::size_t format_fields(hal::Micros time_us, std::size_t count, Value value, char* out, std::size_t capacity,
                           NumberText number) {
   std::size_t at = 0;
-  for (std::size_t i = 0; i < hal::kLogColumns.size(); ++i) {
-    const hal::LogColumn& column = hal::kLogColumns[i];
+  for (std::size_t i = 0; i < count; ++i) {
+    const hal::LogColumnKind kind =
+        i < hal::kLogColumns.size() ? hal::kLogColumns[i].kind : hal::LogColumnKind::kNumber;
     bool ok = true;
-    switch (column.kind) {
+    switch (kind) {
       case hal::LogColumnKind::kTime:
         ok = put_time(out, capacity, at, time_us) && put_char(out, capacity, at, ',');
         break;
       case hal::LogColumnKind::kInteger:
-        ok = put_integer(out, capacity, at, static_cast<long long>(column.value(record))) &&
-             put_char(out, capacity, at, ',');
+        ok = put_integer(out, capacity, at, static_cast<long long>(value(i))) && put_char(out, capacity, at, ',');
         break;
       case hal::LogColumnKind::kNumber: {
-        const std::size_t n = number(i, column.value(record), out + at, capacity - at);
+        const std::size_t n = number(i, value(i), out + at, capacity - at);
         ok = n > 0;
         at += n;
         break;
@@ -101,13 +103,27 @@ std::size_t format_fields(const hal::FlightLogRecord& record, hal::Micros time_u
   return at;
 }
 
+std::size_t plain_number(std::size_t, double value, char* out, std::size_t capacity) {
+  return format_log_number(value, out, capacity);
+}
+
+double record_value(const hal::FlightLogRecord& record, std::size_t column) {
+  return hal::kLogColumns[column].value ? hal::kLogColumns[column].value(record) : 0.0;
+}
+
 }  // namespace
 
 std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out,
                               std::size_t capacity) {
-  return format_fields(record, time_us, out, capacity, [](std::size_t, double value, char* text, std::size_t room) {
-    return format_log_number(value, text, room);
-  });
+  return format_fields(
+      time_us, hal::kLogColumns.size(), [&](std::size_t i) { return record_value(record, i); }, out, capacity,
+      plain_number);
+}
+
+std::size_t format_log_values(hal::Micros time_us, const double* values, std::size_t count, char* out,
+                              std::size_t capacity) {
+  return format_fields(
+      time_us, count, [values](std::size_t i) { return values[i]; }, out, capacity, plain_number);
 }
 
 std::size_t LogRowFormatter::remembered(Memo& memo, double value, char* out, std::size_t capacity) {
@@ -130,10 +146,11 @@ std::size_t LogRowFormatter::remembered(Memo& memo, double value, char* out, std
 
 std::size_t LogRowFormatter::fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out,
                                     std::size_t capacity) {
-  return format_fields(record, time_us, out, capacity,
-                       [this](std::size_t i, double value, char* text, std::size_t room) {
-                         return remembered(firmware_[i], value, text, room);
-                       });
+  return format_fields(
+      time_us, hal::kLogColumns.size(), [&](std::size_t i) { return record_value(record, i); }, out, capacity,
+      [this](std::size_t i, double value, char* text, std::size_t room) {
+        return remembered(firmware_[i], value, text, room);
+      });
 }
 
 std::size_t LogRowFormatter::number(std::size_t column, double value, char* out, std::size_t capacity) {

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "glider/config/value_limits.hpp"
+#include "glider/flightlog/binary_log.hpp"
 
 #include "csv_text.hpp"
 
@@ -390,6 +391,14 @@ std::string LogEnd::describe(std::size_t rows_read) const {
 }
 
 FlightLog parse_flight_log(std::string_view text, const std::string& source_name, const ReadOptions& options) {
+  // The SIL's binary log is read as the CSV text it stands for.
+  std::string converted;
+  if (is_binary_rows_log(text)) {
+    std::string error;
+    converted = binary_rows_to_csv(text, error);
+    if (!error.empty()) throw FlightLogError(source_name, kNone, "", kNone, "binary log: " + error);
+    text = converted;
+  }
   // A UTF-8 byte order mark (spreadsheet exports) would glue onto the first name.
   constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
   if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) text.remove_prefix(kByteOrderMark.size());

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "glider/cli/tool.hpp"
+#include "glider/flightlog/binary_log.hpp"
 #include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/flightlog/phases.hpp"
@@ -118,6 +119,7 @@ int main(int argc, char** argv) {
   glider::slocum::LogSource source;
   fl::ReadOptions options;
   std::vector<std::string> required;
+  std::string to_csv;
   app.add_option("log", source.inputs,
                  "flight log: a CSV, or a glider's binary files (.dbd/.ebd..., .dcd/.ecd...: files, a directory or "
                  "globs)")
@@ -127,7 +129,14 @@ int main(int argc, char** argv) {
   app.add_option("--require", required,
                  "a column the log must have, or alternatives as a|b (repeatable; replaces the default "
                  "m_depth|sci_water_pressure, m_pitch, m_ballast_pumped|m_de_oil_vol)");
+  app.add_option("--to-csv", to_csv,
+                 "write the CSV text of a binary SIL log (.glb, docs/flight-log.md) to this file, then summarize");
   return tool.run(argc, argv, [&]() -> int {
+    if (!to_csv.empty()) {
+      if (source.inputs.size() != 1) return tool.fail(glider::cli::kUsage, "--to-csv converts one log");
+      const std::string problem = fl::write_binary_rows_as_csv(source.inputs.front(), to_csv);
+      if (!problem.empty()) return tool.fail(glider::cli::kError, problem);
+    }
     if (!required.empty()) {
       options.required.clear();
       for (const std::string& spec : required) options.required.push_back(alternatives(spec));

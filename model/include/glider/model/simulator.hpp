@@ -30,8 +30,10 @@ struct Truth {
   WaterSample water;
 };
 
-// The plant for SIL: vehicle dynamics plus its two servos, advanced with a
-// fixed-step classic Runge-Kutta 4 (Boost.Odeint).
+// The plant for SIL: vehicle dynamics plus its servos, advanced with the
+// classic Runge-Kutta 4 (Boost.Odeint) in steps of kDefaultStepS (submerged)
+// or kSurfaceStepS (near the surface), each ending at a servo's stop or a fin
+// command's dead time if one falls inside it.
 class GliderSimulator {
  public:
   // Integration step (classic RK4) while submerged. tests/unit/
@@ -41,8 +43,8 @@ class GliderSimulator {
   // checks glides, turns and surfacing against a run at 0.01 s.
   static constexpr double kDefaultStepS = 1.0;
   // At the surface the waterplane (the buoyancy of a partly immersed hull
-  // changes over one hull diameter) makes heave several times faster
-  // (~5 s^-1 for a Slocum): within a hull diameter plus this margin of the
+  // changes over one hull diameter) adds an undamped heave oscillation
+  // (2.4 rad/s for a Slocum): within a hull diameter plus this margin of the
   // surface the step is at most kSurfaceStepS. The margin is more than a
   // glider travels vertically in one submerged step.
   static constexpr double kSurfaceStepS = 0.1;

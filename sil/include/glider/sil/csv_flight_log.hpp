@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "glider/firmware/log/binary_rows.hpp"
 #include "glider/firmware/log/log_text.hpp"
 #include "glider/hal/log_record.hpp"
 #include "glider/model/environment.hpp"
@@ -31,6 +33,11 @@ struct LogGaps {
   double surface_gap_max_s = 200.0;  //   (m_depth_state 0), no rows for U(min, max) s
 };
 
+// The file's form: the CSV text, or its binary form (firmware/log/
+// binary_rows.hpp: the same lines but a record per row, read by every tool
+// and converted back to the same CSV bytes on demand).
+enum class LogEncoding { kCsv, kBinary };
+
 // Writes the flight log in the project's CSV format (docs/flight-log.md):
 // `# key: value` metadata, one header line, one row per firmware cycle, with
 // the simulator's truths appended as sim_ columns. The CTD columns (sci_*)
@@ -43,7 +50,7 @@ struct LogGaps {
 class CsvFlightLog final : public hal::LogSink {
  public:
   CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim, const SimCtd& ctd,
-               const LogGaps& gaps = {}, std::uint64_t gap_seed = 0);
+               const LogGaps& gaps = {}, std::uint64_t gap_seed = 0, LogEncoding encoding = LogEncoding::kCsv);
 
   ~CsvFlightLog() override;
   CsvFlightLog(const CsvFlightLog&) = delete;
@@ -70,6 +77,7 @@ class CsvFlightLog final : public hal::LogSink {
   hal::Micros draw_us(double min_s, double max_s);
 
   bool flush();
+  bool append_csv_row(const hal::FlightLogRecord& record, std::span<const double> sim_values);
 
   std::string path_;
   int fd_ = -1;
@@ -77,7 +85,9 @@ class CsvFlightLog final : public hal::LogSink {
   std::uint64_t flushed_bytes_ = 0;  // the file's length: always a row boundary
   const model::GliderSimulator& sim_;
   SimCtd ctd_;
-  fw::LogRowFormatter formatter_;  // the same bytes as fw::format_log_fields, faster
+  LogEncoding encoding_;
+  fw::LogRowFormatter formatter_;  // kCsv: the same bytes as fw::format_log_fields, faster
+  fw::BinaryRowEncoder encoder_;   // kBinary
   LogGaps gaps_;
   PortableRandom gap_random_;
   hal::Micros next_row_us_ = 0;          // thinning: the earliest time of the next row

@@ -4,6 +4,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "glider/firmware/app/vehicle_setup.hpp"
@@ -19,6 +20,10 @@
 
 namespace glider::sil {
 
+// A log path ending in this is written in the log's binary form
+// (LogEncoding::kBinary), any other as CSV.
+inline constexpr std::string_view kBinaryLogSuffix = ".glb";
+
 struct ScenarioOptions {
   std::uint64_t seed = 1;
   double heading_deg = 90.0;
@@ -28,7 +33,7 @@ struct ScenarioOptions {
   hal::Micros period_us = fw::Executive::kDefaultPeriodUs;
   // The plant's integration step (model::GliderSimulator; docs/sil.md, Speed).
   double integration_step_s = model::GliderSimulator::kDefaultStepS;
-  std::string log_path;  // empty: no CSV file
+  std::string log_path;  // empty: no log; ending in kBinaryLogSuffix: the binary form
   Metadata metadata;     // extra `# key: value` lines (vehicle.* are added)
   LogGaps log_gaps;      // thin the CSV like a real Slocum log (off by default)
   // The vehicle the log's vehicle.* metadata states; default: the one flown.

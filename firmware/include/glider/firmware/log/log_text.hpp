@@ -26,6 +26,13 @@ std::string log_header();
 // written, 0 if `capacity` is too small (nothing usable written).
 std::size_t format_log_fields(const hal::FlightLogRecord& record, hal::Micros time_us, char* out, std::size_t capacity);
 
+// The same for a row given as column values: `values[0..count)` in file
+// order, the firmware's columns first (values[0], the time, is not read:
+// `time_us` is written), any after them numbers. Used to turn a binary log
+// back into its CSV text (binary_rows.hpp).
+std::size_t format_log_values(hal::Micros time_us, const double* values, std::size_t count, char* out,
+                              std::size_t capacity);
+
 // The shortest round-trip text of `value` and a ',' (NaN or inf: the ',' alone).
 // Returns the characters written, 0 if they do not fit.
 std::size_t format_log_number(double value, char* out, std::size_t capacity);
