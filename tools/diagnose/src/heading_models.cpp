@@ -38,6 +38,18 @@ double interpolate(std::span<const double> time, std::span<const double> x, doub
 
 double value(const HeadingValues& v, HeadingEffect e) { return at(v, e); }
 
+// The fin between two readings as the servo moves it: the command that the
+// next reading shows went out at the end of the cycle of this one, so the
+// fin leaves at the servo's speed and then holds (a straight line between
+// readings 4 s apart would lag a fin move by ~1.5 s and blur it, which a
+// fit reads as less fin authority).
+double fin_between_rows(std::span<const double> time, std::span<const double> fin, double t, double rate) {
+  const std::size_t j = row_at_or_before(time, t);
+  if (j == SIZE_MAX) return kNaN;
+  if (j + 1 >= time.size() || !std::isfinite(fin[j + 1])) return fin[j];
+  return fin[j] + std::clamp(fin[j + 1] - fin[j], -rate * (t - time[j]), rate * (t - time[j]));
+}
+
 void pick(const std::vector<double>& series, std::span<const std::size_t> at_index, std::vector<double>& out) {
   out.resize(at_index.size());
   for (std::size_t k = 0; k < at_index.size(); ++k) out[k] = series[at_index[k]];
@@ -166,6 +178,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
   const double fin_gain = hd.fin_yaw_gain_per_m * value(values, HeadingEffect::kFinEffectiveness);
   const double roll_offset = value(values, HeadingEffect::kRollOffset);
   const double tau = std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)));
+  const double fin_rate = hd.fin_rate_rad_s > 0.0 ? hd.fin_rate_rad_s : 1e9;
   std::vector<double> rate(t.size(), kNaN);
   const std::span<const double> row_time(t.row_time_s);
   std::vector<double> model_heading;
@@ -178,7 +191,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
     auto target = [&](std::size_t k, double w, double now) {
       const double speed = t.speed_m_s[k] + w * (t.speed_m_s[k + 1] - t.speed_m_s[k]);
       const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
-      const double fin = interpolate(row_time, t.row_fin_filled_rad, now - delay);
+      const double fin = fin_between_rows(row_time, t.row_fin_filled_rad, now - delay, fin_rate);
       return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
     };
     model_heading.assign(1, t.heading_rad[first]);
