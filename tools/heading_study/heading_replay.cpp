@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "heading_replay.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "glider/firmware/mission_file/mission_loader.hpp"
+#include "glider/model/vehicle_file.hpp"
+#include "glider/sil/mission_setup.hpp"
+#include "glider/sil/scenario.hpp"
+#include "glider/slocum/log_loader.hpp"
+
+namespace glider::heading_study {
+namespace {
+
+// The comet logs' flight-computer cycle is 4.3-4.5 s: the SIL runs its loop
+// at 4 s, so the autopilot acts as seldom as the real one.
+constexpr hal::Micros kSlocumCycleUs = 4'000'000;
+// The SIL's turn from east onto the mission's north is not steady flight.
+constexpr double kSilSkipS = 900.0;
+
+HeadingMetrics fly(const std::string& source, const model::VehicleParams& vehicle, const fw::HeadingControlConfig& law,
+                   const std::string& log_path) {
+  fw::FlightSoftwareConfig base;
+  base.heading = law;
+  const auto loaded = fw::mission_file::load_mission_file(source + "/boards/missions/heading_hold.mi",
+                                                          sil::mission_vehicle(vehicle, 102.0), base);
+  if (!loaded.config) throw std::runtime_error("heading_hold.mi: " + loaded.diagnostics.front().text());
+  sil::ScenarioOptions options;
+  options.period_us = kSlocumCycleUs;
+  options.log_path = log_path;
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, *loaded.config, options);
+  if (!r.error.empty() || !r.completed) {
+    throw std::runtime_error(log_path + ": " + (r.error.empty() ? "mission did not complete" : r.error));
+  }
+  return heading_metrics(flightlog::read_flight_log(log_path), kSilSkipS);
+}
+
+}  // namespace
+
+Replay replay_log(const std::string& source, const std::string& log_path, const std::string& nominal_vehicle,
+                  const std::string& out_dir) {
+  std::vector<slocum::Warning> warnings;
+  const flightlog::FlightLog log = slocum::load_flight_log({{log_path}, {}}, {}, &warnings);
+  const model::VehicleParams nominal = model::load_vehicle_file(nominal_vehicle);
+  Replay r;
+  r.identified = diagnose::diagnose_heading(nominal, log);
+  r.real = heading_metrics(log, 0.0);
+  const diagnose::HeadingDiagnosis& d = r.identified;
+  // The extended vehicle, with the whole loop's dead time at the fin (the
+  // SIL's firmware reads the heading without the real autopilot's lag; for
+  // the loop a lag is a lag wherever it sits).
+  model::VehicleParams flown = diagnose::apply(nominal, d);
+  flown.heading.fin_max_rad = d.fin_max_rad;
+  r.loop_delay_s = d.delay_autopilot_s + d.delay_servo_s + d.delay_after_fin_s;
+  flown.heading.fin_delay_s = r.loop_delay_s;
+  fw::HeadingControlConfig identified;
+  identified.law = fw::HeadingLaw::kSlocum;
+  identified.gain = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotGain);
+  identified.igain = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotIntegral);
+  identified.dgain = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotDgain);
+  identified.rate_deadband_rad_s = d.configured.rate_deadband_rad_s;
+  const std::string stem = out_dir + "/replay_" + std::filesystem::path(log_path).stem().string();
+  r.sil_identified = fly(source, flown, identified, stem + "_identified.csv");
+  fw::HeadingControlConfig compensated;
+  compensated.law = fw::HeadingLaw::kCompensated;
+  compensated.delay_s = r.loop_delay_s;  // told the identified dead time
+  r.sil_compensated = fly(source, flown, compensated, stem + "_compensated.csv");
+  return r;
+}
+
+}  // namespace glider::heading_study
