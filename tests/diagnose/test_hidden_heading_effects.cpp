@@ -119,3 +119,12 @@ TEST(DiagnoseHiddenHeadingEffects, ProportionalGainNotTheConfiguredOne) {
   require_found(o, HeadingEffect::kAutopilotIntegral, 0.0);
   CHECK(o.diagnosis.autopilot.gain > 0.3);
 }
+
+// The comet logs hold the fin while the error is small: a heading deadband.
+TEST(DiagnoseHiddenHeadingEffects, HeadingDeadband) {
+  fw::HeadingControlConfig flown_law = configured_slocum_law();
+  flown_law.heading_deadband_rad = uniform(rng, 0.05, 0.12);  // the header states none
+  const HeadingOutcome o = fly_heading_and_diagnose(comet(), flown_law, "autopilot_deadband");
+  require_found(o, HeadingEffect::kAutopilotDeadband, flown_law.heading_deadband_rad);
+  CHECK(o.diagnosis.autopilot.gain > 0.3);
+}

@@ -20,7 +20,7 @@ constexpr hal::Micros kSlocumCycleUs = 4'000'000;
 constexpr double kSilSkipS = 900.0;
 
 HeadingMetrics fly(const std::string& source, const model::VehicleParams& vehicle, const fw::HeadingControlConfig& law,
-                   const std::string& log_path) {
+                   double heading_noise_rad, const std::string& log_path) {
   fw::FlightSoftwareConfig base;
   base.heading = law;
   const auto loaded = fw::mission_file::load_mission_file(source + "/boards/missions/heading_hold.mi",
@@ -28,6 +28,7 @@ HeadingMetrics fly(const std::string& source, const model::VehicleParams& vehicl
   if (!loaded.config) throw std::runtime_error("heading_hold.mi: " + loaded.diagnostics.front().text());
   sil::ScenarioOptions options;
   options.period_us = kSlocumCycleUs;
+  options.noise.heading_rad = heading_noise_rad;
   options.log_path = log_path;
   const sil::ScenarioResult r = sil::run_scenario(vehicle, *loaded.config, options);
   if (!r.error.empty() || !r.completed) {
@@ -60,12 +61,13 @@ Replay replay_log(const std::string& source, const std::string& log_path, const 
   identified.igain = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotIntegral);
   identified.dgain = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotDgain);
   identified.rate_deadband_rad_s = d.configured.rate_deadband_rad_s;
+  identified.heading_deadband_rad = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotDeadband);
   const std::string stem = out_dir + "/replay_" + std::filesystem::path(log_path).stem().string();
-  r.sil_identified = fly(source, flown, identified, stem + "_identified.csv");
+  r.sil_identified = fly(source, flown, identified, d.heading_noise_rad, stem + "_identified.csv");
   fw::HeadingControlConfig compensated;
   compensated.law = fw::HeadingLaw::kCompensated;
   compensated.delay_s = r.loop_delay_s;  // told the identified dead time
-  r.sil_compensated = fly(source, flown, compensated, stem + "_compensated.csv");
+  r.sil_compensated = fly(source, flown, compensated, d.heading_noise_rad, stem + "_compensated.csv");
   return r;
 }
 

@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "glider/diagnose/thin.hpp"
 
 namespace glider::diagnose {
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Plausible ranges: a dead time beyond a minute is a broken servo or loop,
 // not a lag; a fin with a tenth or ten times the assumed authority is a
@@ -23,6 +27,7 @@ const std::array<HeadingEffectInfo, kHeadingEffectCount> kInfo{{
     {"autopilot_integral", "1/s", HeadingLink::kAutopilot, 0.005, -0.2, 0.2, false},
     {"autopilot_dgain", "s", HeadingLink::kAutopilot, 1.0, -30.0, 30.0, false},
     {"autopilot_delay", "s", HeadingLink::kAutopilot, 2.0, 0.0, 60.0, true},
+    {"autopilot_deadband", "rad", HeadingLink::kAutopilot, 0.01, 0.0, 0.2, true, true},
 }};
 
 // A finding must also cut the held-out error by this much (the link's unit):
@@ -81,6 +86,60 @@ LinkFit run_link(HeadingLink link, const HeadingValues& nominal, const HeadingRe
   return select_heading_effects(link, candidates, nominal, residuals, samples, select);
 }
 
+// Half the second difference of the heading, over the glides' samples:
+// white noise of sigma gives an RMS of sigma sqrt(3/2), a smooth turn none.
+double heading_jitter_rad(const HeadingTrack& t) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t run = 0; run < t.run_first.size(); ++run) {
+    for (std::size_t i = t.run_first[run] + 1; i + 1 < t.run_end(run); ++i) {
+      const double second =
+          0.5 * ((t.heading_rad[i + 1] - t.heading_rad[i]) - (t.heading_rad[i] - t.heading_rad[i - 1]));
+      sum += second * second;
+      ++n;
+    }
+  }
+  return n > 0 ? std::sqrt(sum / static_cast<double>(n) / 1.5) : 0.0;
+}
+
+// The yaw link's residual with its findings: RMS, and the first lag (in
+// whole samples within a run, as time) where its autocorrelation drops below 1/e.
+void describe_unexplained_yaw(const HeadingTrack& t, const model::VehicleParams& vehicle,
+                              const std::vector<std::size_t>& samples, HeadingDiagnosis& d) {
+  std::vector<double> predicted;
+  predict_yaw_rate(t, vehicle, d.yaw.values, samples, predicted);
+  std::vector<double> r(t.size(), kNaN);
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    r[samples[k]] = predicted[k] - t.yaw_rate_rad_s[samples[k]];
+    if (std::isfinite(r[samples[k]])) {
+      sum += r[samples[k]] * r[samples[k]];
+      ++n;
+    }
+  }
+  if (n == 0) return;
+  const double variance = sum / static_cast<double>(n);
+  d.unexplained_yaw_rate_rad_s = std::sqrt(variance);
+  for (std::size_t lag = 1; lag < 60; ++lag) {
+    double product = 0.0, dt = 0.0;
+    std::size_t pairs = 0;
+    for (std::size_t run = 0; run < t.run_first.size(); ++run) {
+      for (std::size_t i = t.run_first[run]; i + lag < t.run_end(run); ++i) {
+        if (!std::isfinite(r[i]) || !std::isfinite(r[i + lag])) continue;
+        product += r[i] * r[i + lag];
+        dt += t.time_s[i + lag] - t.time_s[i];
+        ++pairs;
+      }
+    }
+    if (pairs < 20) break;
+    if (product / static_cast<double>(pairs) < variance / std::numbers::e) {
+      d.unexplained_correlation_s = dt / static_cast<double>(pairs);
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 const HeadingEffectInfo& info(HeadingEffect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
@@ -103,11 +162,13 @@ AutopilotSettings configured_autopilot(const flightlog::FlightLog& log) {
   const auto igain = logged_setting(log, "u_hd_fin_ap_igain");
   const auto dgain = logged_setting(log, "u_hd_fin_ap_dgain");
   const auto deadband = logged_setting(log, "u_heading_rate_deadband");
+  const auto heading_deadband = logged_setting(log, "u_heading_deadband");
   s.stated = gain || igain || dgain;
   s.gain = gain.value_or(s.gain);
   s.igain = igain.value_or(s.igain);
   s.dgain = dgain.value_or(s.dgain);
   s.rate_deadband_rad_s = deadband.value_or(s.rate_deadband_rad_s);
+  s.heading_deadband_rad = heading_deadband.value_or(s.heading_deadband_rad);
   return s;
 }
 
@@ -121,6 +182,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   d.roll_logged = track.roll_logged;
   d.logged_roll_rad = track.median_roll_rad;
   d.runs = track.run_first.size();
+  d.heading_noise_rad = heading_jitter_rad(track);
   const HeadingValues base = nominal_heading_values(nominal, d.configured);
 
   // The servo and the autopilot act at every cycle under water: their rows.
@@ -153,6 +215,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                            track.yaw_rate_rad_s),
                    yaw_samples, options);
 
+  describe_unexplained_yaw(track, nominal, yaw_samples.all, d);
   d.values = base;
   double best_gain = 0.0;
   for (const LinkFit* link : {&d.servo, &d.yaw, &d.autopilot}) {

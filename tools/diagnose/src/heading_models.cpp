@@ -68,6 +68,7 @@ HeadingValues nominal_heading_values(const model::VehicleParams& vehicle, const 
   at(v, HeadingEffect::kAutopilotIntegral) = autopilot.igain;
   at(v, HeadingEffect::kAutopilotDgain) = autopilot.dgain;
   at(v, HeadingEffect::kAutopilotDelay) = 0.0;
+  at(v, HeadingEffect::kAutopilotDeadband) = autopilot.heading_deadband_rad;
   return v;
 }
 
@@ -140,7 +141,9 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
   const double ki = value(values, HeadingEffect::kAutopilotIntegral);
   const double kd = value(values, HeadingEffect::kAutopilotDgain);
   const double delay = std::abs(value(values, HeadingEffect::kAutopilotDelay));
+  const double hold_below = std::abs(value(values, HeadingEffect::kAutopilotDeadband));
   const double fin_max = t.fin_max_rad;
+  double output = 0.0;
   const std::size_t n = t.row_time_s.size();
   std::vector<double> predicted(n, kNaN);
   const std::span<const double> time(t.row_time_s);
@@ -149,6 +152,7 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
+      output = 0.0;
       continue;
     }
     const double when = time[i] - delay;
@@ -159,10 +163,18 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
     const double error = wrap_pi(command - heading);
     const double dt = i > 0 ? time[i] - time[i - 1] : 0.0;
     double rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
-    if (std::abs(rate) < settings.rate_deadband_rad_s) rate = 0.0;
     last_heading = heading;
+    if (std::abs(rate) < settings.rate_deadband_rad_s) {
+      rate = 0.0;
+      // Inside both deadbands the fin stays where it is (and nothing integrates).
+      if (std::abs(error) < hold_below) {
+        predicted[i] = output;
+        continue;
+      }
+    }
     integrator += ki * error * dt;  // unconditional, as Slocum's: only the output is clamped
-    predicted[i] = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
+    output = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
+    predicted[i] = output;
   }
   pick(predicted, rows, out);
 }

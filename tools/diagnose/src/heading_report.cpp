@@ -64,6 +64,9 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
   j["roll_logged"] = d.roll_logged;
   j["logged_roll_rad"] = d.logged_roll_rad;
   j["fin_max_rad"] = d.fin_max_rad;
+  j["heading_noise_rad"] = d.heading_noise_rad;
+  j["unexplained_yaw_rate"] = {{"rms_rad_s", d.unexplained_yaw_rate_rad_s},
+                               {"correlation_s", d.unexplained_correlation_s}};
   j["configured_autopilot"] = {{"gain", d.configured.gain},
                                {"igain", d.configured.igain},
                                {"dgain", d.configured.dgain},
@@ -110,6 +113,9 @@ std::string heading_text(const HeadingDiagnosis& d) {
           100.0 * x.gain);
     }
   }
+  add("  heading jitter (cycle to cycle, as white noise): %.2f deg; yaw rate left unexplained: RMS %.2f deg/s, "
+      "correlated over %.0f s\n",
+      rad_to_deg(d.heading_noise_rad), rad_to_deg(d.unexplained_yaw_rate_rad_s), d.unexplained_correlation_s);
   add("  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
       d.delay_servo_s, d.delay_after_fin_s);
   add("  heading cause: %s\n", d.cause.c_str());

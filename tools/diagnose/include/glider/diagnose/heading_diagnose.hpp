@@ -22,6 +22,16 @@ struct HeadingDiagnosis {
   bool roll_logged = false;
   double logged_roll_rad = 0.0;  // median m_roll on the glides used
   std::size_t runs = 0;          // glides under a heading command
+  // The heading's cycle-to-cycle jitter on the glides, as white noise
+  // (sqrt(2/3) x the RMS of half the second difference): compass noise and
+  // yaw faster than the cycle, which no link explains. The SIL's compass
+  // noise when the log is replayed.
+  double heading_noise_rad = 0.0;
+  // What the extended yaw model leaves of the measured yaw rate: its RMS and
+  // the lag at which its autocorrelation within a glide falls below 1/e (a
+  // slow yaw disturbance, not compass noise, when that is tens of seconds).
+  double unexplained_yaw_rate_rad_s = 0.0;
+  double unexplained_correlation_s = 0.0;
   LinkFit servo, yaw, autopilot;
   HeadingValues values{};      // every link's nominal with its findings
   std::string cause = "none";  // the finding with the largest gain of its link
