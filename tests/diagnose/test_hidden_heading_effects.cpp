@@ -51,7 +51,6 @@ TEST(DiagnoseHiddenHeadingEffects, CleanLogNamesNone) {
   const HeadingOutcome o = fly_heading_and_diagnose(comet(), configured_slocum_law(), "none");
   STRCMP_EQUAL("none", o.diagnosis.cause.c_str());
   LONGS_EQUAL(0, o.diagnosis.servo.findings.size());
-  LONGS_EQUAL(0, o.diagnosis.yaw.findings.size());
   LONGS_EQUAL(0, o.diagnosis.autopilot.findings.size());
 }
 
@@ -127,4 +126,18 @@ TEST(DiagnoseHiddenHeadingEffects, HeadingDeadband) {
   const HeadingOutcome o = fly_heading_and_diagnose(comet(), flown_law, "autopilot_deadband");
   require_found(o, HeadingEffect::kAutopilotDeadband, flown_law.heading_deadband_rad);
   CHECK(o.diagnosis.autopilot.gain > 0.3);
+}
+
+// A random yaw no link explains (heading.yaw_disturbance_*) shows as the yaw
+// rate left unexplained. Known weakness: a disturbance correlated over 10 s
+// is partly taken by yaw_time_constant (seed 20261125: 10.1 s [5.1, 15.2]
+// for a nominal 2 s, 13 % held-out gain), so the test does not ask for none.
+TEST(DiagnoseHiddenHeadingEffects, RandomYawIsLeftUnexplained) {
+  model::VehicleParams flown = comet();
+  flown.heading.yaw_disturbance_rad_s = uniform(rng, 0.004, 0.008);
+  flown.heading.yaw_disturbance_correlation_s = 10.0;
+  const HeadingOutcome clean = fly_heading_and_diagnose(comet(), configured_slocum_law(), "yaw_clean");
+  const HeadingOutcome o = fly_heading_and_diagnose(flown, configured_slocum_law(), "yaw_disturbance");
+  CHECK(o.diagnosis.unexplained_yaw_rate_rad_s > 3.0 * clean.diagnosis.unexplained_yaw_rate_rad_s);
+  CHECK(o.diagnosis.unexplained_yaw_rate_rad_s < flown.heading.yaw_disturbance_rad_s);  // the estimator smooths it
 }

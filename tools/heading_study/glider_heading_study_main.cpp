@@ -121,14 +121,18 @@ int main(int argc, char** argv) {
         const auto& v = r.identified.values;
         using glider::diagnose::HeadingEffect;
         std::printf(
-            "  %s: identified gain %.3f, igain %.2g, dgain %.2f, loop dead time %.1f s, fin gain x%.2f, roll %+.1f "
-            "deg\n    real        %s\n    SIL, identified  %s\n    SIL, compensated %s\n",
+            "  %s: identified gain %.3f, igain %.2g, dgain %.2f, deadband %.1f deg, loop dead time %.1f s, fin gain "
+            "x%.2f, roll %+.1f deg; compass jitter %.2f deg, yaw disturbance %.2f deg/s over %.0f s\n"
+            "    real             %s\n    SIL, identified  %s\n    SIL, compensated %s\n",
             std::filesystem::path(log).stem().c_str(), glider::diagnose::at(v, HeadingEffect::kAutopilotGain),
             glider::diagnose::at(v, HeadingEffect::kAutopilotIntegral),
-            glider::diagnose::at(v, HeadingEffect::kAutopilotDgain), r.loop_delay_s,
+            glider::diagnose::at(v, HeadingEffect::kAutopilotDgain),
+            glider::rad_to_deg(glider::diagnose::at(v, HeadingEffect::kAutopilotDeadband)), r.loop_delay_s,
             glider::diagnose::at(v, HeadingEffect::kFinEffectiveness),
             glider::rad_to_deg(r.identified.logged_roll_rad + glider::diagnose::at(v, HeadingEffect::kRollOffset)),
-            glider::heading_study::format(r.real).c_str(), glider::heading_study::format(r.sil_identified).c_str(),
+            glider::rad_to_deg(r.identified.heading_noise_rad), glider::rad_to_deg(r.yaw_disturbance_rad_s),
+            r.yaw_disturbance_correlation_s, glider::heading_study::format(r.real).c_str(),
+            glider::heading_study::format(r.sil_identified).c_str(),
             glider::heading_study::format(r.sil_compensated).c_str());
       } catch (const std::exception& e) {
         std::fprintf(stderr, "glider-heading-study: replay of %s: %s\n", log.c_str(), e.what());

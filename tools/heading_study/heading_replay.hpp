@@ -16,6 +16,9 @@ struct Replay {
   diagnose::HeadingDiagnosis identified;
   HeadingMetrics real, sil_identified, sil_compensated;
   double loop_delay_s = 0.0;  // placed at the fin in SIL
+  // The random yaw flown, calibrated so that the SIL log leaves as much yaw
+  // rate unexplained as the real one (never on the heading swing itself).
+  double yaw_disturbance_rad_s = 0.0, yaw_disturbance_correlation_s = 0.0;
 };
 
 // `source`: the repository root (boards/); `nominal_vehicle`: the vehicle

@@ -102,44 +102,6 @@ double heading_jitter_rad(const HeadingTrack& t) {
   return n > 0 ? std::sqrt(sum / static_cast<double>(n) / 1.5) : 0.0;
 }
 
-// The yaw link's residual with its findings: RMS, and the first lag (in
-// whole samples within a run, as time) where its autocorrelation drops below 1/e.
-void describe_unexplained_yaw(const HeadingTrack& t, const model::VehicleParams& vehicle,
-                              const std::vector<std::size_t>& samples, HeadingDiagnosis& d) {
-  std::vector<double> predicted;
-  predict_yaw_rate(t, vehicle, d.yaw.values, samples, predicted);
-  std::vector<double> r(t.size(), kNaN);
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    r[samples[k]] = predicted[k] - t.yaw_rate_rad_s[samples[k]];
-    if (std::isfinite(r[samples[k]])) {
-      sum += r[samples[k]] * r[samples[k]];
-      ++n;
-    }
-  }
-  if (n == 0) return;
-  const double variance = sum / static_cast<double>(n);
-  d.unexplained_yaw_rate_rad_s = std::sqrt(variance);
-  for (std::size_t lag = 1; lag < 60; ++lag) {
-    double product = 0.0, dt = 0.0;
-    std::size_t pairs = 0;
-    for (std::size_t run = 0; run < t.run_first.size(); ++run) {
-      for (std::size_t i = t.run_first[run]; i + lag < t.run_end(run); ++i) {
-        if (!std::isfinite(r[i]) || !std::isfinite(r[i + lag])) continue;
-        product += r[i] * r[i + lag];
-        dt += t.time_s[i + lag] - t.time_s[i];
-        ++pairs;
-      }
-    }
-    if (pairs < 20) break;
-    if (product / static_cast<double>(pairs) < variance / std::numbers::e) {
-      d.unexplained_correlation_s = dt / static_cast<double>(pairs);
-      break;
-    }
-  }
-}
-
 }  // namespace
 
 const HeadingEffectInfo& info(HeadingEffect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
@@ -154,6 +116,45 @@ const char* to_string(HeadingLink link) {
       return "autopilot";
   }
   return "?";
+}
+
+UnexplainedYaw unexplained_yaw(const HeadingTrack& t, const model::VehicleParams& vehicle,
+                               const HeadingValues& values) {
+  UnexplainedYaw out;
+  std::vector<double> predicted;
+  predict_yaw_rate(t, vehicle, values, t.scored, predicted);
+  std::vector<double> r(t.size(), kNaN);
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < t.scored.size(); ++k) {
+    const double x = predicted[k] - t.yaw_rate_rad_s[t.scored[k]];
+    r[t.scored[k]] = x;
+    if (std::isfinite(x)) {
+      sum += x * x;
+      ++n;
+    }
+  }
+  if (n == 0) return out;
+  const double variance = sum / static_cast<double>(n);
+  out.rms_rad_s = std::sqrt(variance);
+  for (std::size_t lag = 1; lag < 60; ++lag) {
+    double product = 0.0, dt = 0.0;
+    std::size_t pairs = 0;
+    for (std::size_t run = 0; run < t.run_first.size(); ++run) {
+      for (std::size_t i = t.run_first[run]; i + lag < t.run_end(run); ++i) {
+        if (!std::isfinite(r[i]) || !std::isfinite(r[i + lag])) continue;
+        product += r[i] * r[i + lag];
+        dt += t.time_s[i + lag] - t.time_s[i];
+        ++pairs;
+      }
+    }
+    if (pairs < 20) break;
+    if (product / static_cast<double>(pairs) < variance / std::numbers::e) {
+      out.correlation_s = dt / static_cast<double>(pairs);
+      break;
+    }
+  }
+  return out;
 }
 
 AutopilotSettings configured_autopilot(const flightlog::FlightLog& log) {
@@ -215,7 +216,9 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                            track.yaw_rate_rad_s),
                    yaw_samples, options);
 
-  describe_unexplained_yaw(track, nominal, yaw_samples.all, d);
+  const UnexplainedYaw left = unexplained_yaw(track, nominal, d.yaw.values);
+  d.unexplained_yaw_rate_rad_s = left.rms_rad_s;
+  d.unexplained_correlation_s = left.correlation_s;
   d.values = base;
   double best_gain = 0.0;
   for (const LinkFit* link : {&d.servo, &d.yaw, &d.autopilot}) {

@@ -214,7 +214,13 @@ Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
   return trial;
 }
 
-bool plausible(HeadingEffect e, double v) { return v >= info(e).plausible_min && v <= info(e).plausible_max; }
+// A threshold at the end of its grid has no minimum inside the plausible
+// range: the profile is still falling there, the effect stands in for another.
+bool plausible(HeadingEffect e, double v) {
+  const HeadingEffectInfo& i = info(e);
+  if (i.grid) return v > i.plausible_min + 0.5 * i.scale && v < i.plausible_max - 0.5 * i.scale;
+  return v >= i.plausible_min && v <= i.plausible_max;
+}
 
 bool improves(const Trial& better, const Trial& than, const HeadingSelectOptions& o) {
   return better.heldout_rms < than.heldout_rms * (1.0 - o.min_relative_improvement) &&
@@ -246,16 +252,19 @@ Trial forward(const Problem& problem, std::vector<HeadingEffect> remaining, Tria
 }
 
 // Backward: an effect the joint fit no longer needs (without it the held-out
-// error is as good within the margin) leaves.
+// error is as good within the margin), or whose joint value is implausible,
+// leaves.
 Trial backward(const Problem& problem, Trial current, const HeadingSelectOptions& options) {
   bool dropped = true;
-  while (dropped && current.fitted.size() > 1) {
+  while (dropped && !current.fitted.empty()) {
     dropped = false;
     for (std::size_t j = 0; j < current.fitted.size(); ++j) {
+      const HeadingEffect e = current.fitted[j];
       std::vector<HeadingEffect> fewer = current.fitted;
       fewer.erase(fewer.begin() + static_cast<long>(j));
+      if (fewer.empty() && plausible(e, at(current.values, e))) break;  // a single effect that entered stays
       Trial t = fit(problem, fewer);
-      if (!improves(current, t, options)) {
+      if (!improves(current, t, options) || !plausible(e, at(current.values, e))) {
         current = std::move(t);
         dropped = true;
         break;

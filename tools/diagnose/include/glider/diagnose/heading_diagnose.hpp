@@ -47,6 +47,14 @@ struct HeadingDiagnoseOptions {
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
 };
 
+struct UnexplainedYaw {
+  double rms_rad_s = 0.0;      // of the yaw rate the model leaves (the slope estimator's)
+  double correlation_s = 0.0;  // first lag where its autocorrelation within a glide < 1/e (0: none found)
+};
+// What the yaw model with these values leaves of a track's measured yaw rate.
+UnexplainedYaw unexplained_yaw(const HeadingTrack& track, const model::VehicleParams& vehicle,
+                               const HeadingValues& values);
+
 // The configured autopilot from the log's settings_at_file_open
 // (u_hd_fin_ap_gain, _igain, _dgain, u_heading_rate_deadband).
 AutopilotSettings configured_autopilot(const flightlog::FlightLog& log);
