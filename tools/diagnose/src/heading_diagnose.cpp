@@ -157,6 +157,32 @@ UnexplainedYaw unexplained_yaw(const HeadingTrack& t, const model::VehicleParams
   return out;
 }
 
+std::vector<HoldBin> count_holds(const HeadingTrack& t, double rate_deadband_rad_s) {
+  constexpr double kBinRad = 2.0 * std::numbers::pi / 180.0;
+  std::vector<HoldBin> bins(7);
+  for (std::size_t b = 0; b < bins.size(); ++b) {
+    bins[b].from_rad = kBinRad * static_cast<double>(b);
+    bins[b].to_rad = b + 1 < bins.size() ? kBinRad * static_cast<double>(b + 1) : std::numbers::pi;
+  }
+  for (std::size_t i = 2; i < t.row_time_s.size(); ++i) {
+    const bool steady = t.row_gliding[i] && t.row_gliding[i - 1] && t.row_gliding[i - 2];
+    if (!steady || !std::isfinite(t.row_fin_command_rad[i]) || !std::isfinite(t.row_fin_command_rad[i - 1]) ||
+        !std::isfinite(t.row_command_rad[i - 1]) || !std::isfinite(t.row_heading_rad[i - 1]) ||
+        !std::isfinite(t.row_heading_rad[i - 2])) {
+      continue;
+    }
+    const double dt = t.row_time_s[i - 1] - t.row_time_s[i - 2];
+    const double rate =
+        std::remainder(t.row_heading_rad[i - 1] - t.row_heading_rad[i - 2], 2.0 * std::numbers::pi) / dt;
+    if (!(dt > 0.0) || std::abs(rate) >= rate_deadband_rad_s) continue;
+    const double error =
+        std::abs(std::remainder(t.row_command_rad[i - 1] - t.row_heading_rad[i - 1], 2.0 * std::numbers::pi));
+    const std::size_t b = std::min(bins.size() - 1, static_cast<std::size_t>(error / kBinRad));
+    (std::abs(t.row_fin_command_rad[i] - t.row_fin_command_rad[i - 1]) > 1e-4 ? bins[b].changed : bins[b].held)++;
+  }
+  return bins;
+}
+
 AutopilotSettings configured_autopilot(const flightlog::FlightLog& log) {
   AutopilotSettings s;
   const auto gain = logged_setting(log, "u_hd_fin_ap_gain");
@@ -184,6 +210,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   d.logged_roll_rad = track.median_roll_rad;
   d.runs = track.run_first.size();
   d.heading_noise_rad = heading_jitter_rad(track);
+  d.holds = count_holds(track, d.configured.rate_deadband_rad_s);
   const HeadingValues base = nominal_heading_values(nominal, d.configured);
 
   // The servo and the autopilot act at every cycle under water: their rows.

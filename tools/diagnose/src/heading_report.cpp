@@ -67,6 +67,12 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
   j["heading_noise_rad"] = d.heading_noise_rad;
   j["unexplained_yaw_rate"] = {{"rms_rad_s", d.unexplained_yaw_rate_rad_s},
                                {"correlation_s", d.unexplained_correlation_s}};
+  ordered_json holds = ordered_json::array();
+  for (const HoldBin& b : d.holds) {
+    holds.push_back(
+        {{"error_from_rad", b.from_rad}, {"error_to_rad", b.to_rad}, {"held", b.held}, {"changed", b.changed}});
+  }
+  j["fin_holds"] = holds;
   j["configured_autopilot"] = {{"gain", d.configured.gain},
                                {"igain", d.configured.igain},
                                {"dgain", d.configured.dgain},
@@ -116,7 +122,11 @@ std::string heading_text(const HeadingDiagnosis& d) {
   add("  heading jitter (cycle to cycle, as white noise): %.2f deg; yaw rate left unexplained: RMS %.2f deg/s, "
       "correlated over %.0f s\n",
       rad_to_deg(d.heading_noise_rad), rad_to_deg(d.unexplained_yaw_rate_rad_s), d.unexplained_correlation_s);
-  add("  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
+  add("  c_fin held / changed by the previous cycle's error (rate inside its deadband):");
+  for (const HoldBin& b : d.holds) {
+    add(" %.0f-%.0f deg %zu/%zu;", rad_to_deg(b.from_rad), rad_to_deg(b.to_rad), b.held, b.changed);
+  }
+  add("\n  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
       d.delay_servo_s, d.delay_after_fin_s);
   add("  heading cause: %s\n", d.cause.c_str());
   return out;

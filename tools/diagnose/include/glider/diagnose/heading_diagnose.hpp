@@ -15,6 +15,15 @@
 
 namespace glider::diagnose {
 
+// How often the autopilot left c_fin unchanged from one cycle to the next,
+// by the heading error of the cycle before, among cycles whose heading rate
+// was inside the rate deadband: a heading deadband shows as all held below
+// it, none above (counted on the log, no model).
+struct HoldBin {
+  double from_rad = 0.0, to_rad = 0.0;
+  std::size_t held = 0, changed = 0;
+};
+
 struct HeadingDiagnosis {
   std::string vehicle;
   AutopilotSettings configured;  // the law the log's header states
@@ -32,6 +41,7 @@ struct HeadingDiagnosis {
   // slow yaw disturbance, not compass noise, when that is tens of seconds).
   double unexplained_yaw_rate_rad_s = 0.0;
   double unexplained_correlation_s = 0.0;
+  std::vector<HoldBin> holds;  // 0-2, 2-4, ... 10-12 deg, and beyond
   LinkFit servo, yaw, autopilot;
   HeadingValues values{};      // every link's nominal with its findings
   std::string cause = "none";  // the finding with the largest gain of its link
