@@ -97,6 +97,18 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
 
 ordered_json heading_unavailable_json(const std::string& reason) { return {{"available", false}, {"reason", reason}}; }
 
+HeadingPlane heading_plane(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
+                           const HeadingDiagnoseOptions& options) {
+  HeadingPlane plane;
+  try {
+    plane.diagnosis = diagnose_heading(nominal, log, options);
+    plane.json = heading_json(*plane.diagnosis);
+  } catch (const HeadingUnavailable& why) {
+    plane.json = heading_unavailable_json(why.what());
+  }
+  return plane;
+}
+
 std::string heading_text(const HeadingDiagnosis& d) {
   std::string out;
   char line[512];
