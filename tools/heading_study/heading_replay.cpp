@@ -97,7 +97,6 @@ Replay replay_log(const std::string& source, const std::string& log_path, const 
   // SIL's firmware reads the heading without the real autopilot's lag; for
   // the loop a lag is a lag wherever it sits).
   model::VehicleParams flown = diagnose::apply(nominal, d);
-  flown.heading.fin_max_rad = d.fin_max_rad;
   r.loop_delay_s = d.delay_autopilot_s + d.delay_servo_s + d.delay_after_fin_s;
   flown.heading.fin_delay_s = r.loop_delay_s;
   fw::HeadingControlConfig identified;

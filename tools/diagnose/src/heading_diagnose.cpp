@@ -263,6 +263,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
 
 model::VehicleParams apply(model::VehicleParams v, const HeadingDiagnosis& d) {
   v.heading.fin_delay_s = d.delay_servo_s + d.delay_after_fin_s;
+  v.heading.fin_max_rad = d.fin_max_rad;  // the log's f_fin_safety_max where it states one
   v.heading.fin_yaw_gain_per_m *= at(d.values, HeadingEffect::kFinEffectiveness);
   v.heading.yaw_time_constant_s = at(d.values, HeadingEffect::kYawTimeConstant);
   v.heading.roll_offset_rad =

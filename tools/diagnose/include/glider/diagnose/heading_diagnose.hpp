@@ -75,7 +75,8 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
 
 // The nominal vehicle with the vehicle and servo findings: fin dead time =
 // servo + after-fin delay, fin yaw gain x effectiveness, yaw time constant,
-// roll = the log's median roll + the offset found.
+// roll = the log's median roll + the offset found, the fin limit the log
+// states.
 model::VehicleParams apply(model::VehicleParams nominal, const HeadingDiagnosis& d);
 
 }  // namespace glider::diagnose
