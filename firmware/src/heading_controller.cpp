@@ -78,6 +78,7 @@ double HeadingController::update(double heading_rad, double target_rad, double d
       break;
     case HeadingLaw::kSlocum: {
       const double error = wrap_pi(target_rad - heading_rad);
+      if (rate_used == 0.0 && std::fabs(error) < config_.heading_deadband_rad) break;  // held
       integrator_ += config_.igain * error * dt_s;
       fin_ = clamp_fin(config_.gain * error + integrator_ + config_.dgain * rate_used);
       break;

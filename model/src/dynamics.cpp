@@ -152,7 +152,8 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
   const double slope = lift_slope_per_rad(h);
   const double alpha_effective = slope != 0.0 ? lift_coefficient / slope : 0.0;
   const double yaw_rate_target = e.speed_m_s * (hd.fin_yaw_gain_per_m * masses.fin_rad +
-                                                hd.roll_yaw_gain_per_m * alpha_effective * sin_roll_offset_);
+                                                hd.roll_yaw_gain_per_m * alpha_effective * sin_roll_offset_) +
+                                 masses.yaw_disturbance_rad_s;
 
   e.horizontal_speed_m_s = e.v1 * cos_t + e.v3 * sin_t;
   const double psi = s[kPsi];

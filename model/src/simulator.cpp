@@ -50,6 +50,7 @@ MassInputs GliderSimulator::masses_after(double t) const {
   m.second_pos_m = second_.position_after(t);
   m.second_rate_m_s = second_.velocity_after(t);
   m.fin_rad = fin_.position_after(t);
+  m.yaw_disturbance_rad_s = yaw_disturbance_rad_s_;
   return m;
 }
 

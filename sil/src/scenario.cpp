@@ -2,6 +2,7 @@
 #include "glider/sil/scenario.hpp"
 
 #include <array>
+#include <cmath>
 #include <numbers>
 #include <optional>
 
@@ -9,6 +10,7 @@
 #include "glider/firmware/app/flight_application.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/sil/portable_random.hpp"
 #include "glider/units.hpp"
 
 namespace glider::sil {
@@ -33,6 +35,26 @@ std::string check_limits(const model::VehicleParams& v, const fw::ActuatorLimits
 // sensors' noise (SimHal), the others are derived from it.
 constexpr std::uint64_t kCtdStream = 1;
 constexpr std::uint64_t kLogGapStream = 2;
+constexpr std::uint64_t kYawDisturbanceStream = 4;  // sim_hal.cpp has 3
+
+// The vehicle's random yaw (heading.yaw_disturbance_*): first-order
+// Gauss-Markov, exact over each cycle, held through it.
+class YawDisturbance {
+ public:
+  YawDisturbance(const model::HeadingModel& heading, std::uint64_t seed)
+      : rms_(heading.yaw_disturbance_rad_s), tau_(heading.yaw_disturbance_correlation_s), random_(seed) {}
+  double next(double dt_s) {
+    if (!(rms_ > 0.0)) return 0.0;
+    const double a = std::exp(-dt_s / tau_);
+    value_ = a * value_ + rms_ * std::sqrt(1.0 - a * a) * random_.gaussian();
+    return value_;
+  }
+
+ private:
+  double rms_, tau_;
+  PortableRandom random_;
+  double value_ = 0.0;
+};
 
 class NullLogSink final : public hal::LogSink {
  public:
@@ -101,6 +123,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   const fw::FlightSoftware& flight = app.flight();
 
   const double period_s = hal::to_seconds(options.period_us);
+  YawDisturbance yaw_disturbance(vehicle.heading, derived_seed(options.seed, kYawDisturbanceStream));
   while (sim.time_s() <= options.max_sim_time_s) {
     if (options.before_cycle) options.before_cycle(sim.time_s(), sim_hal);
     for (std::size_t i = 0; i < options.faults.size(); ++i) {
@@ -124,6 +147,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     // An aborted mission is complete for the firmware once its depth says
     // it is up; the run goes on until the antenna is truly out (or the stop).
     if (flight.complete() && !(result.abort_time_s >= 0.0 && result.abort_surfaced_s < 0.0)) break;
+    sim.set_yaw_disturbance_rad_s(yaw_disturbance.next(period_s));
     sim.advance(period_s);
     clock.advance(options.period_us);
   }

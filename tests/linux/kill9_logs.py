@@ -3,9 +3,15 @@
 """Logs that survive (issue 17 item 3, writer side): SIGKILL at random
 moments of the target's flight-log writer (ring_log_writer, the real
 RingBufferLog) and of glider-sil writing a long mission's log; after every
-kill the file must hold the metadata, the header and whole rows only (every
-line ends with a newline and has the header's field count). Iterations and
-time are bounded; the random points are seeded and printed.
+kill the file must hold the metadata, the header and whole rows (every line
+ends with a newline and has the header's field count), except that a kill
+during one of glider-sil's 64 KiB writes may leave its last line torn: Linux
+stops a write(2) to a file at a page boundary when a fatal signal is pending,
+so no plain write is whole against SIGKILL. At 500,000x the SIL writes about
+100 MB/s and kills land inside writes; the reader drops such a last line and
+says so (tests/unit/test_flight_log_end.cpp, TruncatedAtEveryByte). The
+target's writer writes a 1 Hz log; its file must end on a row boundary.
+Iterations and time are bounded; the random points are seeded and printed.
 
   kill9_logs.py RING_LOG_WRITER GLIDER_SIL SOURCE_DIR OUT_DIR
 """
@@ -24,13 +30,16 @@ def fail(message):
     sys.exit(1)
 
 
-def check_whole_rows(path, name, iteration):
+def check_whole_rows(path, name, iteration, torn_tail_allowed):
     with open(path, "rb") as f:
         data = f.read()
     if not data:
-        return 0  # killed before the file had its header: nothing torn
-    if not data.endswith(b"\n"):
+        return 0, False  # killed before the file had its header: nothing torn
+    torn = not data.endswith(b"\n")
+    if torn and not torn_tail_allowed:
         fail("%s iteration %d: the file ends inside a row (%r)" % (name, iteration, data[-60:]))
+    if torn:
+        data = data[:data.rfind(b"\n") + 1]  # what the reader keeps
     lines = data.decode().split("\n")[:-1]
     header = None
     rows = 0
@@ -46,13 +55,14 @@ def check_whole_rows(path, name, iteration):
             fail("%s iteration %d: line %d has %d fields, the header %d"
                  % (name, iteration, number, line.count(",") + 1, header + 1))
         rows += 1
-    return rows
+    return rows, torn
 
 
-def kill_runs(name, command, path, rng, max_delay_s):
+def kill_runs(name, command, path, rng, max_delay_s, torn_tail_allowed=False):
     """Kills come at a random moment in [0.02, max_delay_s] s after the start."""
     total_rows = 0
     with_rows = 0
+    torn_tails = 0
     for iteration in range(ITERATIONS):
         if os.path.exists(path):
             os.remove(path)
@@ -60,12 +70,14 @@ def kill_runs(name, command, path, rng, max_delay_s):
         time.sleep(rng.uniform(0.02, max_delay_s))
         proc.send_signal(signal.SIGKILL)
         proc.wait(timeout=10)
-        rows = check_whole_rows(path, name, iteration)
+        rows, torn = check_whole_rows(path, name, iteration, torn_tail_allowed)
+        torn_tails += torn
         total_rows += rows
         with_rows += rows > 0
     if with_rows < ITERATIONS // 2:
         fail("%s: only %d of %d kills came after rows were written: the test proves little" % (name, with_rows, ITERATIONS))
-    print("%s: %d kills, %d with rows, %d whole rows in all, no torn row" % (name, ITERATIONS, with_rows, total_rows))
+    print("%s: %d kills, %d with rows, %d whole rows in all, %d torn last lines (write cut by the kill), no other torn row"
+          % (name, ITERATIONS, with_rows, total_rows, torn_tails))
 
 
 def main():
@@ -80,7 +92,7 @@ def main():
     sil_log = os.path.join(out_dir, "sil.csv")
     kill_runs("glider-sil", [sil, "--quiet", "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
                              "--mission", os.path.join(source, "boards/missions/month_200m.toml"), "--out", sil_log],
-              sil_log, rng, 0.35)
+              sil_log, rng, 0.35, torn_tail_allowed=True)
     print("PASS kill9_logs")
 
 

@@ -78,8 +78,7 @@ def test_diagnose_returns_what_the_cli_prints():
     cli = os.environ.get("GLIDER_DIAGNOSE")
     if not cli:
         pytest.skip("GLIDER_DIAGNOSE not set (run through CTest)")
-    # glider.diagnose() is the vertical plane (the CLI diagnoses both by default).
-    args = [cli, *map(str, SEGMENT_154), "--vehicle", str(VEHICLE), "--model", "steady", "--plane", "vertical", "--json"]
+    args = [cli, *map(str, SEGMENT_154), "--vehicle", str(VEHICLE), "--model", "steady", "--json"]
     want = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
     got = glider.diagnose(glider.read_log(SEGMENT_154), vehicle=str(VEHICLE), model="steady")
     want.pop("wall_s")

@@ -19,6 +19,7 @@
 #include "glider/slocum/log_loader.hpp"
 #include "glider/units.hpp"
 #include "heading_metrics.hpp"
+#include "heading_replay.hpp"
 
 namespace {
 
@@ -83,6 +84,9 @@ int main(int argc, char** argv) {
   app.add_option("--source", source, "repository root (boards/, tests/data/real)")->capture_default_str();
   app.add_option("--out", out_dir, "where the SIL logs go")->capture_default_str();
   app.add_option("--delays", delays, "fin dead times to fly (s)")->capture_default_str();
+  bool replay_only = false;
+  app.add_flag("--replay-only", replay_only,
+               "only the replay: each real log's identified heading loop (glider-diagnose) flown in SIL");
   std::vector<std::string> real_logs;
   app.add_option("--real", real_logs,
                  "real logs to measure instead of the three comet CSVs: a CSV, or a directory / glob of a glider's "
@@ -107,6 +111,35 @@ int main(int argc, char** argv) {
     }
 
     int failures = 0;
+    std::printf(
+        "SIL replay of each log's identified loop (glider-diagnose --plane heading from slocum_comet; 4 s cycle; the "
+        "loop's dead time at the fin):\n");
+    for (const std::string& log : real_logs) {
+      try {
+        const auto r =
+            glider::heading_study::replay_log(source, log, source + "/boards/vehicles/slocum_comet.toml", out_dir);
+        const auto& v = r.identified.values;
+        using glider::diagnose::HeadingEffect;
+        std::printf(
+            "  %s: identified gain %.3f, igain %.2g, dgain %.2f, deadband %.1f deg, loop dead time %.1f s, fin gain "
+            "x%.2f, roll %+.1f deg; compass jitter %.2f deg, yaw disturbance %.2f deg/s over %.0f s\n"
+            "    real             %s\n    SIL, identified  %s\n    SIL, compensated %s\n",
+            std::filesystem::path(log).stem().c_str(), glider::diagnose::at(v, HeadingEffect::kAutopilotGain),
+            glider::diagnose::at(v, HeadingEffect::kAutopilotIntegral),
+            glider::diagnose::at(v, HeadingEffect::kAutopilotDgain),
+            glider::rad_to_deg(glider::diagnose::at(v, HeadingEffect::kAutopilotDeadband)), r.loop_delay_s,
+            glider::diagnose::at(v, HeadingEffect::kFinEffectiveness),
+            glider::rad_to_deg(r.identified.logged_roll_rad + glider::diagnose::at(v, HeadingEffect::kRollOffset)),
+            glider::rad_to_deg(r.identified.heading_noise_rad), glider::rad_to_deg(r.yaw_disturbance_rad_s),
+            r.yaw_disturbance_correlation_s, glider::heading_study::format(r.real).c_str(),
+            glider::heading_study::format(r.sil_identified).c_str(),
+            glider::heading_study::format(r.sil_compensated).c_str());
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "glider-heading-study: replay of %s: %s\n", log.c_str(), e.what());
+        ++failures;
+      }
+    }
+    if (replay_only) return failures == 0 ? glider::cli::kOk : glider::cli::kError;
     auto run = [&](const Case& c) {
       HeadingMetrics m;
       if (!fly(source, out_dir, c, m)) {

@@ -19,6 +19,7 @@
 #include "glider/diagnose/diagnosis_json.hpp"
 #include "glider/diagnose/dynamic_flight_model.hpp"
 #include "glider/diagnose/flight_model.hpp"
+#include "glider/diagnose/heading_report.hpp"
 #include "glider/diagnose/observations.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -106,7 +107,9 @@ py::object diagnose(const Log& log, const py::object& vehicle, const std::string
     const auto observations = glider::diagnose::prepare_observations(log.log);
     const auto d = glider::diagnose::diagnose(params, observations, options);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    text = glider::diagnose::diagnosis_json(d, vehicle_source, wall_s).dump();
+    nlohmann::ordered_json j = glider::diagnose::diagnosis_json(d, vehicle_source, wall_s);
+    j["heading"] = glider::diagnose::heading_plane(params, log.log).json;  // as glider-diagnose's default --plane both
+    text = j.dump();
   }
   return py::module_::import("json").attr("loads")(text);
 }

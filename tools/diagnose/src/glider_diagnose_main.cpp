@@ -292,14 +292,14 @@ int main(int argc, char** argv) {
       std::optional<glider::diagnose::HeadingDiagnosis> heading;
       ordered_json heading_object;
       if (heading_plane) {
-        try {
-          heading = glider::diagnose::diagnose_heading(vehicle, log, heading_options);
-          heading_object = glider::diagnose::heading_json(*heading);
-        } catch (const glider::diagnose::HeadingUnavailable& why) {
-          if (!vertical_plane) throw;
-          std::fprintf(stderr, "glider-diagnose: heading plane: %s\n", why.what());
-          heading_object = glider::diagnose::heading_unavailable_json(why.what());
+        glider::diagnose::HeadingPlane h = glider::diagnose::heading_plane(vehicle, log, heading_options);
+        if (!h.diagnosis) {
+          const std::string reason = h.json["reason"].get<std::string>();
+          if (!vertical_plane) throw std::runtime_error(reason);
+          std::fprintf(stderr, "glider-diagnose: heading plane: %s\n", reason.c_str());
         }
+        heading = std::move(h.diagnosis);
+        heading_object = std::move(h.json);
       }
       std::optional<glider::diagnose::Observations> obs;
       std::optional<Diagnosis> vertical;

@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "glider/diagnose/thin.hpp"
 
 namespace glider::diagnose {
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Plausible ranges: a dead time beyond a minute is a broken servo or loop,
 // not a lag; a fin with a tenth or ten times the assumed authority is a
@@ -23,6 +27,7 @@ const std::array<HeadingEffectInfo, kHeadingEffectCount> kInfo{{
     {"autopilot_integral", "1/s", HeadingLink::kAutopilot, 0.005, -0.2, 0.2, false},
     {"autopilot_dgain", "s", HeadingLink::kAutopilot, 1.0, -30.0, 30.0, false},
     {"autopilot_delay", "s", HeadingLink::kAutopilot, 2.0, 0.0, 60.0, true},
+    {"autopilot_deadband", "rad", HeadingLink::kAutopilot, 0.01, 0.0, 0.2, true, true},
 }};
 
 // A finding must also cut the held-out error by this much (the link's unit):
@@ -81,6 +86,22 @@ LinkFit run_link(HeadingLink link, const HeadingValues& nominal, const HeadingRe
   return select_heading_effects(link, candidates, nominal, residuals, samples, select);
 }
 
+// Half the second difference of the heading, over the glides' samples:
+// white noise of sigma gives an RMS of sigma sqrt(3/2), a smooth turn none.
+double heading_jitter_rad(const HeadingTrack& t) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t run = 0; run < t.run_first.size(); ++run) {
+    for (std::size_t i = t.run_first[run] + 1; i + 1 < t.run_end(run); ++i) {
+      const double second =
+          0.5 * ((t.heading_rad[i + 1] - t.heading_rad[i]) - (t.heading_rad[i] - t.heading_rad[i - 1]));
+      sum += second * second;
+      ++n;
+    }
+  }
+  return n > 0 ? std::sqrt(sum / static_cast<double>(n) / 1.5) : 0.0;
+}
+
 }  // namespace
 
 const HeadingEffectInfo& info(HeadingEffect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
@@ -97,17 +118,84 @@ const char* to_string(HeadingLink link) {
   return "?";
 }
 
+UnexplainedYaw unexplained_yaw(const HeadingTrack& t, const model::VehicleParams& vehicle,
+                               const HeadingValues& values) {
+  UnexplainedYaw out;
+  std::vector<double> predicted;
+  predict_yaw_rate(t, vehicle, values, t.scored, predicted);
+  std::vector<double> r(t.size(), kNaN);
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < t.scored.size(); ++k) {
+    const double x = predicted[k] - t.yaw_rate_rad_s[t.scored[k]];
+    r[t.scored[k]] = x;
+    if (std::isfinite(x)) {
+      sum += x * x;
+      ++n;
+    }
+  }
+  if (n == 0) return out;
+  const double variance = sum / static_cast<double>(n);
+  out.rms_rad_s = std::sqrt(variance);
+  for (std::size_t lag = 1; lag < 60; ++lag) {
+    double product = 0.0, dt = 0.0;
+    std::size_t pairs = 0;
+    for (std::size_t run = 0; run < t.run_first.size(); ++run) {
+      for (std::size_t i = t.run_first[run]; i + lag < t.run_end(run); ++i) {
+        if (!std::isfinite(r[i]) || !std::isfinite(r[i + lag])) continue;
+        product += r[i] * r[i + lag];
+        dt += t.time_s[i + lag] - t.time_s[i];
+        ++pairs;
+      }
+    }
+    if (pairs < 20) break;
+    if (product / static_cast<double>(pairs) < variance / std::numbers::e) {
+      out.correlation_s = dt / static_cast<double>(pairs);
+      break;
+    }
+  }
+  return out;
+}
+
+std::vector<HoldBin> count_holds(const HeadingTrack& t, double rate_deadband_rad_s) {
+  constexpr double kBinRad = 2.0 * std::numbers::pi / 180.0;
+  std::vector<HoldBin> bins(7);
+  for (std::size_t b = 0; b < bins.size(); ++b) {
+    bins[b].from_rad = kBinRad * static_cast<double>(b);
+    bins[b].to_rad = b + 1 < bins.size() ? kBinRad * static_cast<double>(b + 1) : std::numbers::pi;
+  }
+  for (std::size_t i = 2; i < t.row_time_s.size(); ++i) {
+    const bool steady = t.row_gliding[i] && t.row_gliding[i - 1] && t.row_gliding[i - 2];
+    if (!steady || !std::isfinite(t.row_fin_command_rad[i]) || !std::isfinite(t.row_fin_command_rad[i - 1]) ||
+        !std::isfinite(t.row_command_rad[i - 1]) || !std::isfinite(t.row_heading_rad[i - 1]) ||
+        !std::isfinite(t.row_heading_rad[i - 2])) {
+      continue;
+    }
+    const double dt = t.row_time_s[i - 1] - t.row_time_s[i - 2];
+    const double rate =
+        std::remainder(t.row_heading_rad[i - 1] - t.row_heading_rad[i - 2], 2.0 * std::numbers::pi) / dt;
+    if (!(dt > 0.0) || std::abs(rate) >= rate_deadband_rad_s) continue;
+    const double error =
+        std::abs(std::remainder(t.row_command_rad[i - 1] - t.row_heading_rad[i - 1], 2.0 * std::numbers::pi));
+    const std::size_t b = std::min(bins.size() - 1, static_cast<std::size_t>(error / kBinRad));
+    (std::abs(t.row_fin_command_rad[i] - t.row_fin_command_rad[i - 1]) > 1e-4 ? bins[b].changed : bins[b].held)++;
+  }
+  return bins;
+}
+
 AutopilotSettings configured_autopilot(const flightlog::FlightLog& log) {
   AutopilotSettings s;
   const auto gain = logged_setting(log, "u_hd_fin_ap_gain");
   const auto igain = logged_setting(log, "u_hd_fin_ap_igain");
   const auto dgain = logged_setting(log, "u_hd_fin_ap_dgain");
   const auto deadband = logged_setting(log, "u_heading_rate_deadband");
+  const auto heading_deadband = logged_setting(log, "u_heading_deadband");
   s.stated = gain || igain || dgain;
   s.gain = gain.value_or(s.gain);
   s.igain = igain.value_or(s.igain);
   s.dgain = dgain.value_or(s.dgain);
   s.rate_deadband_rad_s = deadband.value_or(s.rate_deadband_rad_s);
+  s.heading_deadband_rad = heading_deadband.value_or(s.heading_deadband_rad);
   return s;
 }
 
@@ -121,6 +209,8 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   d.roll_logged = track.roll_logged;
   d.logged_roll_rad = track.median_roll_rad;
   d.runs = track.run_first.size();
+  d.heading_noise_rad = heading_jitter_rad(track);
+  d.holds = count_holds(track, d.configured.rate_deadband_rad_s);
   const HeadingValues base = nominal_heading_values(nominal, d.configured);
 
   // The servo and the autopilot act at every cycle under water: their rows.
@@ -153,6 +243,9 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                            track.yaw_rate_rad_s),
                    yaw_samples, options);
 
+  const UnexplainedYaw left = unexplained_yaw(track, nominal, d.yaw.values);
+  d.unexplained_yaw_rate_rad_s = left.rms_rad_s;
+  d.unexplained_correlation_s = left.correlation_s;
   d.values = base;
   double best_gain = 0.0;
   for (const LinkFit* link : {&d.servo, &d.yaw, &d.autopilot}) {
@@ -170,6 +263,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
 
 model::VehicleParams apply(model::VehicleParams v, const HeadingDiagnosis& d) {
   v.heading.fin_delay_s = d.delay_servo_s + d.delay_after_fin_s;
+  v.heading.fin_max_rad = d.fin_max_rad;  // the log's f_fin_safety_max where it states one
   v.heading.fin_yaw_gain_per_m *= at(d.values, HeadingEffect::kFinEffectiveness);
   v.heading.yaw_time_constant_s = at(d.values, HeadingEffect::kYawTimeConstant);
   v.heading.roll_offset_rad =

@@ -21,8 +21,9 @@ constexpr double kMissingPenalty = 1.0;
 struct Trial {
   std::vector<HeadingEffect> fitted;
   HeadingValues values{};
-  std::vector<double> sigma;  // per fitted effect, reported units
+  std::vector<double> ci_low, ci_high;  // 95 %, per fitted effect, reported units
   double train_rss = 0.0, heldout_rms = 0.0, bic = 0.0;
+  double n_eff = 0.0;  // independent training samples
 };
 
 class Problem {
@@ -57,6 +58,12 @@ class Problem {
   }
 
   void set_penalty_scale(double s) { penalty_scale_ = s; }
+  // The same problem with one effect held at another value.
+  Problem holding(HeadingEffect e, double x) const {
+    Problem p = *this;
+    at(p.nominal_, e) = x;
+    return p;
+  }
   const LinkSamples& samples() const { return samples_; }
   const HeadingValues& nominal() const { return nominal_; }
 
@@ -113,7 +120,8 @@ double train_rss(const Problem& problem, const std::vector<HeadingEffect>& fitte
   return s;
 }
 
-Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
+// The smooth effects by Levenberg-Marquardt, intervals from the Jacobian.
+Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
   Trial trial;
   trial.fitted = fitted;
   const auto k = static_cast<Eigen::Index>(fitted.size());
@@ -150,22 +158,69 @@ Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
   for (double x : r) trial.train_rss += x * x;
   const double n = static_cast<double>(r.size());
   trial.bic = n * std::log(trial.train_rss / n) + static_cast<double>(k) * std::log(n);
+  trial.n_eff = std::max(independent_samples(r), static_cast<double>(k) + 2.0);
   if (k > 0) {
     Eigen::NumericalDiff<Functor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(r.size()), k);
     numeric.df(p, jac);
-    const double n_eff = std::max(independent_samples(r), static_cast<double>(k) + 2.0);
-    const double variance = trial.train_rss / (n_eff - static_cast<double>(k));
+    const double variance = trial.train_rss / (trial.n_eff - static_cast<double>(k));
     const Eigen::MatrixXd cov = (jac.transpose() * jac).completeOrthogonalDecomposition().pseudoInverse() * variance;
     for (Eigen::Index j = 0; j < k; ++j) {
-      trial.sigma.push_back(std::sqrt(std::max(cov(j, j), 0.0)) * info(fitted[static_cast<std::size_t>(j)]).scale);
+      const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
+      const double half = 1.96 * std::sqrt(std::max(cov(j, j), 0.0)) * info(e).scale;
+      const double value = at(trial.values, e);
+      trial.ci_low.push_back(info(e).magnitude ? std::max(0.0, value - half) : value - half);
+      trial.ci_high.push_back(value + half);
     }
   }
   trial.heldout_rms = problem.rms(trial.values, problem.samples().heldout);
   return trial;
 }
 
-bool plausible(HeadingEffect e, double v) { return v >= info(e).plausible_min && v <= info(e).plausible_max; }
+// A threshold effect (info().grid) on its grid, the smooth ones fitted at
+// each point; its interval: the grid values whose training RSS is within
+// 3.84 noise variances of the best (the profile's 95 % for one parameter).
+Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
+  const auto g = std::find_if(fitted.begin(), fitted.end(), [](HeadingEffect e) { return info(e).grid; });
+  if (g == fitted.end()) return fit_smooth(problem, fitted);
+  const HeadingEffect threshold = *g;
+  std::vector<HeadingEffect> smooth(fitted.begin(), g);
+  smooth.insert(smooth.end(), g + 1, fitted.end());
+  const HeadingEffectInfo& ti = info(threshold);
+  std::vector<std::pair<double, Trial>> profile;
+  for (double x = ti.plausible_min; x <= ti.plausible_max + 1e-12; x += ti.scale) {
+    profile.emplace_back(x, fit_smooth(problem.holding(threshold, x), smooth));
+  }
+  const auto best = std::min_element(profile.begin(), profile.end(), [](const auto& a, const auto& b) {
+    return a.second.train_rss < b.second.train_rss;
+  });
+  Trial trial = best->second;
+  const double k = static_cast<double>(fitted.size());
+  const double n = static_cast<double>(problem.samples().train.size());
+  trial.bic += std::log(n);  // the threshold is a parameter too
+  const double limit = trial.train_rss * (1.0 + 3.84 / std::max(1.0, trial.n_eff - k));
+  double low = best->first, high = best->first;
+  for (const auto& [x, t] : profile) {
+    if (t.train_rss > limit) continue;
+    low = std::min(low, x);
+    high = std::max(high, x);
+  }
+  // The grid's own resolution bounds what the profile can say.
+  low = std::max(ti.plausible_min, low - 0.5 * ti.scale);
+  high = std::min(ti.plausible_max, high + 0.5 * ti.scale);
+  trial.fitted = fitted;
+  trial.ci_low.insert(trial.ci_low.begin() + (g - fitted.begin()), low);
+  trial.ci_high.insert(trial.ci_high.begin() + (g - fitted.begin()), high);
+  return trial;
+}
+
+// A threshold at the end of its grid has no minimum inside the plausible
+// range: the profile is still falling there, the effect stands in for another.
+bool plausible(HeadingEffect e, double v) {
+  const HeadingEffectInfo& i = info(e);
+  if (i.grid) return v > i.plausible_min + 0.5 * i.scale && v < i.plausible_max - 0.5 * i.scale;
+  return v >= i.plausible_min && v <= i.plausible_max;
+}
 
 bool improves(const Trial& better, const Trial& than, const HeadingSelectOptions& o) {
   return better.heldout_rms < than.heldout_rms * (1.0 - o.min_relative_improvement) &&
@@ -197,16 +252,19 @@ Trial forward(const Problem& problem, std::vector<HeadingEffect> remaining, Tria
 }
 
 // Backward: an effect the joint fit no longer needs (without it the held-out
-// error is as good within the margin) leaves.
+// error is as good within the margin), or whose joint value is implausible,
+// leaves.
 Trial backward(const Problem& problem, Trial current, const HeadingSelectOptions& options) {
   bool dropped = true;
-  while (dropped && current.fitted.size() > 1) {
+  while (dropped && !current.fitted.empty()) {
     dropped = false;
     for (std::size_t j = 0; j < current.fitted.size(); ++j) {
+      const HeadingEffect e = current.fitted[j];
       std::vector<HeadingEffect> fewer = current.fitted;
       fewer.erase(fewer.begin() + static_cast<long>(j));
+      if (fewer.empty() && plausible(e, at(current.values, e))) break;  // a single effect that entered stays
       Trial t = fit(problem, fewer);
-      if (!improves(current, t, options)) {
+      if (!improves(current, t, options) || !plausible(e, at(current.values, e))) {
         current = std::move(t);
         dropped = true;
         break;
@@ -262,9 +320,8 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
     f.effect = e;
     f.value = at(final_fit.values, e);
     f.nominal = at(nominal, e);
-    const double half = 1.96 * final_fit.sigma[j];
-    f.ci95_low = info(e).magnitude ? std::max(0.0, f.value - half) : f.value - half;
-    f.ci95_high = f.value + half;
+    f.ci95_low = final_fit.ci_low[j];
+    f.ci95_high = final_fit.ci_high[j];
     f.heldout_rms = heldout;
     f.gain = 1.0 - heldout / out.baseline_heldout_rms;
     out.findings.push_back(f);

@@ -38,6 +38,18 @@ double interpolate(std::span<const double> time, std::span<const double> x, doub
 
 double value(const HeadingValues& v, HeadingEffect e) { return at(v, e); }
 
+// The fin between two readings as the servo moves it: the command that the
+// next reading shows went out at the end of the cycle of this one, so the
+// fin leaves at the servo's speed and then holds (a straight line between
+// readings 4 s apart would lag a fin move by ~1.5 s and blur it, which a
+// fit reads as less fin authority).
+double fin_between_rows(std::span<const double> time, std::span<const double> fin, double t, double rate) {
+  const std::size_t j = row_at_or_before(time, t);
+  if (j == SIZE_MAX) return kNaN;
+  if (j + 1 >= time.size() || !std::isfinite(fin[j + 1])) return fin[j];
+  return fin[j] + std::clamp(fin[j + 1] - fin[j], -rate * (t - time[j]), rate * (t - time[j]));
+}
+
 void pick(const std::vector<double>& series, std::span<const std::size_t> at_index, std::vector<double>& out) {
   out.resize(at_index.size());
   for (std::size_t k = 0; k < at_index.size(); ++k) out[k] = series[at_index[k]];
@@ -56,6 +68,7 @@ HeadingValues nominal_heading_values(const model::VehicleParams& vehicle, const 
   at(v, HeadingEffect::kAutopilotIntegral) = autopilot.igain;
   at(v, HeadingEffect::kAutopilotDgain) = autopilot.dgain;
   at(v, HeadingEffect::kAutopilotDelay) = 0.0;
+  at(v, HeadingEffect::kAutopilotDeadband) = autopilot.heading_deadband_rad;
   return v;
 }
 
@@ -128,7 +141,9 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
   const double ki = value(values, HeadingEffect::kAutopilotIntegral);
   const double kd = value(values, HeadingEffect::kAutopilotDgain);
   const double delay = std::abs(value(values, HeadingEffect::kAutopilotDelay));
+  const double hold_below = std::abs(value(values, HeadingEffect::kAutopilotDeadband));
   const double fin_max = t.fin_max_rad;
+  double output = 0.0;
   const std::size_t n = t.row_time_s.size();
   std::vector<double> predicted(n, kNaN);
   const std::span<const double> time(t.row_time_s);
@@ -137,6 +152,7 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
+      output = 0.0;
       continue;
     }
     const double when = time[i] - delay;
@@ -147,10 +163,18 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
     const double error = wrap_pi(command - heading);
     const double dt = i > 0 ? time[i] - time[i - 1] : 0.0;
     double rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
-    if (std::abs(rate) < settings.rate_deadband_rad_s) rate = 0.0;
     last_heading = heading;
+    if (std::abs(rate) < settings.rate_deadband_rad_s) {
+      rate = 0.0;
+      // Inside both deadbands the fin stays where it is (and nothing integrates).
+      if (std::abs(error) < hold_below) {
+        predicted[i] = output;
+        continue;
+      }
+    }
     integrator += ki * error * dt;  // unconditional, as Slocum's: only the output is clamped
-    predicted[i] = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
+    output = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
+    predicted[i] = output;
   }
   pick(predicted, rows, out);
 }
@@ -166,6 +190,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
   const double fin_gain = hd.fin_yaw_gain_per_m * value(values, HeadingEffect::kFinEffectiveness);
   const double roll_offset = value(values, HeadingEffect::kRollOffset);
   const double tau = std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)));
+  const double fin_rate = hd.fin_rate_rad_s > 0.0 ? hd.fin_rate_rad_s : 1e9;
   std::vector<double> rate(t.size(), kNaN);
   const std::span<const double> row_time(t.row_time_s);
   std::vector<double> model_heading;
@@ -178,7 +203,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
     auto target = [&](std::size_t k, double w, double now) {
       const double speed = t.speed_m_s[k] + w * (t.speed_m_s[k + 1] - t.speed_m_s[k]);
       const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
-      const double fin = interpolate(row_time, t.row_fin_filled_rad, now - delay);
+      const double fin = fin_between_rows(row_time, t.row_fin_filled_rad, now - delay, fin_rate);
       return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
     };
     model_heading.assign(1, t.heading_rad[first]);

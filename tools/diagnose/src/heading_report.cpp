@@ -64,6 +64,15 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
   j["roll_logged"] = d.roll_logged;
   j["logged_roll_rad"] = d.logged_roll_rad;
   j["fin_max_rad"] = d.fin_max_rad;
+  j["heading_noise_rad"] = d.heading_noise_rad;
+  j["unexplained_yaw_rate"] = {{"rms_rad_s", d.unexplained_yaw_rate_rad_s},
+                               {"correlation_s", d.unexplained_correlation_s}};
+  ordered_json holds = ordered_json::array();
+  for (const HoldBin& b : d.holds) {
+    holds.push_back(
+        {{"error_from_rad", b.from_rad}, {"error_to_rad", b.to_rad}, {"held", b.held}, {"changed", b.changed}});
+  }
+  j["fin_holds"] = holds;
   j["configured_autopilot"] = {{"gain", d.configured.gain},
                                {"igain", d.configured.igain},
                                {"dgain", d.configured.dgain},
@@ -88,6 +97,18 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
 
 ordered_json heading_unavailable_json(const std::string& reason) { return {{"available", false}, {"reason", reason}}; }
 
+HeadingPlane heading_plane(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
+                           const HeadingDiagnoseOptions& options) {
+  HeadingPlane plane;
+  try {
+    plane.diagnosis = diagnose_heading(nominal, log, options);
+    plane.json = heading_json(*plane.diagnosis);
+  } catch (const HeadingUnavailable& why) {
+    plane.json = heading_unavailable_json(why.what());
+  }
+  return plane;
+}
+
 std::string heading_text(const HeadingDiagnosis& d) {
   std::string out;
   char line[512];
@@ -110,7 +131,14 @@ std::string heading_text(const HeadingDiagnosis& d) {
           100.0 * x.gain);
     }
   }
-  add("  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
+  add("  heading jitter (cycle to cycle, as white noise): %.2f deg; yaw rate left unexplained: RMS %.2f deg/s, "
+      "correlated over %.0f s\n",
+      rad_to_deg(d.heading_noise_rad), rad_to_deg(d.unexplained_yaw_rate_rad_s), d.unexplained_correlation_s);
+  add("  c_fin held / changed by the previous cycle's error (rate inside its deadband):");
+  for (const HoldBin& b : d.holds) {
+    add(" %.0f-%.0f deg %zu/%zu;", rad_to_deg(b.from_rad), rad_to_deg(b.to_rad), b.held, b.changed);
+  }
+  add("\n  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
       d.delay_servo_s, d.delay_after_fin_s);
   add("  heading cause: %s\n", d.cause.c_str());
   return out;

@@ -6,7 +6,8 @@
 // - kSlocum: the Slocum heading autopilot as its logged settings describe it:
 //   fin = gain e + igain int(e) + dgain r, r the heading rate with the
 //   u_heading_rate_deadband; the integrator runs unconditionally and is
-//   clamped only by the fin limit on the output.
+//   clamped only by the fin limit on the output; with a heading deadband
+//   the fin is held while error and rate are both inside theirs.
 // - kCompensated: the same gains, plus what the glider's fin servo needs:
 //   the error is taken on the heading predicted `delay_s` ahead (a Smith
 //   predictor: the turn the fin commands already sent will make, from the
@@ -30,7 +31,12 @@ struct HeadingControlConfig {
   double igain = 0.02;                  // u_hd_fin_ap_igain, rad per rad s
   double dgain = -4.0;                  // u_hd_fin_ap_dgain, rad per rad/s of heading rate
   double rate_deadband_rad_s = 0.0087;  // u_heading_rate_deadband
-  double fin_max_rad = 0.25;            // f_fin_safety_max (comet 2019)
+  // kSlocum: u_heading_deadband. While the error is inside it and the rate
+  // inside rate_deadband_rad_s the fin is held where it is (and nothing
+  // integrates); 0 = never held. The comet logs hold the fin below ~5 deg
+  // (glider-diagnose's autopilot_deadband, docs/heading-control.md).
+  double heading_deadband_rad = 0.0;
+  double fin_max_rad = 0.25;  // f_fin_safety_max (comet 2019)
   // kCompensated only:
   double fin_rate_rad_s = 0.1;         // the servo's speed (the vehicle file's fin_rate_rad_s)
   double delay_s = 0.0;                // the fin's dead time to predict over

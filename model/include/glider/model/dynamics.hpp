@@ -26,7 +26,8 @@
 //   one hull diameter), it adds no moment;
 // - heading is not a rigid-body degree of freedom here (unlike the 6-DOF
 //   model of paper 001): the yaw rate relaxes (first order) toward
-//   fin_gain V fin + roll_gain V a_eff sin(roll offset). Roll, sideslip and
+//   fin_gain V fin + roll_gain V a_eff sin(roll offset) (+ a random yaw
+//   disturbance the SIL may add). Roll, sideslip and
 //   their coupling back into the vertical plane are neglected; a turning
 //   glider keeps the vertical-plane speeds of the straight glide.
 #include <Eigen/Core>
@@ -57,6 +58,10 @@ struct MassInputs {
   double second_pos_m = 0.0;      // second moving mass, if the vehicle has one
   double second_rate_m_s = 0.0;
   double fin_rad = 0.0;  // rudder angle, + turns clockwise
+  // A yaw rate the fin and the roll do not explain (rad/s, added to what
+  // they ask for): the random yaw of heading.yaw_disturbance_rad_s, which the
+  // SIL draws (not an internal mass: an input of the same kind, set from outside).
+  double yaw_disturbance_rad_s = 0.0;
 };
 
 // Body-frame velocities relative to the water and everything derived.

@@ -63,6 +63,8 @@ class GliderSimulator {
   // The fin starts toward a command heading.fin_delay_s after it is given
   // (an integration step ends there): the servo's dead time.
   void command_fin_rad(double angle);
+  // Held from now on (the SIL's draw of heading.yaw_disturbance_rad_s).
+  void set_yaw_disturbance_rad_s(double rate) { yaw_disturbance_rad_s_ = rate; }
 
   // Advance by `duration_s` (a whole number of integration steps; the last
   // one is shortened if needed).
@@ -110,6 +112,7 @@ class GliderSimulator {
   std::array<PendingFin, kMaxPendingFin> pending_fin_{};
   std::size_t pending_first_ = 0;
   std::size_t pending_count_ = 0;
+  double yaw_disturbance_rad_s_ = 0.0;
   double displaced_pump_volume_m3_ = 0.0;  // lags pump_ by ballast.lag_s (0: equal)
   State state_ = State::Zero();
   double time_s_ = 0.0;

@@ -73,6 +73,11 @@ struct HeadingModel {
   double fin_max_rad = 0.0;      // fin servo travel (+-)
   double fin_rate_rad_s = 0.0;   // fin servo speed
   double fin_delay_s = 0.0;      // dead time between a fin command and the servo starting to move
+  // A random yaw rate the fin and roll do not explain (first-order
+  // Gauss-Markov: RMS and correlation time), which the SIL draws; the real
+  // comet logs have one (glider-diagnose's heading plane). 0 = none.
+  double yaw_disturbance_rad_s = 0.0;
+  double yaw_disturbance_correlation_s = 10.0;
 };
 
 struct VehicleParams {

@@ -15,6 +15,15 @@
 
 namespace glider::diagnose {
 
+// How often the autopilot left c_fin unchanged from one cycle to the next,
+// by the heading error of the cycle before, among cycles whose heading rate
+// was inside the rate deadband: a heading deadband shows as all held below
+// it, none above (counted on the log, no model).
+struct HoldBin {
+  double from_rad = 0.0, to_rad = 0.0;
+  std::size_t held = 0, changed = 0;
+};
+
 struct HeadingDiagnosis {
   std::string vehicle;
   AutopilotSettings configured;  // the law the log's header states
@@ -22,6 +31,17 @@ struct HeadingDiagnosis {
   bool roll_logged = false;
   double logged_roll_rad = 0.0;  // median m_roll on the glides used
   std::size_t runs = 0;          // glides under a heading command
+  // The heading's cycle-to-cycle jitter on the glides, as white noise
+  // (sqrt(2/3) x the RMS of half the second difference): compass noise and
+  // yaw faster than the cycle, which no link explains. The SIL's compass
+  // noise when the log is replayed.
+  double heading_noise_rad = 0.0;
+  // What the extended yaw model leaves of the measured yaw rate: its RMS and
+  // the lag at which its autocorrelation within a glide falls below 1/e (a
+  // slow yaw disturbance, not compass noise, when that is tens of seconds).
+  double unexplained_yaw_rate_rad_s = 0.0;
+  double unexplained_correlation_s = 0.0;
+  std::vector<HoldBin> holds;  // 0-2, 2-4, ... 10-12 deg, and beyond
   LinkFit servo, yaw, autopilot;
   HeadingValues values{};      // every link's nominal with its findings
   std::string cause = "none";  // the finding with the largest gain of its link
@@ -37,6 +57,14 @@ struct HeadingDiagnoseOptions {
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
 };
 
+struct UnexplainedYaw {
+  double rms_rad_s = 0.0;      // of the yaw rate the model leaves (the slope estimator's)
+  double correlation_s = 0.0;  // first lag where its autocorrelation within a glide < 1/e (0: none found)
+};
+// What the yaw model with these values leaves of a track's measured yaw rate.
+UnexplainedYaw unexplained_yaw(const HeadingTrack& track, const model::VehicleParams& vehicle,
+                               const HeadingValues& values);
+
 // The configured autopilot from the log's settings_at_file_open
 // (u_hd_fin_ap_gain, _igain, _dgain, u_heading_rate_deadband).
 AutopilotSettings configured_autopilot(const flightlog::FlightLog& log);
@@ -47,7 +75,8 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
 
 // The nominal vehicle with the vehicle and servo findings: fin dead time =
 // servo + after-fin delay, fin yaw gain x effectiveness, yaw time constant,
-// roll = the log's median roll + the offset found.
+// roll = the log's median roll + the offset found, the fin limit the log
+// states.
 model::VehicleParams apply(model::VehicleParams nominal, const HeadingDiagnosis& d);
 
 }  // namespace glider::diagnose

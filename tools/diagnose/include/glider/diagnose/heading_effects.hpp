@@ -22,6 +22,8 @@ enum class HeadingEffect : int {
   kAutopilotIntegral,  // autopilot: integral gain flown (rad of fin per rad s)
   kAutopilotDgain,     // autopilot: gain on the heading rate flown (rad of fin per rad/s)
   kAutopilotDelay,     // autopilot: heading reading -> c_fin (the loop's cycle) (s)
+  kAutopilotDeadband,  // autopilot: |error| below which (and a rate inside u_heading_rate_deadband) the fin is held
+                       // (rad)
   kCount
 };
 constexpr std::size_t kHeadingEffectCount = static_cast<std::size_t>(HeadingEffect::kCount);
@@ -36,6 +38,10 @@ struct HeadingEffectInfo {
   double scale;  // typical size, for the optimiser's conditioning
   double plausible_min, plausible_max;
   bool magnitude;  // fitted as |x| (a delay or time constant has no sign)
+  // Fitted on a grid (plausible_min, + scale, ... plausible_max) with the
+  // others fitted at each point, its interval from the profile of the
+  // residual: a threshold moves the residual in steps (no gradient).
+  bool grid = false;
 };
 
 const HeadingEffectInfo& info(HeadingEffect effect);

@@ -22,7 +22,8 @@ namespace glider::diagnose {
 struct AutopilotSettings {
   double gain = 1.5, igain = 0.02, dgain = -4.0;  // the firmware's defaults (Slocum's in the comet logs)
   double rate_deadband_rad_s = 0.0087;
-  bool stated = false;  // false: the log's header states none (the defaults stand in)
+  double heading_deadband_rad = 0.0;  // u_heading_deadband: 0 = the fin is never held
+  bool stated = false;                // false: the log's header states none (the defaults stand in)
 };
 
 // The values that mean "no effect" for this vehicle and configured law.
