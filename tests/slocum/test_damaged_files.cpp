@@ -309,3 +309,28 @@ TEST(SlocumDamage, ABadFileDoesNotStopTheSet) {
   CHECK_EQUAL(1U, deployment.warnings.size());
   CHECK(contains(deployment.warnings.front().text(), "comet-2016-174-05-005.dbd: byte 0: empty file (file skipped"));
 }
+
+TEST(SlocumDamage, ASensorListReadForAnotherFileMustFitTheHeader) {
+  // Found by fuzz.slocum_binary: a header that says fewer sensors per cycle
+  // under a CRC already read for another file of the set got that file's
+  // list, and the decoder shifted by a negative padding.
+  std::string bytes = t::read_bytes(t::real_file(kFlight));
+  const auto replace = [&bytes](const std::string& from, const std::string& to) {
+    const std::size_t at = bytes.find(from);
+    CHECK(at != std::string::npos);
+    bytes.replace(at, from.size(), to);
+  };
+  replace("sensors_per_cycle:    2056", "sensors_per_cycle:    2000");
+  replace("state_bytes_per_cycle:    514", "state_bytes_per_cycle:    500");
+  const fs::path path = scratch("memo/comet-2016-174-05-004.dbd");
+  t::write_bytes(path, bytes);
+  glider::slocum::SensorListMemo memo;
+  ReadOptions options = real_options(kFlight);
+  options.memo = &memo;
+  glider::slocum::read_binary_file(t::real_file(kFlight), options);  // reads and keeps list 11d38bfd
+  const std::string error = error_of(path, options);
+  CHECK_TEXT(contains(error,
+                      "comet-2016-174-05-004.dbd: byte 0: sensor list 11d38bfd (read for another file of the "
+                      "set) has 2056 sensors, this header says 2000 per cycle"),
+             error.c_str());
+}

@@ -128,6 +128,11 @@ DecodedCycles decode_cycles(std::string_view bytes, std::size_t pos, const Heade
   const bool swap = needs_swap(order);
   std::vector<int> sizes(n);
   for (std::size_t i = 0; i < n; ++i) sizes[i] = sensors[i].bytes;
+  if (state_bytes * 4 < n || state_bytes * 4 - n >= 4) {  // the callers check it; the decoder relies on it
+    throw SlocumError(source, pos,
+                      std::to_string(state_bytes) + " state bytes per cycle do not hold " + std::to_string(n) +
+                          " sensors' 2-bit states");
+  }
   // Bits of the last state byte beyond the last sensor must be zero.
   const unsigned padding_fields = static_cast<unsigned>(state_bytes * 4 - n);
   const unsigned padding_mask = padding_fields == 0 ? 0U : ((1U << (2 * padding_fields)) - 1U);

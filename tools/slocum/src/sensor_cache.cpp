@@ -55,7 +55,17 @@ std::shared_ptr<const SensorList> load_cached_list(const Header& header, const s
   const std::string& crc = header.sensor_list_crc;
   if (options.memo != nullptr) {
     const auto it = options.memo->by_crc.find(crc);
-    if (it != options.memo->by_crc.end()) return it->second;
+    if (it != options.memo->by_crc.end()) {
+      // A list read for another file of the set: it must fit this header too
+      // (a damaged header, or a CRC that does not belong to its list).
+      if (it->second->size() != header.sensors_per_cycle) {
+        throw SlocumError(source, 0,
+                          "sensor list " + crc + " (read for another file of the set) has " +
+                              std::to_string(it->second->size()) + " sensors, this header says " +
+                              std::to_string(header.sensors_per_cycle) + " per cycle");
+      }
+      return it->second;
+    }
   }
   const std::vector<fs::path> dirs = search_dirs(source, options);
   const auto path = find_cache_file(crc, dirs);
