@@ -5,15 +5,16 @@
 #include <algorithm>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <unsupported/Eigen/NonLinearOptimization>
-#include <unsupported/Eigen/NumericalDiff>
 
 #include "glider/diagnose/dynamic_flight_model.hpp"
+#include "glider/diagnose/forward_difference.hpp"
 #include "glider/diagnose/thin.hpp"
 #include "glider/units.hpp"
 
@@ -127,6 +128,23 @@ void residuals(const SampleSet& set, const Parameters& x, bool ctd, std::span<co
   }
 }
 
+// Residuals of two disjoint sets of samples (the fitted and the held-out
+// yos) from one flight through the log: a sample's prediction does not
+// depend on which others are asked for.
+void residuals_of_both(const SampleSet& set, const Parameters& x, bool ctd, std::span<const std::size_t> a,
+                       std::span<const std::size_t> b, std::vector<double>& out_a, std::vector<double>& out_b) {
+  std::vector<std::size_t> both;
+  both.reserve(a.size() + b.size());
+  std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+  std::vector<double> r;
+  residuals(set, x, ctd, both, r);
+  out_a.clear();
+  out_b.clear();
+  for (std::size_t k = 0; k < both.size(); ++k) {
+    (out_a.size() < a.size() && both[k] == a[out_a.size()] ? out_a : out_b).push_back(r[k]);
+  }
+}
+
 double rms_of(const std::vector<double>& r) {
   if (r.empty()) return kNaN;
   double s = 0.0;
@@ -205,7 +223,7 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   FitResult result;
   const Layout layout = make_layout(candidate, set, train);
   const std::size_t k = layout.size;
-  FitFunctor functor{set, candidate, layout, train, {}};
+  const ForwardDifference<FitFunctor> functor(FitFunctor{set, candidate, layout, train, {}});
   Eigen::VectorXd p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
   // The pump lag is fitted as |value| (no sign): at 0 its gradient vanishes,
   // so it starts one scale (5 s) away.
@@ -213,14 +231,13 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
     if (candidate.fitted[j] == Effect::kPumpLag) p[static_cast<Eigen::Index>(layout.offset[j])] = 1.0;
   }
   if (k > 0) {
-    Eigen::NumericalDiff<FitFunctor> numeric(functor);
-    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<FitFunctor>> lm(numeric);
+    Eigen::LevenbergMarquardt<const ForwardDifference<FitFunctor>> lm(functor);
     lm.parameters.maxfev = 400;
     lm.minimize(p);
   }
   result.parameters = unpack(candidate, layout, p);
-  std::vector<double> r;
-  residuals(set, result.parameters, candidate.ctd_density, train, r);
+  std::vector<double> r, h;
+  residuals_of_both(set, result.parameters, candidate.ctd_density, train, heldout, r, h);
   const double n = static_cast<double>(r.size());
   for (double v : r) result.train_rss += v * v;
   result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
@@ -229,9 +246,9 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   // residuals' serial correlation respected (DiagnoseOptions::intervals).
   double t_over_normal = 1.0;  // Student-t quantile / 1.96, folded into sigma
   if (k > 0) {
-    Eigen::NumericalDiff<FitFunctor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
-    numeric.df(p, jac);
+    functor.remember(p, Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())));
+    functor.df(p, jac);
     const Eigen::MatrixXd cov = parameter_covariance(set, train, jac, r, intervals, t_over_normal);
     for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
       const Effect e = candidate.fitted[j];
@@ -251,8 +268,6 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
       result.sigma.push_back(std::sqrt(std::max(var_value, 0.0)) * info(e).scale * t_over_normal);
     }
   }
-  std::vector<double> h;
-  residuals(set, result.parameters, candidate.ctd_density, heldout, h);
   result.heldout_rms = rms_of(h);
   return result;
 }

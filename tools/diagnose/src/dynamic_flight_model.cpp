@@ -85,8 +85,10 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     };
     model::PrescribedPitchInputs in0 = inputs(first, 0.0, cc_to_m3(t.ballast_cc[first]), 0.0);
     using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
-    auto rate_at = [&](const Impulse& state, const model::PrescribedPitchInputs& in) {
-      return dynamics.depth_rate_m_s(state, in) + water_w(in.depth_m);
+    using Derivative = model::PrescribedPitchDynamics::Derivative;
+    // The depth rate over ground (the water's own vertical velocity added).
+    auto rate_at = [&](const Derivative& d, const model::PrescribedPitchInputs& in) {
+      return d.depth_rate_m_s + water_w(in.depth_m);
     };
     // Flies the run from its first sample with body velocities (v1, v3) up
     // to sample `last`: the model's depth at each sample into z (from the
@@ -112,15 +114,15 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
           const auto a = inputs(i, fa, lagged, fa);
           const auto b = inputs(i, fb, lagged, fa);
           const auto c = inputs(i, fc, lagged, fa);
-          const Impulse k1 = dynamics.rate(p, a);
-          const Impulse p2 = p + 0.5 * h * k1;
-          const Impulse k2 = dynamics.rate(p2, b);
-          const Impulse p3 = p + 0.5 * h * k2;
-          const Impulse k3 = dynamics.rate(p3, b);
-          const Impulse p4 = p + h * k3;
-          const Impulse k4 = dynamics.rate(p4, c);
-          depth += h / 6.0 * (rate_at(p, a) + 2.0 * rate_at(p2, b) + 2.0 * rate_at(p3, b) + rate_at(p4, c));
-          p += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+          const Derivative d1 = dynamics.derivative(p, a);
+          const Impulse p2 = p + 0.5 * h * d1.p_dot;
+          const Derivative d2 = dynamics.derivative(p2, b);
+          const Impulse p3 = p + 0.5 * h * d2.p_dot;
+          const Derivative d3 = dynamics.derivative(p3, b);
+          const Impulse p4 = p + h * d3.p_dot;
+          const Derivative d4 = dynamics.derivative(p4, c);
+          depth += h / 6.0 * (rate_at(d1, a) + 2.0 * rate_at(d2, b) + 2.0 * rate_at(d3, b) + rate_at(d4, c));
+          p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
           lagged = c.pumped_volume_m3;
         }
         if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
@@ -195,13 +197,17 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
       }
     }
     // Fly up to the last requested sample of this run and on through its
-    // estimator window (the slope at a sample uses the samples after it).
+    // estimator window (the slope at a sample uses the samples after it),
+    // and at least one sample further: a centred difference (no window, or
+    // none after the sample within it) needs the next sample. A prediction
+    // then never depends on which other samples are asked for.
     // The model's depth is integrated with the same RK4 weights, so that its
     // depth rate can go through the very estimator the measurement went
     // through (the track's windowed slope): like is compared with like, also
     // in turns, where a +-5 s slope is not the instantaneous rate.
     std::size_t last_needed = std::min(end - 1, samples.back());
     const double window_end_s = t.time_s[last_needed] + t.rate_half_window_s;
+    if (last_needed + 1 < end) ++last_needed;
     while (last_needed + 1 < end && t.time_s[last_needed + 1] <= window_end_s) ++last_needed;
     std::vector<double>& z = depth_buffer_;
     std::vector<double>& u = speed_buffer_;

@@ -29,6 +29,8 @@
 //   fin_gain V fin + roll_gain V a_eff sin(roll offset). Roll, sideslip and
 //   their coupling back into the vertical plane are neglected; a turning
 //   glider keeps the vertical-plane speeds of the straight glide.
+#include <array>
+
 #include <Eigen/Core>
 
 #include "glider/model/environment.hpp"
@@ -143,6 +145,14 @@ class GliderDynamics {
   // masses are (the pumped volume weighs -water_density * volume).
   MassProperties mass_properties(const MassInputs& masses, double water_density) const;
 
+  // Only the total and first moments of mass_properties (same bits), without
+  // the inertia, the matrix and its inverse: all the prescribed-pitch model
+  // needs, evaluated millions of times by a diagnosis.
+  struct RigidMasses {
+    double total_kg = 0.0, first_x = 0.0, first_z = 0.0;
+  };
+  RigidMasses rigid_masses(const MassInputs& masses, double water_density) const;
+
   const VehicleParams& vehicle() const { return vehicle_; }
   const Environment& environment() const { return environment_; }
 
@@ -151,6 +161,12 @@ class GliderDynamics {
   Environment environment_;
   double nominal_volume_m3_;
   double sin_roll_offset_;  // constant: the roll term of the yaw rate
+
+  struct PointMass {
+    double m, x, z;
+  };
+  // The hull's point masses (offset, pumped volume, battery, second mass) where `masses` puts them.
+  std::array<PointMass, 4> point_masses(const MassInputs& masses, double water_density) const;
 };
 
 }  // namespace glider::model
