@@ -10,8 +10,12 @@
 namespace glider::model {
 
 FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3) {
+  return flow_forces_at_speed(h, water_density, v1, v3, std::hypot(v1, v3));
+}
+
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s) {
   FlowForces out;
-  out.speed_m_s = std::hypot(v1, v3);
+  out.speed_m_s = speed_m_s;
   out.alpha_rad = std::atan2(v3, v1);
   if (!(out.speed_m_s > 0.0)) return out;
   const ForceCoefficients c = force_coefficients(h, out.alpha_rad);

@@ -61,7 +61,8 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
   const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
   const Eigen::Vector2d v = velocities_from(translational(dynamics_.vehicle(), m), p, in.q_rad_s);
   const double net_kg = m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water);
-  const FlowForces flow = flow_forces(dynamics_.vehicle().hydro, in.density_kg_m3, v[0], v[1]);
+  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, in.density_kg_m3, v[0], v[1],
+                                               std::sqrt(v[0] * v[0] + v[1] * v[1]));
   const double g = dynamics_.environment().gravity_m_s2;
   const double sin_theta = std::sin(in.theta_rad), cos_theta = std::cos(in.theta_rad);
   const double f1 = -net_kg * g * sin_theta + flow.f1;

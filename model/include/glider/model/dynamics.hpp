@@ -88,6 +88,10 @@ struct FlowForces {
   double moment_nm = 0.0;     // viscous moment (no damping, no Munk)
 };
 FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3);
+// The same with the speed |(v1, v3)| given: std::hypot (guarded against
+// overflow, and slow) is a fifth of a diagnosis' time, where a plain square
+// root of glider speeds loses nothing.
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s);
 
 class GliderDynamics {
  public:
