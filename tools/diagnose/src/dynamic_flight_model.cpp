@@ -260,13 +260,20 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     std::vector<double>& z = depth_buffer_;
     ground_depth(flown, flight.depth, z);
     const std::size_t count = flown - first + 1;
-    const flightlog::Column rate =
-        depth_rate_estimate(std::span(t.time_s).subspan(first, count), std::span<const double>(z).first(count),
-                            t.rate_half_window_s, t.max_gap_s);
+    const std::span<const double> time = std::span(t.time_s).subspan(first, count);
+    const std::span<const double> depth = std::span<const double>(z).first(count);
+    // The estimator at the requested samples only (a stride of the run's);
+    // the whole column where a depth is not finite (its gaps rule differs).
+    const bool finite = std::all_of(depth.begin(), depth.end(), [](double d) { return std::isfinite(d); });
+    const flightlog::Column column =
+        finite ? flightlog::Column{} : depth_rate_estimate(time, depth, t.rate_half_window_s, t.max_gap_s);
     for (; next < samples.size() && samples[next] < end; ++next) {
       const std::size_t k = samples[next];
       if (k > flown) continue;
-      if (depth_rate != nullptr) (*depth_rate)[next] = rate[k - first];
+      if (depth_rate != nullptr) {
+        (*depth_rate)[next] = finite ? depth_rate_estimate_at(time, depth, k - first, t.rate_half_window_s, t.max_gap_s)
+                                     : column[k - first];
+      }
       if (speed != nullptr) (*speed)[next] = u[k - first];
     }
   }
