@@ -10,8 +10,12 @@
 namespace glider::model {
 
 FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3) {
+  return flow_forces_at_speed(h, water_density, v1, v3, std::hypot(v1, v3));
+}
+
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s) {
   FlowForces out;
-  out.speed_m_s = std::hypot(v1, v3);
+  out.speed_m_s = speed_m_s;
   out.alpha_rad = std::atan2(v3, v1);
   if (!(out.speed_m_s > 0.0)) return out;
   const ForceCoefficients c = force_coefficients(h, out.alpha_rad);
@@ -48,28 +52,40 @@ const GliderDynamics::MassProperties& GliderDynamics::MassCache::get(const Glide
   return value_;
 }
 
-GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses, double water_density) const {
+std::array<GliderDynamics::PointMass, 4> GliderDynamics::point_masses(const MassInputs& masses,
+                                                                      double water_density) const {
   const VehicleParams& v = vehicle_;
   // Pumping water out (positive volume) is modelled, as in Leonard-Graver, as
   // a negative point mass at the engine: same force and moment as the volume.
   const double ballast_kg = -water_density * masses.pumped_volume_m3;
-
-  struct Point {
-    double m, x, z;
-  };
-  const Point points[] = {
+  return {{
       {v.offset.mass_kg, v.offset.x_m, v.offset.z_m},
       {ballast_kg, v.ballast.x_m, v.ballast.z_m},
       {v.battery.mass_kg, v.battery.x_at_zero_m + masses.battery_pos_m, v.battery.z_m},
       {v.second_mass.mass_kg, v.second_mass.x_at_zero_m + masses.second_pos_m, v.second_mass.z_m},
-  };
+  }};
+}
+
+GliderDynamics::RigidMasses GliderDynamics::rigid_masses(const MassInputs& masses, double water_density) const {
+  RigidMasses r;
+  r.total_kg = vehicle_.hull_mass_kg;
+  for (const PointMass& point : point_masses(masses, water_density)) {
+    r.total_kg += point.m;
+    r.first_x += point.m * point.x;
+    r.first_z += point.m * point.z;
+  }
+  return r;
+}
+
+GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses, double water_density) const {
+  const VehicleParams& v = vehicle_;
   MassProperties p;
-  p.total_kg = v.hull_mass_kg;
+  const RigidMasses rigid = rigid_masses(masses, water_density);
+  p.total_kg = rigid.total_kg;
+  p.first_x = rigid.first_x;
+  p.first_z = rigid.first_z;
   double inertia = v.hull_inertia_kg_m2 + v.added_inertia_kg_m2;
-  for (const Point& point : points) {
-    p.total_kg += point.m;
-    p.first_x += point.m * point.x;
-    p.first_z += point.m * point.z;
+  for (const PointMass& point : point_masses(masses, water_density)) {
     inertia += point.m * (point.x * point.x + point.z * point.z);
   }
   // T = 1/2 xi^T A xi + xi^T b + ..., xi = (v1, v3, q). For a point mass at

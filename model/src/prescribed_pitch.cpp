@@ -20,10 +20,19 @@ WaterSample water_of(const PrescribedPitchInputs& in) {
   return w;
 }
 
-// Body velocities from the impulses with the pitch rate prescribed: A's 2x2
-// translational block is diagonal, its coupling to q is the third column.
-Eigen::Vector2d velocities_from(const GliderDynamics::MassProperties& mp, const Eigen::Vector2d& p, double q) {
-  return {(p[0] - mp.a(0, 2) * q) / mp.a(0, 0), (p[1] - mp.a(1, 2) * q) / mp.a(1, 1)};
+// The translational block of the generalized mass matrix (dynamics.hpp's A):
+// diagonal, coupled to q by its third column.
+struct TranslationalMass {
+  double a11, a33, a13, a23;  // A(0,0), A(1,1), A(0,2), A(1,2)
+};
+
+TranslationalMass translational(const VehicleParams& v, const GliderDynamics::RigidMasses& m) {
+  return {m.total_kg + v.added_mass_x_kg, m.total_kg + v.added_mass_z_kg, m.first_z, -m.first_x};
+}
+
+// Body velocities from the impulses with the pitch rate prescribed.
+Eigen::Vector2d velocities_from(const TranslationalMass& a, const Eigen::Vector2d& p, double q) {
+  return {(p[0] - a.a13 * q) / a.a11, (p[1] - a.a23 * q) / a.a33};
 }
 
 }  // namespace
@@ -32,30 +41,38 @@ PrescribedPitchDynamics::PrescribedPitchDynamics(const VehicleParams& vehicle, d
     : dynamics_(vehicle, Environment{WaterColumn(vehicle.trim_density_kg_m3), gravity_m_s2}) {}
 
 Eigen::Vector2d PrescribedPitchDynamics::velocities(const Impulse& p, const PrescribedPitchInputs& in) const {
-  return velocities_from(dynamics_.mass_properties(masses_of(in), in.density_kg_m3), p, in.q_rad_s);
+  const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
+  return velocities_from(translational(dynamics_.vehicle(), m), p, in.q_rad_s);
 }
 
 PrescribedPitchDynamics::Impulse PrescribedPitchDynamics::impulse(double v1, double v3,
                                                                   const PrescribedPitchInputs& in) const {
-  const auto mp = dynamics_.mass_properties(masses_of(in), in.density_kg_m3);
-  return {mp.a(0, 0) * v1 + mp.a(0, 2) * in.q_rad_s, mp.a(1, 1) * v3 + mp.a(1, 2) * in.q_rad_s};
+  const auto a = translational(dynamics_.vehicle(), dynamics_.rigid_masses(masses_of(in), in.density_kg_m3));
+  return {a.a11 * v1 + a.a13 * in.q_rad_s, a.a33 * v3 + a.a23 * in.q_rad_s};
 }
 
 double PrescribedPitchDynamics::net_buoyancy_kg(const PrescribedPitchInputs& in) const {
   return dynamics_.net_buoyancy_kg(in.depth_m, water_of(in), masses_of(in));
 }
 
+PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p,
+                                                                        const PrescribedPitchInputs& in) const {
+  const WaterSample water = water_of(in);
+  const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
+  const Eigen::Vector2d v = velocities_from(translational(dynamics_.vehicle(), m), p, in.q_rad_s);
+  const double net_kg = m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water);
+  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, in.density_kg_m3, v[0], v[1],
+                                               std::sqrt(v[0] * v[0] + v[1] * v[1]));
+  const double g = dynamics_.environment().gravity_m_s2;
+  const double sin_theta = std::sin(in.theta_rad), cos_theta = std::cos(in.theta_rad);
+  const double f1 = -net_kg * g * sin_theta + flow.f1;
+  const double f3 = net_kg * g * cos_theta + flow.f3;
+  return {{f1 - in.q_rad_s * p[1], f3 + in.q_rad_s * p[0]}, -v[0] * sin_theta + v[1] * cos_theta};
+}
+
 PrescribedPitchDynamics::Impulse PrescribedPitchDynamics::rate(const Impulse& p,
                                                                const PrescribedPitchInputs& in) const {
-  const WaterSample water = water_of(in);
-  const auto mp = dynamics_.mass_properties(masses_of(in), in.density_kg_m3);
-  const Eigen::Vector2d v = velocities_from(mp, p, in.q_rad_s);
-  const double net_kg = mp.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water);
-  const FlowForces flow = flow_forces(dynamics_.vehicle().hydro, in.density_kg_m3, v[0], v[1]);
-  const double g = dynamics_.environment().gravity_m_s2;
-  const double f1 = -net_kg * g * std::sin(in.theta_rad) + flow.f1;
-  const double f3 = net_kg * g * std::cos(in.theta_rad) + flow.f3;
-  return {f1 - in.q_rad_s * p[1], f3 + in.q_rad_s * p[0]};
+  return derivative(p, in).p_dot;
 }
 
 double PrescribedPitchDynamics::depth_rate_m_s(const Impulse& p, const PrescribedPitchInputs& in) const {

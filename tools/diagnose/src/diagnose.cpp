@@ -5,15 +5,16 @@
 #include <algorithm>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <unsupported/Eigen/NonLinearOptimization>
-#include <unsupported/Eigen/NumericalDiff>
 
 #include "glider/diagnose/dynamic_flight_model.hpp"
+#include "glider/diagnose/forward_difference.hpp"
 #include "glider/diagnose/thin.hpp"
 #include "glider/units.hpp"
 
@@ -127,6 +128,23 @@ void residuals(const SampleSet& set, const Parameters& x, bool ctd, std::span<co
   }
 }
 
+// Residuals of two disjoint sets of samples (the fitted and the held-out
+// yos) from one flight through the log: a sample's prediction does not
+// depend on which others are asked for.
+void residuals_of_both(const SampleSet& set, const Parameters& x, bool ctd, std::span<const std::size_t> a,
+                       std::span<const std::size_t> b, std::vector<double>& out_a, std::vector<double>& out_b) {
+  std::vector<std::size_t> both;
+  both.reserve(a.size() + b.size());
+  std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+  std::vector<double> r;
+  residuals(set, x, ctd, both, r);
+  out_a.clear();
+  out_b.clear();
+  for (std::size_t k = 0; k < both.size(); ++k) {
+    (out_a.size() < a.size() && both[k] == a[out_a.size()] ? out_a : out_b).push_back(r[k]);
+  }
+}
+
 double rms_of(const std::vector<double>& r) {
   if (r.empty()) return kNaN;
   double s = 0.0;
@@ -194,67 +212,77 @@ Eigen::MatrixXd parameter_covariance(const SampleSet& set, std::span<const std::
 
 struct FitResult {
   Parameters parameters;
-  std::vector<double> sigma;  // per fitted effect, reported units (the mean's, for a profile)
+  Eigen::VectorXd p;                    // the optimiser's (scaled) solution
+  std::vector<double> train_residuals;  // at p
+  // Per fitted effect, reported units (the mean's, for a profile); empty
+  // until add_intervals(): a Jacobian costs a flight per parameter, and
+  // most candidate fits are only compared, never reported.
+  std::vector<double> sigma;
   double train_rss = 0.0;
   double heldout_rms = 0.0;
   double bic = 0.0;
 };
 
 FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
-              std::span<const std::size_t> heldout, DiagnoseOptions::Intervals intervals) {
+              std::span<const std::size_t> heldout) {
   FitResult result;
   const Layout layout = make_layout(candidate, set, train);
   const std::size_t k = layout.size;
-  FitFunctor functor{set, candidate, layout, train, {}};
-  Eigen::VectorXd p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+  Eigen::VectorXd& p = result.p;
+  p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
   // The pump lag is fitted as |value| (no sign): at 0 its gradient vanishes,
   // so it starts one scale (5 s) away.
   for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
     if (candidate.fitted[j] == Effect::kPumpLag) p[static_cast<Eigen::Index>(layout.offset[j])] = 1.0;
   }
   if (k > 0) {
-    Eigen::NumericalDiff<FitFunctor> numeric(functor);
-    Eigen::LevenbergMarquardt<Eigen::NumericalDiff<FitFunctor>> lm(numeric);
+    const ForwardDifference<FitFunctor> functor(FitFunctor{set, candidate, layout, train, {}});
+    Eigen::LevenbergMarquardt<const ForwardDifference<FitFunctor>> lm(functor);
     lm.parameters.maxfev = 400;
     lm.minimize(p);
   }
   result.parameters = unpack(candidate, layout, p);
-  std::vector<double> r;
-  residuals(set, result.parameters, candidate.ctd_density, train, r);
-  const double n = static_cast<double>(r.size());
-  for (double v : r) result.train_rss += v * v;
-  result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
-
-  // Parameter uncertainty from the Jacobian at the solution, with the
-  // residuals' serial correlation respected (DiagnoseOptions::intervals).
-  double t_over_normal = 1.0;  // Student-t quantile / 1.96, folded into sigma
-  if (k > 0) {
-    Eigen::NumericalDiff<FitFunctor> numeric(functor);
-    Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
-    numeric.df(p, jac);
-    const Eigen::MatrixXd cov = parameter_covariance(set, train, jac, r, intervals, t_over_normal);
-    for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
-      const Effect e = candidate.fitted[j];
-      const auto o = static_cast<Eigen::Index>(layout.offset[j]);
-      double var_value = 0.0;
-      if (e == Effect::kVerticalWaterVelocity) {  // variance of the weighted mean of the bins
-        const auto bins = static_cast<Eigen::Index>(layout.bin_weight.size());
-        for (Eigen::Index a = 0; a < bins; ++a) {
-          for (Eigen::Index b = 0; b < bins; ++b) {
-            var_value += layout.bin_weight[static_cast<std::size_t>(a)] *
-                         layout.bin_weight[static_cast<std::size_t>(b)] * cov(o + a, o + b);
-          }
-        }
-      } else {
-        var_value = cov(o, o);
-      }
-      result.sigma.push_back(std::sqrt(std::max(var_value, 0.0)) * info(e).scale * t_over_normal);
-    }
-  }
   std::vector<double> h;
-  residuals(set, result.parameters, candidate.ctd_density, heldout, h);
+  residuals_of_both(set, result.parameters, candidate.ctd_density, train, heldout, result.train_residuals, h);
+  const double n = static_cast<double>(result.train_residuals.size());
+  for (double v : result.train_residuals) result.train_rss += v * v;
+  result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
   result.heldout_rms = rms_of(h);
   return result;
+}
+
+// Parameter uncertainty of `f` (a fit of `candidate`) from the Jacobian at
+// its solution, with the residuals' serial correlation respected
+// (DiagnoseOptions::intervals). Once per fit: a no-op when it has them.
+void add_intervals(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
+                   DiagnoseOptions::Intervals intervals, FitResult& f) {
+  const Layout layout = make_layout(candidate, set, train);
+  const std::size_t k = layout.size;
+  if (k == 0 || !f.sigma.empty()) return;
+  const std::vector<double>& r = f.train_residuals;
+  const ForwardDifference<FitFunctor> functor(FitFunctor{set, candidate, layout, train, {}});
+  Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
+  functor.remember(f.p, Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())));
+  functor.df(f.p, jac);
+  double t_over_normal = 1.0;  // Student-t quantile / 1.96, folded into sigma
+  const Eigen::MatrixXd cov = parameter_covariance(set, train, jac, r, intervals, t_over_normal);
+  for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
+    const Effect e = candidate.fitted[j];
+    const auto o = static_cast<Eigen::Index>(layout.offset[j]);
+    double var_value = 0.0;
+    if (e == Effect::kVerticalWaterVelocity) {  // variance of the weighted mean of the bins
+      const auto bins = static_cast<Eigen::Index>(layout.bin_weight.size());
+      for (Eigen::Index a = 0; a < bins; ++a) {
+        for (Eigen::Index b = 0; b < bins; ++b) {
+          var_value += layout.bin_weight[static_cast<std::size_t>(a)] * layout.bin_weight[static_cast<std::size_t>(b)] *
+                       cov(o + a, o + b);
+        }
+      }
+    } else {
+      var_value = cov(o, o);
+    }
+    f.sigma.push_back(std::sqrt(std::max(var_value, 0.0)) * info(e).scale * t_over_normal);
+  }
 }
 
 // fit(), announced first to options.progress (one call per model fit: the
@@ -269,7 +297,7 @@ FitResult fit_reported(const SampleSet& set, const Candidate& candidate, std::sp
     }
     options.progress(what.empty() ? "nominal" : what);
   }
-  return fit(set, candidate, train, heldout, options.intervals);
+  return fit(set, candidate, train, heldout);
 }
 
 Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx) {
@@ -473,6 +501,7 @@ void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
   std::vector<std::pair<Effect, double>> worth;  // held-out RMS without the effect
   for (;;) {
     worth.clear();
+    add_intervals(set, current, train, options.intervals, current_fit);
     std::optional<std::pair<Effect, FitResult>> weakest;
     for (const Finding& finding : d.findings) {
       const Effect e = finding.effect;
@@ -774,6 +803,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   } else {
     fit_requested(set, s, options, current, current_fit, d);
   }
+  add_intervals(set, current, s.train, options.intervals, current_fit);
   report_final_values(set.model, current, current_fit, d);
 
   const std::vector<double> r_ext = residuals_by_sample(set, current_fit.parameters, current.ctd_density, s.all);

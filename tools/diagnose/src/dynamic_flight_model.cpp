@@ -22,7 +22,7 @@ double lerp(double a, double b, double f) { return a + (b - a) * f; }
 }  // namespace
 
 DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s)
-    : nominal_(nominal), track_(track), max_step_s_(max_step_s) {}
+    : nominal_(nominal), track_(track), max_step_s_(max_step_s), relative_flights_(track.run_first.size()) {}
 
 void DynamicFlightModel::predict(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                                  std::vector<double>& out, const VerticalVelocityProfile* profile) const {
@@ -85,19 +85,22 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     };
     model::PrescribedPitchInputs in0 = inputs(first, 0.0, cc_to_m3(t.ballast_cc[first]), 0.0);
     using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
-    auto rate_at = [&](const Impulse& state, const model::PrescribedPitchInputs& in) {
-      return dynamics.depth_rate_m_s(state, in) + water_w(in.depth_m);
-    };
+    using Derivative = model::PrescribedPitchDynamics::Derivative;
+    // The depth rate over ground (the water's own vertical velocity added).
+
     // Flies the run from its first sample with body velocities (v1, v3) up
-    // to sample `last`: the model's depth at each sample into z (from the
-    // measured first depth), its speed into u when asked. Returns the last
-    // sample reached with a finite state.
+    // to sample `last`: the model's depth change through the water at each
+    // sample into rel (0 at the first), its speed into u when asked. Returns
+    // the last sample reached with a finite state. The water's own vertical
+    // velocity moves the glider without changing its flight through the
+    // water: ground_depth adds it (the start state aside, which the spin-up
+    // fits on the depth over ground, a flight does not depend on it).
     auto fly_run = [&](double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u) {
       Impulse p = dynamics.impulse(v1, v3, in0);
       double lagged = in0.pumped_volume_m3;
       z.assign(last - first + 1, kNaN);
       if (u != nullptr) u->assign(last - first + 1, kNaN);
-      z[0] = t.depth_m[first];
+      z[0] = 0.0;
       if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0).norm();
       std::size_t flown = first;
       for (std::size_t i = first; i < last; ++i) {
@@ -112,15 +115,16 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
           const auto a = inputs(i, fa, lagged, fa);
           const auto b = inputs(i, fb, lagged, fa);
           const auto c = inputs(i, fc, lagged, fa);
-          const Impulse k1 = dynamics.rate(p, a);
-          const Impulse p2 = p + 0.5 * h * k1;
-          const Impulse k2 = dynamics.rate(p2, b);
-          const Impulse p3 = p + 0.5 * h * k2;
-          const Impulse k3 = dynamics.rate(p3, b);
-          const Impulse p4 = p + h * k3;
-          const Impulse k4 = dynamics.rate(p4, c);
-          depth += h / 6.0 * (rate_at(p, a) + 2.0 * rate_at(p2, b) + 2.0 * rate_at(p3, b) + rate_at(p4, c));
-          p += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+          const Derivative d1 = dynamics.derivative(p, a);
+          const Impulse p2 = p + 0.5 * h * d1.p_dot;
+          const Derivative d2 = dynamics.derivative(p2, b);
+          const Impulse p3 = p + 0.5 * h * d2.p_dot;
+          const Derivative d3 = dynamics.derivative(p3, b);
+          const Impulse p4 = p + h * d3.p_dot;
+          const Derivative d4 = dynamics.derivative(p4, c);
+          depth +=
+              h / 6.0 * (d1.depth_rate_m_s + 2.0 * d2.depth_rate_m_s + 2.0 * d3.depth_rate_m_s + d4.depth_rate_m_s);
+          p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
           lagged = c.pumped_volume_m3;
         }
         if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
@@ -129,6 +133,26 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
         flown = i + 1;
       }
       return flown;
+    };
+    // The depth over ground at samples first..flown: the measured first
+    // depth, the flight's relative depth `rel` and the water's vertical
+    // velocity integrated with the same RK4 weights at the same stages.
+    auto ground_depth = [&](std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) {
+      z.assign(rel.size(), kNaN);
+      z[0] = t.depth_m[first] + rel[0];
+      double water = 0.0;
+      for (std::size_t i = first; i < flown; ++i) {
+        const double dt = t.time_s[i + 1] - t.time_s[i];
+        const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
+        const double h = dt / steps;
+        for (int s = 0; s < steps; ++s) {
+          const double wa = water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s) / steps));
+          const double wb = water_w(lerp(t.depth_m[i], t.depth_m[i + 1], (s + 0.5) / steps));
+          const double wc = water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
+          water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
+        }
+        z[i + 1 - first] = t.depth_m[first] + rel[i + 1 - first] + water;
+      }
     };
     // The start. A run begins where the glider leaves the surface or a gap,
     // far from a steady glide: leaving the surface it sinks at a large angle
@@ -159,8 +183,10 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     if (fit_last >= first + 3) {
       const std::size_t n = fit_last - first;
       std::vector<double>& zf = fit_buffer_;
+      std::vector<double>& rel = fit_relative_buffer_;
       auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
-        if (fly_run(a, b, fit_last, zf, nullptr) != fit_last) return false;
+        if (fly_run(a, b, fit_last, rel, nullptr) != fit_last) return false;
+        ground_depth(fit_last, rel, zf);
         r.resize(static_cast<Eigen::Index>(n));
         for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first + k];
         return true;
@@ -195,25 +221,59 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
       }
     }
     // Fly up to the last requested sample of this run and on through its
-    // estimator window (the slope at a sample uses the samples after it).
+    // estimator window (the slope at a sample uses the samples after it),
+    // and at least one sample further: a centred difference (no window, or
+    // none after the sample within it) needs the next sample. A prediction
+    // then never depends on which other samples are asked for.
     // The model's depth is integrated with the same RK4 weights, so that its
     // depth rate can go through the very estimator the measurement went
     // through (the track's windowed slope): like is compared with like, also
     // in turns, where a +-5 s slope is not the instantaneous rate.
     std::size_t last_needed = std::min(end - 1, samples.back());
     const double window_end_s = t.time_s[last_needed] + t.rate_half_window_s;
+    if (last_needed + 1 < end) ++last_needed;
     while (last_needed + 1 < end && t.time_s[last_needed + 1] <= window_end_s) ++last_needed;
+    // The flight through the water is reused when only the water's
+    // velocity changed and the start state came out the same (a profile
+    // bin the run's spin-up does not reach: the Jacobian of a depth
+    // profile costs a flight per bin otherwise).
+    RelativeFlight& flight = relative_flights_[run];
+    EffectValues key = x;
+    key[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)] = 0.0;
+    const bool reuse = flight.valid && flight.key == key && flight.use_ctd == use_ctd && flight.v1 == v1 &&
+                       flight.v3 == v3 && flight.last >= last_needed && (speed == nullptr || flight.has_speed);
+    if (!reuse) {
+      flight.flown = fly_run(v1, v3, last_needed, flight.depth, speed != nullptr ? &flight.speed : nullptr);
+      flight = {true,
+                key,
+                use_ctd,
+                v1,
+                v3,
+                last_needed,
+                flight.flown,
+                speed != nullptr,
+                std::move(flight.depth),
+                std::move(flight.speed)};
+    }
+    const std::size_t flown = std::min(flight.flown, last_needed);
+    const std::vector<double>& u = flight.speed;
     std::vector<double>& z = depth_buffer_;
-    std::vector<double>& u = speed_buffer_;
-    const std::size_t flown = fly_run(v1, v3, last_needed, z, speed != nullptr ? &u : nullptr);
+    ground_depth(flown, flight.depth, z);
     const std::size_t count = flown - first + 1;
-    const flightlog::Column rate =
-        depth_rate_estimate(std::span(t.time_s).subspan(first, count), std::span<const double>(z).first(count),
-                            t.rate_half_window_s, t.max_gap_s);
+    const std::span<const double> time = std::span(t.time_s).subspan(first, count);
+    const std::span<const double> depth = std::span<const double>(z).first(count);
+    // The estimator at the requested samples only (a stride of the run's);
+    // the whole column where a depth is not finite (its gaps rule differs).
+    const bool finite = std::all_of(depth.begin(), depth.end(), [](double d) { return std::isfinite(d); });
+    const flightlog::Column column =
+        finite ? flightlog::Column{} : depth_rate_estimate(time, depth, t.rate_half_window_s, t.max_gap_s);
     for (; next < samples.size() && samples[next] < end; ++next) {
       const std::size_t k = samples[next];
       if (k > flown) continue;
-      if (depth_rate != nullptr) (*depth_rate)[next] = rate[k - first];
+      if (depth_rate != nullptr) {
+        (*depth_rate)[next] = finite ? depth_rate_estimate_at(time, depth, k - first, t.rate_half_window_s, t.max_gap_s)
+                                     : column[k - first];
+      }
       if (speed != nullptr) (*speed)[next] = u[k - first];
     }
   }

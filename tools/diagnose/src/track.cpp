@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <utility>
@@ -36,29 +37,36 @@ std::pair<std::size_t, std::size_t> window_around(std::span<const double> time, 
   return {lo, hi};
 }
 
+// local_slope's value at sample i (finite), or nothing where the window has
+// no sample on one side.
+std::optional<double> slope_at(std::span<const double> time, std::span<const double> values, std::size_t i,
+                               double half_window_s, double max_gap_s) {
+  const auto [lo, hi] = window_around(time, values, i, half_window_s, max_gap_s);
+  if (lo == i || hi == i) return std::nullopt;
+  double st = 0.0, sv = 0.0;
+  for (std::size_t j = lo; j <= hi; ++j) {
+    st += time[j] - time[i];
+    sv += values[j];
+  }
+  const double count = static_cast<double>(hi - lo + 1);
+  const double mean_t = st / count, mean_v = sv / count;
+  double stt = 0.0, stv = 0.0;
+  for (std::size_t j = lo; j <= hi; ++j) {
+    const double dt = time[j] - time[i] - mean_t;
+    stt += dt * dt;
+    stv += dt * (values[j] - mean_v);
+  }
+  if (!(stt > 0.0)) return std::nullopt;
+  return stv / stt;
+}
+
 flightlog::Column local_slope(std::span<const double> time, std::span<const double> values, double half_window_s,
                               double max_gap_s, flightlog::Column fallback) {
   if (!(half_window_s > 0.0)) return fallback;
   const std::size_t n = time.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(values[i])) continue;
-    const auto [lo, hi] = window_around(time, values, i, half_window_s, max_gap_s);
-    if (lo == i || hi == i) continue;
-    double st = 0.0, sv = 0.0;
-    for (std::size_t j = lo; j <= hi; ++j) {
-      st += time[j] - time[i];
-      sv += values[j];
-    }
-    const double count = static_cast<double>(hi - lo + 1);
-    const double mean_t = st / count, mean_v = sv / count;
-    double stt = 0.0, stv = 0.0;
-    for (std::size_t j = lo; j <= hi; ++j) {
-      const double dt = time[j] - time[i] - mean_t;
-      stt += dt * dt;
-      stv += dt * (values[j] - mean_v);
-    }
-    if (!(stt > 0.0)) continue;
-    fallback[i] = stv / stt;
+    if (const auto slope = slope_at(time, values, i, half_window_s, max_gap_s)) fallback[i] = *slope;
   }
   return fallback;
 }
@@ -128,6 +136,18 @@ flightlog::Column pchip_slopes(std::span<const double> time, std::span<const dou
 flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth, double half_window_s,
                                       double max_gap_s) {
   return local_slope(time, depth, half_window_s, max_gap_s, flightlog::derive_depth_rate(time, depth, max_gap_s));
+}
+
+double depth_rate_estimate_at(std::span<const double> time, std::span<const double> depth, std::size_t i,
+                              double half_window_s, double max_gap_s) {
+  if (half_window_s > 0.0) {
+    if (const auto slope = slope_at(time, depth, i, half_window_s, max_gap_s)) return *slope;
+  }
+  // flightlog::derive_depth_rate's centred difference, every neighbour finite.
+  const std::size_t first = i > 0 && time[i] - time[i - 1] <= max_gap_s ? i - 1 : i;
+  const std::size_t last = i + 1 < time.size() && time[i + 1] - time[i] <= max_gap_s ? i + 1 : i;
+  if (first == last) return std::numeric_limits<double>::quiet_NaN();
+  return (depth[last] - depth[first]) / (time[last] - time[first]);
 }
 
 Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options) {

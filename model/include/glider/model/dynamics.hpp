@@ -30,6 +30,8 @@
 //   disturbance the SIL may add). Roll, sideslip and
 //   their coupling back into the vertical plane are neglected; a turning
 //   glider keeps the vertical-plane speeds of the straight glide.
+#include <array>
+
 #include <Eigen/Core>
 
 #include "glider/model/environment.hpp"
@@ -91,6 +93,10 @@ struct FlowForces {
   double moment_nm = 0.0;     // viscous moment (no damping, no Munk)
 };
 FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3);
+// The same with the speed |(v1, v3)| given: std::hypot (guarded against
+// overflow, and slow) is a fifth of a diagnosis' time, where a plain square
+// root of glider speeds loses nothing.
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s);
 
 class GliderDynamics {
  public:
@@ -148,6 +154,14 @@ class GliderDynamics {
   // masses are (the pumped volume weighs -water_density * volume).
   MassProperties mass_properties(const MassInputs& masses, double water_density) const;
 
+  // Only the total and first moments of mass_properties (same bits), without
+  // the inertia, the matrix and its inverse: all the prescribed-pitch model
+  // needs, evaluated millions of times by a diagnosis.
+  struct RigidMasses {
+    double total_kg = 0.0, first_x = 0.0, first_z = 0.0;
+  };
+  RigidMasses rigid_masses(const MassInputs& masses, double water_density) const;
+
   const VehicleParams& vehicle() const { return vehicle_; }
   const Environment& environment() const { return environment_; }
 
@@ -156,6 +170,12 @@ class GliderDynamics {
   Environment environment_;
   double nominal_volume_m3_;
   double sin_roll_offset_;  // constant: the roll term of the yaw rate
+
+  struct PointMass {
+    double m, x, z;
+  };
+  // The hull's point masses (offset, pumped volume, battery, second mass) where `masses` puts them.
+  std::array<PointMass, 4> point_masses(const MassInputs& masses, double water_density) const;
 };
 
 }  // namespace glider::model

@@ -38,6 +38,14 @@ class PrescribedPitchDynamics {
   // dP/dt.
   Impulse rate(const Impulse& p, const PrescribedPitchInputs& in) const;
 
+  // dP/dt and the depth rate relative to the water together (one evaluation
+  // of the masses and of the pitch's sine and cosine): an integrator's stage.
+  struct Derivative {
+    Impulse p_dot;
+    double depth_rate_m_s = 0.0;
+  };
+  Derivative derivative(const Impulse& p, const PrescribedPitchInputs& in) const;
+
   // Body-frame velocities relative to the water (v1, v3) from the impulses.
   Eigen::Vector2d velocities(const Impulse& p, const PrescribedPitchInputs& in) const;
   Impulse impulse(double v1, double v3, const PrescribedPitchInputs& in) const;

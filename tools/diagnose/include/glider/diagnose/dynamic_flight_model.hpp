@@ -40,7 +40,19 @@ class DynamicFlightModel final : public DepthRateModel {
   model::VehicleParams nominal_;
   const Track& track_;
   double max_step_s_;
-  mutable std::vector<double> depth_buffer_, speed_buffer_, fit_buffer_;  // per run, reused across runs and calls
+  mutable std::vector<double> depth_buffer_, fit_buffer_, fit_relative_buffer_;  // per run, reused across calls
+  // Each run's last flight through the water (relative depth and speed),
+  // for the effect values but the water's vertical velocity, from (v1, v3).
+  struct RelativeFlight {
+    bool valid = false;
+    EffectValues key{};
+    bool use_ctd = false;
+    double v1 = 0.0, v3 = 0.0;
+    std::size_t last = 0, flown = 0;
+    bool has_speed = false;
+    std::vector<double> depth, speed;
+  };
+  mutable std::vector<RelativeFlight> relative_flights_;
 };
 
 }  // namespace glider::diagnose

@@ -53,6 +53,11 @@ struct TrackOptions {
 flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth, double half_window_s,
                                       double max_gap_s);
 
+// The same at sample i alone, for a depth without gaps in its values (every
+// one finite): what a model's flight needs at the few samples it is scored on.
+double depth_rate_estimate_at(std::span<const double> time, std::span<const double> depth, std::size_t i,
+                              double half_window_s, double max_gap_s);
+
 // Runs need pitch, ballast and depth; battery, temperature and CTD density
 // are used where the log has them. Two optional columns beyond Slocum's:
 // sci_water_density (in-situ density, kg/m^3, used instead of computing it
