@@ -29,6 +29,7 @@
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
 #include "glider/units.hpp"
+#include "hidden_truth.hpp"
 
 namespace {
 
@@ -36,23 +37,11 @@ using glider::diagnose::Effect;
 namespace model = glider::model;
 namespace diagnose = glider::diagnose;
 
-// Uniform in [lo, hi) from the top 53 bits: the same draw on every platform.
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(rng() >> 11) / 9007199254740992.0;
-}
+using glider::hidden::deepest_ctd_depth;
+using glider::hidden::glide_mean_vertical_velocity;
+using glider::hidden::ts_water;
+using glider::hidden::uniform;
 double sign(std::mt19937_64& rng) { return (rng() % 2) != 0U ? 1.0 : -1.0; }
-
-model::Environment ts_water(const std::vector<std::array<double, 3>>& depth_t_s) {
-  std::vector<model::ProfileNode> nodes;
-  for (const auto& [depth, t, s] : depth_t_s) {
-    model::ProfileNode node;
-    node.depth_m = depth;
-    node.water.temperature_c = t;
-    node.water.practical_salinity = s;
-    nodes.push_back(node);
-  }
-  return model::Environment{model::WaterColumn(std::move(nodes), model::Oscillation{})};
-}
 
 // One hidden-effect flight: what is flown, and the truth to compare with.
 struct Draw {
@@ -129,11 +118,7 @@ Draw draw_case(const std::string& id, const Setup& s, std::mt19937_64& rng) {
       d.truth[Effect::kLiftChange] = ratio;
     } else if (one == "vertical_water_velocity") {
       const double w = uniform(rng, 0.02, 0.04) * sign(rng);
-      const std::vector<model::ProfileNode> nodes{{20.0, {1025.0, 10.0, 0.0, 0.0, 0.0}},
-                                                  {25.0, {1025.0, 10.0, 0.0, 0.0, w}},
-                                                  {45.0, {1025.0, 10.0, 0.0, 0.0, w}},
-                                                  {50.0, {1025.0, 10.0, 0.0, 0.0, 0.0}}};
-      d.water = model::Environment{model::WaterColumn(nodes, model::Oscillation{})};
+      d.water = glider::hidden::vertical_velocity_layer(w);
       d.truth[Effect::kVerticalWaterVelocity] = 0.0;  // the log's mean over the glides, after the flight
     } else if (one == "water_density") {
       const double t_top = uniform(rng, 16.0, 22.0), t_bottom = uniform(rng, 8.0, 12.0);
@@ -166,27 +151,10 @@ Draw draw_case(const std::string& id, const Setup& s, std::mt19937_64& rng) {
 // the glides, and the density anomaly at the deepest CTD sample.
 void truth_from_log(const glider::flightlog::FlightLog& log, const Draw& d, std::map<Effect, double>& truth) {
   if (truth.contains(Effect::kVerticalWaterVelocity)) {
-    const auto& w = log.column("sim_w_water_m_s");
-    const auto& depth = log.column("m_depth");
-    const auto& state = log.column("m_depth_state");
-    double sum = 0.0;
-    int n = 0;
-    for (std::size_t i = 0; i < log.rows(); ++i) {
-      if ((state[i] == 1.0 || state[i] == 2.0) && depth[i] > 2.0) {
-        sum += w[i];
-        ++n;
-      }
-    }
-    truth[Effect::kVerticalWaterVelocity] = n > 0 ? sum / n : 0.0;
+    truth[Effect::kVerticalWaterVelocity] = glide_mean_vertical_velocity(log);
   }
   if (truth.contains(Effect::kWaterDensity)) {
-    const auto& depth = log.column("m_depth");
-    const auto& cond = log.column("sci_water_cond");
-    double deepest = 0.0;
-    for (std::size_t i = 0; i < log.rows(); ++i) {
-      if (std::isfinite(cond[i])) deepest = std::max(deepest, depth[i]);
-    }
-    truth[Effect::kWaterDensity] = d.water.water.at(deepest, 0.0).density_kg_m3 - 1025.0;
+    truth[Effect::kWaterDensity] = d.water.water.at(deepest_ctd_depth(log), 0.0).density_kg_m3 - 1025.0;
   }
 }
 

@@ -19,6 +19,7 @@
 #include "glider/model/environment.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/scenario.hpp"
+#include "hidden_truth.hpp"
 
 namespace glider::hidden {
 
@@ -63,12 +64,6 @@ inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::
 inline Outcome fly_and_diagnose(const model::VehicleParams& flown, const model::Environment& water,
                                 const std::string& name, double dive_to_m = 80.0, const sil::LogGaps& gaps = {}) {
   return fly_and_diagnose(flown, water, name, FlightSetup{dive_to_m, gaps, std::nullopt});
-}
-
-// Uniform in [lo, hi) from the top 53 bits: the same draw on every platform
-// (std::uniform_real_distribution does not promise that).
-inline double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(rng() >> 11) / 9007199254740992.0;
 }
 
 // Thinning like the real logs: rows every 2-5 s, sci_* missing in 5 % of

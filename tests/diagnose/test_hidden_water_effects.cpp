@@ -31,6 +31,7 @@
 using namespace glider;
 using hidden::fly_and_diagnose;
 using hidden::Outcome;
+using hidden::ts_water;
 using hidden::uniform;
 using hidden::we01;
 
@@ -57,35 +58,6 @@ std::string findings_text(const diagnose::Diagnosis& d) {
 }
 
 // Temperature and salinity nodes, still water: density by TEOS-10.
-model::Environment ts_water(const std::vector<std::array<double, 3>>& depth_t_s) {
-  std::vector<model::ProfileNode> nodes;
-  for (const auto& [depth, t, s] : depth_t_s) {
-    model::ProfileNode node;
-    node.depth_m = depth;
-    node.water.temperature_c = t;
-    node.water.practical_salinity = s;
-    nodes.push_back(node);
-  }
-  return model::Environment{model::WaterColumn(std::move(nodes), model::Oscillation{})};
-}
-
-// The deepest depth (m_depth) with a CTD sample in the log.
-double deepest_ctd_depth(const std::string& log_path) {
-  const flightlog::FlightLog log = flightlog::read_flight_log(log_path);
-  const auto& depth = log.column("m_depth");
-  const auto& cond = log.column("sci_water_cond");
-  double deepest = 0.0;
-  for (std::size_t i = 0; i < log.rows(); ++i) {
-    if (std::isfinite(cond[i])) deepest = std::max(deepest, depth[i]);
-  }
-  return deepest;
-}
-
-// water_density must be the cause, valued at the deepest CTD density minus
-// the nominal. Tolerance 0.05 kg/m^3: the diagnosis reads the density of its
-// deepest steady-glide sample, a metre or two above the deepest row (turns are
-// not steady), where below the pycnocline only the compression of seawater
-// (0.0045 kg/m^3 per m) changes it; the CTD's noise is 0.003 kg/m^3.
 void check_water_density(const Outcome& o, double truth) {
   STRCMP_EQUAL("water_density", o.diagnosis.cause.c_str());
   const diagnose::Finding* f = finding(o.diagnosis, diagnose::Effect::kWaterDensity);
@@ -109,7 +81,8 @@ TEST(DiagnoseHiddenWaterEffects, StratifiedOpenOceanWater) {
   const double t_bottom = uniform(rng, 8.0, 12.0);
   const model::Environment water = ts_water({{0.0, t_top, 34.5}, {15.0, t_top, 34.5}, {60.0, t_bottom, 35.0}});
   const Outcome o = fly_and_diagnose(we01(), water, "water_density", setup);
-  const double truth = water.water.at(deepest_ctd_depth(o.log_path), 0.0).density_kg_m3 - 1025.0;
+  const double truth =
+      water.water.at(hidden::deepest_ctd_depth(flightlog::read_flight_log(o.log_path)), 0.0).density_kg_m3 - 1025.0;
   char hidden_text[64];
   std::snprintf(hidden_text, sizeof hidden_text, "hidden %.4g kg/m^3; ", truth);
   UT_PRINT((hidden_text + findings_text(o.diagnosis)).c_str());
