@@ -5,12 +5,12 @@ moments of the target's flight-log writer (ring_log_writer, the real
 RingBufferLog) and of glider-sil writing a long mission's log; after every
 kill the file must hold the metadata, the header and whole rows (every line
 ends with a newline and has the header's field count), except that a kill
-during one of glider-sil's 64 KiB writes may leave its last line torn: Linux
-stops a write(2) to a file at a page boundary when a fatal signal is pending,
-so no plain write is whole against SIGKILL. At 500,000x the SIL writes about
-100 MB/s and kills land inside writes; the reader drops such a last line and
-says so (tests/unit/test_flight_log_end.cpp, TruncatedAtEveryByte). The
-target's writer writes a 1 Hz log; its file must end on a row boundary.
+during a write may leave the last line torn: Linux stops a write(2) to a file
+at a page boundary when a fatal signal is pending, so no plain write is whole
+against SIGKILL, and both writers here write fast (the SIL at 500,000x about
+100 MB/s; the ring-log writer as fast as it can). The reader drops such a last
+line and says so (tests/unit/test_flight_log_end.cpp, TruncatedAtEveryByte).
+Never more than that last line.
 Iterations and time are bounded; the random points are seeded and printed.
 
   kill9_logs.py RING_LOG_WRITER GLIDER_SIL SOURCE_DIR OUT_DIR
@@ -88,7 +88,7 @@ def main():
     print("seed %d" % seed)
     target_log = os.path.join(out_dir, "target.csv")
     # The target's writer thread drains the ring every 0.5 s: kills span three drains.
-    kill_runs("target ring log", [writer, target_log], target_log, rng, 1.2)
+    kill_runs("target ring log", [writer, target_log], target_log, rng, 1.2, torn_tail_allowed=True)
     sil_log = os.path.join(out_dir, "sil.csv")
     kill_runs("glider-sil", [sil, "--quiet", "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
                              "--mission", os.path.join(source, "boards/missions/month_200m.toml"), "--out", sil_log],
