@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/diagnose.hpp"
+#include "glider/diagnose/least_squares_functor.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -153,13 +154,7 @@ double rms_of(const std::vector<double>& r) {
 }
 
 // Eigen's Levenberg-Marquardt functor over the scaled parameters.
-struct FitFunctor {
-  using Scalar = double;
-  using InputType = Eigen::VectorXd;
-  using ValueType = Eigen::VectorXd;
-  using JacobianType = Eigen::MatrixXd;
-  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
-
+struct FitFunctor : LeastSquaresFunctor {
   const SampleSet& set;
   const Candidate& candidate;
   const Layout& layout;
@@ -236,7 +231,7 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
     if (candidate.fitted[j] == Effect::kPumpLag) p[static_cast<Eigen::Index>(layout.offset[j])] = 1.0;
   }
   if (k > 0) {
-    const ForwardDifference<FitFunctor> functor(FitFunctor{set, candidate, layout, train, {}});
+    const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
     Eigen::LevenbergMarquardt<const ForwardDifference<FitFunctor>> lm(functor);
     lm.parameters.maxfev = 400;
     lm.minimize(p);
@@ -260,7 +255,7 @@ void add_intervals(const SampleSet& set, const Candidate& candidate, std::span<c
   const std::size_t k = layout.size;
   if (k == 0 || !f.sigma.empty()) return;
   const std::vector<double>& r = f.train_residuals;
-  const ForwardDifference<FitFunctor> functor(FitFunctor{set, candidate, layout, train, {}});
+  const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
   Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
   functor.remember(f.p, Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())));
   functor.df(f.p, jac);

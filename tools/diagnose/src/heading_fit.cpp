@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/heading_fit.hpp"
+#include "glider/diagnose/least_squares_functor.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -74,12 +75,7 @@ class Problem {
   double penalty_scale_ = 1.0;
 };
 
-struct Functor {
-  using Scalar = double;
-  using InputType = Eigen::VectorXd;
-  using ValueType = Eigen::VectorXd;
-  using JacobianType = Eigen::MatrixXd;
-  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+struct Functor : LeastSquaresFunctor {
   const Problem& problem;
   const std::vector<HeadingEffect>& fitted;
   mutable std::vector<double> buffer;
@@ -104,7 +100,7 @@ double independent_samples(const std::vector<double>& r) {
 }
 
 Eigen::VectorXd minimise(const Problem& problem, const std::vector<HeadingEffect>& fitted, Eigen::VectorXd p) {
-  Functor functor{problem, fitted, {}};
+  Functor functor{{}, problem, fitted, {}};
   Eigen::NumericalDiff<Functor> numeric(functor);
   Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Functor>> lm(numeric);
   lm.parameters.maxfev = 300;
@@ -131,7 +127,7 @@ Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitte
     const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
     if (info(e).magnitude && at(problem.nominal(), e) == 0.0) p[j] = 1.0;
   }
-  Functor functor{problem, fitted, {}};
+  Functor functor{{}, problem, fitted, {}};
   if (k > 0) {
     // Clamps (a saturated integrator, a fin at its limit) flatten the
     // landscape around the nominal: each effect with a non-zero nominal is
