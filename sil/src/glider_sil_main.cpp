@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
   app.add_flag("--quiet", quiet, "print nothing but errors");
   app.add_option("--integration-step-s", integration_step_s,
                  "the vehicle model's integration step (accuracy: docs/sil.md, Speed)")
-      ->check(CLI::Range(1e-3, 1.0))
+      ->check(glider::cli::FiniteRange(1e-3, 1.0))
       ->capture_default_str();
   bool check_mission = false;
   app.add_flag("--check-mission", check_mission, "read the vehicle and the mission, report, exit (nothing flown)");

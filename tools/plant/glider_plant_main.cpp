@@ -36,16 +36,16 @@ int main(int argc, char** argv) {
   app.add_option("--max-working-depth-m", options.max_working_depth_m,
                  "board [vehicle] depth rating (as glider-sil --max-working-depth-m)")
       ->capture_default_str()
-      ->check(CLI::Range(1.0, 11000.0));
+      ->check(glider::cli::FiniteRange(1.0, 11000.0));
   app.add_option("--heading-law", options.heading_law, "board [vehicle] fin autopilot (as glider-sil --heading-law)")
       ->capture_default_str()
       ->check(CLI::IsMember({"proportional", "slocum", "compensated"}));
   app.add_option("--time-scale", options.time_scale, "simulated seconds per wall second (glider-firmware's the same)")
       ->capture_default_str()
-      ->check(CLI::Range(0.01, 1000.0));
+      ->check(glider::cli::FiniteRange(0.01, 1000.0));
   app.add_option("--duration-s", options.duration_s, "stop this long (simulated) after launch; 0: at SIGTERM")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e9));
+      ->check(glider::cli::FiniteRange(0.0, 1e9));
   app.add_option("--fault", fault_texts, "plant fault NAME@TIME after launch (s, m or h), repeatable; --list-faults");
   app.add_flag("--list-faults", list_faults, "print the plant faults and their glider-sil counterparts");
   app.add_option("--truth", options.truth_path, "write the model's truth at 1 s to this CSV");

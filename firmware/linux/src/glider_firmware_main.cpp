@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   app.add_option("--time-scale", time_scale,
                  "bench/HIL only (board file: bench = true): the loop clock runs this many times faster")
       ->capture_default_str()
-      ->check(CLI::Range(0.01, 1000.0));
+      ->check(glider::cli::FiniteRange(0.01, 1000.0));
   app.add_option("--legs", legs, ".mi: override goto_list num_legs_to_run");
   app.add_flag("--check-mission", check_mission, "read the board and the mission, report, exit (no device opened)");
   app.add_flag("--no-realtime", no_realtime, "do not ask for SCHED_FIFO or mlockall whatever the board says");

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/cli/tool.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <utility>
 
 namespace glider::cli {
@@ -72,6 +74,18 @@ int Tool::run(int argc, char** argv, const std::function<int()>& body) {
   } catch (const std::exception& error) {
     return fail(kError, error.what());
   }
+}
+
+FiniteRange::FiniteRange(double min, double max) {
+  description("FINITE in [" + std::to_string(min) + " - " + std::to_string(max) + "]");
+  func_ = [min, max](const std::string& text) -> std::string {
+    double value = 0.0;
+    if (!CLI::detail::lexical_cast(text, value)) return "Value " + text + " is not a number";
+    if (!std::isfinite(value) || value < min || value > max) {
+      return "Value " + text + " not a finite number in range " + std::to_string(min) + " to " + std::to_string(max);
+    }
+    return std::string{};
+  };
 }
 
 }  // namespace glider::cli

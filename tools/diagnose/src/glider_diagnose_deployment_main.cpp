@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
   app.add_option("--days-apart", days_apart,
                  "logs whose times count from their start (SIL logs) are placed this many days apart, in the "
                  "order given")
-      ->check(CLI::Range(0.0, 1000.0));
+      ->check(glider::cli::FiniteRange(0.0, 1000.0));
   app.add_option("--rename", renames, "read column FROM as TO (FROM=TO)");
   app.add_option("--report", report_dir, "write the summary, deployment.json and a plot per effect here");
   tool.add_json_flag(json);

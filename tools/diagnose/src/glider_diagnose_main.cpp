@@ -224,10 +224,10 @@ int main(int argc, char** argv) {
       ->expected(2);
   app.add_option("--rate-window", rate_window_s,
                  "the measured depth rate is the slope of the depth over +-this many seconds (0: centred difference)")
-      ->check(CLI::Range(0.0, 60.0));
+      ->check(glider::cli::FiniteRange(0.0, 60.0));
   app.add_option("--pitch-window", pitch_window_s,
                  "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)")
-      ->check(CLI::Range(0.0, 60.0));
+      ->check(glider::cli::FiniteRange(0.0, 60.0));
   return tool.run(argc, argv, [&]() -> int {
     log_path = log_source.inputs.front();
     glider::diagnose::DiagnoseOptions options;

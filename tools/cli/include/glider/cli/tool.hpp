@@ -46,6 +46,14 @@ std::string default_vehicle_path();
 // The boards/ directory the default files come from (same lookup).
 std::string boards_dir();
 
+// CLI::Range for a number: NaN passes every plain comparison, so CLI11's Range
+// lets "nan" (and "inf" with an infinite bound) through. This one refuses a
+// value that is not finite or not in [min, max], naming it and the range.
+class FiniteRange : public CLI::Validator {
+ public:
+  FiniteRange(double min, double max);
+};
+
 class Tool {
  public:
   Tool(std::string name, const std::string& description);
