@@ -31,12 +31,6 @@ std::string check_limits(const model::VehicleParams& v, const fw::ActuatorLimits
   return "";
 }
 
-// Random streams of a run, all from options.seed: stream 0 is the firmware
-// sensors' noise (SimHal), the others are derived from it.
-constexpr std::uint64_t kCtdStream = 1;
-constexpr std::uint64_t kLogGapStream = 2;
-constexpr std::uint64_t kYawDisturbanceStream = 4;  // sim_hal.cpp has 3
-
 // The vehicle's random yaw (heading.yaw_disturbance_*): first-order
 // Gauss-Markov, exact over each cycle, held through it.
 class YawDisturbance {

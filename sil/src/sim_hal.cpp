@@ -8,19 +8,14 @@
 
 namespace glider::sil {
 
-namespace {
-// The GPS draws from its own stream so that adding it left the other
-// sensors' noise unchanged (see derived_seed).
-constexpr std::uint64_t kGpsStream = 3;
-}  // namespace
-
 SimHal::SimHal(model::GliderSimulator& sim, const SimClock& clock, const SensorNoise& noise, std::uint64_t seed,
                const PeripheralModels& peripherals)
     : sim_(sim),
       clock_(clock),
       noise_(noise),
       random_(seed),
-      gps_(sim, clock, faults_, peripherals.gps, derived_seed(seed, kGpsStream)),
+      gps_(sim, clock, faults_, peripherals.gps, derived_seed(seed, kGpsNoiseStream),
+           derived_seed(seed, kGpsAcquisitionStream)),
       leak_(clock, faults_),
       drop_weight_(clock),
       power_(sim, clock, faults_, peripherals.power) {}

@@ -14,8 +14,14 @@ hal::Micros seconds_to_us(double s) { return static_cast<hal::Micros>(std::llrou
 }  // namespace
 
 SimGps::SimGps(const model::GliderSimulator& sim, const SimClock& clock, const FaultInjection& faults,
-               const GpsModel& model, std::uint64_t seed)
-    : sim_(sim), clock_(clock), faults_(faults), model_(model), frame_(model.launch), random_(seed) {}
+               const GpsModel& model, std::uint64_t noise_seed, std::uint64_t acquisition_seed)
+    : sim_(sim),
+      clock_(clock),
+      faults_(faults),
+      model_(model),
+      frame_(model.launch),
+      noise_random_(noise_seed),
+      acquisition_random_(acquisition_seed) {}
 
 hal::GpsFix SimGps::read() {
   const hal::Micros now = clock_.now_us();
@@ -27,14 +33,15 @@ hal::GpsFix SimGps::read() {
   }
   if (!acquiring_) {
     acquiring_ = true;
-    const double ttff = model_.time_to_first_fix_min_s +
-                        (model_.time_to_first_fix_max_s - model_.time_to_first_fix_min_s) * random_.uniform();
+    const double ttff =
+        model_.time_to_first_fix_min_s +
+        (model_.time_to_first_fix_max_s - model_.time_to_first_fix_min_s) * acquisition_random_.uniform();
     first_fix_us_ = now + seconds_to_us(ttff);
     next_fix_us_ = first_fix_us_;
   }
   if (now >= next_fix_us_) {
-    const fw::EastNorth position{truth.east_m + model_.noise_m * random_.gaussian(),
-                                 truth.north_m + model_.noise_m * random_.gaussian()};
+    const fw::EastNorth position{truth.east_m + model_.noise_m * noise_random_.gaussian(),
+                                 truth.north_m + model_.noise_m * noise_random_.gaussian()};
     const fw::LatLon fix = frame_.to_global(position);
     last_ = {fix.lat_deg, fix.lon_deg, 1, 8, 1.0, now, true};
     next_fix_us_ = now + seconds_to_us(model_.fix_interval_s);

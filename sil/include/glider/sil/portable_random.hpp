@@ -48,4 +48,18 @@ constexpr std::uint64_t derived_seed(std::uint64_t seed, std::uint64_t stream) {
   return seed + 0x9E3779B97F4A7C15ULL * stream;
 }
 
+// Every random stream of a run, in one place so that no two share a seed.
+// Stream 0 is the run's seed itself: the firmware sensors' noise (SimHal).
+enum RandomStream : std::uint64_t {
+  kCtdStream = 1,
+  kLogGapStream = 2,
+  kGpsNoiseStream = 3,
+  kYawDisturbanceStream = 4,
+  // The GPS's time to first fix after each surfacing, apart from its
+  // position noise: the number of fixes a surfacing produces depends on how
+  // often the receiver is read (a HIL plant under load reads it at other
+  // instants than SIL), and must not change the next surfacing's wait.
+  kGpsAcquisitionStream = 5,
+};
+
 }  // namespace glider::sil

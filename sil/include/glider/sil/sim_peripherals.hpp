@@ -46,8 +46,10 @@ struct PowerModel {
 
 class SimGps final : public hal::GpsReceiver {
  public:
+  // Position noise and times to first fix come from two streams (see
+  // kGpsAcquisitionStream).
   SimGps(const model::GliderSimulator& sim, const SimClock& clock, const FaultInjection& faults, const GpsModel& model,
-         std::uint64_t seed);
+         std::uint64_t noise_seed, std::uint64_t acquisition_seed);
   hal::GpsFix read() override;
   const fw::LocalFrame& frame() const { return frame_; }
 
@@ -57,7 +59,8 @@ class SimGps final : public hal::GpsReceiver {
   const FaultInjection& faults_;
   GpsModel model_;
   fw::LocalFrame frame_;
-  PortableRandom random_;
+  PortableRandom noise_random_;
+  PortableRandom acquisition_random_;
   bool acquiring_ = false;
   hal::Micros first_fix_us_ = 0;
   hal::Micros next_fix_us_ = 0;
