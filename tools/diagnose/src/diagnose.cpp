@@ -27,6 +27,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // effect must not "improve" the fit by making samples unflyable.
 constexpr double kUnflyablePenalty_m_s = 0.3;
 
+// Effects fitted as |value|: a lag has no sign.
+bool is_lag(Effect e) { return e == Effect::kPumpLag || e == Effect::kDepthLag; }
+
 struct Candidate {
   std::vector<Effect> fitted;  // effects with fitted parameters
   bool ctd_density = false;    // water_density from the CTD (no parameter)
@@ -225,10 +228,10 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   const std::size_t k = layout.size;
   Eigen::VectorXd& p = result.p;
   p = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
-  // The pump lag is fitted as |value| (no sign): at 0 its gradient vanishes,
-  // so it starts one scale (5 s) away.
+  // The lags are fitted as |value| (no sign): at 0 their gradient vanishes,
+  // so they start one scale (5 s, 1 s) away.
   for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
-    if (candidate.fitted[j] == Effect::kPumpLag) p[static_cast<Eigen::Index>(layout.offset[j])] = 1.0;
+    if (is_lag(candidate.fitted[j])) p[static_cast<Eigen::Index>(layout.offset[j])] = 1.0;
   }
   if (k > 0) {
     const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
@@ -644,7 +647,10 @@ std::vector<Effect> candidate_pool(const Observations& obs, bool dynamic) {
                            Effect::kVerticalWaterVelocity};
   if (obs.has_temperature) pool.push_back(Effect::kThermalExpansion);
   if (obs.has_ctd) pool.push_back(Effect::kWaterDensity);
-  if (dynamic) pool.push_back(Effect::kPumpLag);
+  if (dynamic) {
+    pool.push_back(Effect::kPumpLag);
+    pool.push_back(Effect::kDepthLag);
+  }
   pool.push_back(Effect::kLiftChange);
   return pool;
 }
@@ -732,7 +738,7 @@ void report_final_values(const DepthRateModel& model, const Candidate& current, 
     finding.value = current_fit.parameters.values[e];
     finding.ci95_low = finding.value - 1.96 * current_fit.sigma[j];
     finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
-    if (finding.effect == Effect::kPumpLag) {  // fitted as |value|: report the lag and its interval as such
+    if (is_lag(finding.effect)) {  // fitted as |value|: report the lag and its interval as such
       finding.value = std::abs(finding.value);
       finding.ci95_low = std::max(0.0, finding.value - 1.96 * current_fit.sigma[j]);
       finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
