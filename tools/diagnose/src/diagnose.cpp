@@ -12,6 +12,7 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <unsupported/Eigen/NonLinearOptimization>
 
 #include "glider/diagnose/dynamic_flight_model.hpp"
@@ -723,6 +724,45 @@ void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions&
   }
 }
 
+// Forward-backward selection still keeps the first of two effects that
+// explain the same thing: a vertical-velocity profile (a number per depth
+// bin) takes the first round on a log where a buoyancy offset and a late
+// depth sensor are the causes - it shifts the whole yo and bends at the turns
+// - and once the lag is in, the offset ties it on held-out yos but never
+// gets its turn. Swap step: each fitted effect is tried against each unused
+// candidate in its place; where the held-out error cannot tell the two apart
+// (the swap does not worsen it by the margins an effect needs to enter) the
+// lower BIC (the same fit with fewer parameters) wins. One swap, the best by
+// BIC; true if one was made (then the backward step runs again).
+bool swap_step(const SampleSet& set, const Split& s, const DiagnoseOptions& options, std::span<const Effect> pool,
+               Candidate& current, FitResult& current_fit, Diagnosis& d) {
+  std::optional<std::tuple<Effect, Effect, Candidate, FitResult>> best;
+  for (Effect out : current.fitted) {
+    for (Effect in : pool) {
+      if (in == Effect::kWaterDensity ||
+          std::find(current.fitted.begin(), current.fitted.end(), in) != current.fitted.end()) {
+        continue;
+      }
+      Candidate trial = without(current, out);
+      trial.fitted.push_back(in);
+      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
+      if (!plausible(in, f.parameters.values[static_cast<std::size_t>(in)])) continue;
+      const bool worse = f.heldout_rms > current_fit.heldout_rms * (1.0 + options.min_heldout_improvement) &&
+                         f.heldout_rms > current_fit.heldout_rms + options.min_heldout_improvement_m_s;
+      const double bic_to_beat = best ? std::get<3>(*best).bic : current_fit.bic;
+      if (!worse && f.bic < bic_to_beat) best.emplace(out, in, std::move(trial), std::move(f));
+    }
+  }
+  if (!best) return false;
+  auto& [out, in, candidate, fit_result] = *best;
+  current = std::move(candidate);
+  current_fit = std::move(fit_result);
+  for (Finding& finding : d.findings) {
+    if (finding.effect == out) finding = new_finding(in, current_fit.heldout_rms, d);
+  }
+  return true;
+}
+
 // Every finding's value and 95 % interval from the final joint fit, and the
 // extended vehicle's parameters.
 void report_final_values(const DepthRateModel& model, const Candidate& current, FitResult& current_fit, Diagnosis& d) {
@@ -801,6 +841,11 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   if (options.fit_only.empty()) {
     forward_select(set, s, options, pool, current, current_fit, d);
     backward_and_rank(set, s.train, s.heldout, options, current, current_fit, d);
+    // Each swap lowers the BIC: bounded, but never more rounds than candidates.
+    for (std::size_t round = 0; round < pool.size() && swap_step(set, s, options, pool, current, current_fit, d);
+         ++round) {
+      backward_and_rank(set, s.train, s.heldout, options, current, current_fit, d);
+    }
   } else {
     fit_requested(set, s, options, current, current_fit, d);
   }
