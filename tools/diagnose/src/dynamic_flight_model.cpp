@@ -188,8 +188,11 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
       std::vector<double>& rel = fit_relative_buffer_;
       auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
         if (fly_run(a, b, fit_last, rel, nullptr) != fit_last) return false;
+        // Not through the depth lag: the start state is a nuisance fitted on
+        // a part never scored, and without the lag it stays the same for
+        // every lag, so a depth_lag fit reuses the flight (only the depth
+        // over ground is read late again).
         ground_depth(fit_last, rel, zf);
-        delay_depth(std::span(t.time_s).subspan(first, fit_last - first + 1), zf, depth_lag_s);
         r.resize(static_cast<Eigen::Index>(n));
         for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first + k];
         return true;
