@@ -17,6 +17,7 @@
 
 #include "glider/diagnose/dynamic_flight_model.hpp"
 #include "glider/diagnose/forward_difference.hpp"
+#include "glider/diagnose/speed_reference.hpp"
 #include "glider/diagnose/thin.hpp"
 #include "glider/units.hpp"
 
@@ -438,9 +439,46 @@ std::vector<SpeedOfYo> speed_by_yo(const std::vector<double>& nominal, const std
   return out;
 }
 
-std::optional<SpeedScore> score_speed(const DepthRateModel& model, std::span<const std::size_t> all,
-                                      std::span<const std::size_t> heldout, std::span<const int> yo,
-                                      const Parameters& extended, bool ctd) {
+// RMS over the yos (all, or the held-out ones) whose reference speed is
+// consistent, from each yo's RMS and sample count.
+double consistent_rms(const std::vector<SpeedOfYo>& by_yo, bool heldout_only, double SpeedOfYo::*rms) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const SpeedOfYo& y : by_yo) {
+    if (!y.reference_consistent || (heldout_only && !y.heldout)) continue;
+    sum += y.*rms * y.*rms * static_cast<double>(y.samples);
+    n += y.samples;
+  }
+  return n ? std::sqrt(sum / static_cast<double>(n)) : kNaN;
+}
+
+// Whether each yo's reference speed belongs to its measured depth rate and
+// pitch (speed_reference.hpp), with the extended model's glide path; then
+// the scores over the consistent yos.
+void check_reference(const SampleSet& set, std::span<const std::size_t> measured, const Parameters& extended, bool ctd,
+                     std::span<const double> truth, const std::vector<double>& u_extended, SpeedScore& score) {
+  std::vector<double> rate;
+  set.model.predict(extended.values, ctd, measured, rate, extended.profile ? &*extended.profile : nullptr);
+  const double constant_w = extended.values[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)];
+  std::vector<double> implied(measured.size());
+  std::vector<int> yo(measured.size());
+  for (std::size_t k = 0; k < measured.size(); ++k) {
+    const std::size_t i = measured[k];
+    const double water = extended.profile ? extended.profile->at(set.depth_m[i]) : constant_w;
+    implied[k] = implied_water_velocity(set.measured_m_s[i], rate[k] - water, truth[i], u_extended[k]);
+    yo[k] = set.yo[i];
+  }
+  check_reference_by_yo(score.by_yo, implied, yo, info(Effect::kVerticalWaterVelocity).plausible_max);
+  score.consistent_nominal_rms_m_s = consistent_rms(score.by_yo, false, &SpeedOfYo::nominal_rms_m_s);
+  score.consistent_extended_rms_m_s = consistent_rms(score.by_yo, false, &SpeedOfYo::extended_rms_m_s);
+  score.heldout_consistent_nominal_rms_m_s = consistent_rms(score.by_yo, true, &SpeedOfYo::nominal_rms_m_s);
+  score.heldout_consistent_extended_rms_m_s = consistent_rms(score.by_yo, true, &SpeedOfYo::extended_rms_m_s);
+}
+
+std::optional<SpeedScore> score_speed(const SampleSet& set, std::span<const std::size_t> all,
+                                      std::span<const std::size_t> heldout, const Parameters& extended, bool ctd) {
+  const DepthRateModel& model = set.model;
+  const std::span<const int> yo = set.yo;
   const std::span<const double> truth = model.measured_speed_m_s();
   std::vector<std::size_t> measured, measured_heldout;
   for (std::size_t i : all) {
@@ -459,6 +497,7 @@ std::optional<SpeedScore> score_speed(const DepthRateModel& model, std::span<con
   model.predict_speed(extended.values, ctd, measured, u);
   score.extended_rms_m_s = rms_difference(u, truth, measured, score.samples);
   score.by_yo = speed_by_yo(u_nominal, u, truth, measured, yo, measured_heldout);
+  check_reference(set, measured, extended, ctd, truth, u, score);
   model.predict_speed(nominal_values(), false, measured_heldout, u);
   score.heldout_nominal_rms_m_s = rms_difference(u, truth, measured_heldout, score.heldout_samples);
   model.predict_speed(extended.values, ctd, measured_heldout, u);
@@ -856,7 +895,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   d.extended_all = rms_where(r_ext, s.all);
   d.extended_heldout_rms_m_s = current_fit.heldout_rms;
   d.gain = 1.0 - current_fit.heldout_rms / d.baseline.heldout_rms_m_s;
-  d.speed_through_water = score_speed(set.model, s.all, s.heldout, set.yo, current_fit.parameters, current.ctd_density);
+  d.speed_through_water = score_speed(set, s.all, s.heldout, current_fit.parameters, current.ctd_density);
   diagnose_pitch_trim_last(steady_model, obs, options, d);
   return d;
 }
