@@ -90,6 +90,7 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
         {"heldout_samples", u.heldout_samples},
         {"heldout_rms_nominal_m_s", number_or_null(u.heldout_nominal_rms_m_s)},
         {"heldout_rms_extended_m_s", number_or_null(u.heldout_extended_rms_m_s)},
+        {"implied_water_w_median_m_s", number_or_null(u.implied_water_w_median_m_s)},
         {"consistent_rms_nominal_m_s", number_or_null(u.consistent_nominal_rms_m_s)},
         {"consistent_rms_extended_m_s", number_or_null(u.consistent_extended_rms_m_s)},
         {"heldout_consistent_rms_nominal_m_s", number_or_null(u.heldout_consistent_nominal_rms_m_s)},

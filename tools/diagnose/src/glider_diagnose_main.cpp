@@ -77,11 +77,12 @@ void print_reference_check(const glider::diagnose::SpeedScore& u) {
     return;
   }
   std::printf(
-      "  speed reference check: the measured speed of %s implies a vertical water velocity beyond %.0f mm/s at the "
-      "model's glide path: not this flight's speed; without: RMS nominal %.4f, extended %.4f m/s; held-out yos: "
-      "nominal %.4f, extended %.4f m/s\n",
-      inconsistent.c_str(), 1e3 * info(Effect::kVerticalWaterVelocity).plausible_max, u.consistent_nominal_rms_m_s,
-      u.consistent_extended_rms_m_s, u.heldout_consistent_nominal_rms_m_s, u.heldout_consistent_extended_rms_m_s);
+      "  speed reference check: the measured speed of %s implies a vertical water velocity at the model's glide "
+      "path more than %.0f mm/s from the yos' median (%+.1f mm/s): not this flight's speed; without: RMS nominal "
+      "%.4f, extended %.4f m/s; held-out yos: nominal %.4f, extended %.4f m/s\n",
+      inconsistent.c_str(), 1e3 * info(Effect::kVerticalWaterVelocity).plausible_max,
+      1e3 * u.implied_water_w_median_m_s, u.consistent_nominal_rms_m_s, u.consistent_extended_rms_m_s,
+      u.heldout_consistent_nominal_rms_m_s, u.heldout_consistent_extended_rms_m_s);
 }
 
 void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source, double wall_s) {

@@ -75,6 +75,8 @@ struct SpeedScore {
   double nominal_rms_m_s = 0.0, extended_rms_m_s = 0.0;                  // all samples with a measurement
   double heldout_nominal_rms_m_s = 0.0, heldout_extended_rms_m_s = 0.0;  // on the held-out yos
   std::vector<SpeedOfYo> by_yo;                                          // yo by yo
+  // The median over the yos of SpeedOfYo::implied_water_w_m_s (speed_reference.hpp).
+  double implied_water_w_median_m_s = std::numeric_limits<double>::quiet_NaN();
   // The same over the yos whose reference is consistent (SpeedOfYo::reference_consistent).
   double consistent_nominal_rms_m_s = 0.0, consistent_extended_rms_m_s = 0.0;
   double heldout_consistent_nominal_rms_m_s = 0.0, heldout_consistent_extended_rms_m_s = 0.0;
