@@ -82,13 +82,19 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
   j["candidates"] = d.candidates_tried;
   if (d.speed_through_water) {
     const auto& u = *d.speed_through_water;
-    j["speed_through_water"] = {{"samples", u.samples},
-                                {"measured_mean_m_s", u.measured_mean_m_s},
-                                {"rms_nominal_m_s", number_or_null(u.nominal_rms_m_s)},
-                                {"rms_extended_m_s", number_or_null(u.extended_rms_m_s)},
-                                {"heldout_samples", u.heldout_samples},
-                                {"heldout_rms_nominal_m_s", number_or_null(u.heldout_nominal_rms_m_s)},
-                                {"heldout_rms_extended_m_s", number_or_null(u.heldout_extended_rms_m_s)}};
+    j["speed_through_water"] = {
+        {"samples", u.samples},
+        {"measured_mean_m_s", u.measured_mean_m_s},
+        {"rms_nominal_m_s", number_or_null(u.nominal_rms_m_s)},
+        {"rms_extended_m_s", number_or_null(u.extended_rms_m_s)},
+        {"heldout_samples", u.heldout_samples},
+        {"heldout_rms_nominal_m_s", number_or_null(u.heldout_nominal_rms_m_s)},
+        {"heldout_rms_extended_m_s", number_or_null(u.heldout_extended_rms_m_s)},
+        {"implied_water_w_median_m_s", number_or_null(u.implied_water_w_median_m_s)},
+        {"consistent_rms_nominal_m_s", number_or_null(u.consistent_nominal_rms_m_s)},
+        {"consistent_rms_extended_m_s", number_or_null(u.consistent_extended_rms_m_s)},
+        {"heldout_consistent_rms_nominal_m_s", number_or_null(u.heldout_consistent_nominal_rms_m_s)},
+        {"heldout_consistent_rms_extended_m_s", number_or_null(u.heldout_consistent_extended_rms_m_s)}};
     ordered_json by_yo = ordered_json::array();
     for (const SpeedOfYo& y : u.by_yo) {
       by_yo.push_back({{"yo", y.yo},
@@ -98,7 +104,9 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                        {"nominal_mean_m_s", y.nominal_mean_m_s},
                        {"rms_nominal_m_s", y.nominal_rms_m_s},
                        {"extended_mean_m_s", y.extended_mean_m_s},
-                       {"rms_extended_m_s", y.extended_rms_m_s}});
+                       {"rms_extended_m_s", y.extended_rms_m_s},
+                       {"implied_water_w_m_s", number_or_null(y.implied_water_w_m_s)},
+                       {"reference_consistent", y.reference_consistent}});
     }
     j["speed_through_water"]["by_yo"] = by_yo;
   }

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "glider/diagnose/depth_lag.hpp"
 #include "glider/model/first_order_lag.hpp"
 #include "glider/model/prescribed_pitch.hpp"
 #include "glider/model/steady_glide.hpp"
@@ -45,6 +46,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
   const double lag_s = v.ballast.lag_s;
   const double constant_density = v.trim_density_kg_m3 + x[static_cast<std::size_t>(Effect::kWaterDensity)];
   const double constant_w = x[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)];
+  const double depth_lag_s = std::abs(x[static_cast<std::size_t>(Effect::kDepthLag)]);  // no sign, as the pump's
   const Track& t = track_;
   auto water_w = [&](double depth) { return profile != nullptr ? profile->at(depth) : constant_w; };
   auto density = [&](std::size_t k) {
@@ -186,6 +188,10 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
       std::vector<double>& rel = fit_relative_buffer_;
       auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
         if (fly_run(a, b, fit_last, rel, nullptr) != fit_last) return false;
+        // Not through the depth lag: the start state is a nuisance fitted on
+        // a part never scored, and without the lag it stays the same for
+        // every lag, so a depth_lag fit reuses the flight (only the depth
+        // over ground is read late again).
         ground_depth(fit_last, rel, zf);
         r.resize(static_cast<Eigen::Index>(n));
         for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first + k];
@@ -240,6 +246,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     RelativeFlight& flight = relative_flights_[run];
     EffectValues key = x;
     key[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)] = 0.0;
+    key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;  // the sensor's, not the flight's
     const bool reuse = flight.valid && flight.key == key && flight.use_ctd == use_ctd && flight.v1 == v1 &&
                        flight.v3 == v3 && flight.last >= last_needed && (speed == nullptr || flight.has_speed);
     if (!reuse) {
@@ -261,6 +268,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     ground_depth(flown, flight.depth, z);
     const std::size_t count = flown - first + 1;
     const std::span<const double> time = std::span(t.time_s).subspan(first, count);
+    delay_depth(time, std::span(z).first(count), depth_lag_s);  // as the sensor read it
     const std::span<const double> depth = std::span<const double>(z).first(count);
     // The estimator at the requested samples only (a stride of the run's);
     // the whole column where a depth is not finite (its gaps rule differs).

@@ -23,7 +23,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // waves average out; convective plumes reach 0.1 m/s but sink between rising
 // water): beyond, it stands in for a buoyancy offset; a pump lag beyond two
 // minutes is a broken pump, not a lag; a lift slope a third or three times
-// the vehicle's is another wing, not a change of it.
+// the vehicle's is another wing, not a change of it; a depth sensor ten
+// seconds late (a sixth of a turn) is a broken clock, not a lag.
 const std::array<EffectInfo, kEffectCount> kInfo{{
     {"buoyancy_offset", "g", 0.0, 20.0, -1000.0, 1000.0},
     {"drag_change", "ratio", 1.0, 0.1, 0.3, 5.0},
@@ -34,6 +35,7 @@ const std::array<EffectInfo, kEffectCount> kInfo{{
     {"pitch_trim_offset", "in", 0.0, 0.01, -2.0, 2.0},
     {"pump_lag", "s", 0.0, 5.0, -120.0, 120.0},
     {"lift_change", "ratio", 1.0, 0.1, 0.3, 3.0},
+    {"depth_lag", "s", 0.0, 1.0, -10.0, 10.0},
 }};
 
 }  // namespace

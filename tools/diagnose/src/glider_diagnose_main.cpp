@@ -61,6 +61,30 @@ void print_worst_yo(const glider::diagnose::SpeedScore& u) {
       without_worst(true, &Yo::extended_rms_m_s));
 }
 
+// The yos whose measured speed does not belong to their depth rate and
+// pitch (speed_reference.hpp), and the score without them.
+void print_reference_check(const glider::diagnose::SpeedScore& u) {
+  std::string inconsistent;
+  for (const auto& y : u.by_yo) {
+    if (y.reference_consistent) continue;
+    char text[160];
+    std::snprintf(text, sizeof text, "%syo %d (%s: %+.1f mm/s)", inconsistent.empty() ? "" : ", ", y.yo,
+                  y.heldout ? "held out" : "fitted", 1e3 * y.implied_water_w_m_s);
+    inconsistent += text;
+  }
+  if (inconsistent.empty()) {
+    std::printf("  speed reference check: every yo's measured speed fits its depth rate and pitch\n");
+    return;
+  }
+  std::printf(
+      "  speed reference check: the measured speed of %s implies a vertical water velocity at the model's glide "
+      "path more than %.0f mm/s from the yos' median (%+.1f mm/s): not this flight's speed; without: RMS nominal "
+      "%.4f, extended %.4f m/s; held-out yos: nominal %.4f, extended %.4f m/s\n",
+      inconsistent.c_str(), 1e3 * info(Effect::kVerticalWaterVelocity).plausible_max,
+      1e3 * u.implied_water_w_median_m_s, u.consistent_nominal_rms_m_s, u.consistent_extended_rms_m_s,
+      u.heldout_consistent_nominal_rms_m_s, u.heldout_consistent_extended_rms_m_s);
+}
+
 void print_text(const Diagnosis& d, const std::string& log, const std::string& vehicle_source, double wall_s) {
   std::printf("Diagnosis of %s\n  vehicle: %s (%s)\n", log.c_str(), d.vehicle.c_str(), vehicle_source.c_str());
   const bool dynamic = d.model == glider::diagnose::FlightModelKind::kDynamic;
@@ -107,6 +131,7 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
         u.samples, u.measured_mean_m_s, u.nominal_rms_m_s, u.extended_rms_m_s, u.heldout_samples,
         u.heldout_nominal_rms_m_s, u.heldout_extended_rms_m_s);
     print_worst_yo(u);
+    print_reference_check(u);
   }
   std::printf("  wall time: %.2f s (reading the log excluded)\n", wall_s);
 }

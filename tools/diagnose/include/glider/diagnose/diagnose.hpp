@@ -5,6 +5,7 @@
 // forward selection of the effects that really help (held-out error and the
 // Bayesian information criterion), the named cause and the gain.
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,6 +64,10 @@ struct SpeedOfYo {
   double measured_mean_m_s = 0.0;
   double nominal_mean_m_s = 0.0, nominal_rms_m_s = 0.0;
   double extended_mean_m_s = 0.0, extended_rms_m_s = 0.0;
+  // The water's vertical velocity the measured speed implies (speed_reference.hpp)
+  // and whether it is plausible, i.e. the reference belongs to this flight.
+  double implied_water_w_m_s = std::numeric_limits<double>::quiet_NaN();
+  bool reference_consistent = true;
 };
 struct SpeedScore {
   std::size_t samples = 0, heldout_samples = 0;
@@ -70,6 +75,11 @@ struct SpeedScore {
   double nominal_rms_m_s = 0.0, extended_rms_m_s = 0.0;                  // all samples with a measurement
   double heldout_nominal_rms_m_s = 0.0, heldout_extended_rms_m_s = 0.0;  // on the held-out yos
   std::vector<SpeedOfYo> by_yo;                                          // yo by yo
+  // The median over the yos of SpeedOfYo::implied_water_w_m_s (speed_reference.hpp).
+  double implied_water_w_median_m_s = std::numeric_limits<double>::quiet_NaN();
+  // The same over the yos whose reference is consistent (SpeedOfYo::reference_consistent).
+  double consistent_nominal_rms_m_s = 0.0, consistent_extended_rms_m_s = 0.0;
+  double heldout_consistent_nominal_rms_m_s = 0.0, heldout_consistent_extended_rms_m_s = 0.0;
 };
 
 struct Diagnosis {

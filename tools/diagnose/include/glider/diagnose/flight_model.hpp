@@ -25,6 +25,7 @@ enum class Effect : int {
   kPitchTrimOffset,  // explains the battery position, not the depth rate
   kPumpLag,          // only the dynamic model (turns) can see it
   kLiftChange,       // the lift slope: sets the angle of attack, so the speed along a measured pitch
+  kDepthLag,         // the measured depth is late against pitch and ballast (dynamic model: turns)
   kCount
 };
 constexpr std::size_t kEffectCount = static_cast<std::size_t>(Effect::kCount);

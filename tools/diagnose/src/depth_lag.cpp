@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/diagnose/depth_lag.hpp"
+
+#include <cstddef>
+
+namespace glider::diagnose {
+
+void delay_depth(std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
+  const std::size_t n = depth_m.size();
+  if (lag_s <= 0.0 || n < 2) return;
+  // From the last sample back: the depth at k - lag only reads samples up to
+  // k, which are still the undelayed ones - but the extrapolation before the
+  // first sample reads the second, kept here. Times only as differences: an
+  // epoch time (1.5e9 s) resolves 2e-7 s, coarser than the optimiser's step.
+  const double first = depth_m[0], second = depth_m[1];
+  std::size_t j = n - 1;  // the sample at or before time_s[k] - lag_s, moving down with k
+  for (std::size_t k = n; k-- > 0;) {
+    while (j > 0 && time_s[k] - time_s[j] < lag_s) --j;
+    const double before_j = time_s[k] - time_s[j] - lag_s;  // how far time_s[k] - lag_s is after time_s[j]
+    const std::size_t a = before_j < 0.0 ? 0 : j;           // j == 0 and still after: extrapolate
+    const std::size_t b = a + 1 < n ? a + 1 : a;
+    const double za = a == 0 ? first : depth_m[a];
+    const double zb = b == 1 ? second : depth_m[b];
+    const double span = time_s[b] - time_s[a];
+    depth_m[k] = za + (span > 0.0 ? before_j / span : 0.0) * (zb - za);
+  }
+}
+
+}  // namespace glider::diagnose
