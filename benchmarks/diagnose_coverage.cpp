@@ -20,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "diagnose_sampling.hpp"
 #include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
 #include "glider/diagnose/diagnose.hpp"
@@ -55,6 +56,7 @@ struct Draw {
 
 struct Result {
   std::string case_id;
+  std::uint64_t seed = 0;
   bool ok = false;  // flown and diagnosed
   std::string error;
   std::map<Effect, double> truth;
@@ -66,6 +68,8 @@ struct Setup {
   std::string source_dir, out_dir;
   model::VehicleParams nominal;
   diagnose::DiagnoseOptions options;
+  glider::hidden::Sampling sampling = glider::hidden::Sampling::kSlocum;
+  std::string sampling_name = "slocum";
 };
 
 std::string flight_log(const Setup& s, const Draw& d, const std::string& name, std::uint64_t seed) {
@@ -78,7 +82,8 @@ std::string flight_log(const Setup& s, const Draw& d, const std::string& name, s
   options.seed = seed;
   options.environment = d.water;
   options.logged_vehicle = s.nominal;
-  options.log_gaps.enabled = true;  // rows 2-5 s apart, sci_* gaps, surface gaps: like a real Slocum log
+  // Rows 2-5 s apart, sci_* gaps, surface gaps: like a real Slocum log.
+  options.log_gaps.enabled = s.sampling == glider::hidden::Sampling::kSlocum;
   options.log_path = s.out_dir + "/" + name + ".csv";
   const glider::sil::ScenarioResult flight = glider::sil::run_scenario(d.flown, config, options);
   if (!flight.completed) throw std::runtime_error(name + ": the SIL flight did not complete: " + flight.error);
@@ -161,17 +166,20 @@ void truth_from_log(const glider::flightlog::FlightLog& log, const Draw& d, std:
 Result run_draw(const Setup& s, const std::string& case_id, std::uint64_t seed) {
   Result r;
   r.case_id = case_id;
+  r.seed = seed;
   std::mt19937_64 rng(seed);
   try {
     Draw d = draw_case(case_id, s, rng);
     std::string name = case_id + "_" + std::to_string(seed);
+    if (s.sampling != glider::hidden::Sampling::kSlocum) name += "_1hz";
     std::replace(name.begin(), name.end(), '+', '-');
     if (d.trim_at_median_temperature) {  // trimmed where it flies, as a pilot ballasts
       d.flown.hull_reference_temperature_c =
           diagnose::prepare_observations(glider::flightlog::read_flight_log(flight_log(s, d, name + "_trim", seed)))
               .track.median_temperature_c;
     }
-    const glider::flightlog::FlightLog log = glider::flightlog::read_flight_log(flight_log(s, d, name, seed));
+    const glider::flightlog::FlightLog log =
+        glider::hidden::resampled(glider::flightlog::read_flight_log(flight_log(s, d, name, seed)), s.sampling, seed);
     r.truth = d.truth;
     r.stratified = d.stratified;
     truth_from_log(log, d, r.truth);
@@ -255,6 +263,37 @@ std::string percent(int part, int whole) {
   return text;
 }
 
+// One line per hidden effect of every diagnosed draw (value and interval
+// empty where it was not named): for paired comparisons between samplings.
+void write_details(const std::string& path, const std::vector<Result>& results) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (out == nullptr) throw std::runtime_error("cannot write " + path);
+  std::fprintf(out, "case,seed,effect,truth,value,ci95_low,ci95_high,findings\n");
+  for (const Result& r : results) {
+    if (!r.ok) continue;
+    std::string findings;
+    for (const auto& f : r.diagnosis.findings) {
+      if (!findings.empty()) findings += ' ';
+      findings += diagnose::info(f.effect).id;
+    }
+    for (const auto& [effect, truth] : r.truth) {
+      std::fprintf(out, "%s,%llu,%s,%.9g", r.case_id.c_str(), static_cast<unsigned long long>(r.seed),
+                   diagnose::info(effect).id, truth);
+      const diagnose::Finding* f = nullptr;
+      for (const auto& finding : r.diagnosis.findings) {
+        if (finding.effect == effect) f = &finding;
+      }
+      if (f != nullptr) {
+        std::fprintf(out, ",%.9g,%.9g,%.9g", f->value, f->ci95_low, f->ci95_high);
+      } else {
+        std::fprintf(out, ",,,");
+      }
+      std::fprintf(out, ",%s\n", findings.c_str());
+    }
+  }
+  std::fclose(out);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -289,7 +328,14 @@ int main(int argc, char** argv) {
   std::string intervals = "lag1";
   app.add_option("--intervals", intervals, "how the diagnosis's intervals respect serial correlation")
       ->check(CLI::IsMember({"glides", "yos", "lag1"}));
+  std::string details;
+  app.add_option("--details", details, "CSV file: every draw's hidden effects, truth, value and interval");
+  app.add_option("--sampling", setup.sampling_name,
+                 "slocum: rows thinned by the SIL writer; 1hz; rows: a 1 Hz flight thinned afterwards; "
+                 "pitch/ballast/battpos: 1 Hz with that input reconstructed from the thinned rows")
+      ->check(CLI::IsMember({"slocum", "1hz", "rows", "pitch", "ballast", "battpos"}));
   return tool.run(argc, argv, [&]() -> int {
+    setup.sampling = glider::hidden::sampling_from(setup.sampling_name);
     std::filesystem::create_directories(setup.out_dir);
     setup.options.intervals = intervals == "yos"      ? diagnose::DiagnoseOptions::Intervals::kYos
                               : intervals == "glides" ? diagnose::DiagnoseOptions::Intervals::kGlides
@@ -330,6 +376,7 @@ int main(int argc, char** argv) {
                   t.spurious, percent(t.spurious_logs, t.runs - t.failed).c_str(),
                   percent(t.covered, t.valued).c_str());
     }
+    if (!details.empty()) write_details(details, results);
     for (const std::string& c : cases) {
       for (const std::string& e : tallies[c].examples) std::printf("  %s: %s\n", c.c_str(), e.c_str());
     }

@@ -8,7 +8,6 @@
 #include <Eigen/Dense>
 
 #include "glider/diagnose/depth_lag.hpp"
-#include "glider/model/first_order_lag.hpp"
 #include "glider/model/prescribed_pitch.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/units.hpp"
@@ -80,9 +79,9 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
       in.battery_pos_m = lerp(battery(i), battery(j), f);
       in.density_kg_m3 = lerp(density(i), density(j), f);
       in.temperature_c = lerp(temperature(i), temperature(j), f);
-      const double u0 = cc_to_m3(lerp(t.ballast_cc[i], t.ballast_cc[j], f0));
-      const double u1 = cc_to_m3(lerp(t.ballast_cc[i], t.ballast_cc[j], f));
-      in.pumped_volume_m3 = model::first_order_lag_after(lagged0, u0, u1, (f - f0) * dt, lag_s);
+      // The ballast as the pump moved it (pump_ramp.hpp), lagged exactly.
+      in.pumped_volume_m3 = cc_to_m3(
+          lag_over_ramp(m3_to_cc(lagged0), t.ballast_cc[i], t.ballast_cc[j], t.ballast_ramp[i], f0, f, dt, lag_s));
       return in;
     };
     model::PrescribedPitchInputs in0 = inputs(first, 0.0, cc_to_m3(t.ballast_cc[first]), 0.0);

@@ -209,6 +209,7 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
       track.scored.push_back(k);
     }
   }
+  track.ballast_ramp = pump_ramps(track.time_s, track.ballast_cc, track.run_first);
   std::vector<double> temperatures;
   for (double t : track.temperature_c) {
     if (std::isfinite(t)) temperatures.push_back(t);

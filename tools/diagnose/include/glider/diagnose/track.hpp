@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "glider/diagnose/pump_ramp.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/flightlog/phases.hpp"
 
@@ -17,6 +18,7 @@ struct Track {
   // One entry per sample of a run (samples outside runs are dropped).
   std::vector<double> time_s, depth_m, depth_rate_m_s, pitch_rad, ballast_cc, battpos_in;
   std::vector<double> pitch_slope_rad_s;             // the pitch between samples is a monotone cubic with these slopes
+  std::vector<PumpRamp> ballast_ramp;                // the ballast from each sample to the next (pump_ramp.hpp)
   std::vector<double> temperature_c, density_kg_m3;  // NaN where the log has none
   std::vector<double> speed_through_water_m_s;       // measured (a DVL's), NaN where none
   std::vector<flightlog::Phase> phase;
