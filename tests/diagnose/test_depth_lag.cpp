@@ -100,21 +100,27 @@ void write_with_late_depth(const std::string& path, const std::string& out, doub
   }
 }
 
+// Flies `flown` (logging WE01), rewrites the CSV with the depth lag_s late
+// and diagnoses that alone.
+diagnose::Diagnosis diagnose_with_late_depth(const model::VehicleParams& flown, double lag_s, const sil::LogGaps& gaps,
+                                             const std::string& name) {
+  const hidden::Outcome clean =
+      hidden::fly_and_diagnose(flown, model::still_water(1025.0), name + "_flown", 80.0, gaps);
+  const std::string late = std::string(GLIDER_TEST_OUTPUT_DIR) + "/hidden_" + name + ".csv";
+  write_with_late_depth(clean.log_path, late, lag_s);
+  const flightlog::FlightLog log = flightlog::read_flight_log(late);
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (const auto& m : log.vehicle_metadata()) entries.emplace_back(m.key, m.value);
+  return diagnose::diagnose(model::vehicle_from_metadata(entries, late), diagnose::prepare_observations(log));
+}
+
 // A clean SIL flight whose depth sensor reads late: the diagnosis sees only
 // the CSV. A late depth shifts every turn; without depth_lag a profile of
 // vertical velocity bends there to stand in for it.
 void check_hidden_late_depth(std::uint64_t seed, const sil::LogGaps& gaps, const std::string& name) {
   std::mt19937_64 rng{seed};
   const double lag_s = hidden::uniform(rng, 2.0, 6.0);
-  const hidden::Outcome clean =
-      hidden::fly_and_diagnose(hidden::we01(), model::still_water(1025.0), name + "_clean", 80.0, gaps);
-  const std::string late = std::string(GLIDER_TEST_OUTPUT_DIR) + "/hidden_" + name + ".csv";
-  write_with_late_depth(clean.log_path, late, lag_s);
-  const flightlog::FlightLog log = flightlog::read_flight_log(late);
-  std::vector<std::pair<std::string, std::string>> entries;
-  for (const auto& m : log.vehicle_metadata()) entries.emplace_back(m.key, m.value);
-  const diagnose::Diagnosis d =
-      diagnose::diagnose(model::vehicle_from_metadata(entries, late), diagnose::prepare_observations(log));
+  const diagnose::Diagnosis d = diagnose_with_late_depth(hidden::we01(), lag_s, gaps, name);
   STRCMP_EQUAL("depth_lag", d.cause.c_str());
   LONGS_EQUAL(1, d.findings.size());
   const diagnose::Finding& f = d.findings.front();
@@ -132,4 +138,31 @@ TEST(DiagnoseDepthLag, HiddenLateDepthIsNamedAndSized) { check_hidden_late_depth
 TEST(DiagnoseDepthLag, HiddenLateDepthOnAThinnedLog) {
   // Rows 2-5 s apart, as the real logs: the lag is a fraction of a row.
   check_hidden_late_depth(20261126, hidden::real_log_gaps(), "depth_lag_thinned");
+}
+
+TEST(DiagnoseDepthLag, LateDepthAndBuoyancyOffset) {
+  // gliderflight-adcp's case: a heavy glider whose depth reads late, thinned
+  // like a real log. Both are named and sized, and nothing else (a
+  // vertical-velocity profile can stand in for both: + at the bottom turn).
+  // On this flight forward selection finds them; on gliderflight-adcp itself
+  // only the swap step does (diagnose.real.gliderflight_adcp_dvl).
+  std::mt19937_64 rng{20261127};
+  const double lag_s = hidden::uniform(rng, 2.0, 4.0);
+  const double grams = hidden::uniform(rng, 25.0, 40.0);
+  model::VehicleParams flown = hidden::we01();
+  flown.buoyancy_offset_kg = grams * 1e-3;
+  const diagnose::Diagnosis d = diagnose_with_late_depth(flown, lag_s, hidden::real_log_gaps(), "depth_lag_heavy");
+  for (const auto& f : d.findings) {
+    std::printf("late depth and offset: %s %.4g [%.4g, %.4g] (hidden %.3f s, %.2f g)\n", diagnose::info(f.effect).id,
+                f.value, f.ci95_low, f.ci95_high, lag_s, grams);
+  }
+  LONGS_EQUAL(2, d.findings.size());
+  for (const auto& f : d.findings) {
+    if (f.effect == diagnose::Effect::kDepthLag) {
+      DOUBLES_EQUAL(lag_s, f.value, 0.1 * lag_s);
+    } else {
+      CHECK(f.effect == diagnose::Effect::kBuoyancyOffset);
+      DOUBLES_EQUAL(grams, f.value, 0.1 * grams);
+    }
+  }
 }
