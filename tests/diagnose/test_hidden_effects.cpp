@@ -114,6 +114,36 @@ TEST(DiagnoseHiddenEffects, TwoEffectsAtOnce) {
   CHECK(o.diagnosis.gain > 0.6);
 }
 
+TEST(DiagnoseHiddenEffects, OffsetAndCompressibilityAreNotAWaterProfile) {
+  // A buoyancy offset and a softer hull: each alone explains less than a
+  // vertical-velocity depth profile (which mimics any buoyancy changing with
+  // depth), the two together more. The greedy forward step took the profile;
+  // the selection without it must now win unless the profile earns its place.
+  // The values of bench_diagnose_coverage's draw 20261126, read as a profile
+  // alone before (the test group's first draw, -57.6 g and 1.93e-10 /Pa, was
+  // named right either way).
+  const double grams = -37.17, eps = 2.615e-10;
+  model::VehicleParams flown = we01();
+  flown.buoyancy_offset_kg = grams * 1e-3;
+  flown.hull_compressibility_per_pa = eps;
+  const Outcome o = fly_and_diagnose(flown, model::still_water(1025.0), "offset_compressibility", 180.0, gaps);
+  char line[128];
+  std::snprintf(line, sizeof line, "hidden %.4g g, %.4g /Pa:", grams, eps);
+  std::string text = line;
+  for (const auto& f : o.diagnosis.findings) {
+    std::snprintf(line, sizeof line, " %s %.4g (CI %.4g .. %.4g)", diagnose::info(f.effect).id, f.value, f.ci95_low,
+                  f.ci95_high);
+    text += line;
+  }
+  UT_PRINT(text.c_str());
+  LONGS_EQUAL(2, o.diagnosis.findings.size());
+  for (const auto& f : o.diagnosis.findings) {
+    const double truth = f.effect == diagnose::Effect::kBuoyancyOffset ? grams : eps;
+    CHECK(f.effect == diagnose::Effect::kBuoyancyOffset || f.effect == diagnose::Effect::kHullCompressibility);
+    CHECK(f.ci95_low < truth && truth < f.ci95_high);
+  }
+}
+
 TEST(DiagnoseHiddenEffects, PitchTrimOffset) {
   // A CG error equivalent to the battery sitting 0.05-0.15 in further forward
   // than its reading (a mis-placed trim weight): the pitch servo holds the
