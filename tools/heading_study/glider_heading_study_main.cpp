@@ -87,12 +87,18 @@ int main(int argc, char** argv) {
   bool replay_only = false;
   app.add_flag("--replay-only", replay_only,
                "only the replay: each real log's identified heading loop (glider-diagnose) flown in SIL");
+  glider::heading_study::ReplayOptions replay_options;
+  app.add_flag("--match-speed", replay_options.match_speed,
+               "replay: scale the vehicle's lift and drag so it glides at the log's speed through the water");
+  bool no_disturbance = false;
+  app.add_flag("--no-disturbance", no_disturbance, "replay: without the calibrated random yaw (compass noise only)");
   std::vector<std::string> real_logs;
   app.add_option("--real", real_logs,
                  "real logs to measure instead of the three comet CSVs: a CSV, or a directory / glob of a glider's "
                  "binary files (repeatable)");
   return tool.run(argc, argv, [&] {
     std::filesystem::create_directories(out_dir);
+    replay_options.yaw_disturbance = !no_disturbance;
 
     glider::flightlog::ReadOptions real;
     real.columns = {"m_heading", "c_heading", "m_depth_state", "c_fin"};
@@ -116,13 +122,16 @@ int main(int argc, char** argv) {
         "loop's dead time at the fin):\n");
     for (const std::string& log : real_logs) {
       try {
-        const auto r =
-            glider::heading_study::replay_log(source, log, source + "/boards/vehicles/slocum_comet.toml", out_dir);
+        const auto r = glider::heading_study::replay_log(source, log, source + "/boards/vehicles/slocum_comet.toml",
+                                                         out_dir, replay_options);
         const auto& v = r.identified.values;
         using glider::diagnose::HeadingEffect;
         std::printf(
             "  %s: identified gain %.3f, igain %.2g, dgain %.2f, deadband %.1f deg, loop dead time %.1f s, fin gain "
             "x%.2f, roll %+.1f deg; compass jitter %.2f deg, yaw disturbance %.2f deg/s over %.0f s\n"
+            "    speed through the water: log %.3f m/s, nominal vehicle in SIL %.3f m/s, replay %.3f m/s (lift and "
+            "drag "
+            "x%.2f)\n"
             "    real             %s\n    SIL, identified  %s\n    SIL, compensated %s\n",
             std::filesystem::path(log).stem().c_str(), glider::diagnose::at(v, HeadingEffect::kAutopilotGain),
             glider::diagnose::at(v, HeadingEffect::kAutopilotIntegral),
@@ -131,8 +140,8 @@ int main(int argc, char** argv) {
             glider::diagnose::at(v, HeadingEffect::kFinEffectiveness),
             glider::rad_to_deg(r.identified.logged_roll_rad + glider::diagnose::at(v, HeadingEffect::kRollOffset)),
             glider::rad_to_deg(r.identified.heading_noise_rad), glider::rad_to_deg(r.yaw_disturbance_rad_s),
-            r.yaw_disturbance_correlation_s, glider::heading_study::format(r.real).c_str(),
-            glider::heading_study::format(r.sil_identified).c_str(),
+            r.yaw_disturbance_correlation_s, r.log_speed_m_s, r.nominal_speed_m_s, r.sil_speed_m_s, r.area_scale,
+            glider::heading_study::format(r.real).c_str(), glider::heading_study::format(r.sil_identified).c_str(),
             glider::heading_study::format(r.sil_compensated).c_str());
       } catch (const std::exception& e) {
         std::fprintf(stderr, "glider-heading-study: replay of %s: %s\n", log.c_str(), e.what());

@@ -52,6 +52,19 @@ diagnose::UnexplainedYaw unexplained(const flightlog::FlightLog& log, const mode
   return diagnose::unexplained_yaw(track, vehicle, diagnose::nominal_heading_values(vehicle, {}));
 }
 
+// Median speed through the water on the glides, by the heading track's
+// estimate (the speed the identification's yaw per fin is measured at).
+double median_glide_speed(const flightlog::FlightLog& log, const model::VehicleParams& vehicle) {
+  const diagnose::HeadingTrack track = diagnose::prepare_heading_track(log, vehicle);
+  std::vector<double> speeds;
+  for (const double v : track.speed_m_s) {
+    if (std::isfinite(v)) speeds.push_back(v);
+  }
+  if (speeds.empty()) return std::nan("");
+  std::nth_element(speeds.begin(), speeds.begin() + static_cast<long>(speeds.size() / 2), speeds.end());
+  return speeds[speeds.size() / 2];
+}
+
 // The yaw disturbance whose SIL flight leaves as much yaw rate unexplained,
 // with an autocorrelation as long, as the real log: for each correlation
 // time of a short list, its RMS scaled twice by the ratio of what is left
@@ -89,7 +102,7 @@ void calibrate_disturbance(const std::string& source, model::VehicleParams& flow
 }  // namespace
 
 Replay replay_log(const std::string& source, const std::string& log_path, const std::string& nominal_vehicle,
-                  const std::string& out_dir) {
+                  const std::string& out_dir, const ReplayOptions& options) {
   std::vector<slocum::Warning> warnings;
   const flightlog::FlightLog log = slocum::load_flight_log({{log_path}, {}}, {}, &warnings);
   const model::VehicleParams nominal = model::load_vehicle_file(nominal_vehicle);
@@ -111,11 +124,30 @@ Replay replay_log(const std::string& source, const std::string& log_path, const 
   identified.rate_deadband_rad_s = d.configured.rate_deadband_rad_s;
   identified.heading_deadband_rad = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotDeadband);
   const std::string stem = out_dir + "/replay_" + std::filesystem::path(log_path).stem().string();
-  calibrate_disturbance(source, flown, identified, d, stem);
+  // The comet logs' glider flies slower than the nominal vehicle at the
+  // same pitch and pumped volume, and the yaw per fin is V fin_gain: with
+  // match_speed the replay flies the log's speed. Lift and drag scale together (the reference area), so the
+  // angle of attack the identification assumed at the logged pitch (its
+  // lift factor a_eff) stays; V scales as 1 / sqrt(area) at a fixed angle.
+  r.log_speed_m_s = median_glide_speed(log, nominal);
+  if (options.match_speed) {
+    model::VehicleParams still = flown;
+    still.heading.yaw_disturbance_rad_s = 0.0;
+    const double nominal_speed = median_glide_speed(fly(source, still, identified, 0.0, stem + "_speed.csv"), still);
+    r.nominal_speed_m_s = nominal_speed;
+    if (std::isfinite(r.log_speed_m_s) && std::isfinite(nominal_speed) && r.log_speed_m_s > 0.0) {
+      r.area_scale = (nominal_speed / r.log_speed_m_s) * (nominal_speed / r.log_speed_m_s);
+      flown.hydro.reference_area_m2 *= r.area_scale;
+    }
+  }
+  if (options.yaw_disturbance) calibrate_disturbance(source, flown, identified, d, stem);
   r.yaw_disturbance_rad_s = flown.heading.yaw_disturbance_rad_s;
   r.yaw_disturbance_correlation_s = flown.heading.yaw_disturbance_correlation_s;
-  r.sil_identified =
-      heading_metrics(fly(source, flown, identified, d.heading_noise_rad, stem + "_identified.csv"), kSilSkipS);
+  const flightlog::FlightLog identified_log =
+      fly(source, flown, identified, d.heading_noise_rad, stem + "_identified.csv");
+  r.sil_identified = heading_metrics(identified_log, kSilSkipS);
+  r.sil_speed_m_s = median_glide_speed(identified_log, flown);
+  if (!options.match_speed) r.nominal_speed_m_s = r.sil_speed_m_s;
   fw::HeadingControlConfig compensated;
   compensated.law = fw::HeadingLaw::kCompensated;
   compensated.delay_s = r.loop_delay_s;  // told the identified dead time
