@@ -68,6 +68,18 @@ TEST(DiagnoseHiddenHeadingEffects, FinDelay) {
   DOUBLES_EQUAL(delay_s, apply(comet(), o.diagnosis).heading.fin_delay_s, 1.5);
 }
 
+// The comet logs' servos do not follow a command within 0.02-0.045 rad of
+// where the fin is (glider-diagnose: fin_deadband).
+TEST(DiagnoseHiddenHeadingEffects, FinDeadband) {
+  model::VehicleParams flown = comet();
+  flown.heading.fin_deadband_rad = uniform(rng, 0.02, 0.06);
+  const HeadingOutcome o = fly_heading_and_diagnose(flown, configured_slocum_law(), "fin_deadband");
+  const auto& f = require_found(o, HeadingEffect::kFinDeadband, flown.heading.fin_deadband_rad);
+  DOUBLES_EQUAL(flown.heading.fin_deadband_rad, f.value, 0.005);
+  CHECK(o.diagnosis.servo.gain > 0.3);
+  DOUBLES_EQUAL(flown.heading.fin_deadband_rad, apply(comet(), o.diagnosis).heading.fin_deadband_rad, 0.005);
+}
+
 TEST(DiagnoseHiddenHeadingEffects, FinEffectiveness) {
   const double factor = rng() % 2 ? uniform(rng, 0.5, 0.75) : uniform(rng, 1.35, 1.8);
   model::VehicleParams flown = comet();
