@@ -8,6 +8,13 @@
 #include "glider/model/hydrodynamics.hpp"
 
 namespace glider::model {
+namespace {
+
+// Below this speed through the water a shear's cross current is no longer
+// small against the flow the fin weathervanes in (m/s).
+constexpr double kShearMinSpeedMS = 0.1;
+
+}  // namespace
 
 FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3) {
   return flow_forces_at_speed(h, water_density, v1, v3, std::hypot(v1, v3));
@@ -35,7 +42,8 @@ GliderDynamics::GliderDynamics(const VehicleParams& vehicle, const Environment& 
     : vehicle_(vehicle),
       environment_(environment),
       nominal_volume_m3_(model::displaced_volume_m3(vehicle)),
-      sin_roll_offset_(std::sin(vehicle.heading.roll_offset_rad)) {}
+      sin_roll_offset_(std::sin(vehicle.heading.roll_offset_rad)),
+      tan_roll_offset_(std::tan(vehicle.heading.roll_offset_rad)) {}
 
 const GliderDynamics::MassProperties& GliderDynamics::MassCache::get(const GliderDynamics& dynamics,
                                                                      const MassInputs& masses, double water_density) {
@@ -181,7 +189,20 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
   d[kP1] = f1 - e.q * impulse[1];
   d[kP3] = f3 + e.q * impulse[0];
   d[kPi2] = e.gravity_moment_nm + e.hydro_moment_nm + e.munk_moment_nm;
-  d[kPsi] = s[kYawRate];
+  // A rolled glider that pitches swings its nose sideways: Euler's
+  // kinematics, heading rate = theta_dot tan(roll) / cos(theta) + the turn
+  // (the inflections of a glider rolled 10 deg turn it ~9 deg each; the comet
+  // 2019 logs show it, docs/heading-control.md).
+  d[kPsi] = s[kYawRate] + e.q * tan_roll_offset_ / cos_t;
+  // Crossing a vertical shear of the current, the water the glider enters
+  // moves sideways against the water it left: its velocity through the
+  // water swings by the change of the cross current over the speed, and the
+  // fin weathervanes the nose after it (heading rate = -depth rate x the
+  // starboard current's shear / V). Slower than kShearMinSpeedMS (surface,
+  // inflections) the swing is taken at that speed: no flow, no weathervane.
+  const double cross_shear =
+      e.water.current_shear_east_per_s * std::cos(psi) - e.water.current_shear_north_per_s * std::sin(psi);
+  if (cross_shear != 0.0) d[kPsi] -= d[kZ] * cross_shear / std::max(e.speed_m_s, kShearMinSpeedMS);
   d[kYawRate] = (yaw_rate_target - s[kYawRate]) / hd.yaw_time_constant_s;
   return e;
 }

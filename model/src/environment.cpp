@@ -69,6 +69,9 @@ WaterSample WaterColumn::at(double depth_m, double time_s) const {
     w.current_north_m_s = mix(a.water.current_north_m_s, b.water.current_north_m_s);
     w.vertical_velocity_m_s = mix(a.water.vertical_velocity_m_s, b.water.vertical_velocity_m_s);
     w.practical_salinity = mix(a.water.practical_salinity, b.water.practical_salinity);
+    const double span = b.depth_m - a.depth_m;
+    w.current_shear_east_per_s = (b.water.current_east_m_s - a.water.current_east_m_s) / span;
+    w.current_shear_north_per_s = (b.water.current_north_m_s - a.water.current_north_m_s) / span;
   }
   // Between and beyond the nodes (where pressure still grows), the density
   // of the water actually there, not a straight line between node densities.

@@ -120,14 +120,19 @@ void GliderSimulator::retarget(RateLimitedServo& servo, double target) {
   if (servo.target() != before) current_.reset();
 }
 
+void GliderSimulator::retarget_fin(double angle) {
+  if (std::abs(angle - fin_.position()) <= dynamics_.vehicle().heading.fin_deadband_rad) return;
+  retarget(fin_, angle);
+}
+
 void GliderSimulator::command_fin_rad(double angle) {
   const double delay = dynamics_.vehicle().heading.fin_delay_s;
   if (!(delay > 0.0)) {
-    retarget(fin_, angle);
+    retarget_fin(angle);
     return;
   }
   if (pending_count_ == kMaxPendingFin) {  // a command per step at most: drop the oldest
-    retarget(fin_, pending_fin_[pending_first_].angle_rad);
+    retarget_fin(pending_fin_[pending_first_].angle_rad);
     pending_first_ = (pending_first_ + 1) % kMaxPendingFin;
     --pending_count_;
   }
@@ -163,7 +168,7 @@ double GliderSimulator::step_until(double event_s, double h) {
 
 void GliderSimulator::apply_due_fin_commands() {
   while (pending_count_ > 0 && pending_fin_[pending_first_].due_s <= time_s_ + 1e-9) {
-    retarget(fin_, pending_fin_[pending_first_].angle_rad);
+    retarget_fin(pending_fin_[pending_first_].angle_rad);
     pending_first_ = (pending_first_ + 1) % kMaxPendingFin;
     --pending_count_;
   }

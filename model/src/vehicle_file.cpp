@@ -75,6 +75,7 @@ void visit_numbers(VehicleParams& v, Visitor&& visit) {
   visit("heading.fin_max_rad", v.heading.fin_max_rad, req, {0.01, 1.57, "rad"});
   visit("heading.fin_rate_rad_s", v.heading.fin_rate_rad_s, req, {0.001, 10.0, "rad/s"});
   visit("heading.fin_delay_s", v.heading.fin_delay_s, opt, {0.0, 60.0, "s"});
+  visit("heading.fin_deadband_rad", v.heading.fin_deadband_rad, opt, {0.0, 0.2, "rad"});
   visit("heading.yaw_disturbance_rad_s", v.heading.yaw_disturbance_rad_s, opt, {0.0, 0.1, "rad/s"});
   visit("heading.yaw_disturbance_correlation_s", v.heading.yaw_disturbance_correlation_s, opt, {0.1, 3600.0, "s"});
   visit("buoyancy.trim_density_kg_m3", v.trim_density_kg_m3, req, {900.0, 1100.0, "kg/m^3"});

@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "glider/units.hpp"
 #include "hidden_heading_flight.hpp"
@@ -52,6 +53,9 @@ TEST(DiagnoseHiddenHeadingEffects, CleanLogNamesNone) {
   STRCMP_EQUAL("none", o.diagnosis.cause.c_str());
   LONGS_EQUAL(0, o.diagnosis.servo.findings.size());
   LONGS_EQUAL(0, o.diagnosis.autopilot.findings.size());
+  // In still water the shear profile explains nothing on held-out glides.
+  const diagnose::ShearProfile& shear = o.diagnosis.current_shear;
+  CHECK(shear.heldout_rms_after > 0.9 * shear.heldout_rms_before);
 }
 
 TEST(DiagnoseHiddenHeadingEffects, FinDelay) {
@@ -66,6 +70,66 @@ TEST(DiagnoseHiddenHeadingEffects, FinDelay) {
   DOUBLES_EQUAL(delay_s, f.value, 1.0);
   CHECK(o.diagnosis.servo.gain > 0.3);
   DOUBLES_EQUAL(delay_s, apply(comet(), o.diagnosis).heading.fin_delay_s, 1.5);
+}
+
+// The comet logs' servos do not follow a command within 0.02-0.045 rad of
+// where the fin is (glider-diagnose: fin_deadband).
+TEST(DiagnoseHiddenHeadingEffects, FinDeadband) {
+  model::VehicleParams flown = comet();
+  flown.heading.fin_deadband_rad = uniform(rng, 0.02, 0.06);
+  const HeadingOutcome o = fly_heading_and_diagnose(flown, configured_slocum_law(), "fin_deadband");
+  const auto& f = require_found(o, HeadingEffect::kFinDeadband, flown.heading.fin_deadband_rad);
+  DOUBLES_EQUAL(flown.heading.fin_deadband_rad, f.value, 0.005);
+  CHECK(o.diagnosis.servo.gain > 0.3);
+  DOUBLES_EQUAL(flown.heading.fin_deadband_rad, apply(comet(), o.diagnosis).heading.fin_deadband_rad, 0.005);
+}
+
+// A current that turns across the heading with depth (the comet logs' yaw
+// no link explained, docs/diagnose/heading.md): the glider crossing it turns
+// one way diving and the other climbing. Here a jet between 10 and 35 m
+// (shear +S above its core, -S below). The profile must come out with the
+// jet's shape (its correlation with the hidden one by bin), the same from
+// dives and climbs, and cut the held-out yaw rate. Known weakness: the
+// vehicle link is fitted first and takes part of the shear's turns as a
+// longer yaw lag (seed 20261125: yaw_time_constant 11.3 s for a nominal 2 s),
+// so the profile is smaller than the truth (0.006-0.008 for S 0.0099) and
+// not every bin's interval holds it: the sizes are not asserted.
+TEST(DiagnoseHiddenHeadingEffects, CurrentShearAcrossTheHeading) {
+  const double shear = uniform(rng, 0.008, 0.015) * (rng() % 2 ? 1.0 : -1.0);  // 1/s, east across a north heading
+  std::vector<model::ProfileNode> nodes(5);
+  for (const auto& [k, depth, current] :
+       {std::tuple{0, 0.0, 0.0}, {1, 10.0, 0.0}, {2, 20.0, 10.0 * shear}, {3, 25.0, 10.0 * shear}, {4, 35.0, 0.0}}) {
+    nodes[static_cast<std::size_t>(k)].depth_m = depth;
+    nodes[static_cast<std::size_t>(k)].water.current_east_m_s = current;
+  }
+  model::Environment water;
+  water.water = model::WaterColumn(nodes, {});
+  const HeadingOutcome o = fly_heading_and_diagnose(comet(), configured_slocum_law(), "current_shear", 0.0, water);
+  const diagnose::ShearProfile& p = o.diagnosis.current_shear;
+  double found_truth = 0.0, found_found = 0.0, truth_truth = 0.0;
+  for (const diagnose::ShearBin& b : p.bins) {
+    if (!b.fitted) continue;
+    const double truth = b.to_m <= 10.0 || (b.from_m >= 20.0 && b.to_m <= 25.0) || b.from_m >= 35.0 ? 0.0
+                         : b.to_m <= 20.0                                                           ? shear
+                                                                                                    : -shear;
+    char text[160];
+    std::snprintf(text, sizeof text, "%.0f-%.0f m: hidden %+.4f; found %+.4f [%+.4f, %+.4f] over %zu glides", b.from_m,
+                  b.to_m, truth, b.shear_per_s, b.ci95_low, b.ci95_high, b.runs);
+    UT_PRINT(text);
+    found_truth += b.shear_per_s * truth;
+    found_found += b.shear_per_s * b.shear_per_s;
+    truth_truth += truth * truth;
+  }
+  const double shape = found_truth / std::sqrt(found_found * truth_truth);
+  char text[200];
+  std::snprintf(text, sizeof text, "shape correlation %.3f; held-out yaw rate %.4f -> %.4f rad/s; dives vs climbs %.3f",
+                shape, p.heldout_rms_before, p.heldout_rms_after, p.dive_climb_correlation);
+  UT_PRINT(text);
+  CHECK_TEXT(shape > 0.9, text);
+  // Seed 20261125: shape 0.939, held-out 0.0025 -> 0.0015 rad/s, dives vs
+  // climbs 0.79; the clean log's profile: 0.046 -> 0.044 deg/s, -0.45.
+  CHECK_TEXT(p.heldout_rms_after < 0.7 * p.heldout_rms_before, text);
+  CHECK_TEXT(p.dive_climb_correlation > 0.7, text);
 }
 
 TEST(DiagnoseHiddenHeadingEffects, FinEffectiveness) {

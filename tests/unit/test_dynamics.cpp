@@ -141,7 +141,27 @@ TEST(Dynamics, WaterVelocityAddsToPositionRatesOnly) {
   DOUBLES_EQUAL(0.2, b.state_dot[kEast] - a.state_dot[kEast], 1e-12);  // current at 50 m, interpolated
   DOUBLES_EQUAL(-0.05, b.state_dot[kNorth] - a.state_dot[kNorth], 1e-12);
   DOUBLES_EQUAL(0.02, b.state_dot[kZ] - a.state_dot[kZ], 1e-12);
-  for (int k : {kTheta, kP1, kP3, kPi2, kPsi, kYawRate}) DOUBLES_EQUAL(a.state_dot[k], b.state_dot[k], 0.0);
+  for (int k : {kTheta, kP1, kP3, kPi2, kYawRate}) DOUBLES_EQUAL(a.state_dot[k], b.state_dot[k], 0.0);
+  // The current's shear (0.2 m/s over 100 m, east: starboard of a north
+  // heading) turns the glider crossing it: -depth rate x shear / V.
+  DOUBLES_EQUAL(0.0, s[kPsi], 0.0);
+  DOUBLES_EQUAL(-b.state_dot[kZ] * 0.002 / b.speed_m_s, b.state_dot[kPsi] - a.state_dot[kPsi], 1e-12);
+}
+
+// A rolled glider that pitches turns: heading rate = pitch rate tan(roll) / cos(pitch).
+TEST(Dynamics, PitchingWhileRolledTurnsTheHeading) {
+  VehicleParams rolled = v;
+  rolled.heading.roll_offset_rad = -0.17;
+  const MassInputs m{-250e-6, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const GliderDynamics level(v, Environment{});
+  const GliderDynamics tilted(rolled, Environment{});
+  const State s = level.make_state(50.0, -0.4, 0.45, 0.02, 0.03, m);
+  const Evaluation a = level.evaluate(0.0, s, m);
+  const Evaluation b = tilted.evaluate(0.0, s, m);
+  CHECK(std::abs(b.q) > 1e-3);
+  DOUBLES_EQUAL(a.q, b.q, 0.0);  // the roll leaves the vertical plane alone
+  DOUBLES_EQUAL(b.q * (std::tan(-0.17) - std::tan(v.heading.roll_offset_rad)) / std::cos(-0.4),
+                b.state_dot[kPsi] - a.state_dot[kPsi], 1e-12);
 }
 
 TEST(Dynamics, OscillatingWaterFollowsItsPeriod) {

@@ -87,15 +87,32 @@ int main(int argc, char** argv) {
   bool replay_only = false;
   app.add_flag("--replay-only", replay_only,
                "only the replay: each real log's identified heading loop (glider-diagnose) flown in SIL");
+  glider::heading_study::ReplayOptions replay_options;
+  bool nominal_speed = false;
+  app.add_flag("--nominal-speed", nominal_speed,
+               "replay: at the nominal vehicle's speed (by default its lift and drag are scaled and its buoyancy "
+               "offset so it glides at the log's speeds through the water)");
+  bool no_disturbance = false;
+  app.add_flag("--no-disturbance", no_disturbance, "replay: without the calibrated random yaw (compass noise only)");
+  app.add_option("--seed", replay_options.seed, "replay: the SIL runs' seed (compass noise, random yaw)")
+      ->capture_default_str();
+  app.add_option("--step", replay_options.integration_step_s, "replay: the plant's integration step (s)")
+      ->capture_default_str()
+      ->check(glider::cli::FiniteRange(0.01, 1.0));
+  bool no_shear = false;
+  app.add_flag("--no-shear", no_shear, "replay: in still water (without the identified shear of the current)");
   std::vector<std::string> real_logs;
   app.add_option("--real", real_logs,
                  "real logs to measure instead of the three comet CSVs: a CSV, or a directory / glob of a glider's "
                  "binary files (repeatable)");
   return tool.run(argc, argv, [&] {
     std::filesystem::create_directories(out_dir);
+    replay_options.yaw_disturbance = !no_disturbance;
+    replay_options.match_speed = !nominal_speed;
+    replay_options.current_shear = !no_shear;
 
     glider::flightlog::ReadOptions real;
-    real.columns = {"m_heading", "c_heading", "m_depth_state", "c_fin"};
+    real.columns = {"m_heading", "c_heading", "m_depth_state", "c_fin", "m_pitch", "m_roll"};
     std::printf("Real comet logs (glides with a heading command):\n");
     if (real_logs.empty()) {
       for (const char* log : {"comet-2016-174-05", "comet-2019-222-02-154", "comet-2019-222-02-156"}) {
@@ -106,24 +123,28 @@ int main(int argc, char** argv) {
       std::vector<glider::slocum::Warning> warnings;
       const auto data = glider::slocum::load_flight_log({{log}, {}}, real, &warnings);
       for (const auto& w : warnings) std::fprintf(stderr, "glider-heading-study: warning: %s\n", w.text().c_str());
-      std::printf("  %-24s %s\n", std::filesystem::path(log).stem().c_str(),
-                  glider::heading_study::format(glider::heading_study::heading_metrics(data, 0.0)).c_str());
+      const HeadingMetrics m = glider::heading_study::heading_metrics(data, 0.0);
+      std::printf("  %-24s %s\n  %-24s %s\n", std::filesystem::path(log).stem().c_str(),
+                  glider::heading_study::format(m).c_str(), "", glider::heading_study::format_inflections(m).c_str());
     }
 
     int failures = 0;
     std::printf(
         "SIL replay of each log's identified loop (glider-diagnose --plane heading from slocum_comet; 4 s cycle; the "
-        "loop's dead time at the fin):\n");
+        "loop's dead time at the fin; the identified shear of the current):\n");
     for (const std::string& log : real_logs) {
       try {
-        const auto r =
-            glider::heading_study::replay_log(source, log, source + "/boards/vehicles/slocum_comet.toml", out_dir);
+        const auto r = glider::heading_study::replay_log(source, log, source + "/boards/vehicles/slocum_comet.toml",
+                                                         out_dir, replay_options);
         const auto& v = r.identified.values;
         using glider::diagnose::HeadingEffect;
         std::printf(
             "  %s: identified gain %.3f, igain %.2g, dgain %.2f, deadband %.1f deg, loop dead time %.1f s, fin gain "
             "x%.2f, roll %+.1f deg; compass jitter %.2f deg, yaw disturbance %.2f deg/s over %.0f s\n"
-            "    real             %s\n    SIL, identified  %s\n    SIL, compensated %s\n",
+            "    speed through the water dive/climb: log %.3f/%.3f m/s, nominal vehicle in SIL %.3f/%.3f, replay "
+            "%.3f/%.3f (lift and drag x%.2f, buoyancy offset %+.0f g)\n"
+            "    real             %s\n    SIL, identified  %s\n    SIL, compensated %s\n"
+            "    real             %s\n    SIL, identified  %s\n",
             std::filesystem::path(log).stem().c_str(), glider::diagnose::at(v, HeadingEffect::kAutopilotGain),
             glider::diagnose::at(v, HeadingEffect::kAutopilotIntegral),
             glider::diagnose::at(v, HeadingEffect::kAutopilotDgain),
@@ -131,9 +152,12 @@ int main(int argc, char** argv) {
             glider::diagnose::at(v, HeadingEffect::kFinEffectiveness),
             glider::rad_to_deg(r.identified.logged_roll_rad + glider::diagnose::at(v, HeadingEffect::kRollOffset)),
             glider::rad_to_deg(r.identified.heading_noise_rad), glider::rad_to_deg(r.yaw_disturbance_rad_s),
-            r.yaw_disturbance_correlation_s, glider::heading_study::format(r.real).c_str(),
-            glider::heading_study::format(r.sil_identified).c_str(),
-            glider::heading_study::format(r.sil_compensated).c_str());
+            r.yaw_disturbance_correlation_s, r.log_speed.dive, r.log_speed.climb, r.nominal_speed.dive,
+            r.nominal_speed.climb, r.sil_speed.dive, r.sil_speed.climb, r.area_scale, 1e3 * r.buoyancy_offset_kg,
+            glider::heading_study::format(r.real).c_str(), glider::heading_study::format(r.sil_identified).c_str(),
+            glider::heading_study::format(r.sil_compensated).c_str(),
+            glider::heading_study::format_inflections(r.real).c_str(),
+            glider::heading_study::format_inflections(r.sil_identified).c_str());
       } catch (const std::exception& e) {
         std::fprintf(stderr, "glider-heading-study: replay of %s: %s\n", log.c_str(), e.what());
         ++failures;

@@ -48,6 +48,45 @@ void glide_oscillation(const std::vector<double>& t, const std::vector<double>& 
   }
 }
 
+// The inflections' turns (see the header): index 0 dive -> climb, 1 climb -> dive.
+void inflection_turns(const flightlog::FlightLog& log, double skip_s, HeadingMetrics& m) {
+  const auto* pitch = log.find("m_pitch");
+  const auto* roll = log.find("m_roll");
+  if (pitch == nullptr || roll == nullptr || log.rows() == 0) return;
+  constexpr double kBeforeS = 12.0, kAfterS = 35.0;
+  const auto& time = log.time();
+  const auto& heading = log.column("m_heading");
+  const auto& state = log.column("m_depth_state");
+  std::vector<double> turns[2], kinematic[2];
+  for (std::size_t i = 0; i + 1 < log.rows(); ++i) {
+    const bool dive_ends = state[i] == 1.0 && state[i + 1] != 1.0;
+    const bool climb_ends = state[i] == 2.0 && state[i + 1] != 2.0;
+    if (!(dive_ends || climb_ends) || time[i] - time[0] < skip_s) continue;
+    double turn = 0.0, pitch_over = 0.0;
+    bool complete = true;
+    std::size_t k = i;
+    while (k > 0 && time[i] - time[k - 1] <= kBeforeS) --k;
+    for (; k + 1 < log.rows() && time[k + 1] - time[i] <= kAfterS; ++k) {
+      const double values[] = {heading[k], heading[k + 1], (*pitch)[k], (*pitch)[k + 1], (*roll)[k], (*roll)[k + 1]};
+      if (!std::all_of(std::begin(values), std::end(values), [](double v) { return std::isfinite(v); })) {
+        complete = false;
+        break;
+      }
+      turn += std::remainder(heading[k + 1] - heading[k], 2.0 * std::numbers::pi);
+      const double mean_pitch = 0.5 * ((*pitch)[k] + (*pitch)[k + 1]);
+      pitch_over +=
+          ((*pitch)[k + 1] - (*pitch)[k]) * std::tan(0.5 * ((*roll)[k] + (*roll)[k + 1])) / std::cos(mean_pitch);
+    }
+    if (!complete) continue;
+    turns[dive_ends ? 0 : 1].push_back(rad_to_deg(turn));
+    kinematic[dive_ends ? 0 : 1].push_back(rad_to_deg(pitch_over));
+  }
+  for (int j = 0; j < 2; ++j) {
+    m.inflection_turn_deg[j] = median(turns[j]);
+    m.inflection_kinematic_deg[j] = median(kinematic[j]);
+  }
+}
+
 }  // namespace
 
 HeadingMetrics heading_metrics(const flightlog::FlightLog& log, double skip_s) {
@@ -91,6 +130,7 @@ HeadingMetrics heading_metrics(const flightlog::FlightLog& log, double skip_s) {
     last_t = time[i];
   }
   glide_oscillation(run_t, run_e, amplitudes, periods);
+  inflection_turns(log, skip_s, m);
   if (m.samples == 0) return m;
   m.dive_error_deg = median(dive_errors);
   m.climb_error_deg = median(climb_errors);
@@ -108,6 +148,15 @@ std::string format(const HeadingMetrics& m) {
                 "RMS %5.1f deg | fin travel %5.2f rad/h",
                 m.dive_error_deg, m.climb_error_deg, m.oscillation_amplitude_deg, m.oscillation_period_s,
                 m.rms_error_deg, m.fin_travel_rad_per_h);
+  return line;
+}
+
+std::string format_inflections(const HeadingMetrics& m) {
+  char line[160];
+  std::snprintf(
+      line, sizeof(line),
+      "inflection turn dive->climb %+5.1f deg (pitch-over %+5.1f), climb->dive %+5.1f deg (pitch-over %+5.1f)",
+      m.inflection_turn_deg[0], m.inflection_kinematic_deg[0], m.inflection_turn_deg[1], m.inflection_kinematic_deg[1]);
   return line;
 }
 

@@ -12,6 +12,9 @@ namespace glider::diagnose {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// The current's shear is fitted from this long after a glide starts (s):
+// the pitch-over and the turn it makes are done.
+constexpr double kShearSettleS = 20.0;
 
 // Plausible ranges: a dead time beyond a minute is a broken servo or loop,
 // not a lag; a fin with a tenth or ten times the assumed authority is a
@@ -19,6 +22,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // autopilot gain beyond 5 rad/rad saturates the fin at a degree of error.
 const std::array<HeadingEffectInfo, kHeadingEffectCount> kInfo{{
     {"fin_delay", "s", HeadingLink::kServo, 2.0, 0.0, 60.0, true},
+    {"fin_deadband", "rad", HeadingLink::kServo, 0.005, 0.0, 0.1, true, true},
     {"yaw_delay", "s", HeadingLink::kVehicle, 2.0, 0.0, 60.0, true},
     {"fin_effectiveness", "ratio", HeadingLink::kVehicle, 0.2, 0.1, 10.0, false},
     {"roll_offset", "rad", HeadingLink::kVehicle, 0.02, -0.35, 0.35, false},
@@ -118,8 +122,8 @@ const char* to_string(HeadingLink link) {
   return "?";
 }
 
-UnexplainedYaw unexplained_yaw(const HeadingTrack& t, const model::VehicleParams& vehicle,
-                               const HeadingValues& values) {
+UnexplainedYaw unexplained_yaw(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
+                               const ShearProfile* shear) {
   UnexplainedYaw out;
   std::vector<double> predicted;
   predict_yaw_rate(t, vehicle, values, t.scored, predicted);
@@ -127,7 +131,9 @@ UnexplainedYaw unexplained_yaw(const HeadingTrack& t, const model::VehicleParams
   double sum = 0.0;
   std::size_t n = 0;
   for (std::size_t k = 0; k < t.scored.size(); ++k) {
-    const double x = predicted[k] - t.yaw_rate_rad_s[t.scored[k]];
+    const std::size_t i = t.scored[k];
+    const double from_shear = shear != nullptr ? shear_at(*shear, t.depth_m[i]) * shear_yaw_per_unit(t, i) : 0.0;
+    const double x = predicted[k] + from_shear - t.yaw_rate_rad_s[i];
     r[t.scored[k]] = x;
     if (std::isfinite(x)) {
       sum += x * x;
@@ -243,7 +249,24 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                            track.yaw_rate_rad_s),
                    yaw_samples, options);
 
-  const UnexplainedYaw left = unexplained_yaw(track, nominal, d.yaw.values);
+  // The current's shear, on what the vehicle link leaves (every glide
+  // sample once the pitch-over is done: the scored ones alone never see
+  // the top of the dives or the bottom of the climbs).
+  {
+    std::vector<std::size_t> samples;
+    for (std::size_t run = 0; run < track.run_first.size(); ++run) {
+      for (std::size_t i = track.run_first[run]; i < track.run_end(run); ++i) {
+        if (track.time_s[i] - track.time_s[track.run_first[run]] >= kShearSettleS) samples.push_back(i);
+      }
+    }
+    std::vector<double> predicted, residual(track.size(), kNaN);
+    predict_yaw_rate(track, nominal, d.yaw.values, samples, predicted);
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      residual[samples[k]] = track.yaw_rate_rad_s[samples[k]] - predicted[k];
+    }
+    d.current_shear = fit_current_shear(track, residual, samples);
+  }
+  const UnexplainedYaw left = unexplained_yaw(track, nominal, d.yaw.values, &d.current_shear);
   d.unexplained_yaw_rate_rad_s = left.rms_rad_s;
   d.unexplained_correlation_s = left.correlation_s;
   d.values = base;
@@ -263,6 +286,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
 
 model::VehicleParams apply(model::VehicleParams v, const HeadingDiagnosis& d) {
   v.heading.fin_delay_s = d.delay_servo_s + d.delay_after_fin_s;
+  v.heading.fin_deadband_rad = at(d.values, HeadingEffect::kFinDeadband);
   v.heading.fin_max_rad = d.fin_max_rad;  // the log's f_fin_safety_max where it states one
   v.heading.fin_yaw_gain_per_m *= at(d.values, HeadingEffect::kFinEffectiveness);
   v.heading.yaw_time_constant_s = at(d.values, HeadingEffect::kYawTimeConstant);

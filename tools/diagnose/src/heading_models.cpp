@@ -60,6 +60,7 @@ void pick(const std::vector<double>& series, std::span<const std::size_t> at_ind
 HeadingValues nominal_heading_values(const model::VehicleParams& vehicle, const AutopilotSettings& autopilot) {
   HeadingValues v{};
   at(v, HeadingEffect::kFinDelay) = vehicle.heading.fin_delay_s;
+  at(v, HeadingEffect::kFinDeadband) = vehicle.heading.fin_deadband_rad;
   at(v, HeadingEffect::kYawDelay) = 0.0;
   at(v, HeadingEffect::kFinEffectiveness) = 1.0;
   at(v, HeadingEffect::kRollOffset) = 0.0;
@@ -98,10 +99,13 @@ std::vector<std::size_t> autopilot_rows(const HeadingTrack& t) {
 
 // The servo: from each row the fin moves at the vehicle's speed toward the
 // last command issued a dead time ago (a row's own command acts after its
-// own measurement: c_fin is computed at the end of the cycle that read m_fin).
+// own measurement: c_fin is computed at the end of the cycle that read m_fin),
+// unless that command is within the deadband of where the fin is then (the
+// SIL's servo, model/simulator.cpp).
 void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
                        std::span<const std::size_t> rows, std::vector<double>& out) {
   const double delay = std::abs(value(values, HeadingEffect::kFinDelay));
+  const double deadband = std::abs(value(values, HeadingEffect::kFinDeadband));
   const double rate = vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9;
   const std::size_t n = t.row_time_s.size();
   std::vector<double> predicted(n, kNaN);
@@ -118,7 +122,8 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
       if (std::isfinite(fin)) fin += std::clamp(command - fin, -rate * (to - clock), rate * (to - clock));
       clock = to;
       if (!switch_first) return;
-      if (std::isfinite(t.row_fin_command_rad[next_command])) command = t.row_fin_command_rad[next_command];
+      const double wanted = t.row_fin_command_rad[next_command];
+      if (std::isfinite(wanted) && !(std::isfinite(fin) && std::abs(wanted - fin) <= deadband)) command = wanted;
       ++next_command;
     }
   };

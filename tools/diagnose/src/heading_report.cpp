@@ -67,6 +67,19 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
   j["heading_noise_rad"] = d.heading_noise_rad;
   j["unexplained_yaw_rate"] = {{"rms_rad_s", d.unexplained_yaw_rate_rad_s},
                                {"correlation_s", d.unexplained_correlation_s}};
+  ordered_json shear = ordered_json::array();
+  for (const ShearBin& b : d.current_shear.bins) {
+    if (!b.fitted) continue;
+    shear.push_back({{"depth_from_m", b.from_m},
+                     {"depth_to_m", b.to_m},
+                     {"shear_per_s", b.shear_per_s},
+                     {"ci95", {b.ci95_low, b.ci95_high}},
+                     {"glides", b.runs}});
+  }
+  j["current_shear"] = {
+      {"bins", shear},
+      {"heldout_yaw_rms_rad_s", {d.current_shear.heldout_rms_before, d.current_shear.heldout_rms_after}},
+      {"dive_climb_correlation", d.current_shear.dive_climb_correlation}};
   ordered_json holds = ordered_json::array();
   for (const HoldBin& b : d.holds) {
     holds.push_back(
@@ -131,6 +144,14 @@ std::string heading_text(const HeadingDiagnosis& d) {
           100.0 * x.gain);
     }
   }
+  const ShearProfile& shear = d.current_shear;
+  add("  current shear across the heading (1/s, fitted glides' 95 %% CI), held-out yaw rate RMS %.3f -> %.3f deg/s, "
+      "dives vs climbs correlation %.2f:\n   ",
+      rad_to_deg(shear.heldout_rms_before), rad_to_deg(shear.heldout_rms_after), shear.dive_climb_correlation);
+  for (const ShearBin& b : shear.bins) {
+    if (b.fitted) add(" %.0f-%.0f m %+.4f [%+.4f, %+.4f];", b.from_m, b.to_m, b.shear_per_s, b.ci95_low, b.ci95_high);
+  }
+  add("\n");
   add("  heading jitter (cycle to cycle, as white noise): %.2f deg; yaw rate left unexplained: RMS %.2f deg/s, "
       "correlated over %.0f s\n",
       rad_to_deg(d.heading_noise_rad), rad_to_deg(d.unexplained_yaw_rate_rad_s), d.unexplained_correlation_s);

@@ -160,6 +160,8 @@ HeadingTrack prepare_heading_track(const flightlog::FlightLog& log, const model:
         t.time_s.push_back(time[k] - t0);
         t.heading_rad.push_back(unwrapped);
         t.speed_m_s.push_back(g.speed_m_s);
+        t.depth_m.push_back(c.depth_m[k]);
+        t.depth_rate_m_s.push_back(depth_rate[k]);
         t.lift_factor.push_back(g.lift_factor);
         t.roll_rad.push_back(roll_here);
         t.phase.push_back(c.phase[k]);

@@ -27,7 +27,12 @@
 // - heading is not a rigid-body degree of freedom here (unlike the 6-DOF
 //   model of paper 001): the yaw rate relaxes (first order) toward
 //   fin_gain V fin + roll_gain V a_eff sin(roll offset) (+ a random yaw
-//   disturbance the SIL may add). Roll, sideslip and
+//   disturbance the SIL may add); the heading also turns by
+//   pitch rate x tan(roll offset) / cos(pitch) (Euler's kinematics: a
+//   rolled glider's inflection swings its nose sideways), and by
+//   -depth rate x d(starboard current)/d(depth) / V crossing a vertical
+//   shear of the current (the fin weathervanes it into the water it enters).
+//   Roll, sideslip and
 //   their coupling back into the vertical plane are neglected; a turning
 //   glider keeps the vertical-plane speeds of the straight glide.
 #include <array>
@@ -170,6 +175,7 @@ class GliderDynamics {
   Environment environment_;
   double nominal_volume_m3_;
   double sin_roll_offset_;  // constant: the roll term of the yaw rate
+  double tan_roll_offset_;  // constant: the pitch rate's share of the heading rate
 
   struct PointMass {
     double m, x, z;

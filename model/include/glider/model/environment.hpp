@@ -19,6 +19,11 @@ struct WaterSample {
   // PSS-78; NaN = the water is given by its density alone (no CTD can be
   // simulated in it). Last, so {density, temperature, ...} profiles still read.
   double practical_salinity = std::numeric_limits<double>::quiet_NaN();
+  // d(current)/d(depth) where the glider is (1/s, + = the current grows
+  // eastward / northward downward): the profile's slope between its nodes,
+  // 0 beyond them. A glider crossing it turns (dynamics.hpp).
+  double current_shear_east_per_s = 0.0;
+  double current_shear_north_per_s = 0.0;
 };
 
 // Sea pressure [dbar] at a depth, as the water column and the SIL's CTD use

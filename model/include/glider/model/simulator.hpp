@@ -89,6 +89,8 @@ class GliderSimulator {
   // Sets a servo's target; current() is recomputed only if the target moved
   // (the firmware repeats most commands every cycle).
   void retarget(RateLimitedServo& servo, double target);
+  // The fin's retarget, through the servo's position deadband.
+  void retarget_fin(double angle);
   // The step shortened to end at an event `event_s` ahead, if it falls inside it.
   static double step_until(double event_s, double h);
   static constexpr double kMinEventStepS = 1e-6;

@@ -73,6 +73,10 @@ struct HeadingModel {
   double fin_max_rad = 0.0;      // fin servo travel (+-)
   double fin_rate_rad_s = 0.0;   // fin servo speed
   double fin_delay_s = 0.0;      // dead time between a fin command and the servo starting to move
+  // The servo moves only to a command farther than this from where the fin
+  // is (a position deadband; the comet logs' fins hold inside 0.02-0.045
+  // rad, glider-diagnose's fin_deadband). 0 = every command is followed.
+  double fin_deadband_rad = 0.0;
   // A random yaw rate the fin and roll do not explain (first-order
   // Gauss-Markov: RMS and correlation time), which the SIL draws; the real
   // comet logs have one (glider-diagnose's heading plane). 0 = none.

@@ -9,6 +9,7 @@
 
 #include "glider/diagnose/heading_fit.hpp"
 #include "glider/diagnose/heading_models.hpp"
+#include "glider/diagnose/heading_shear.hpp"
 #include "glider/diagnose/heading_track.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle.hpp"
@@ -41,6 +42,10 @@ struct HeadingDiagnosis {
   // slow yaw disturbance, not compass noise, when that is tens of seconds).
   double unexplained_yaw_rate_rad_s = 0.0;
   double unexplained_correlation_s = 0.0;
+  // The current's vertical shear across the heading, from what the
+  // extended yaw model leaves (heading_shear.hpp); the unexplained yaw
+  // above is what is left after it.
+  ShearProfile current_shear;
   std::vector<HoldBin> holds;  // 0-2, 2-4, ... 10-12 deg, and beyond
   LinkFit servo, yaw, autopilot;
   HeadingValues values{};      // every link's nominal with its findings
@@ -62,8 +67,9 @@ struct UnexplainedYaw {
   double correlation_s = 0.0;  // first lag where its autocorrelation within a glide < 1/e (0: none found)
 };
 // What the yaw model with these values leaves of a track's measured yaw rate.
+// With `shear`, the yaw its profile makes is part of the model.
 UnexplainedYaw unexplained_yaw(const HeadingTrack& track, const model::VehicleParams& vehicle,
-                               const HeadingValues& values);
+                               const HeadingValues& values, const ShearProfile* shear = nullptr);
 
 // The configured autopilot from the log's settings_at_file_open
 // (u_hd_fin_ap_gain, _igain, _dgain, u_heading_rate_deadband).

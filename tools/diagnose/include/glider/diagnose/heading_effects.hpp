@@ -14,6 +14,7 @@ namespace glider::diagnose {
 
 enum class HeadingEffect : int {
   kFinDelay = 0,       // servo: dead time c_fin -> m_fin (s; nominal: the vehicle file's)
+  kFinDeadband,        // servo: a command within this of the fin's position is not followed (rad)
   kYawDelay,           // vehicle: dead time m_fin -> yaw response (compass filter, vehicle) (s)
   kFinEffectiveness,   // vehicle: factor on the yaw rate per fin angle and speed
   kRollOffset,         // vehicle: static roll the log's m_roll does not show (rad)
