@@ -132,6 +132,20 @@ TEST(DiagnoseHiddenHeadingEffects, CurrentShearAcrossTheHeading) {
   CHECK_TEXT(p.dive_climb_correlation > 0.7, text);
 }
 
+// A compass that reports the heading late (its filtering): the yaw answers
+// the fin that much later in the log, after the fin reading (yaw_delay);
+// the autopilot reads the same late heading, so its own lag is unchanged.
+// Whole cycles, as the SIL's compass is read once per 4 s cycle.
+TEST(DiagnoseHiddenHeadingEffects, CompassLagIsAYawDelay) {
+  const double delay_s = 4.0 * static_cast<double>(1 + rng() % 2);
+  const HeadingOutcome o =
+      fly_heading_and_diagnose(comet(), configured_slocum_law(), "yaw_delay", 0.0, model::Environment{}, delay_s);
+  const auto& f = require_found(o, HeadingEffect::kYawDelay, delay_s);
+  DOUBLES_EQUAL(delay_s, f.value, 1.0);
+  CHECK(o.diagnosis.yaw.gain > 0.2);
+  CHECK(finding(o.diagnosis, HeadingEffect::kAutopilotDelay) == nullptr);
+}
+
 TEST(DiagnoseHiddenHeadingEffects, FinEffectiveness) {
   const double factor = rng() % 2 ? uniform(rng, 0.5, 0.75) : uniform(rng, 1.35, 1.8);
   model::VehicleParams flown = comet();
