@@ -200,9 +200,12 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
   // fin weathervanes the nose after it (heading rate = -depth rate x the
   // starboard current's shear / V). Slower than kShearMinSpeedMS (surface,
   // inflections) the swing is taken at that speed: no flow, no weathervane.
-  const double cross_shear =
-      e.water.current_shear_east_per_s * std::cos(psi) - e.water.current_shear_north_per_s * std::sin(psi);
-  if (cross_shear != 0.0) d[kPsi] -= d[kZ] * cross_shear / std::max(e.speed_m_s, kShearMinSpeedMS);
+  // (Only in sheared water: the vertical plane's fits evaluate this often.)
+  if (e.water.current_shear_east_per_s != 0.0 || e.water.current_shear_north_per_s != 0.0) {
+    const double cross_shear =
+        e.water.current_shear_east_per_s * std::cos(psi) - e.water.current_shear_north_per_s * std::sin(psi);
+    d[kPsi] -= d[kZ] * cross_shear / std::max(e.speed_m_s, kShearMinSpeedMS);
+  }
   d[kYawRate] = (yaw_rate_target - s[kYawRate]) / hd.yaw_time_constant_s;
   return e;
 }

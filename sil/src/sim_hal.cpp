@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/sil/sim_hal.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "glider/hal/time.hpp"
 #include "glider/units.hpp"
 
 namespace glider::sil {
@@ -37,11 +39,30 @@ hal::AttitudeSample SimHal::read_attitude() {
   sample.pitch_rad = sim_.state()[model::kTheta] + noise_.pitch_rad * gaussian();
   sample.roll_rad = sim_.dynamics().vehicle().heading.roll_offset_rad + noise_.roll_rad * gaussian();
   const double two_pi = 2.0 * std::numbers::pi;
-  const double heading = sim_.state()[model::kPsi] + noise_.heading_rad * gaussian();
+  const double heading =
+      delayed_heading(hal::to_seconds(sample.time_us), sim_.state()[model::kPsi]) + noise_.heading_rad * gaussian();
   sample.heading_rad = std::fmod(std::fmod(heading, two_pi) + two_pi, two_pi);
   sample.valid = !faults_.attitude_invalid;
   last_attitude_ = sample;
   return sample;
+}
+
+double SimHal::delayed_heading(double now_s, double heading_rad) {
+  if (!(noise_.heading_delay_s > 0.0)) return heading_rad;
+  heading_history_[history_next_] = {now_s, heading_rad};
+  history_next_ = (history_next_ + 1) % kHeadingHistory;
+  history_count_ = std::min(history_count_ + 1, kHeadingHistory);
+  const double wanted = now_s - noise_.heading_delay_s;
+  // Newest to oldest: the pair of readings around `wanted`, linearly between.
+  auto at = [this](std::size_t back) {
+    return heading_history_[(history_next_ + kHeadingHistory - 1 - back) % kHeadingHistory];
+  };
+  for (std::size_t back = 0; back + 1 < history_count_; ++back) {
+    const auto [t1, h1] = at(back);
+    const auto [t0, h0] = at(back + 1);
+    if (t0 <= wanted) return t1 > t0 ? h0 + (h1 - h0) * (wanted - t0) / (t1 - t0) : h0;
+  }
+  return at(history_count_ - 1).second;
 }
 
 bool SimHal::inject(const std::string& name) {

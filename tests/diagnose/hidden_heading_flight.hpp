@@ -78,10 +78,11 @@ struct HeadingOutcome {
 
 // Flies `flown` with `law` (the SIL's Slocum law at the flown gains), logs
 // the nominal comet and the configured gains; `hidden_roll_rad` is taken out
-// of the logged m_roll; `water` the SIL flies in (still by default).
+// of the logged m_roll; `water` the SIL flies in (still by default);
+// `compass_delay_s` the compass's dead time (sil::SensorNoise).
 inline HeadingOutcome fly_heading_and_diagnose(const model::VehicleParams& flown, const fw::HeadingControlConfig& law,
                                                const std::string& name, double hidden_roll_rad = 0.0,
-                                               const model::Environment& water = {}) {
+                                               const model::Environment& water = {}, double compass_delay_s = 0.0) {
   const model::VehicleParams nominal = comet();
   fw::FlightSoftwareConfig base;
   base.heading = law;
@@ -96,6 +97,7 @@ inline HeadingOutcome fly_heading_and_diagnose(const model::VehicleParams& flown
   // 1 Hz loop thinned afterwards (which would hide the commands between rows).
   options.period_us = kSlocumCycleUs;
   options.environment = water;
+  options.noise.heading_delay_s = compass_delay_s;
   // The plant at the accuracy reference step (0.1 s), as the heading replays:
   // yaw_time_constant reads ~7 % short either way (6.20 -> 5.79), its interval
   // only just holds the truth at 0.1 s and misses it by 0.01 s at 1 s (issue 14 part 3).

@@ -47,10 +47,11 @@ flightlog::FlightLog fly(const std::string& source, const model::VehicleParams& 
 // The yaw rate a SIL log leaves unexplained, by the same estimator and model
 // as the real log's (the flown vehicle is the model: only the disturbance and
 // the compass noise are left).
+// `shear`: the profile the SIL flew (nullptr: still water).
 diagnose::UnexplainedYaw unexplained(const flightlog::FlightLog& log, const model::VehicleParams& vehicle,
-                                     const diagnose::ShearProfile& shear) {
+                                     const diagnose::ShearProfile* shear) {
   const diagnose::HeadingTrack track = diagnose::prepare_heading_track(log, vehicle);
-  return diagnose::unexplained_yaw(track, vehicle, diagnose::nominal_heading_values(vehicle, {}), &shear);
+  return diagnose::unexplained_yaw(track, vehicle, diagnose::nominal_heading_values(vehicle, {}), shear);
 }
 
 // Median speed through the water on the dives and on the climbs, by the
@@ -79,12 +80,13 @@ GlideSpeeds glide_speeds(const flightlog::FlightLog& log, const model::VehiclePa
 // autocorrelation length is closest to the real one's.
 void calibrate_disturbance(const std::string& source, model::VehicleParams& flown, const model::Environment& water,
                            const fw::HeadingControlConfig& law, const diagnose::HeadingDiagnosis& d,
-                           const std::string& stem, const ReplayOptions& run) {
+                           const std::string& stem, const ReplayOptions& run, const diagnose::UnexplainedYaw& target,
+                           const diagnose::ShearProfile* shear) {
   flown.heading.yaw_disturbance_rad_s = 0.0;
-  const double floor = unexplained(fly(source, flown, water, law, d.heading_noise_rad, stem + "_calibration.csv", run),
-                                   flown, d.current_shear)
-                           .rms_rad_s;
-  const double wanted = d.unexplained_yaw_rate_rad_s;
+  const double floor =
+      unexplained(fly(source, flown, water, law, d.heading_noise_rad, stem + "_calibration.csv", run), flown, shear)
+          .rms_rad_s;
+  const double wanted = target.rms_rad_s;
   if (!(wanted > floor)) return;  // the compass noise explains it all
   double best_rms = 0.0, best_tau = 0.0, best_miss = 1e9;
   for (const double tau : {4.0, 8.0, 16.0, 32.0}) {
@@ -94,11 +96,11 @@ void calibrate_disturbance(const std::string& source, model::VehicleParams& flow
     for (int iteration = 0; iteration < 3; ++iteration) {
       flown.heading.yaw_disturbance_rad_s = rms;
       left = unexplained(fly(source, flown, water, law, d.heading_noise_rad, stem + "_calibration.csv", run), flown,
-                         d.current_shear);
+                         shear);
       const double excess = std::max(1e-9, left.rms_rad_s * left.rms_rad_s - floor * floor);
       rms *= std::sqrt((wanted * wanted - floor * floor) / excess);
     }
-    const double miss = std::abs(left.correlation_s - d.unexplained_correlation_s);
+    const double miss = std::abs(left.correlation_s - target.correlation_s);
     if (miss < best_miss) {
       best_miss = miss;
       best_rms = rms;
@@ -176,7 +178,14 @@ Replay replay_log(const std::string& source, const std::string& log_path, const 
     flown.hydro.reference_area_m2 *= r.area_scale;
     flown.buoyancy_offset_kg += r.buoyancy_offset_kg;
   }
-  if (options.yaw_disturbance) calibrate_disturbance(source, flown, water, identified, d, stem, options);
+  if (options.yaw_disturbance) {
+    // What the real log leaves: after the shear when the replay flies it,
+    // else all the extended yaw model leaves.
+    const diagnose::ShearProfile* shear = options.current_shear ? &d.current_shear : nullptr;
+    const diagnose::UnexplainedYaw target =
+        diagnose::unexplained_yaw(diagnose::prepare_heading_track(log, nominal), nominal, d.yaw.values, shear);
+    calibrate_disturbance(source, flown, water, identified, d, stem, options, target, shear);
+  }
   r.yaw_disturbance_rad_s = flown.heading.yaw_disturbance_rad_s;
   r.yaw_disturbance_correlation_s = flown.heading.yaw_disturbance_correlation_s;
   const flightlog::FlightLog identified_log =

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "glider/hal/attitude_sensor.hpp"
 #include "glider/hal/battery_slide.hpp"
@@ -24,6 +27,10 @@ struct SensorNoise {
   double pitch_rad = 0.0017;  // 0.1 deg
   double roll_rad = 0.0017;
   double heading_rad = 0.0035;
+  // Not noise but the compass's own lag: the heading it reports is the
+  // vehicle's this long ago (s, a dead time; 0 = none), e.g. its filtering.
+  // At most kHeadingHistory readings back (older: the oldest one kept).
+  double heading_delay_s = 0.0;
   double ctd_temperature_c = 0.002;
   double ctd_conductivity_s_m = 0.0003;
   double ctd_pressure_bar = 0.002;
@@ -94,6 +101,12 @@ class SimHal final : public hal::DepthSensor, public hal::BuoyancyPump, public h
   FaultInjection faults_{};
   hal::DepthSample last_depth_{};  // what a frozen sensor keeps returning
   hal::AttitudeSample last_attitude_{};
+  // The true heading at each attitude reading (time s, heading rad, unwrapped),
+  // for the compass's dead time: a ring, newest at history_next_ - 1.
+  double delayed_heading(double now_s, double heading_rad);
+  static constexpr std::size_t kHeadingHistory = 64;
+  std::array<std::pair<double, double>, kHeadingHistory> heading_history_{};
+  std::size_t history_next_ = 0, history_count_ = 0;
   AttitudePort attitude_port_{*this};
   RudderPort rudder_port_{*this};
   SimGps gps_;
