@@ -223,18 +223,8 @@ struct FitResult {
   double bic = 0.0;
 };
 
-// Where a fit starts: the solution of a fit of a neighbouring candidate (one
-// effect more, less or swapped, on the same training samples) for the
-// effects the two share. The selection fits dozens of such neighbours; from
-// the neighbour's optimum the optimiser needs a few steps where it needs
-// many from nominal.
-struct WarmStart {
-  const Candidate* candidate = nullptr;
-  const FitResult* fit = nullptr;
-};
-
 FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
-              std::span<const std::size_t> heldout, WarmStart warm = {}) {
+              std::span<const std::size_t> heldout) {
   FitResult result;
   const Layout layout = make_layout(candidate, set, train);
   const std::size_t k = layout.size;
@@ -244,19 +234,6 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   // so they start one scale (5 s, 1 s) away.
   for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
     if (is_lag(candidate.fitted[j])) p[static_cast<Eigen::Index>(layout.offset[j])] = 1.0;
-  }
-  if (warm.candidate != nullptr && warm.fit->p.size() > 0) {
-    const Layout from = make_layout(*warm.candidate, set, train);
-    for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
-      const Effect e = candidate.fitted[j];
-      const auto it = std::find(warm.candidate->fitted.begin(), warm.candidate->fitted.end(), e);
-      if (it == warm.candidate->fitted.end()) continue;
-      const auto width = static_cast<Eigen::Index>(e == Effect::kVerticalWaterVelocity ? layout.bins.w_m_s.size() : 1);
-      const auto o = static_cast<Eigen::Index>(layout.offset[j]);
-      p.segment(o, width) = warm.fit->p.segment(
-          static_cast<Eigen::Index>(from.offset[static_cast<std::size_t>(it - warm.candidate->fitted.begin())]), width);
-      if (is_lag(e) && std::abs(p[o]) < 1e-3) p[o] = 1.0;  // a lag at 0 has no gradient (above)
-    }
   }
   if (k > 0) {
     const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
@@ -311,7 +288,7 @@ void add_intervals(const SampleSet& set, const Candidate& candidate, std::span<c
 // fit(), announced first to options.progress (one call per model fit: the
 // unit of diagnose's cost, seconds each on a long log).
 FitResult fit_reported(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
-                       std::span<const std::size_t> heldout, const DiagnoseOptions& options, WarmStart warm = {}) {
+                       std::span<const std::size_t> heldout, const DiagnoseOptions& options) {
   if (options.progress) {
     std::string what = candidate.ctd_density ? "ctd_density" : "";
     for (Effect e : candidate.fitted) {
@@ -320,7 +297,7 @@ FitResult fit_reported(const SampleSet& set, const Candidate& candidate, std::sp
     }
     options.progress(what.empty() ? "nominal" : what);
   }
-  return fit(set, candidate, train, heldout, warm);
+  return fit(set, candidate, train, heldout);
 }
 
 Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx) {
@@ -567,7 +544,7 @@ void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train,
     std::optional<std::pair<Effect, FitResult>> weakest;
     for (const Finding& finding : d.findings) {
       const Effect e = finding.effect;
-      FitResult reduced = fit_reported(set, without(current, e), train, heldout, options, {&current, &current_fit});
+      FitResult reduced = fit_reported(set, without(current, e), train, heldout, options);
       worth.emplace_back(e, reduced.heldout_rms);
       // The CTD's density is measured, not fitted: once it has earned its
       // way in it stays (a fitted effect of the same shape - a mean vertical
@@ -757,7 +734,7 @@ void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions&
       } else {
         trial.fitted.push_back(remaining[c]);
       }
-      FitResult f = fit_reported(set, trial, s.train, s.heldout, options, {&current, &current_fit});
+      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
       // An implausible value is another effect's stand-in: the next best competes instead.
       if (!is_ctd && !plausible(remaining[c], f.parameters.values[static_cast<std::size_t>(remaining[c])])) continue;
       if (!best || f.heldout_rms < best->second.heldout_rms) {
@@ -813,7 +790,7 @@ bool swap_step(const SampleSet& set, const Split& s, const DiagnoseOptions& opti
       }
       Candidate trial = without(current, out);
       trial.fitted.push_back(in);
-      FitResult f = fit_reported(set, trial, s.train, s.heldout, options, {&current, &current_fit});
+      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
       if (!plausible(in, f.parameters.values[static_cast<std::size_t>(in)])) continue;
       const double bic_to_beat = best ? std::get<3>(*best).bic : current_fit.bic;
       if (f.heldout_rms <= current_fit.heldout_rms && f.bic < bic_to_beat) {
