@@ -18,6 +18,7 @@
 #include "glider/diagnose/dynamic_flight_model.hpp"
 #include "glider/diagnose/forward_difference.hpp"
 #include "glider/diagnose/speed_reference.hpp"
+#include "glider/diagnose/stall_branch.hpp"
 #include "glider/diagnose/thin.hpp"
 #include "glider/units.hpp"
 
@@ -873,6 +874,27 @@ void report_final_values(const DepthRateModel& model, const Candidate& current, 
   d.cause = d.findings.empty() ? "none" : info(d.findings.front().effect).id;
 }
 
+// A lift whose interval reaches the lifts where the glides flown get a
+// stalled steady state (stall_branch.hpp): there the dynamic model's misfit
+// jumps wherever one glide changes branch, and the interval from its local
+// slope is that of one tooth. The interval then spans those onsets too:
+// within them the data say the glides are near the stall, not which lift.
+void widen_lift_at_stall(const model::VehicleParams& nominal, const Track& track, Diagnosis& d) {
+  constexpr double kSteadyPitchRate = 0.01;  // rad/s: a glide's, not an inflection's (~0.03)
+  for (Finding& finding : d.findings) {
+    if (finding.effect != Effect::kLiftChange || !finding.fitted) continue;
+    std::vector<double> pitch;
+    pitch.reserve(track.scored.size());
+    for (std::size_t k : track.scored) {
+      if (std::abs(track.pitch_slope_rad_s[k]) < kSteadyPitchRate) pitch.push_back(track.pitch_rad[k]);
+    }
+    const LiftBand band = stall_onset_band(nominal, d.extended, pitch);
+    if (band.high <= 0.0 || finding.ci95_high < band.low || finding.ci95_low > band.high) continue;
+    finding.ci95_low = std::min(finding.ci95_low, band.low);
+    finding.ci95_high = std::max(finding.ci95_high, band.high);
+  }
+}
+
 // The pitch trim, last and on the steady glides: it is judged with the
 // depth-rate effects already found.
 void diagnose_pitch_trim_last(const FlightModel& steady_model, const Observations& obs, const DiagnoseOptions& options,
@@ -932,6 +954,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   }
   add_intervals(set, current, s.train, options.intervals, current_fit);
   report_final_values(set.model, current, current_fit, d);
+  if (dynamic) widen_lift_at_stall(nominal, obs.track, d);
 
   const std::vector<double> r_ext = residuals_by_sample(set, current_fit.parameters, current.ctd_density, s.all);
   d.extended_all = rms_where(r_ext, s.all);
