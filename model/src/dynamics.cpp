@@ -8,13 +8,12 @@
 #include "glider/model/hydrodynamics.hpp"
 
 namespace glider::model {
-namespace {
-
-// Below this speed through the water a shear's cross current is no longer
-// small against the flow the fin weathervanes in (m/s).
-constexpr double kShearMinSpeedMS = 0.1;
-
-}  // namespace
+double shear_turn_per_unit(double depth_rate_m_s, double speed_m_s) {
+  // Below this speed through the water a shear's cross current is no longer
+  // small against the flow the fin weathervanes in (m/s).
+  constexpr double kShearMinSpeedMS = 0.1;
+  return -depth_rate_m_s / std::max(speed_m_s, kShearMinSpeedMS);
+}
 
 FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, double v3) {
   return flow_forces_at_speed(h, water_density, v1, v3, std::hypot(v1, v3));
@@ -194,17 +193,12 @@ Evaluation GliderDynamics::evaluate(double time_s, const State& s, const MassInp
   // (the inflections of a glider rolled 10 deg turn it ~9 deg each; the comet
   // 2019 logs show it, docs/heading-control.md).
   d[kPsi] = s[kYawRate] + e.q * tan_roll_offset_ / cos_t;
-  // Crossing a vertical shear of the current, the water the glider enters
-  // moves sideways against the water it left: its velocity through the
-  // water swings by the change of the cross current over the speed, and the
-  // fin weathervanes the nose after it (heading rate = -depth rate x the
-  // starboard current's shear / V). Slower than kShearMinSpeedMS (surface,
-  // inflections) the swing is taken at that speed: no flow, no weathervane.
+  // Crossing a vertical shear of the current turns it (shear_turn_per_unit).
   // (Only in sheared water: the vertical plane's fits evaluate this often.)
   if (e.water.current_shear_east_per_s != 0.0 || e.water.current_shear_north_per_s != 0.0) {
     const double cross_shear =
         e.water.current_shear_east_per_s * std::cos(psi) - e.water.current_shear_north_per_s * std::sin(psi);
-    d[kPsi] -= d[kZ] * cross_shear / std::max(e.speed_m_s, kShearMinSpeedMS);
+    d[kPsi] += shear_turn_per_unit(d[kZ], e.speed_m_s) * cross_shear;
   }
   d[kYawRate] = (yaw_rate_target - s[kYawRate]) / hd.yaw_time_constant_s;
   return e;

@@ -217,4 +217,21 @@ TrimResult solve_trim(const GliderDynamics& dyn, double glide_path_deg, double n
   return result;
 }
 
+bool has_stall_glide(const Hydrodynamics& hydro, double pitch_rad) {
+  // Descending (nose down) flies alpha > 0, climbing alpha < 0: mirrored,
+  // both are the balance at |alpha| with the lift taken along the glide.
+  const double direction = pitch_rad < 0.0 ? 1.0 : -1.0;
+  const double pitch = std::abs(pitch_rad);
+  constexpr double kStep = 5e-4;  // rad: the back-side roots lie ~0.5 deg apart near the onset
+  int roots = 0;
+  double previous = 0.0;
+  for (double a = kStep; a < 0.5 * std::numbers::pi; a += kStep) {
+    const ForceCoefficients c = force_coefficients(hydro, direction * a);
+    const double balance = std::atan2(c.drag, direction * c.lift) - a - pitch;
+    if (a > kStep && (balance < 0.0) != (previous < 0.0)) ++roots;
+    previous = balance;
+  }
+  return roots > 1;
+}
+
 }  // namespace glider::model

@@ -2,14 +2,13 @@
 #include "glider/diagnose/heading_shear.hpp"
 
 #include <algorithm>
-#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
+
+#include "glider/diagnose/trend.hpp"
+#include "glider/model/dynamics.hpp"
 
 namespace glider::diagnose {
 namespace {
-
-// As model/dynamics.cpp: slower than this the cross current is taken at it.
-constexpr double kShearMinSpeedMS = 0.1;
 
 struct Sums {
   double xx = 0.0, xr = 0.0;
@@ -82,7 +81,7 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 }  // namespace
 
 double shear_yaw_per_unit(const HeadingTrack& t, std::size_t i) {
-  return -t.depth_rate_m_s[i] / std::max(t.speed_m_s[i], kShearMinSpeedMS);
+  return model::shear_turn_per_unit(t.depth_rate_m_s[i], t.speed_m_s[i]);
 }
 
 ShearProfile fit_current_shear(const HeadingTrack& t, std::span<const double> residual,
@@ -108,14 +107,8 @@ ShearProfile fit_current_shear(const HeadingTrack& t, std::span<const double> re
     bin.runs = each.size();
     bin.fitted = each.size() >= 2 && std::isfinite(fitted[b]);
     if (bin.fitted) {
-      double mean = 0.0;
-      for (double v : each) mean += v;
-      mean /= static_cast<double>(each.size());
-      double var = 0.0;
-      for (double v : each) var += (v - mean) * (v - mean);
-      const double n = static_cast<double>(each.size());
-      const double half = boost::math::quantile(boost::math::students_t_distribution<double>(n - 1.0), 0.975) *
-                          std::sqrt(var / (n - 1.0) / n);
+      const Interval spread = mean_with_interval(each);
+      const double half = spread.high - spread.value;
       bin.shear_per_s = fitted[b];
       bin.ci95_low = fitted[b] - half;
       bin.ci95_high = fitted[b] + half;

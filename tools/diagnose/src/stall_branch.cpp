@@ -4,36 +4,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <vector>
 
-#include "glider/model/hydrodynamics.hpp"
+#include "glider/model/steady_glide.hpp"
 
 namespace glider::diagnose {
-
-bool has_stall_glide(const model::Hydrodynamics& hydro, double pitch_rad) {
-  // Descending (nose down) flies alpha > 0, climbing alpha < 0: mirrored,
-  // both are the balance at |alpha| with the lift taken along the glide.
-  const double direction = pitch_rad < 0.0 ? 1.0 : -1.0;
-  const double pitch = std::abs(pitch_rad);
-  constexpr double kStep = 5e-4;  // rad: the back-side roots lie ~0.5 deg apart near the onset
-  int roots = 0;
-  double previous = 0.0;
-  for (double a = kStep; a < 0.5 * std::numbers::pi; a += kStep) {
-    const model::ForceCoefficients c = model::force_coefficients(hydro, direction * a);
-    const double balance = std::atan2(c.drag, direction * c.lift) - a - pitch;
-    if (a > kStep && (balance < 0.0) != (previous < 0.0)) ++roots;
-    previous = balance;
-  }
-  return roots > 1;
-}
 
 double stall_onset_lift(const model::VehicleParams& nominal, const EffectValues& values, double pitch_rad) {
   const EffectInfo& lift = info(Effect::kLiftChange);
   auto stalls = [&](double factor) {
     EffectValues x = values;
     x[static_cast<std::size_t>(Effect::kLiftChange)] = factor;
-    return has_stall_glide(apply(nominal, x, nominal.hull_reference_temperature_c).hydro, pitch_rad);
+    return model::has_stall_glide(apply(nominal, x, nominal.hull_reference_temperature_c).hydro, pitch_rad);
   };
   // Down from the most lift: the first lift with a stall state besides the
   // flight (with far less lift the flight branch goes too and the stall is

@@ -43,25 +43,21 @@ double bic(double rss, std::size_t n, std::size_t parameters, double scale) {
   return nd * std::log(std::max(rss, floor) / nd) + static_cast<double>(parameters) * std::log(nd);
 }
 
-double mean_of(const std::vector<double>& y, std::size_t from, std::size_t to) {
+double mean_of(std::span<const double> y, std::size_t from, std::size_t to) {
   double sum = 0.0;
   for (std::size_t i = from; i < to; ++i) sum += y[i];
   return sum / static_cast<double>(to - from);
 }
 
-double squares_about(const std::vector<double>& y, std::size_t from, std::size_t to, double level) {
+double squares_about(std::span<const double> y, std::size_t from, std::size_t to, double level) {
   double sum = 0.0;
   for (std::size_t i = from; i < to; ++i) sum += (y[i] - level) * (y[i] - level);
   return sum;
 }
 
 void fit_constant(const Points& p, Trend& trend, double scale) {
-  const std::size_t n = p.size();
-  const double mean = mean_of(p.y, 0, n);
-  const double rss = squares_about(p.y, 0, n, mean);
-  const double se = std::sqrt(rss / static_cast<double>(n - 1) / static_cast<double>(n));
-  trend.mean = interval(mean, se, static_cast<double>(n - 1));
-  trend.bic_constant = bic(rss, n, 1, scale);
+  trend.mean = mean_with_interval(p.y);
+  trend.bic_constant = bic(squares_about(p.y, 0, p.size(), trend.mean.value), p.size(), 1, scale);
 }
 
 void fit_linear(const Points& p, Trend& trend, double scale) {
@@ -134,6 +130,13 @@ std::string number(double x) {
 std::string bracket(const Interval& i) { return "[" + number(i.low) + ", " + number(i.high) + "]"; }
 
 }  // namespace
+
+Interval mean_with_interval(std::span<const double> values) {
+  const std::size_t n = values.size();
+  const double mean = mean_of(values, 0, n);
+  const double se = std::sqrt(squares_about(values, 0, n, mean) / static_cast<double>(n - 1) / static_cast<double>(n));
+  return interval(mean, se, static_cast<double>(n - 1));
+}
 
 const char* to_string(TrendShape shape) {
   switch (shape) {

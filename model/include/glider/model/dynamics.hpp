@@ -103,6 +103,15 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
 // root of glider speeds loses nothing.
 FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s);
 
+// Heading rate (rad/s) per unit of the current's starboard shear (1/s) for a
+// glider whose depth grows at depth_rate_m_s, moving at speed_m_s through
+// the water. Crossing a vertical shear, the water it enters moves sideways
+// against the water it left: its velocity through the water swings by the
+// change of the cross current over the speed, and the fin weathervanes the
+// nose after it. Slower than 0.1 m/s (surface, inflections) the swing is
+// taken at that speed: no flow, no weathervane.
+double shear_turn_per_unit(double depth_rate_m_s, double speed_m_s);
+
 class GliderDynamics {
  public:
   struct MassProperties {

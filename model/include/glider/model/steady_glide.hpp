@@ -63,6 +63,13 @@ class PitchGlideSolver {
 // the angle of attack of the best lift-to-drag ratio.
 double min_glide_path_deg(const Hydrodynamics& hydro, int direction = 1);
 
+// True if, at this pitch (rad, - nose down), the polar holds a steady glide
+// on its back side besides the flight branch: the glide-path balance
+// atan(D/L) = |pitch| + |alpha| has more than one root - a stalled state at a
+// large angle of attack (the blend into cross-flow) that a glider with too
+// little lift for its pitch can settle on.
+bool has_stall_glide(const Hydrodynamics& hydro, double pitch_rad);
+
 // Forward problem: where does the vehicle settle with this ballast and these
 // moving-mass positions (fin centred, still water at `depth_m`)? Solves force
 // and moment balance with the full model's terms (GliderDynamics::evaluate).

@@ -8,17 +8,13 @@
 // is a saw-tooth: each glide switches branch at the lift where its pitch's
 // stall state appears, so no interval from the misfit's local slope holds
 // there (lift_change near 0.78 at 26 deg pitch on the comet vehicle).
+// Whether a polar has that state at a pitch: model::has_stall_glide.
 #include <span>
 
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/model/vehicle.hpp"
 
 namespace glider::diagnose {
-
-// True if, at this pitch (rad, - nose down), the vehicle's polar holds a
-// steady glide on the back side besides the flight branch: the glide-path
-// balance atan(D/L) = |pitch| + |alpha| has more than one root.
-bool has_stall_glide(const model::Hydrodynamics& hydro, double pitch_rad);
 
 // The lift factor (lift_change) below which a glide at |pitch_rad| has that
 // stalled steady state, the other effects as in `values`; 0 if it has none

@@ -43,6 +43,10 @@ struct Trend {
   std::string describe(const char* unit) const;
 };
 
+// The mean of independent estimates of one value and its 95 % Student-t
+// interval from their scatter (n - 1 degrees of freedom); needs n >= 2.
+Interval mean_with_interval(std::span<const double> values);
+
 struct TrendOptions {
   double significance = 0.05;     // chance of a spurious line or step in constant data
   std::size_t min_step_side = 2;  // segments on each side of a step
