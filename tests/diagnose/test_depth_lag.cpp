@@ -145,7 +145,8 @@ TEST(DiagnoseDepthLag, LateDepthAndBuoyancyOffset) {
   // like a real log. Both are named and sized, and nothing else (a
   // vertical-velocity profile can stand in for both: + at the bottom turn).
   // On this flight forward selection finds them; on gliderflight-adcp itself
-  // only the swap step does (diagnose.real.gliderflight_adcp_dvl).
+  // the profile is taken first and the selection without it wins
+  // (diagnose.real.gliderflight_adcp_dvl).
   std::mt19937_64 rng{20261127};
   const double lag_s = hidden::uniform(rng, 2.0, 4.0);
   const double grams = hidden::uniform(rng, 25.0, 40.0);

@@ -12,7 +12,6 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
-#include <tuple>
 #include <unsupported/Eigen/NonLinearOptimization>
 
 #include "glider/diagnose/dynamic_flight_model.hpp"
@@ -765,50 +764,6 @@ void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions&
   }
 }
 
-// Forward-backward selection still keeps the first of two effects that
-// explain the same thing: a vertical-velocity profile (a number per depth
-// bin) takes the first round on a log where a buoyancy offset and a late
-// depth sensor are the causes - it shifts the whole yo and bends at the turns
-// - and once the lag is in, the offset fits the held-out yos better but
-// never gets its turn. Swap step: each fitted effect is tried against each
-// unused candidate in its place; a swap is taken only if it is better on
-// both counts - held-out error no larger and a lower BIC - and of those the
-// lowest BIC. Where the two disagree the selection stands: against WE01 on
-// gliderflight-adcp a lift of 0.73 instead of the drag has the lower BIC
-// (by 213) but a 2.7 % larger held-out error, and would fly the DVL's dives
-// at 0.20 m/s instead of 0.29 (a margin on the held-out error let such swaps
-// through). True if one was made (then the backward step runs again).
-bool swap_step(const SampleSet& set, const Split& s, const DiagnoseOptions& options, std::span<const Effect> pool,
-               Candidate& current, FitResult& current_fit, Diagnosis& d) {
-  std::optional<std::tuple<Effect, Effect, Candidate, FitResult>> best;
-  for (Effect out : current.fitted) {
-    for (Effect in : pool) {
-      // The profile is never swapped in: select_effects() already judged
-      // whether it earns its place against the best selection without it.
-      if (in == Effect::kWaterDensity || in == Effect::kVerticalWaterVelocity ||
-          std::find(current.fitted.begin(), current.fitted.end(), in) != current.fitted.end()) {
-        continue;
-      }
-      Candidate trial = without(current, out);
-      trial.fitted.push_back(in);
-      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
-      if (!plausible(in, f.parameters.values[static_cast<std::size_t>(in)])) continue;
-      const double bic_to_beat = best ? std::get<3>(*best).bic : current_fit.bic;
-      if (f.heldout_rms <= current_fit.heldout_rms && f.bic < bic_to_beat) {
-        best.emplace(out, in, std::move(trial), std::move(f));
-      }
-    }
-  }
-  if (!best) return false;
-  auto& [out, in, candidate, fit_result] = *best;
-  current = std::move(candidate);
-  current_fit = std::move(fit_result);
-  for (Finding& finding : d.findings) {
-    if (finding.effect == out) finding = new_finding(in, current_fit.heldout_rms, d);
-  }
-  return true;
-}
-
 // Forward selection, then the backward step. A vertical-velocity depth profile
 // (a parameter per 10 m bin) can stand in for any buoyancy that changes with
 // depth, and the greedy forward step takes it first when no single physical
@@ -943,12 +898,6 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   FitResult current_fit = fit_reported(set, current, s.train, s.heldout, options);
   if (options.fit_only.empty()) {
     select_effects(set, s, options, pool, current, current_fit, d);
-    // Each swap lowers the BIC and the held-out error never grows: bounded,
-    // but never more rounds than candidates.
-    for (std::size_t round = 0; round < pool.size() && swap_step(set, s, options, pool, current, current_fit, d);
-         ++round) {
-      backward_and_rank(set, s.train, s.heldout, options, current, current_fit, d);
-    }
   } else {
     fit_requested(set, s, options, current, current_fit, d);
   }
