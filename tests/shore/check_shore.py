@@ -3,7 +3,7 @@
 """Loopback tests of glider-shore against the scripted fake glider (fake_glider.py).
 
 usage: check_shore.py GLIDER_SHORE SCENARIO WORKDIR
-Scenarios: call, carrier_drop, two_gliders, garbage, unidentified, dialog.
+Scenarios: call, carrier_drop, two_gliders, busy, garbage, unidentified, dialog.
 Skips (exit 77) when Debian's lrzsz (sz/rz) is not installed.
 """
 import glob
@@ -247,6 +247,41 @@ def scenario_two_gliders(exe, work):
     a, b = starts["unit_401"], starts["unit_402"]
     overlap = a["call_start_utc"] <= b["call_end_utc"] and b["call_start_utc"] <= a["call_end_utc"]
     check(overlap, "the two calls were served at the same time")
+
+
+def scenario_busy(exe, work):
+    root = os.path.join(work, "root")
+    card = make_card(work, "unit_600", [])
+    shore = Shore(exe, root, "--max-calls", "2")
+    first = subprocess.Popen(FAKE + ["--port", str(shore.port), "--name", "unit_600", "--files", card,
+                                     "--idle-hangup", "4"])
+    wait_for_file = os.path.join(root, "unit_600", "logs")
+    for _ in range(100):
+        if os.path.isdir(wait_for_file) and os.listdir(wait_for_file):
+            break
+        time.sleep(0.05)
+    # The same glider calls again while its first call is still open (a dead
+    # call not yet noticed): the second call is served but leaves the queue alone.
+    subprocess.check_call([exe, "--root", root, "queue", "unit_600", "--command", "put u_y 1"])
+    second = subprocess.Popen(FAKE + ["--port", str(shore.port), "--name", "unit_600", "--files", card,
+                                      "--idle-hangup", "1", "--record", os.path.join(work, "second.jsonl")])
+    time.sleep(0.5)
+    # A third call is over --max-calls: closed at once, no folder, no event.
+    start = time.time()
+    third = subprocess.run(FAKE + ["--port", str(shore.port), "--name", "unit_601", "--files", card],
+                           capture_output=True, timeout=30)
+    check(time.time() - start < 3 and not os.path.exists(os.path.join(root, "unit_601")),
+          "a call over --max-calls is closed at once (%.1f s)" % (time.time() - start))
+    second.wait(timeout=30)
+    first.wait(timeout=30)
+    evs = wait_for_events(root, "unit_600", 2)
+    shore.stop()
+    second_said = [json.loads(l)["command"] for l in open(os.path.join(work, "second.jsonl")) if "command" in l]
+    check(second_said == ["whoru"], "the second call of the same glider only asked whoru: %s" % second_said)
+    check(any("another call of this glider" in n for e in evs for n in e["notes"]), "its event says why")
+    check(open(os.path.join(root, "unit_600", "commands.queue")).read() == "put u_y 1\n",
+          "the command queued meanwhile waits for the next call")
+    check("refused" in open(root + ".stderr").read(), "the refusal is in the shore's log")
 
 
 def scenario_garbage(exe, work):

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
+#include <set>
 #include <vector>
 
 #include "console_link.hpp"
@@ -20,6 +22,35 @@ namespace {
 
 constexpr char kCtrlR = 0x12;  // resume the mission
 
+// The gliders with a call in progress in this shore.
+class CallClaim {
+ public:
+  explicit CallClaim(std::string glider) : glider_(std::move(glider)) {
+    const std::lock_guard<std::mutex> lock(mutex());
+    owned_ = active().insert(glider_).second;
+  }
+  ~CallClaim() {
+    if (!owned_) return;
+    const std::lock_guard<std::mutex> lock(mutex());
+    active().erase(glider_);
+  }
+  CallClaim(const CallClaim&) = delete;
+  CallClaim& operator=(const CallClaim&) = delete;
+  [[nodiscard]] bool owned() const { return owned_; }
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static std::set<std::string>& active() {
+    static std::set<std::string> gliders;
+    return gliders;
+  }
+  std::string glider_;
+  bool owned_ = false;
+};
+
 class Call {
  public:
   Call(int fd, std::string peer, std::string call_id, const ShoreConfig& config, const std::atomic<bool>& stop)
@@ -34,9 +65,20 @@ class Call {
       finish_unidentified();
       return;
     }
-    if (serve_commands() && send_files() && fetch_files()) {
-      if (config_.resume_mission) link_.send_control(kCtrlR);
-      linger();
+    try {
+      // A glider makes one call at a time: a second one means the first is
+      // dead but not yet noticed. Only one of them works on the queue.
+      const CallClaim claim(record_.glider);
+      if (!claim.owned()) {
+        record_.notes.push_back("another call of this glider is in progress: queue and fetch left to it");
+        journal_.write('*', record_.notes.back());
+        linger();
+      } else if (serve_commands() && send_files() && fetch_files()) {
+        if (config_.resume_mission) link_.send_control(kCtrlR);
+        linger();
+      }
+    } catch (const std::exception& error) {
+      end(std::string("error: ") + error.what());
     }
     finish();
   }
@@ -144,11 +186,11 @@ class Call {
         end(event == ConsoleLink::Event::kClosed ? "hangup" : "no zr answer");
         return false;
       }
-      const ZmodemRun run =
-          run_zmodem_child({config_.sz_program, "-b", "-q", file.filename().string()}, file.parent_path(), link_.fd(),
-                           link_.take_pending(), config_.transfer_idle_timeout_s, capped(config_.transfer_timeout_s));
+      const ZmodemRun run = run_zmodem_child(
+          {config_.sz_program, "-b", "-q", file.filename().string()}, file.parent_path(), link_.fd(),
+          link_.take_pending(), config_.transfer_idle_timeout_s, capped(config_.transfer_timeout_s), stop_);
       journal_zmodem("send " + sent.name, run);
-      sent.delivered = run.exit_code == 0 && !run.carrier_lost && !run.timed_out;
+      sent.delivered = run.exit_code == 0 && !run.carrier_lost && !run.timed_out && !run.stopped;
       if (sent.delivered) {
         fs::rename(file, folders_.sent / (utc_stamp(now_unix()) + "_" + sent.name));
       } else {
@@ -156,8 +198,8 @@ class Call {
                                 "): kept in to-glider/ for the next call");
       }
       record_.files_sent.push_back(sent);
-      if (run.carrier_lost) {
-        end("carrier lost during transfer");
+      if (run.carrier_lost || run.stopped) {
+        end(run.stopped ? "shore stopped" : "carrier lost during transfer");
         return false;
       }
       if (!wait_prompt()) return false;
@@ -180,9 +222,11 @@ class Call {
       return false;
     }
     // -r: a file cut by a lost carrier last call resumes where it stopped.
+    // (rz refuses names with "..": "Security Violation"; --restricted would
+    // also refuse to append to the partial file, so it is not used.)
     const ZmodemRun run =
         run_zmodem_child({config_.rz_program, "-b", "-r", "-v"}, folders_.incoming, link_.fd(), link_.take_pending(),
-                         config_.transfer_idle_timeout_s, capped(config_.transfer_timeout_s));
+                         config_.transfer_idle_timeout_s, capped(config_.transfer_timeout_s), stop_);
     journal_zmodem("receive", run);
     for (const std::string& name : completed_receptions(run.diagnostics)) {
       try {
@@ -197,8 +241,8 @@ class Call {
     }
     record_.partial_files = partial_receptions(folders_);
     for (const std::string& name : record_.partial_files) journal_.write('*', "partial, kept for resume: " + name);
-    if (run.carrier_lost) {
-      end("carrier lost during transfer");
+    if (run.carrier_lost || run.stopped) {
+      end(run.stopped ? "shore stopped" : "carrier lost during transfer");
       return false;
     }
     if (run.exit_code != 0 || run.timed_out) {

@@ -52,7 +52,8 @@ bool read_some(int fd, std::string& into, std::uint64_t* count) {
 }  // namespace
 
 ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::filesystem::path& cwd, int socket_fd,
-                           const std::string& first_bytes, double idle_timeout_s, double total_timeout_s) {
+                           const std::string& first_bytes, double idle_timeout_s, double total_timeout_s,
+                           const std::atomic<bool>& stop) {
   int in_pipe[2], out_pipe[2], err_pipe[2];
   if (::pipe2(in_pipe, O_CLOEXEC) != 0 || ::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0) {
     throw std::runtime_error("zmodem: cannot create pipes");
@@ -87,6 +88,10 @@ ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::file
   auto last_traffic = start;
   bool child_done = false;
   while (!child_done) {
+    if (stop) {
+      run.stopped = true;
+      break;
+    }
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - last_traffic).count() > idle_timeout_s ||
         std::chrono::duration<double>(now - start).count() > total_timeout_s) {
@@ -128,7 +133,7 @@ ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::file
   close_fd(to_child);
   close_fd(from_child);
   int status = 0;
-  if (!child_done || run.carrier_lost || run.timed_out) ::kill(pid, SIGTERM);
+  if (!child_done || run.carrier_lost || run.timed_out || run.stopped) ::kill(pid, SIGTERM);
   for (int i = 0; i < 100 && ::waitpid(pid, &status, WNOHANG) == 0; ++i) ::usleep(20000);
   if (::waitpid(pid, &status, WNOHANG) == 0) {
     ::kill(pid, SIGKILL);

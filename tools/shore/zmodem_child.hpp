@@ -5,6 +5,7 @@
 // stdin/stdout, so it sees the end of the call (carrier lost) at once, bounds
 // the transfer in time and counts its bytes. rz runs in the glider's
 // .incoming/ folder; what it wrote is published only when complete.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -16,15 +17,17 @@ struct ZmodemRun {
   int exit_code = -1;         // the child's exit status (128 + signal when killed)
   bool carrier_lost = false;  // the glider hung up (socket closed) during the transfer
   bool timed_out = false;     // no byte either way for the idle limit, or the total limit passed
+  bool stopped = false;       // the shore is shutting down
   std::uint64_t bytes_from_glider = 0, bytes_to_glider = 0;
   std::string diagnostics;  // the child's stderr
 };
 
 // Runs `argv` (sz/rz and its options) in `cwd` with the call as its stdin and
 // stdout. `first_bytes` were already read from the socket (the start of the
-// glider's Zmodem stream) and are given to the child first.
+// glider's Zmodem stream) and are given to the child first. `stop` ends it early.
 ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::filesystem::path& cwd, int socket_fd,
-                           const std::string& first_bytes, double idle_timeout_s, double total_timeout_s);
+                           const std::string& first_bytes, double idle_timeout_s, double total_timeout_s,
+                           const std::atomic<bool>& stop);
 
 // The files rz received completely, from its -v diagnostics: every
 // "Receiving: NAME" followed by another one or by "Transfer complete".
