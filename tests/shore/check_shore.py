@@ -6,6 +6,7 @@ usage: check_shore.py GLIDER_SHORE SCENARIO WORKDIR
 Scenarios: call, carrier_drop, two_gliders, busy, garbage, unidentified, dialog.
 Skips (exit 77) when Debian's lrzsz (sz/rz) is not installed.
 """
+import atexit
 import glob
 import hashlib
 import json
@@ -39,6 +40,17 @@ def sha(path):
         return hashlib.sha256(f.read()).hexdigest()
 
 
+STARTED = []
+
+
+def kill_leftovers():
+    """A failed check must not leave a shore running after the test."""
+    for proc in STARTED:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+
+
 class Shore:
     """glider-shore serve on a free loopback port, stopped by SIGTERM."""
 
@@ -51,6 +63,7 @@ class Shore:
                                       "--fetch", "*.dbd *.cac", "--linger", "20", "--prompt-timeout", "10",
                                       "--transfer-idle-timeout", "5"] + list(extra),
                                      stderr=self.err)
+        STARTED.append(self.proc)
         for _ in range(100):
             if os.path.exists(self.port_file):
                 self.port = int(open(self.port_file).read())
@@ -309,10 +322,19 @@ def scenario_unidentified(exe, work):
     shore.stop()
     check(took < 10, "a glider that never says its name is dropped after the timeout (%.1f s)" % took)
     check([l.get("command") for l in said if "command" in l][:3] == ["whoru"] * 3, "the shore asked whoru 3 times")
-    check(sorted(os.listdir(root)) == ["unidentified"], "no glider folder was made: %s" % os.listdir(root))
+    check(sorted(f for f in os.listdir(root) if not f.endswith((".port", ".stderr"))) == ["unidentified"],
+          "no glider folder was made: %s" % os.listdir(root))
     journals = glob.glob(os.path.join(root, "unidentified", "*.journal"))
     lines = check_journal(journals[0])
     check(any("end: not identified within 2" in l for l in lines), "its journal is in unidentified/ with the reason")
+    # A glider that names itself in its dialog but hangs up before any prompt:
+    # its position still makes an event.
+    shore = Shore(exe, root)
+    run_glider(shore.port, "unit_700", card, work, "--hangup-after-dialog")
+    ev = wait_for_events(root, "unit_700", 1)[0]
+    shore.stop()
+    check(ev["end_reason"] == "hangup before identification" and ev["gps"]["lat_ddmm"] == 4319.4 and
+          ev["commands_sent"] == [], "a call cut before the prompt still gives an event with the fix")
 
 
 def scenario_dialog(exe, work):
@@ -340,6 +362,7 @@ def main():
         sys.exit(77)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
+    atexit.register(kill_leftovers)
     globals()["scenario_" + scenario](exe, work)
     print("PASS " + scenario)
 

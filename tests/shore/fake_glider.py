@@ -35,6 +35,7 @@ def main():
     ap.add_argument("--drop-after", type=int, default=-1, help="hang up after this many Zmodem bytes sent")
     ap.add_argument("--no-name", action="store_true")
     ap.add_argument("--garbage", action="store_true")
+    ap.add_argument("--hangup-after-dialog", action="store_true", help="print the dialog, no prompt, hang up")
     ap.add_argument("--idle-hangup", type=float, default=3.0, help="seconds without input before hanging up")
     ap.add_argument("--prompt", default="GliderDos N -1 >")
     args = ap.parse_args()
@@ -86,6 +87,9 @@ class Glider:
             self.say("\x00\xff\x1b[2J junk \x07\r\n")
             self.say("X" * 100000 + "\r\n")
         self.dialog()
+        if self.args.hangup_after_dialog:
+            self.sock.close()
+            return
         self.say(self.args.prompt)
         while True:
             command = self.read_command()

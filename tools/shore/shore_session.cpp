@@ -61,8 +61,13 @@ class Call {
 
   void run() {
     journal_.write('*', "call from " + record_.peer);
-    if (!identify()) {
+    const Identity identity = identify();
+    if (identity == Identity::kUnknown) {
       finish_unidentified();
+      return;
+    }
+    if (identity == Identity::kNamedOnly) {
+      finish();
       return;
     }
     try {
@@ -129,31 +134,39 @@ class Call {
     journal_.write('*', "end: " + reason);
   }
 
-  bool identify() {
+  enum class Identity { kReady, kNamedOnly, kUnknown };
+
+  // kReady: named and at the prompt. kNamedOnly: the dialog named the glider
+  // but the call ended or stalled before a prompt (its position is still
+  // worth an event). kUnknown: never named.
+  Identity identify() {
     const double deadline = now_unix() + config_.identify_timeout_s;
     int whoru_sent = 0;
     while (now_unix() < deadline) {
       const ConsoleLink::Event event = wait(deadline - now_unix(), false);
       if (event == ConsoleLink::Event::kClosed) {
         end(stop_ ? "shore stopped" : "hangup before identification");
-        return false;
+        return adopt_name() ? Identity::kNamedOnly : Identity::kUnknown;
       }
       if (event != ConsoleLink::Event::kPrompt) break;
       // The dialog printed on connect names the glider; whoru asks it again.
-      if (whoru_sent > 0 && !record_.report.vehicle_name.empty()) {
-        record_.glider = record_.report.vehicle_name;
-        folders_ = glider_folders(config_.root, record_.glider, true);
-        record_.journal = call_id_ + ".journal";
-        journal_.write('*', "identified: " + record_.glider);
-        journal_.open(folders_.logs / record_.journal);
-        return true;
-      }
+      if (whoru_sent > 0 && adopt_name()) return Identity::kReady;
       if (whoru_sent >= 3) continue;
       link_.send_line("whoru");
       ++whoru_sent;
     }
     end("not identified within " + std::to_string(config_.identify_timeout_s) + " s");
-    return false;
+    return adopt_name() ? Identity::kNamedOnly : Identity::kUnknown;
+  }
+
+  bool adopt_name() {
+    if (record_.report.vehicle_name.empty()) return false;
+    record_.glider = record_.report.vehicle_name;
+    folders_ = glider_folders(config_.root, record_.glider, true);
+    record_.journal = call_id_ + ".journal";
+    journal_.write('*', "identified: " + record_.glider);
+    journal_.open(folders_.logs / record_.journal);
+    return true;
   }
 
   bool serve_commands() {
