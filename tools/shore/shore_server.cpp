@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <csignal>
+
 #include <atomic>
 #include <utility>  // Boost 1.74's asio uses std::exchange without it
 
@@ -92,6 +94,9 @@ class Server {
 }  // namespace
 
 void serve_forever(const ShoreConfig& config, const std::string& port_file) {
+  // A Zmodem child that exits while the shore still writes to its stdin must
+  // give EPIPE, not kill the shore and every other call.
+  ::signal(SIGPIPE, SIG_IGN);
   std::filesystem::create_directories(config.root);
   boost::asio::io_context io;
   Server server(config, io);

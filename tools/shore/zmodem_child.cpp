@@ -66,6 +66,7 @@ ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::file
   if (pid < 0) throw std::runtime_error("zmodem: cannot start " + argv.front());
   if (pid == 0) {
     // Only async-signal-safe calls between fork and exec (the shore is multi-threaded).
+    ::signal(SIGPIPE, SIG_DFL);  // lrzsz as from a shell (the shore ignores SIGPIPE)
     ::dup2(in_pipe[0], 0);
     ::dup2(out_pipe[1], 1);
     ::dup2(err_pipe[1], 2);
