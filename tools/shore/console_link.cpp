@@ -26,8 +26,14 @@ Clock::time_point deadline_after(double seconds) {
   return Clock::now() + std::chrono::milliseconds(static_cast<long long>(seconds * 1000.0));
 }
 
-// A Zmodem hex header starts "**" ZDLE 'B' (ZDLE = Ctrl-X): sz's ZRQINIT, rz's ZRINIT.
-const std::string kZmodemStart = std::string("*\x18") + "B";
+// A Zmodem header starts ZPAD ZDLE (ZDLE = Ctrl-X) and 'B' (hex: how sz's
+// ZRQINIT and rz's ZRINIT are normally sent), 'A' or 'C' (binary, CRC-16/32).
+std::size_t zmodem_start(const std::string& text) {
+  for (std::size_t at = text.find("*\x18"); at != std::string::npos; at = text.find("*\x18", at + 1)) {
+    if (at + 2 < text.size() && (text[at + 2] == 'A' || text[at + 2] == 'B' || text[at + 2] == 'C')) return at;
+  }
+  return std::string::npos;
+}
 
 }  // namespace
 
@@ -38,6 +44,8 @@ ConsoleLink::ConsoleLink(int fd, SessionJournal& journal, std::size_t max_line)
 }
 
 ConsoleLink::~ConsoleLink() { ::close(fd_); }
+
+void ConsoleLink::put_back(const std::string& bytes) { pending_.insert(0, bytes); }
 
 std::string ConsoleLink::take_pending() {
   std::string out;
@@ -113,7 +121,7 @@ ConsoleLink::Event ConsoleLink::wait(double timeout_s, bool zmodem_ends_wait, co
     if (n < 0) continue;
     pending_.append(buffer, static_cast<std::size_t>(n));
     if (zmodem_ends_wait) {
-      const std::size_t start = pending_.find(kZmodemStart);
+      const std::size_t start = zmodem_start(pending_);
       if (start != std::string::npos) {
         // Text before the header is console output (the echo of the command).
         std::string zmodem = pending_.substr(start > 0 && pending_[start - 1] == '*' ? start - 1 : start);

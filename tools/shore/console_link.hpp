@@ -39,6 +39,9 @@ class ConsoleLink {
   [[nodiscard]] const std::string& last_prompt() const { return last_prompt_; }
   // Bytes read but not consumed as lines (the start of a Zmodem stream).
   std::string take_pending();
+  // Bytes read from the socket by someone else (a Zmodem child's pump) that
+  // belong to the console again.
+  void put_back(const std::string& bytes);
   [[nodiscard]] bool closed() const { return closed_; }
   [[nodiscard]] std::size_t lines_cut() const { return lines_cut_; }
 

@@ -21,6 +21,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kCtrlR = 0x12;  // resume the mission
+// Seconds without a prompt after a Zmodem transfer before an empty line asks for one.
+constexpr double kAfterTransferPokeS = 5.0;
 
 // The gliders with a call in progress in this shore.
 class CallClaim {
@@ -116,12 +118,15 @@ class Call {
   }
 
   // A prompt after a command; one empty line (the console answers it with a
-  // new prompt) if the first went by unseen, e.g. during a transfer's end.
-  bool wait_prompt() {
-    ConsoleLink::Event event = wait(config_.prompt_timeout_s / 2.0, false);
+  // new prompt) if the first went by unseen. After a transfer that is sooner:
+  // the prompt may have gone to the Zmodem child in its last moments.
+  bool wait_prompt(double poke_after_s = -1.0) {
+    const double first =
+        poke_after_s > 0.0 ? std::min(poke_after_s, config_.prompt_timeout_s / 2.0) : config_.prompt_timeout_s / 2.0;
+    ConsoleLink::Event event = wait(first, false);
     if (event == ConsoleLink::Event::kTimeout) {
       link_.send_line("");
-      event = wait(config_.prompt_timeout_s / 2.0, false);
+      event = wait(config_.prompt_timeout_s - first, false);
     }
     if (event == ConsoleLink::Event::kPrompt) return true;
     end(event == ConsoleLink::Event::kClosed ? (stop_ ? "shore stopped" : "hangup")
@@ -203,6 +208,7 @@ class Call {
           {config_.sz_program, "-b", "-q", file.filename().string()}, file.parent_path(), link_.fd(),
           link_.take_pending(), config_.transfer_idle_timeout_s, capped(config_.transfer_timeout_s), stop_);
       journal_zmodem("send " + sent.name, run);
+      link_.put_back(run.leftover);
       sent.delivered = run.exit_code == 0 && !run.carrier_lost && !run.timed_out && !run.stopped;
       if (sent.delivered) {
         fs::rename(file, folders_.sent / (utc_stamp(now_unix()) + "_" + sent.name));
@@ -215,7 +221,7 @@ class Call {
         end(run.stopped ? "shore stopped" : "carrier lost during transfer");
         return false;
       }
-      if (!wait_prompt()) return false;
+      if (!wait_prompt(kAfterTransferPokeS)) return false;
     }
     return true;
   }
@@ -241,6 +247,7 @@ class Call {
         run_zmodem_child({config_.rz_program, "-b", "-r", "-v"}, folders_.incoming, link_.fd(), link_.take_pending(),
                          config_.transfer_idle_timeout_s, capped(config_.transfer_timeout_s), stop_);
     journal_zmodem("receive", run);
+    link_.put_back(run.leftover);
     for (const std::string& name : completed_receptions(run.diagnostics)) {
       try {
         const ReceivedFile file = publish_received(folders_, name, config_.cache_dirs);
@@ -262,7 +269,7 @@ class Call {
       record_.notes.push_back("rz ended with exit " + std::to_string(run.exit_code) +
                               (run.timed_out ? " (transfer time limit)" : ""));
     }
-    return wait_prompt();
+    return wait_prompt(kAfterTransferPokeS);
   }
 
   void journal_zmodem(const std::string& what, const ZmodemRun& run) {

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <stdexcept>
@@ -49,6 +50,45 @@ bool read_some(int fd, std::string& into, std::uint64_t* count) {
   return n < 0 && (errno == EAGAIN || errno == EINTR);
 }
 
+// Splits what the glider sends into the Zmodem session and the console text
+// that follows it. After the glider's ZFIN hex header ("**" ZDLE "B08") the
+// child needs only the rest of that header and the "OO" that ends a session;
+// the first other byte (the glider's prompt, typically) and all after it are
+// console text again, held for the shore instead of being fed to an exiting
+// child.
+class SessionEndWatch {
+ public:
+  // Appends `bytes` to `to_child` or, once the session is over, to `held`.
+  void route(const std::string& bytes, std::string& to_child, std::string& held) {
+    for (const char c : bytes) {
+      if (holding_) {
+        held += c;
+        continue;
+      }
+      if (fin_seen_ && !part_of_session_end(c)) {
+        holding_ = true;
+        held += c;
+        continue;
+      }
+      to_child += c;
+      window_ += c;
+      if (window_.size() > kFinHeader.size()) window_.erase(0, 1);
+      if (window_ == kFinHeader) fin_seen_ = true;
+    }
+  }
+
+ private:
+  static bool part_of_session_end(char c) {
+    const auto b = static_cast<unsigned char>(c);
+    return std::isxdigit(b) || c == '\r' || c == '\n' || b == 0x8a || b == 0x11 || c == 'O' || c == '*' || b == 0x18 ||
+           c == 'B';
+  }
+  inline static const std::string kFinHeader = std::string("**\x18") + "B08";
+  std::string window_;
+  bool fin_seen_ = false;
+  bool holding_ = false;
+};
+
 }  // namespace
 
 ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::filesystem::path& cwd, int socket_fd,
@@ -83,7 +123,9 @@ ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::file
   set_nonblocking(child_err);
 
   ZmodemRun run;
-  std::string for_child = first_bytes, for_glider;
+  std::string for_child, for_glider;
+  SessionEndWatch end_watch;
+  end_watch.route(first_bytes, for_child, run.leftover);
   run.bytes_from_glider = first_bytes.size();
   const auto start = Clock::now();
   auto last_traffic = start;
@@ -106,9 +148,10 @@ ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::file
     if (!for_glider.empty() && !run.carrier_lost) fds[0].events |= POLLOUT;
     if (::poll(fds, 4, 200) < 0 && errno != EINTR) break;
     if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) {
-      const std::size_t before = for_child.size();
-      if (!read_some(socket_fd, for_child, &run.bytes_from_glider)) run.carrier_lost = true;
-      if (for_child.size() != before) last_traffic = Clock::now();
+      std::string bytes;
+      if (!read_some(socket_fd, bytes, &run.bytes_from_glider)) run.carrier_lost = true;
+      if (!bytes.empty()) last_traffic = Clock::now();
+      end_watch.route(bytes, for_child, run.leftover);
     }
     if (run.carrier_lost) break;
     if (fds[2].revents & (POLLIN | POLLHUP)) {
@@ -131,14 +174,24 @@ ZmodemRun run_zmodem_child(const std::vector<std::string>& argv, const std::file
     run.bytes_to_glider += before - for_glider.size();
     if (!for_glider.empty()) ::usleep(20000);
   }
-  close_fd(to_child);
-  close_fd(from_child);
+  // What the child never took is the glider's console again (e.g. its prompt).
+  if (child_done) run.leftover.insert(0, for_child);
   int status = 0;
-  if (!child_done || run.carrier_lost || run.timed_out || run.stopped) ::kill(pid, SIGTERM);
-  for (int i = 0; i < 100 && ::waitpid(pid, &status, WNOHANG) == 0; ++i) ::usleep(20000);
-  if (::waitpid(pid, &status, WNOHANG) == 0) {
+  if (!child_done || run.carrier_lost || run.timed_out || run.stopped) {
+    // SIGKILL before its pipes close: rz given EOF or SIGTERM deletes the
+    // file it was receiving, and that partial file is what the next call
+    // resumes (rz -r).
     ::kill(pid, SIGKILL);
     ::waitpid(pid, &status, 0);
+  }
+  close_fd(to_child);
+  close_fd(from_child);
+  if (child_done && !run.carrier_lost && !run.timed_out && !run.stopped) {
+    for (int i = 0; i < 100 && ::waitpid(pid, &status, WNOHANG) == 0; ++i) ::usleep(20000);
+    if (::waitpid(pid, nullptr, WNOHANG) == 0) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+    }
   }
   for (int i = 0; i < 1000 && child_err >= 0 && read_some(child_err, run.diagnostics, nullptr); ++i) {
   }

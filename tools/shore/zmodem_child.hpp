@@ -20,6 +20,7 @@ struct ZmodemRun {
   bool stopped = false;       // the shore is shutting down
   std::uint64_t bytes_from_glider = 0, bytes_to_glider = 0;
   std::string diagnostics;  // the child's stderr
+  std::string leftover;     // read from the glider after the child had finished (console text again)
 };
 
 // Runs `argv` (sz/rz and its options) in `cwd` with the call as its stdin and
