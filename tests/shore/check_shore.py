@@ -353,6 +353,10 @@ def scenario_dialog(exe, work):
     check(bad.returncode == 1 and b"glider name" in bad.stderr, "queue refuses a glider name that is not a plain name")
     usage = subprocess.run([exe, "--root", os.path.join(work, "r"), "queue", "unit_1"], capture_output=True)
     check(usage.returncode == 2, "queue with nothing to queue is a usage error")
+    listen = subprocess.run([exe, "--root", os.path.join(work, "r"), "serve", "--listen", "999.1.1.1"],
+                            capture_output=True, timeout=10)
+    check(listen.returncode == 1 and b"--listen 999.1.1.1: not an IPv4 or IPv6 address" in listen.stderr,
+          "serve refuses a bad --listen address, naming it")
 
 
 def main():

@@ -13,6 +13,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "glider_folders.hpp"
@@ -23,12 +24,18 @@ namespace {
 
 using boost::asio::ip::tcp;
 
+boost::asio::ip::address listen_address(const ShoreConfig& config) {
+  boost::system::error_code error;
+  const boost::asio::ip::address address = boost::asio::ip::make_address(config.listen_address, error);
+  if (error) throw std::runtime_error("--listen " + config.listen_address + ": not an IPv4 or IPv6 address");
+  return address;
+}
+
 class Server {
  public:
   Server(const ShoreConfig& config, boost::asio::io_context& io)
       : config_(config),
-        acceptor_(io, tcp::endpoint(boost::asio::ip::make_address(config.listen_address),
-                                    static_cast<unsigned short>(config.port))) {}
+        acceptor_(io, tcp::endpoint(listen_address(config), static_cast<unsigned short>(config.port))) {}
 
   unsigned short port() const { return acceptor_.local_endpoint().port(); }
 
