@@ -326,7 +326,7 @@ def scenario_unidentified(exe, work):
           "no glider folder was made: %s" % os.listdir(root))
     journals = glob.glob(os.path.join(root, "unidentified", "*.journal"))
     lines = check_journal(journals[0])
-    check(any("end: not identified within 2" in l for l in lines), "its journal is in unidentified/ with the reason")
+    check(any("end: not identified within 2 s" in l for l in lines), "its journal is in unidentified/ with the reason")
     # A glider that names itself in its dialog but hangs up before any prompt:
     # its position still makes an event.
     shore = Shore(exe, root)

@@ -25,6 +25,12 @@ constexpr char kCtrlR = 0x12;  // resume the mission
 constexpr double kAfterTransferPokeS = 5.0;
 
 // The gliders with a call in progress in this shore.
+std::string seconds_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g s", seconds);
+  return text;
+}
+
 class CallClaim {
  public:
   explicit CallClaim(std::string glider) : glider_(std::move(glider)) {
@@ -130,7 +136,7 @@ class Call {
     }
     if (event == ConsoleLink::Event::kPrompt) return true;
     end(event == ConsoleLink::Event::kClosed ? (stop_ ? "shore stopped" : "hangup")
-                                             : "no prompt within " + std::to_string(config_.prompt_timeout_s) + " s");
+                                             : "no prompt within " + seconds_text(config_.prompt_timeout_s));
     return false;
   }
 
@@ -160,7 +166,7 @@ class Call {
       link_.send_line("whoru");
       ++whoru_sent;
     }
-    end("not identified within " + std::to_string(config_.identify_timeout_s) + " s");
+    end("not identified within " + seconds_text(config_.identify_timeout_s));
     return adopt_name() ? Identity::kNamedOnly : Identity::kUnknown;
   }
 
