@@ -266,8 +266,9 @@ def scenario_busy(exe, work):
     root = os.path.join(work, "root")
     card = make_card(work, "unit_600", [])
     shore = Shore(exe, root, "--max-calls", "2")
+    # Both calls stay open (idle hang-up after 8 s and 6 s) while the third comes.
     first = subprocess.Popen(FAKE + ["--port", str(shore.port), "--name", "unit_600", "--files", card,
-                                     "--idle-hangup", "4"])
+                                     "--idle-hangup", "8"])
     wait_for_file = os.path.join(root, "unit_600", "logs")
     for _ in range(100):
         if os.path.isdir(wait_for_file) and os.listdir(wait_for_file):
@@ -277,7 +278,7 @@ def scenario_busy(exe, work):
     # call not yet noticed): the second call is served but leaves the queue alone.
     subprocess.check_call([exe, "--root", root, "queue", "unit_600", "--command", "put u_y 1"])
     second = subprocess.Popen(FAKE + ["--port", str(shore.port), "--name", "unit_600", "--files", card,
-                                      "--idle-hangup", "1", "--record", os.path.join(work, "second.jsonl")])
+                                      "--idle-hangup", "6", "--record", os.path.join(work, "second.jsonl")])
     time.sleep(0.5)
     # A third call is over --max-calls: closed at once, no folder, no event.
     start = time.time()

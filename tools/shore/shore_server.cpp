@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "shore_server.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "glider_folders.hpp"
@@ -38,6 +40,8 @@ class Server {
         acceptor_(io, tcp::endpoint(listen_address(config), static_cast<unsigned short>(config.port))) {}
 
   unsigned short port() const { return acceptor_.local_endpoint().port(); }
+  // Nor may a child keep the listening port.
+  void close_on_exec() { ::fcntl(acceptor_.native_handle(), F_SETFD, FD_CLOEXEC); }
 
   void accept() {
     acceptor_.async_accept([this](const boost::system::error_code& error, tcp::socket socket) {
@@ -78,16 +82,33 @@ class Server {
     }
     // The call owns a plain descriptor: its reads, writes and the lrzsz
     // children's pipes all go through poll(2) with deadlines.
-    const int fd = ::dup(socket.native_handle());
+    // Close-on-exec: an lrzsz child of another call must not hold this
+    // connection open after this call has ended it.
+    const int fd = ::fcntl(socket.native_handle(), F_DUPFD_CLOEXEC, 0);
     socket.close(error);
+    if (fd < 0) {
+      std::fprintf(stderr, "glider-shore: call from %s dropped: no file descriptor left\n", peer.c_str());
+      call_ended();
+      return;
+    }
     std::fprintf(stderr, "glider-shore: call from %s\n", peer.c_str());
-    std::thread([this, fd, peer] {
-      serve_call(fd, peer, config_, stop_);
-      std::fprintf(stderr, "glider-shore: call from %s ended\n", peer.c_str());
-      std::lock_guard<std::mutex> lock(mutex_);
-      --active_;
-      calls_done_.notify_all();
-    }).detach();
+    try {
+      std::thread([this, fd, peer] {
+        serve_call(fd, peer, config_, stop_);
+        std::fprintf(stderr, "glider-shore: call from %s ended\n", peer.c_str());
+        call_ended();
+      }).detach();
+    } catch (const std::system_error& failure) {
+      std::fprintf(stderr, "glider-shore: call from %s dropped: %s\n", peer.c_str(), failure.what());
+      ::close(fd);
+      call_ended();
+    }
+  }
+
+  void call_ended() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    --active_;
+    calls_done_.notify_all();
   }
 
   const ShoreConfig& config_;
@@ -107,6 +128,7 @@ void serve_forever(const ShoreConfig& config, const std::string& port_file) {
   std::filesystem::create_directories(config.root);
   boost::asio::io_context io;
   Server server(config, io);
+  server.close_on_exec();
   boost::asio::signal_set signals(io, SIGINT, SIGTERM);
   signals.async_wait([&](const boost::system::error_code&, int) { server.stop(); });
   server.accept();
