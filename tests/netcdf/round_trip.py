@@ -5,7 +5,7 @@ the CSV conversion's (glider-convert, same inputs), read back with the NetCDF
 library's ncdump at full precision (-p 9,17):
   - double variables (TIME, DEPTH, LATITUDE_GPS/LONGITUDE_GPS): to the CSV's own
     print precision (time %.5f: 5e-6 s plus one double ulp at 1.5e9 s, 2.4e-7 s; 4-byte sensors %.7g: 5e-7 relative;
-    NMEA -> decimal degrees of the 8-byte GPS values: 1e-9 deg);
+    NMEA -> decimal degrees of the 8-byte GPS values, the log's repeats of the last fix dropped: 1e-9 deg);
   - float variables (TEMP, PRES, CNDC, PITCH): float32 of the unit-converted value,
     i.e. within 2 float32 epsilons (2.4e-7) plus the CSV's 7-digit print (5e-7), relative;
   - fill exactly where the CSV field is empty."""
@@ -51,11 +51,25 @@ for name in names:
     values[name] = [math.nan if v.strip() == "_" else float(v) for v in text.split(",")]
 
 deg = 180.0 / math.pi
+
+
+def new_fixes(lat, lon):
+    """The log repeats the last fix ("same value" records): only a new position is a fix."""
+    out_lat, out_lon, last = [], [], None
+    for a, b in zip(lat, lon):
+        fix = None if math.isnan(a) or math.isnan(b) else (a, b)
+        out_lat.append(a if fix is not None and fix != last else math.nan)
+        out_lon.append(b if fix is not None and fix != last else math.nan)
+        last = fix if fix is not None else last
+    return out_lat, out_lon
+
+
+gps_lat, gps_lon = new_fixes([nmea(x) for x in column("m_gps_lat")], [nmea(x) for x in column("m_gps_lon")])
 expected = {
     "TIME": (column("m_present_time"), 5e-6 + 2.4e-7, 0.0),
     "DEPTH": (column("m_depth"), 0.0, 5e-7),
-    "LATITUDE_GPS": ([nmea(x) for x in column("m_gps_lat")], 1e-9, 0.0),
-    "LONGITUDE_GPS": ([nmea(x) for x in column("m_gps_lon")], 1e-9, 0.0),
+    "LATITUDE_GPS": (gps_lat, 1e-9, 0.0),
+    "LONGITUDE_GPS": (gps_lon, 1e-9, 0.0),
     "TEMP": (column("sci_water_temp"), 0.0, 7.4e-7),
     "PRES": ([x * 10 for x in column("sci_water_pressure")], 0.0, 7.4e-7),
     "CNDC": ([x * 10 for x in column("sci_water_cond")], 0.0, 7.4e-7),

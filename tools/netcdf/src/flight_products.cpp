@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/netcdf/flight_products.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
 constexpr double kEarthRadiusM = 6371000.0;
+constexpr double kMinDiveDepthM = 3.0;  // as ProfileOptions::min_depth_change_m
+constexpr double kSurfaceDepthM = 1.0;  // as flightlog::PhaseOptions::surface_depth_m
 
 bool gliding(flightlog::Phase p) { return p == flightlog::Phase::kDive || p == flightlog::Phase::kClimb; }
 
@@ -52,14 +55,22 @@ void steady_glides(const Trajectory& t, const model::VehicleParams& v, FlightPro
 void depth_averaged_currents(const Trajectory& t, FlightProducts& out) {
   std::vector<std::size_t> fixes;
   for (std::size_t i = 0; i < t.size(); ++i) {
-    if (std::isfinite(t.gps_latitude[i]) && std::isfinite(t.gps_longitude[i])) fixes.push_back(i);
+    // Only fixes at the surface: the receiver goes on reporting positions for
+    // the first metres of a dive (comet-2019 logs new ones at 3.7 m).
+    const bool surface = !(t.depth_m[i] > kSurfaceDepthM);
+    if (surface && std::isfinite(t.gps_latitude[i]) && std::isfinite(t.gps_longitude[i])) fixes.push_back(i);
   }
   const std::vector<double> heading = forward_fill(t.time_s, t.heading_deg, 60.0);
   for (std::size_t f = 0; f + 1 < fixes.size(); ++f) {
     const std::size_t a = fixes[f], b = fixes[f + 1];
-    bool dived = false;
-    for (std::size_t i = a; i <= b && !dived; ++i) dived = t.profile[i] > 0;
-    if (!dived) continue;
+    // A dive between the two fixes: deeper than a profile's depth change (two
+    // fixes seconds apart at the surface, with a climb's last samples between
+    // them, are not a dive).
+    double deepest = 0.0;
+    for (std::size_t i = a; i <= b; ++i) {
+      if (std::isfinite(t.depth_m[i])) deepest = std::max(deepest, t.depth_m[i]);
+    }
+    if (deepest < kMinDiveDepthM) continue;
     double east = 0.0, north = 0.0, through_water = 0.0, unflown_s = 0.0, flown_s = 0.0;
     for (std::size_t i = a; i < b; ++i) {
       const double dt = t.time_s[i + 1] - t.time_s[i];

@@ -181,7 +181,8 @@ class Og1Writer {
     f_.put_att(v, "ancillary_variables", "TIME_GPS_QC");
     qc("TIME_GPS", time);
     position("LATITUDE_GPS", t_.gps_latitude, "latitude of each GPS location",
-             "m_gps_lat (NMEA ddmm.mmmm) in decimal degrees; 69696969 (no fix) is the fill");
+             "m_gps_lat (NMEA ddmm.mmmm) in decimal degrees where a new fix was logged; 69696969 (no fix) and the "
+             "log's repeats of the last fix are the fill");
     position("LONGITUDE_GPS", t_.gps_longitude, "longitude of each GPS location",
              "m_gps_lon (NMEA dddmm.mmmm) in decimal degrees");
   }

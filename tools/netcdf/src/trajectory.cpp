@@ -166,6 +166,19 @@ Trajectory make_trajectory(const flightlog::FlightLog& log, const ProfileOptions
   t.dr_longitude = decimal_degrees(log, "m_lon");
   t.gps_latitude = decimal_degrees(log, "m_gps_lat");
   t.gps_longitude = decimal_degrees(log, "m_gps_lon");
+  // The log repeats the last fix in the cycles after it ("same value"
+  // records), also while the glider already dives: only a new position is a fix.
+  double last_lat = kNaN, last_lon = kNaN;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(t.gps_latitude[i]) || !std::isfinite(t.gps_longitude[i])) {
+      t.gps_latitude[i] = t.gps_longitude[i] = kNaN;
+      continue;
+    }
+    const bool repeat = t.gps_latitude[i] == last_lat && t.gps_longitude[i] == last_lon;
+    last_lat = t.gps_latitude[i];
+    last_lon = t.gps_longitude[i];
+    if (repeat) t.gps_latitude[i] = t.gps_longitude[i] = kNaN;
+  }
   // Every sample's position: the glider's own dead reckoning (which restarts
   // from each GPS fix), linearly in time between its logged values.
   const double unbounded = INFINITY;

@@ -21,7 +21,7 @@ struct Trajectory {
   std::vector<double> salinity;                     // PSS-78 from the CTD (model/seawater.hpp)
   std::vector<double> density_kg_m3;                // TEOS-10 in-situ density from the CTD
   std::vector<double> dr_latitude, dr_longitude;    // m_lat/m_lon (the glider's dead reckoning), decimal degrees
-  std::vector<double> gps_latitude, gps_longitude;  // m_gps_lat/m_gps_lon fixes, decimal degrees
+  std::vector<double> gps_latitude, gps_longitude;  // m_gps_lat/m_gps_lon new fixes (repeats dropped), degrees
   std::vector<double> latitude, longitude;          // every sample: dead reckoning interpolated in time (see .cpp)
   std::vector<double> heading_deg, pitch_deg, roll_deg;
   std::vector<double> pitch_rad, ballast_cc;  // flight-model inputs (forward filled, see .cpp)
