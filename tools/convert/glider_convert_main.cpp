@@ -66,7 +66,11 @@ int main(int argc, char** argv) {
     if (!quiet) {
       for (const auto& warning : deployment.warnings) std::fprintf(stderr, "warning: %s\n", warning.text().c_str());
     }
+#ifdef GLIDER_CONVERT_NETCDF
     if (netcdf.format != "csv") return glider::convert::write_netcdf(deployment, netcdf, out_path);
+#else
+    if (netcdf.format != "csv") throw std::runtime_error("this build has no NetCDF library: --format csv only");
+#endif
     std::ofstream out(out_path, std::ios::binary);
     if (!out) throw std::runtime_error(out_path + ": cannot write");
     glider::slocum::write_csv(deployment, out);

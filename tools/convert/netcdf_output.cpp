@@ -13,18 +13,6 @@
 
 namespace glider::convert {
 
-std::vector<std::string> netcdf_columns() {
-  return {"m_depth", "sci_water_pressure", "sci_water_temp", "sci_water_cond", "m_lat",
-          "m_lon",   "m_gps_lat",          "m_gps_lon",      "m_heading",      "m_pitch",
-          "m_roll",  "m_ballast_pumped",   "m_de_oil_vol",   "m_depth_state",  "m_depth_rate"};
-}
-
-std::string command_line(int argc, char** argv) {
-  std::string text = "glider-convert";
-  for (int i = 1; i < argc; ++i) text += std::string(" ") + argv[i];
-  return text;
-}
-
 namespace {
 // date_created: now, or SOURCE_DATE_EPOCH (reproducible output, as the tests' golden header needs).
 double creation_time() {
