@@ -246,6 +246,10 @@ class Og1Writer {
           "platform_orientation", "degrees", "m_heading (rad) in degrees", false);
     param("PITCH", t_.pitch_deg, "Orientation (pitch) of measurement platform by inclinometer", "platform_pitch",
           "degrees", "m_pitch (rad) in degrees, + nose up", false);
+    param("PUMPED_VOLUME", t_.pumped_cc, "volume pumped out by the buoyancy engine", "", "cm3",
+          "m_ballast_pumped (else m_de_oil_vol) as logged, + = water out = lighter: the flight model's input, "
+          "read back by this project's tools (docs/netcdf.md)",
+          false);
     param("ROLL", t_.roll_deg, "Orientation (roll angle) of measurement platform by inclinometer", "platform_roll",
           "degrees", "m_roll (rad) in degrees, + starboard wing down", false);
   }

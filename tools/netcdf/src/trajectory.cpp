@@ -193,6 +193,7 @@ Trajectory make_trajectory(const flightlog::FlightLog& log, const ProfileOptions
   const char* ballast = log.has("m_ballast_pumped") ? "m_ballast_pumped" : "m_de_oil_vol";
   t.ballast_cc =
       log.has(ballast) ? forward_fill(t.time_s, log.column(ballast), fill_age_s) : std::vector<double>(t.size(), kNaN);
+  t.pumped_cc = column_or_nan(log, ballast);
 
   flightlog::PhaseOptions phase_options;
   const double dt = median_interval(t.time_s);

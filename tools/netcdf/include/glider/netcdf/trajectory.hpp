@@ -24,6 +24,7 @@ struct Trajectory {
   std::vector<double> gps_latitude, gps_longitude;  // m_gps_lat/m_gps_lon new fixes (repeats dropped), degrees
   std::vector<double> latitude, longitude;          // every sample: dead reckoning interpolated in time (see .cpp)
   std::vector<double> heading_deg, pitch_deg, roll_deg;
+  std::vector<double> pumped_cc;              // m_ballast_pumped (else m_de_oil_vol) as logged
   std::vector<double> pitch_rad, ballast_cc;  // flight-model inputs (forward filled, see .cpp)
   std::vector<flightlog::Phase> phase;
   std::vector<std::int32_t> profile;  // 1, 2, ... within a dive or climb; 0 outside any
