@@ -106,11 +106,13 @@ FlightResult fly_once(const FlightRequest& request, double reference_temperature
   out.autopilot_delay_s = effect_or(e, "autopilot_delay", 0.0);
   out.flown_deadband_rad = effect_or(e, "autopilot_deadband", 0.0);
 
-  // A pilot ballasts the glider for the water it will fly in: the column's
-  // density half-way down is the vehicle's trim density (within +-0.3 kg/m^3).
+  // A pilot ballasts the glider for the water it will fly in: the density
+  // half-way between the surface's and the dive depth's is the vehicle's
+  // trim density (within +-0.3 kg/m^3), so the pump can dive and climb through it.
   Water water = dr.water;
-  water.density_offset_kg_m3 =
-      v.trim_density_kg_m3 - water.density_kg_m3(0.5 * dr.dive_to_m, 0.0) + dr.trim_error_kg_m3;
+  water.density_offset_kg_m3 = v.trim_density_kg_m3 -
+                               0.5 * (water.density_kg_m3(0.0, 0.0) + water.density_kg_m3(dr.dive_to_m, 0.0)) +
+                               dr.trim_error_kg_m3;
   if (e.contains("vertical_water_velocity")) {
     water.hidden_w_m_s = e.at("vertical_water_velocity");
     water.hidden_w_from_m = dr.layer_from * dr.dive_to_m;

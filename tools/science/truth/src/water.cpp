@@ -61,12 +61,14 @@ void Water::current_m_s(double z, double& east, double& north) const {
 
 Water draw_water(std::mt19937_64& rng, double dive_to_m) {
   Water w;
-  w.surface_temperature_c = uniform(rng, 14.0, 22.0);
+  // At most ~2.5 kg/m^3 from top to bottom: a +-230 cc pump trimmed for
+  // the middle still has ~140 g each way (a stronger one is another mission).
+  w.surface_temperature_c = uniform(rng, 12.0, 20.0);
   w.deep_temperature_c = uniform(rng, 6.0, 10.0);
   w.thermocline_m = uniform(rng, 0.25, 0.6) * dive_to_m;
   w.thermocline_thickness_m = uniform(rng, 5.0, 15.0);
-  w.surface_salinity = uniform(rng, 34.5, 35.0);
-  w.deep_salinity = uniform(rng, 35.0, 35.4);
+  w.surface_salinity = uniform(rng, 34.8, 35.0);
+  w.deep_salinity = uniform(rng, 35.0, 35.2);
   w.bottom_m = dive_to_m * uniform(rng, 1.2, 2.0);
   w.wave_w_m_s = uniform(rng, 0.002, 0.006);
   w.wave_period_s = uniform(rng, 900.0, 3600.0);
