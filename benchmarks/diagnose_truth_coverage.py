@@ -169,18 +169,23 @@ def score(r):
     return per, spurious, ambiguous
 
 
+def plane_of(effect):
+    return 'heading' if effect in HEADING else 'vertical'
+
+
 def pct(a, b):
     return '-' if b == 0 else '%d/%d (%.0f %%)' % (a, b, 100.0 * a / b)
 
 
 def table(results, cases):
-    lines = ['| case | draws | named | within 15 % | 95 % coverage | spurious (draws) | ambiguous | no finding |',
-             '|---|---|---|---|---|---|---|---|']
+    lines = ['| case | draws | named | within 15 % | 95 % coverage | spurious (draws) | spurious vertical | '
+             'spurious heading | ambiguous | no finding |',
+             '|---|---|---|---|---|---|---|---|---|---|']
     per_effect = {}
     for case in cases:
         rs = [r for r in results if r['case'] == case]
         ok = [r for r in rs if r['ok']]
-        named = within = covered = valued = spur = amb = clean = slots = 0
+        named = within = covered = valued = spur = spur_v = spur_h = amb = clean = slots = 0
         for r in ok:
             per, spurious, ambiguous = score(r)
             for effect, (n, w, c, _) in per.items():
@@ -198,13 +203,16 @@ def table(results, cases):
                     e[3] += 1
                     e[4] += c
             spur += bool(spurious)
+            spur_v += any(plane_of(e) == 'vertical' for e in spurious)
+            spur_h += any(plane_of(e) == 'heading' for e in spurious)
             amb += ambiguous
             clean += not [f for f in r['findings'] if f[0] not in INPUTS]
         failed = len(rs) - len(ok)
-        lines.append('| %s | %d%s | %s | %s | %s | %s | %s | %s |' % (
+        lines.append('| %s | %d%s | %s | %s | %s | %s | %s | %s | %s | %s |' % (
             case, len(rs), ' (%d failed)' % failed if failed else '', pct(named, slots) if case != 'none' else '-',
             pct(within, slots) if case != 'none' else '-', pct(covered, valued) if case != 'none' else '-',
-            pct(spur, len(ok)), pct(amb, len(ok)), pct(clean, len(ok)) if case == 'none' else '-'))
+            pct(spur, len(ok)), pct(spur_v, len(ok)), pct(spur_h, len(ok)), pct(amb, len(ok)),
+            pct(clean, len(ok)) if case == 'none' else '-'))
     lines += ['', '| effect (singles and pairs) | hidden | named | within 15 % | 95 % coverage |', '|---|---|---|---|---|']
     for effect in VERTICAL + HEADING:
         if effect in per_effect:
@@ -229,7 +237,14 @@ def main():
     p.add_argument('--keep', action='store_true', help='keep the logs and truths')
     p.add_argument('--timeout', type=int, default=600, help='seconds per program run')
     p.add_argument('--details', help='JSON file: every draw with its truth and findings')
+    p.add_argument('--from-details', help='tabulate a run saved with --details again (nothing is flown)')
     args = p.parse_args()
+    if args.from_details:
+        with open(args.from_details) as f:
+            results = json.load(f)
+        cases = list(dict.fromkeys(r['case'] for r in results))
+        print(table(results, cases))
+        return 0
     args.truth = args.truth or os.path.join(args.build, 'tools', 'science', 'truth', 'glider-truth')
     args.diagnose = args.diagnose or os.path.join(args.build, 'tools', 'diagnose', 'glider-diagnose')
     for program in (args.truth, args.diagnose):

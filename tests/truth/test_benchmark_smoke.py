@@ -27,7 +27,7 @@ if len(rows) != 2:
 for case, draws, failed, rest in rows:
     if draws != '1' or failed:
         failures.append('%s: %s draws%s' % (case, draws, failed))
-    if len(rest.split('|')) != 6:
+    if len(rest.split('|')) != 8:
         failures.append('%s: %d cells after the draws' % (case, len(rest.split('|'))))
 if not re.search(r'^\| drag_change \| 1 \| (0|1)/1 \(\d+ %\) \| (0|1)/1', out, re.M):
     failures.append('drag_change row: named/within cells malformed')
