@@ -55,7 +55,9 @@ Draws draw(const FlightRequest& r, const Vehicle& v) {
   u.yaw_second_pole_s = uniform(rng, 0.2, 1.0);
   u.fin_roll_per_rad = uniform(rng, 0.0, 0.2);
   u.roll_time_constant_s = uniform(rng, 2.0, 5.0);
-  d.water = draw_water(rng, 0.0);  // placeholder order; redrawn below with the depth
+  // This first water is discarded; the draw stays so that the seeds of the runs in
+  // docs/science.md replay the same flights.
+  d.water = draw_water(rng, 0.0);
   d.water = draw_water(rng, d.dive_to_m);
   d.layer_from = uniform(rng, 0.15, 0.5);
   d.layer_to = d.layer_from + uniform(rng, 0.3, 0.5);

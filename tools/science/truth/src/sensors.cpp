@@ -30,11 +30,11 @@ double quantize(double x, double step) { return step > 0.0 ? step * std::round(x
 // variance; AR(1) with phi 0.2 per row gives -0.43 (53 %), phi 0.6 -0.38.
 // Depth: phi 0.2 per 4.4 s row (correlation 4.4 / ln 5 = 2.7 s), sigma
 // 0.07 m. Roll: phi ~0.5 per row (6 s), sigma 0.005 rad. Heading and
-// pitch: their lag-1 (-0.31, +0.1) is above what any AR(1) gives through
-// the filter (>= -0.49 ... -0.36 falls to -0.36 at most): part of it is
-// slow real motion; the sensor keeps the white part (sigma 0.01 rad, a
-// correlation of 1 s), the heading's slow part is the dynamics' yaw
-// disturbance (flight.cpp), the pitch's is the controllers' own motion.
+// pitch: their lag-1 (-0.31, +0.1) is above anything AR(1) noise gives
+// through the filter (-0.49 for white, never above -0.36): it is slow real
+// motion, not sensor noise. The sensor keeps a white part (sigma 0.01 rad,
+// 1 s); the heading's slow part is the dynamics' yaw disturbance
+// (flight.cpp), the pitch's the controllers' own motion.
 SensorNoise SensorNoise::slocum() {
   constexpr double kDeg = 0.017453292519943295;
   return SensorNoise{Ar1(0.07, 2.7), Ar1(0.01, 1.0), Ar1(0.005, 6.0), Ar1(0.01, 1.0),
