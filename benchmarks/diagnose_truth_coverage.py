@@ -213,6 +213,26 @@ def table(results, cases):
             pct(within, slots) if case != 'none' else '-', pct(covered, valued) if case != 'none' else '-',
             pct(spur, len(ok)), pct(spur_v, len(ok)), pct(spur_h, len(ok)), pct(amb, len(ok)),
             pct(clean, len(ok)) if case == 'none' else '-'))
+    lines += ['', '| variant | draws | hidden effects named | within 15 % | 95 % coverage | spurious vertical | '
+              'spurious heading | clean logs with no finding |', '|---|---|---|---|---|---|---|---|']
+    for variant in ('shallow', 'deep'):
+        ok = [r for r in results if r['ok'] and r.get('variant') == variant]
+        slots = named = within = covered = valued = spur_v = spur_h = 0
+        for r in ok:
+            per, spurious, _ = score(r)
+            for n, w, c, _ in per.values():
+                slots += 1
+                named += n
+                within += w
+                valued += c is not None
+                covered += bool(c)
+            spur_v += any(plane_of(e) == 'vertical' for e in spurious)
+            spur_h += any(plane_of(e) == 'heading' for e in spurious)
+        clean = [r for r in ok if r['case'] == 'none']
+        empty = sum(1 for r in clean if not [f for f in r['findings'] if f[0] not in INPUTS])
+        lines.append('| %s | %d | %s | %s | %s | %s | %s | %s |' % (
+            variant, len(ok), pct(named, slots), pct(within, slots), pct(covered, valued), pct(spur_v, len(ok)),
+            pct(spur_h, len(ok)), pct(empty, len(clean))))
     lines += ['', '| effect (singles and pairs) | hidden | named | within 15 % | 95 % coverage |', '|---|---|---|---|---|']
     for effect in VERTICAL + HEADING:
         if effect in per_effect:
