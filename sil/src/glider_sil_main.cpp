@@ -131,11 +131,13 @@ int main(int argc, char** argv) {
   bool check_mission = false;
   std::string slocum_dir;
   std::string sbdlist_path;
+  bool slocum_lz4 = false;
   app.add_option("--slocum-dir", slocum_dir,
                  "also write the firmware's Slocum data files (.dbd, .sbd, cac/) into this directory "
                  "(docs/slocum-binary.md, Writing)");
   app.add_option("--sbdlist", sbdlist_path, "the .sbd's sensors and decimation (sbdlist.dat; default: built in)")
       ->check(CLI::ExistingFile);
+  app.add_flag("--slocum-lz4", slocum_lz4, "write the Slocum files' LZ4 forms (.dcd, .scd, cac/*.ccc), as a G3S");
   app.add_flag("--check-mission", check_mission, "read the vehicle and the mission, report, exit (nothing flown)");
   app.add_option("--summary-json", summary_json_path,
                  "also write the run's summary as JSON to this file (keys: docs/sil-summary.md)");
@@ -167,8 +169,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", messages[i].c_str());
     }
     if (!prepared.config) return tool.fail(glider::cli::kError, prepared.refusal);
-    if (!sbdlist_path.empty() && slocum_dir.empty()) {
-      return tool.fail(glider::cli::kUsage, "--sbdlist needs --slocum-dir");
+    if ((!sbdlist_path.empty() || slocum_lz4) && slocum_dir.empty()) {
+      return tool.fail(glider::cli::kUsage, "--sbdlist and --slocum-lz4 need --slocum-dir");
     }
     const glider::fw::SlocumListResult sbdlist =
         sbdlist_path.empty() ? glider::fw::parse_slocum_list(glider::fw::kDefaultSbdList, "built-in sbdlist.dat")
@@ -215,6 +217,7 @@ int main(int argc, char** argv) {
       // The SIL's clock starts at 0: the names carry 1970-000 (m_present_time is mission seconds).
       const glider::fw::SlocumMissionNumbers numbers = glider::fw::next_slocum_mission(slocum_dir, vehicle.name, 0);
       options.slocum_directory = slocum_dir;
+      options.slocum_lz4 = slocum_lz4;
       options.slocum.vehicle = vehicle.name;
       options.slocum.mission_name = std::filesystem::path(mission_path).filename().string();
       options.slocum.mission_of_day = numbers.mission_of_day;

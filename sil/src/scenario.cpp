@@ -9,6 +9,7 @@
 #include "glider/firmware/app/absent_devices.hpp"
 #include "glider/firmware/app/flight_application.hpp"
 #include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/portable_random.hpp"
@@ -95,6 +96,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
   // The Slocum files: set up (sink, caches) before the first cycle.
   std::optional<fw::SlocumDirectorySink> slocum_sink;
+  std::optional<fw::SlocumLz4Sink> slocum_lz4;
   std::optional<fw::SlocumLogger> slocum;
   std::optional<fw::SlocumLogSink> slocum_rows;
   if (!options.slocum_directory.empty()) {
@@ -103,7 +105,8 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
       result.error = slocum_sink->error();
       return result;
     }
-    slocum.emplace(*slocum_sink, options.slocum);
+    if (options.slocum_lz4) slocum_lz4.emplace(*slocum_sink);
+    slocum.emplace(slocum_lz4 ? static_cast<fw::SlocumSink&>(*slocum_lz4) : *slocum_sink, options.slocum);
     if (!slocum->start()) {
       result.error = options.slocum_directory + ": " + slocum->error();
       return result;

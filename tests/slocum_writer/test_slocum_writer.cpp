@@ -12,6 +12,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -30,6 +31,7 @@
 #include "glider/sil/scenario.hpp"
 #include "glider/slocum/binary_file.hpp"
 #include "glider/slocum/deployment.hpp"
+#include "glider/slocum/lz4_blocks.hpp"
 
 namespace {
 
@@ -82,7 +84,7 @@ struct Flight {
   sil::ScenarioResult result;
 };
 
-Flight fly(const std::string& name, const std::string& sbdlist) {
+Flight fly(const std::string& name, const std::string& sbdlist, bool lz4 = false) {
   Flight flight;
   flight.dir = fresh_dir(name);
   flight.csv = flight.dir / "flight.csv";
@@ -94,6 +96,7 @@ Flight fly(const std::string& name, const std::string& sbdlist) {
   options.max_sim_time_s = 43200.0;
   options.log_path = flight.csv.string();
   options.slocum_directory = (flight.dir / "slocum").string();
+  options.slocum_lz4 = lz4;
   options.slocum.vehicle = "comet";
   options.slocum.mission_name = "box.mi";
   const fw::SlocumListResult list = fw::parse_slocum_list(sbdlist, "test sbdlist.dat");
@@ -432,4 +435,38 @@ TEST(SlocumWriterFaults, RefusedWritesLoseRowsNotValues) {
     read_rows += depth.time.size();
   }
   CHECK_EQUAL(static_cast<std::size_t>(logger.dbd().cycles_written), read_rows);
+}
+
+// The LZ4 forms (--slocum-lz4): the same flight's .dcd/.scd/.ccc decompress
+// to the bytes of its .dbd/.sbd/.cac, and the reader reads them (the data
+// files with their compressed caches) as it reads the plain ones.
+TEST(SlocumWriterSil, Lz4FormsHoldTheSameBytes) {
+  const Flight plain = fly("plain", std::string(fw::kDefaultSbdList));
+  const Flight packed = fly("lz4", std::string(fw::kDefaultSbdList), true);
+  CHECK_EQUAL(0U, files_with(packed.dir / "slocum", ".dbd").size());
+  std::size_t compared = 0;
+  std::uintmax_t plain_bytes = 0;
+  std::uintmax_t packed_bytes = 0;
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{{".dbd", ".dcd"}, {".sbd", ".scd"}}) {
+    const auto originals = files_with(plain.dir / "slocum", from);
+    const auto compressed = files_with(packed.dir / "slocum", to);
+    CHECK_EQUAL(originals.size(), compressed.size());
+    for (std::size_t i = 0; i < std::min(originals.size(), compressed.size()); ++i) {
+      CHECK_EQUAL(originals[i].stem().string(), compressed[i].stem().string());
+      const slocum::Decompressed bytes = slocum::decompress_blocks(read_text(compressed[i]), compressed[i].string());
+      CHECK_FALSE(bytes.damage.has_value());
+      CHECK_TRUE(bytes.bytes == read_text(originals[i]));
+      CHECK_TRUE(slocum::read_binary_file(compressed[i]).complete());
+      plain_bytes += fs::file_size(originals[i]);
+      packed_bytes += fs::file_size(compressed[i]);
+      ++compared;
+    }
+  }
+  CHECK(compared >= 20);
+  CHECK(packed_bytes < plain_bytes);  // smaller (by about a fifth: encoded floats compress little)
+  for (const auto& cache : files_with(packed.dir / "slocum" / "cac", ".ccc")) {
+    const fs::path original = plain.dir / "slocum" / "cac" / (cache.stem().string() + ".cac");
+    CHECK_TRUE(slocum::decompress_blocks(read_text(cache), cache.string()).bytes == read_text(original));
+  }
+  std::printf("\nLZ4: %ju bytes of .dbd/.sbd -> %ju\n", plain_bytes, packed_bytes);
 }

@@ -17,6 +17,7 @@
 #include "glider/firmware/flight_software.hpp"
 #include "glider/firmware/log/log_text.hpp"
 #include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
 #include "glider/firmware/log/slocum_writer.hpp"
 
 namespace {
@@ -66,7 +67,11 @@ int main() {
   fw::SlocumLogOptions slocum_options;
   slocum_options.sbd = fw::parse_slocum_list(fw::kDefaultSbdList, "built-in").selection;
   fw::SlocumLogger slocum(slocum_dir, slocum_options);
-  const bool slocum_started = slocum_dir.ok() && slocum.start();
+  // and their LZ4 forms (liblz4's block API, its state on the stack)
+  fw::SlocumDirectorySink slocum_lz4_dir(GLIDER_TEST_OUTPUT_DIR "/no_heap_slocum_lz4");
+  fw::SlocumLz4Sink slocum_lz4_sink(slocum_lz4_dir);
+  fw::SlocumLogger slocum_lz4(slocum_lz4_sink, slocum_options);
+  const bool slocum_started = slocum_dir.ok() && slocum.start() && slocum_lz4_dir.ok() && slocum_lz4.start();
 
   const unsigned long before = g_allocations.load();
   double depth = 0.5;
@@ -106,6 +111,7 @@ int main() {
     nav_fake.gps.fix = {54.0 + north_m / 111195.0, 7.0, 1, 8, 1.0, nav_fake.now, !under_way};
     navigated.run(nav_fake.now);
     slocum.write(nav_fake.last_row, nav_fake.now);
+    slocum_lz4.write(nav_fake.last_row, nav_fake.now);
     nav_fake.now += 1'000'000;
   }
   fake.sense(5.0, -0.4);

@@ -23,6 +23,7 @@
 #include "glider/firmware/app/mission_setup.hpp"
 #include "glider/firmware/log/slocum_directory_sink.hpp"
 #include "glider/firmware/log/slocum_list.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
 #include "glider/firmware/log/slocum_writer.hpp"
 #include "glider/target/linux_hal.hpp"
 #include "glider/target/realtime_loop.hpp"
@@ -112,10 +113,12 @@ int main(int argc, char** argv) {
   std::string slocum_dir;
   std::string sbdlist_path;
   bool no_slocum = false;
+  bool slocum_lz4 = false;
   app.add_option("--slocum-dir", slocum_dir,
                  "where the Slocum data files go (.dbd, .sbd, cac/; default: slocum/ beside the flight log)");
   app.add_option("--sbdlist", sbdlist_path, "the .sbd's sensors and decimation (sbdlist.dat; default: built in)")
       ->check(CLI::ExistingFile);
+  app.add_flag("--slocum-lz4", slocum_lz4, "write the Slocum files' LZ4 forms (.dcd, .scd, cac/*.ccc), as a G3S");
   app.add_flag("--no-slocum", no_slocum, "write no Slocum data files (the CSV flight log only)");
   app.add_flag("--no-realtime", no_realtime, "do not ask for SCHED_FIFO or mlockall whatever the board says");
   return tool.run(argc, argv, [&]() -> int {
@@ -135,8 +138,8 @@ int main(int argc, char** argv) {
       std::fprintf(out, "%s\n", messages[i].c_str());
     }
     if (!prepared.config) return tool.fail(cli::kError, prepared.refusal);
-    if (no_slocum && (!slocum_dir.empty() || !sbdlist_path.empty())) {
-      throw cli::ToolError(cli::kUsage, "--no-slocum contradicts --slocum-dir/--sbdlist");
+    if (no_slocum && (!slocum_dir.empty() || !sbdlist_path.empty() || slocum_lz4)) {
+      throw cli::ToolError(cli::kUsage, "--no-slocum contradicts --slocum-dir/--sbdlist/--slocum-lz4");
     }
     const fw::SlocumListResult sbdlist = sbdlist_path.empty()
                                              ? fw::parse_slocum_list(fw::kDefaultSbdList, "built-in sbdlist.dat")
@@ -158,6 +161,7 @@ int main(int argc, char** argv) {
     // The Slocum data files: on unless --no-slocum (the shore's tools read
     // only these), beside the flight log, written by the log's writer thread.
     std::optional<fw::SlocumDirectorySink> slocum_sink;
+    std::optional<fw::SlocumLz4Sink> slocum_compressed;
     std::optional<fw::SlocumLogger> slocum;
     if (!no_slocum) {
       if (slocum_dir.empty()) slocum_dir = (std::filesystem::path(log_path).parent_path() / "slocum").string();
@@ -170,7 +174,9 @@ int main(int argc, char** argv) {
       slocum_options.mission_of_day = numbers.mission_of_day;
       slocum_options.mission_number = numbers.mission_number;
       slocum_options.sbd = sbdlist.selection;
-      slocum.emplace(*slocum_sink, slocum_options);
+      if (slocum_lz4) slocum_compressed.emplace(*slocum_sink);
+      slocum.emplace(slocum_compressed ? static_cast<fw::SlocumSink&>(*slocum_compressed) : *slocum_sink,
+                     slocum_options);
       if (!slocum->start()) return tool.fail(cli::kError, slocum_dir + ": " + slocum->error());
       options.slocum = &*slocum;
     }

@@ -56,6 +56,7 @@ struct ScenarioOptions {
   // The firmware's Slocum data files (.dbd/.sbd, cac/; docs/slocum-binary.md,
   // "Writing") into this directory; empty: none.
   std::string slocum_directory;
+  bool slocum_lz4 = false;  // their LZ4 forms instead (.dcd/.scd, cac/*.ccc)
   fw::SlocumLogOptions slocum;
 };
 
