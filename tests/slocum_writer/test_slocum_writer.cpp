@@ -470,3 +470,31 @@ TEST(SlocumWriterSil, Lz4FormsHoldTheSameBytes) {
   }
   std::printf("\nLZ4: %ju bytes of .dbd/.sbd -> %ju\n", plain_bytes, packed_bytes);
 }
+
+// A second mission into the same directory gets the next numbers: its files
+// never overwrite the first one's.
+TEST(SlocumWriterFaults, NextMissionGetsTheNextNumbers) {
+  const fs::path dir = fresh_dir("numbers");
+  fw::SlocumDirectorySink disk(dir.string());
+  const hal::Micros start = synthetic_row(0).time_us;
+  for (int mission = 0; mission < 2; ++mission) {
+    const fw::SlocumMissionNumbers next = fw::next_slocum_mission(dir.string(), "unit", start);
+    CHECK_EQUAL(mission, next.mission_of_day);
+    CHECK_EQUAL(mission, next.mission_number);
+    fw::SlocumLogOptions options;
+    options.vehicle = "unit";
+    options.mission_of_day = next.mission_of_day;
+    options.mission_number = next.mission_number;
+    fw::SlocumLogger logger(disk, options);
+    CHECK_TRUE(logger.start());
+    for (int i = 0; i < 400; ++i) logger.write(synthetic_row(i), synthetic_row(i).time_us);
+    CHECK_TRUE(logger.finish());
+  }
+  // Another day starts at mission 0 of that day; the 8.3 number goes on.
+  const fw::SlocumMissionNumbers tomorrow = fw::next_slocum_mission(dir.string(), "unit", start + 86'400'000'000LL);
+  CHECK_EQUAL(0, tomorrow.mission_of_day);
+  CHECK_EQUAL(2, tomorrow.mission_number);
+  const slocum::BinaryFile second = slocum::read_binary_file(dir / "unit-2023-317-01-001.dbd");
+  CHECK_EQUAL(std::string("00010001"), *second.header().tag("the8x3_filename"));
+  CHECK_EQUAL(std::string("unit-2023-317-1-1"), *second.header().tag("full_filename"));
+}
