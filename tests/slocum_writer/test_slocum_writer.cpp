@@ -9,6 +9,7 @@
 #include <CppUTest/TestHarness.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -347,6 +348,31 @@ class FlakySink final : public fw::SlocumSink {
   int writes_ = 0;
 };
 
+// A sink that refuses the first two writes after every open: the header,
+// then the first buffer of cycles (a card that is slow to come back after
+// the file was made).
+class SlowAfterOpenSink final : public fw::SlocumSink {
+ public:
+  explicit SlowAfterOpenSink(fw::SlocumSink& inner) : inner_(inner) {}
+  bool open(int slot, const char* name) override {
+    refuse_[static_cast<std::size_t>(slot)] = 2;
+    return inner_.open(slot, name);
+  }
+  bool write(int slot, const char* data, std::size_t size) override {
+    int& refuse = refuse_[static_cast<std::size_t>(slot)];
+    if (slot < 2 && refuse > 0) {  // the data files, not the caches
+      --refuse;
+      return false;
+    }
+    return inner_.write(slot, data, size);
+  }
+  bool close(int slot) override { return inner_.close(slot); }
+
+ private:
+  fw::SlocumSink& inner_;
+  std::array<int, fw::SlocumSink::kSlots> refuse_{};
+};
+
 void check_rows(const slocum::BinaryFile& file, int first_row) {
   const slocum::TimeSeries depth = slocum::get(file, "m_depth");
   const slocum::TimeSeries time = slocum::get(file, "m_present_time");
@@ -418,9 +444,9 @@ TEST(SlocumWriterFaults, RefusedWritesLoseRowsNotValues) {
   std::size_t read_rows = 0;
   for (const auto& path : files_with(dir, ".dbd")) {
     // A file whose last buffer (with its end 'X') was refused ends at its
-    // last whole cycle: it reads, incomplete. One whose header was refused
-    // stays empty: its segment's rows are all lost (counted).
-    if (fs::file_size(path) == 0) continue;
+    // last whole cycle: it reads, incomplete. A refused header is written
+    // with the next buffer the sink takes: no file stays empty.
+    CHECK(fs::file_size(path) > 0);
     const slocum::BinaryFile file = slocum::read_binary_file(path);
     const slocum::TimeSeries depth = slocum::get(file, "m_depth");
     const slocum::TimeSeries pitch = slocum::get(file, "m_pitch");
@@ -497,4 +523,29 @@ TEST(SlocumWriterFaults, NextMissionGetsTheNextNumbers) {
   const slocum::BinaryFile second = slocum::read_binary_file(dir / "unit-2023-317-01-001.dbd");
   CHECK_EQUAL(std::string("00010001"), *second.header().tag("the8x3_filename"));
   CHECK_EQUAL(std::string("unit-2023-317-1-1"), *second.header().tag("full_filename"));
+}
+
+// The header refused at the open, then the first buffer: the header goes
+// with the next buffer the sink takes, after a new file-open cycle; every
+// file reads whole, only the refused buffer's rows are missing.
+TEST(SlocumWriterFaults, RefusedHeaderIsWrittenLater) {
+  const fs::path dir = fresh_dir("header_later");
+  fw::SlocumDirectorySink disk(dir.string());
+  SlowAfterOpenSink slow(disk);
+  fw::SlocumLogOptions options;
+  options.vehicle = "unit";
+  options.flush_every_cycles = 10;
+  fw::SlocumLogger logger(slow, options);
+  CHECK_TRUE(logger.start());
+  for (int i = 0; i < 900; ++i) logger.write(synthetic_row(i), synthetic_row(i).time_us);
+  CHECK_FALSE(logger.finish());
+  CHECK_EQUAL(30U, logger.dbd().cycles_lost);  // the first 10 rows of each of the 3 segments
+  const auto files = files_with(dir, ".dbd");
+  CHECK_EQUAL(3U, files.size());
+  for (std::size_t f = 0; f < files.size(); ++f) {
+    const slocum::BinaryFile file = slocum::read_binary_file(files[f]);
+    CHECK_TRUE(file.complete());
+    CHECK_EQUAL(290U, slocum::get(file, "m_depth").time.size());
+    check_rows(file, static_cast<int>(f) * 300 + 10);
+  }
 }

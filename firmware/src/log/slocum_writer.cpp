@@ -145,23 +145,29 @@ void SlocumFileEncoder::encode(const double* values, bool file_open_cycle) {
 
 void SlocumFileEncoder::flush(SlocumSink& sink) {
   if (used_ == 0) return;
-  if (!broken_ && sink.write(slot_, buffer_.data(), used_)) {
+  // A file whose open or header the sink refused is tried again with every
+  // flush, its header still at the buffer's start.
+  if (!opened_) opened_ = sink.open(slot_, name_.data());
+  if (opened_ && sink.write(slot_, buffer_.data(), used_)) {
     counters_.cycles_written += buffered_cycles_;
     counters_.bytes += used_;
+    header_bytes_ = 0;
+    used_ = 0;
   } else {
     // The file ends at its last whole cycle (the sink's promise); what the
-    // reader holds is that cycle's values: store everything anew.
+    // reader holds is that cycle's values: store everything anew (after a
+    // new file-open cycle if the header has not reached the file yet).
     counters_.cycles_lost += buffered_cycles_;
     forget_held();
+    used_ = header_bytes_;
+    needs_open_cycle_ = header_bytes_ > 0;
   }
-  used_ = 0;
   buffered_cycles_ = 0;
 }
 
 bool SlocumFileEncoder::open(SlocumSink& sink, const char* name, const char* header, std::size_t size,
                              bool list_in_file, const double* values) {
   open_ = true;
-  used_ = 0;
   buffered_cycles_ = 0;
   forget_held();
   ++counters_.files;
@@ -174,31 +180,30 @@ bool SlocumFileEncoder::open(SlocumSink& sink, const char* name, const char* hea
   put_le(known.data() + 2, std::uint16_t{0x1234});
   put_le(known.data() + 4, std::bit_cast<std::uint32_t>(123.456F));
   put_le(known.data() + 8, std::bit_cast<std::uint64_t>(123456789.12345));
-  std::size_t at = 0;
-  const auto append = [&](const void* data, std::size_t n) {
-    if (n > buffer_.size() - at) return false;
-    std::memcpy(buffer_.data() + at, data, n);
-    at += n;
-    return true;
-  };
-  bool ok = size > 0 && append(header, size);
-  // A list too long for the buffer goes on its own (never with this table).
-  const bool list_apart = list_in_file && list_.size() > buffer_.size() - at - known.size();
-  if (ok && list_in_file && !list_apart) ok = append(list_.data(), list_.size());
-  broken_ = !ok || !sink.open(slot_, name);
-  if (!broken_ && list_apart) {
-    broken_ = !sink.write(slot_, buffer_.data(), at) || !sink.write(slot_, list_.data(), list_.size());
-    counters_.bytes += broken_ ? 0 : at + list_.size();
-    at = 0;
-  }
-  if (!broken_) {
-    append(known.data(), known.size());
-    broken_ = !sink.write(slot_, buffer_.data(), at);
-    counters_.bytes += broken_ ? 0 : at;
-  }
+  const std::size_t list_size = list_in_file ? list_.size() : 0;
+  const std::size_t name_size = std::strlen(name);
+  // What cannot happen with this sensor table (a header over 1 KiB, a list
+  // over 6 KiB): the segment's rows are lost, counted.
+  broken_ =
+      size == 0 || name_size >= name_.size() || size + list_size + known.size() + kMaxCycleBytes + 1 > buffer_.size();
   used_ = 0;
+  header_bytes_ = 0;
+  opened_ = false;
+  needs_open_cycle_ = false;
+  if (broken_) return false;
+  std::memcpy(name_.data(), name, name_size + 1);
+  std::memcpy(buffer_.data(), header, size);
+  if (list_size > 0) std::memcpy(buffer_.data() + size, list_.data(), list_size);
+  std::memcpy(buffer_.data() + size + list_size, known.data(), known.size());
+  used_ = size + list_size + known.size();
+  opened_ = sink.open(slot_, name_.data());
+  if (opened_ && sink.write(slot_, buffer_.data(), used_)) {
+    counters_.bytes += used_;
+    used_ = 0;
+  }
+  header_bytes_ = used_;  // 0 once written; else tried again at the next flush
   encode(values, true);
-  return !broken_;
+  return header_bytes_ == 0;
 }
 
 void SlocumFileEncoder::cycle(SlocumSink& sink, const double* values, std::uint32_t flush_every) {
@@ -207,6 +212,10 @@ void SlocumFileEncoder::cycle(SlocumSink& sink, const double* values, std::uint3
     ++counters_.cycles_lost;
     return;
   }
+  if (needs_open_cycle_) {
+    needs_open_cycle_ = false;
+    encode(values, true);
+  }
   encode(values, false);
   if (buffer_.size() - used_ < kMaxCycleBytes + 1 || buffered_cycles_ >= flush_every) flush(sink);
 }
@@ -214,10 +223,15 @@ void SlocumFileEncoder::cycle(SlocumSink& sink, const double* values, std::uint3
 bool SlocumFileEncoder::close(SlocumSink& sink) {
   if (!open_) return true;
   open_ = false;
+  if (broken_) {  // nothing of it was ever written
+    broken_ = false;
+    return false;
+  }
   buffer_[used_++] = 'X';
   const std::uint64_t lost_before = counters_.cycles_lost;
   flush(sink);
-  const bool closed = sink.close(slot_);
+  const bool closed = opened_ && sink.close(slot_);
+  opened_ = false;
   const bool ok = !broken_ && closed && counters_.cycles_lost == lost_before;
   broken_ = false;
   return ok;

@@ -59,7 +59,8 @@ class SlocumFileEncoder {
 
   // Opens `name` and writes the header (`header`, `size`), the sensor list
   // when `list_in_file`, the known-bytes cycle and the file-open cycle
-  // (`values`, dropped by readers). False: the segment's rows are lost.
+  // (`values`, dropped by readers). False: the sink refused the open or the
+  // header; both are tried again at every flush (the rows in between lost).
   bool open(SlocumSink& sink, const char* name, const char* header, std::size_t size, bool list_in_file,
             const double* values);
   // One row: its cycle into the buffer (flushed when needed).
@@ -97,7 +98,11 @@ class SlocumFileEncoder {
   std::size_t used_ = 0;
   std::uint32_t buffered_cycles_ = 0;
   bool open_ = false;
-  bool broken_ = false;  // the open or a write failed: rows lost until the next segment
+  bool broken_ = false;           // the header could not be made: rows lost until the next segment
+  std::array<char, 128> name_{};  // the open file's name (the open is retried until the sink takes it)
+  bool opened_ = false;
+  std::size_t header_bytes_ = 0;   // header bytes at the buffer's start that have not reached the file
+  bool needs_open_cycle_ = false;  // a refused flush took the file-open cycle with it
   std::uint64_t unrepresentable_ = 0;
   SlocumFileCounters counters_;
 };
