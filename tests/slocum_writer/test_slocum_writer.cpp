@@ -373,6 +373,27 @@ class SlowAfterOpenSink final : public fw::SlocumSink {
   std::array<int, fw::SlocumSink::kSlots> refuse_{};
 };
 
+// Writes `rows` synthetic rows through a logger on `sink` (flushing every
+// 10 rows) and finishes; returns the logger's counters.
+struct Written {
+  fw::SlocumFileCounters dbd;
+  fw::SlocumFileCounters sbd;
+  bool finished = false;
+};
+Written write_synthetic(fw::SlocumSink& sink, int rows) {
+  fw::SlocumLogOptions options;
+  options.vehicle = "unit";
+  options.flush_every_cycles = 10;
+  fw::SlocumLogger logger(sink, options);
+  CHECK_TRUE(logger.start());
+  for (int i = 0; i < rows; ++i) logger.write(synthetic_row(i), synthetic_row(i).time_us);
+  Written written;
+  written.finished = logger.finish();
+  written.dbd = logger.dbd();
+  written.sbd = logger.sbd();
+  return written;
+}
+
 void check_rows(const slocum::BinaryFile& file, int first_row) {
   const slocum::TimeSeries depth = slocum::get(file, "m_depth");
   const slocum::TimeSeries time = slocum::get(file, "m_present_time");
@@ -431,16 +452,11 @@ TEST(SlocumWriterFaults, RefusedWritesLoseRowsNotValues) {
   const fs::path dir = fresh_dir("flaky");
   fw::SlocumDirectorySink disk(dir.string());
   FlakySink flaky(disk);
-  fw::SlocumLogOptions options;
-  options.vehicle = "unit";
-  options.flush_every_cycles = 10;
-  fw::SlocumLogger logger(flaky, options);
-  CHECK_TRUE(logger.start());
-  for (int i = 0; i < 900; ++i) logger.write(synthetic_row(i), synthetic_row(i).time_us);
-  CHECK_FALSE(logger.finish());
-  const std::uint64_t lost = logger.dbd().cycles_lost + logger.sbd().cycles_lost;
+  const Written logger = write_synthetic(flaky, 900);
+  CHECK_FALSE(logger.finished);
+  const std::uint64_t lost = logger.dbd.cycles_lost + logger.sbd.cycles_lost;
   CHECK(lost > 0);
-  CHECK_EQUAL(900U, logger.dbd().cycles_written + logger.dbd().cycles_lost);
+  CHECK_EQUAL(900U, logger.dbd.cycles_written + logger.dbd.cycles_lost);
   std::size_t read_rows = 0;
   for (const auto& path : files_with(dir, ".dbd")) {
     // A file whose last buffer (with its end 'X') was refused ends at its
@@ -460,7 +476,7 @@ TEST(SlocumWriterFaults, RefusedWritesLoseRowsNotValues) {
     }
     read_rows += depth.time.size();
   }
-  CHECK_EQUAL(static_cast<std::size_t>(logger.dbd().cycles_written), read_rows);
+  CHECK_EQUAL(static_cast<std::size_t>(logger.dbd.cycles_written), read_rows);
 }
 
 // The LZ4 forms (--slocum-lz4): the same flight's .dcd/.scd/.ccc decompress
@@ -532,14 +548,9 @@ TEST(SlocumWriterFaults, RefusedHeaderIsWrittenLater) {
   const fs::path dir = fresh_dir("header_later");
   fw::SlocumDirectorySink disk(dir.string());
   SlowAfterOpenSink slow(disk);
-  fw::SlocumLogOptions options;
-  options.vehicle = "unit";
-  options.flush_every_cycles = 10;
-  fw::SlocumLogger logger(slow, options);
-  CHECK_TRUE(logger.start());
-  for (int i = 0; i < 900; ++i) logger.write(synthetic_row(i), synthetic_row(i).time_us);
-  CHECK_FALSE(logger.finish());
-  CHECK_EQUAL(30U, logger.dbd().cycles_lost);  // the first 10 rows of each of the 3 segments
+  const Written logger = write_synthetic(slow, 900);
+  CHECK_FALSE(logger.finished);
+  CHECK_EQUAL(30U, logger.dbd.cycles_lost);  // the first 10 rows of each of the 3 segments
   const auto files = files_with(dir, ".dbd");
   CHECK_EQUAL(3U, files.size());
   for (std::size_t f = 0; f < files.size(); ++f) {
