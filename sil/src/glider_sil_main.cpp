@@ -295,11 +295,14 @@ int main(int argc, char** argv) {
       }
       if (!slocum_dir.empty()) {
         const std::uint64_t slocum_lost = result.slocum_dbd.cycles_lost + result.slocum_sbd.cycles_lost;
-        std::printf("  slocum files   : %s (%d segments; .dbd %llu cycles, .sbd %llu cycles, %llu lost)\n",
-                    slocum_dir.c_str(), result.slocum_segments,
-                    static_cast<unsigned long long>(result.slocum_dbd.cycles_written),
-                    static_cast<unsigned long long>(result.slocum_sbd.cycles_written),
-                    static_cast<unsigned long long>(slocum_lost));
+        std::printf(
+            "  slocum files   : %s (%d segments; .dbd %llu cycles, .sbd %llu cycles, %llu lost, "
+            "%llu values not representable)\n",
+            slocum_dir.c_str(), result.slocum_segments,
+            static_cast<unsigned long long>(result.slocum_dbd.cycles_written),
+            static_cast<unsigned long long>(result.slocum_sbd.cycles_written),
+            static_cast<unsigned long long>(slocum_lost),
+            static_cast<unsigned long long>(result.slocum_unrepresentable));
       }
     }
     // Aborted, or stopped by the time limit before the mission ended.

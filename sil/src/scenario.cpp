@@ -192,6 +192,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     result.slocum_segments = slocum->segments();
     result.slocum_dbd = slocum->dbd();
     result.slocum_sbd = slocum->sbd();
+    result.slocum_unrepresentable = slocum->unrepresentable();
     if (!slocum_ok && result.error.empty()) {
       result.error = options.slocum_directory + ": " + std::to_string(slocum->dbd().cycles_lost) + " .dbd and " +
                      std::to_string(slocum->sbd().cycles_lost) + " .sbd cycles could not be written";

@@ -560,3 +560,29 @@ TEST(SlocumWriterFaults, RefusedHeaderIsWrittenLater) {
     check_rows(file, static_cast<int>(f) * 300 + 10);
   }
 }
+
+// A value its sensor's type cannot hold (a counter past 2^24 in a 4-byte
+// float, an enum past 127 in a byte) is not stored, and counted: the reader
+// sees no value, never another number.
+TEST(SlocumWriterFaults, UnrepresentableValuesAreNotStored) {
+  const fs::path dir = fresh_dir("unrepresentable");
+  fw::SlocumDirectorySink disk(dir.string());
+  fw::SlocumLogOptions options;
+  options.vehicle = "unit";
+  options.write_sbd = false;
+  fw::SlocumLogger logger(disk, options);
+  CHECK_TRUE(logger.start());
+  for (int i = 0; i < 4; ++i) {
+    hal::FlightLogRecord r = synthetic_row(i);
+    r.x_loop_overruns = i < 2 ? 16'777'216U : 16'777'217U;  // 2^24 is exact in a float, 2^24 + 1 is not
+    r.m_depth_state = i == 3 ? 200 : 1;
+    logger.write(r, r.time_us);
+  }
+  CHECK_TRUE(logger.finish());
+  CHECK_EQUAL(3U, logger.unrepresentable());
+  const slocum::BinaryFile file = slocum::read_binary_file(files_with(dir, ".dbd").front());
+  const slocum::TimeSeries overruns = slocum::get(file, "x_loop_overruns");
+  CHECK_EQUAL(2U, overruns.value.size());  // rows 0 and 1, not 2 and 3
+  CHECK_EQUAL(16777216.0, overruns.value.back());
+  CHECK_EQUAL(3U, slocum::get(file, "m_depth_state").value.size());  // rows 0 to 2, not 3
+}

@@ -245,9 +245,12 @@ int main(int argc, char** argv) {
       slocum_ok = slocum->finish();
       const std::uint64_t slocum_lost = slocum->dbd().cycles_lost + slocum->sbd().cycles_lost;
       std::fprintf(
-          out, "glider-firmware: slocum files %s: %d segments, .dbd %llu cycles, .sbd %llu cycles, %llu lost\n",
+          out,
+          "glider-firmware: slocum files %s: %d segments, .dbd %llu cycles, .sbd %llu cycles, %llu lost, %llu values "
+          "not representable\n",
           slocum_dir.c_str(), slocum->segments(), static_cast<unsigned long long>(slocum->dbd().cycles_written),
-          static_cast<unsigned long long>(slocum->sbd().cycles_written), static_cast<unsigned long long>(slocum_lost));
+          static_cast<unsigned long long>(slocum->sbd().cycles_written), static_cast<unsigned long long>(slocum_lost),
+          static_cast<unsigned long long>(slocum->unrepresentable()));
       if (!slocum_ok)
         std::fprintf(out, "glider-firmware: %s: writing the Slocum files lost rows\n", slocum_dir.c_str());
     }

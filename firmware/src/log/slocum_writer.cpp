@@ -68,7 +68,9 @@ bool SlocumFileEncoder::store(std::size_t i, double value, std::uint8_t* out, st
     }
     case 4: {
       const auto f = static_cast<float>(value);
-      if (!std::isfinite(f)) return false;
+      // A counter past 2^24 would read back as another number: not stored (counted).
+      const bool integer = hal::kLogColumns[i].kind == hal::LogColumnKind::kInteger;
+      if (!std::isfinite(f) || (integer && static_cast<double>(f) != value)) return false;
       const auto raw = std::bit_cast<std::uint32_t>(f);
       put_le(out, raw);
       bits = raw;

@@ -88,6 +88,7 @@ struct ScenarioResult {
   std::int32_t slocum_segments = 0;
   fw::SlocumFileCounters slocum_dbd;
   fw::SlocumFileCounters slocum_sbd;
+  std::uint64_t slocum_unrepresentable = 0;  // values the sensors' types cannot hold (not stored)
   double charge_used_amphr = 0.0;
   std::string error;  // set when the run could not start or the log failed
 };
