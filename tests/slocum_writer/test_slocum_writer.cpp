@@ -24,6 +24,7 @@
 #include "glider/firmware/log/slocum_directory_sink.hpp"
 #include "glider/firmware/log/slocum_format.hpp"
 #include "glider/firmware/log/slocum_list.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
 #include "glider/firmware/log/slocum_writer.hpp"
 #include "glider/firmware/mission_file/mission_loader.hpp"
 #include "glider/flightlog/flight_log.hpp"
@@ -527,7 +528,8 @@ TEST(SlocumWriterFaults, NextMissionGetsTheNextNumbers) {
     options.vehicle = "unit";
     options.mission_of_day = next.mission_of_day;
     options.mission_number = next.mission_number;
-    fw::SlocumLogger logger(disk, options);
+    fw::SlocumLz4Sink packed(disk);  // the second mission in the LZ4 forms: its number is read from them
+    fw::SlocumLogger logger(mission == 0 ? static_cast<fw::SlocumSink&>(disk) : packed, options);
     CHECK_TRUE(logger.start());
     for (int i = 0; i < 400; ++i) logger.write(synthetic_row(i), synthetic_row(i).time_us);
     CHECK_TRUE(logger.finish());
@@ -536,7 +538,7 @@ TEST(SlocumWriterFaults, NextMissionGetsTheNextNumbers) {
   const fw::SlocumMissionNumbers tomorrow = fw::next_slocum_mission(dir.string(), "unit", start + 86'400'000'000LL);
   CHECK_EQUAL(0, tomorrow.mission_of_day);
   CHECK_EQUAL(2, tomorrow.mission_number);
-  const slocum::BinaryFile second = slocum::read_binary_file(dir / "unit-2023-317-01-001.dbd");
+  const slocum::BinaryFile second = slocum::read_binary_file(dir / "unit-2023-317-01-001.dcd");
   CHECK_EQUAL(std::string("00010001"), *second.header().tag("the8x3_filename"));
   CHECK_EQUAL(std::string("unit-2023-317-1-1"), *second.header().tag("full_filename"));
 }

@@ -6,6 +6,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <lz4.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -33,6 +36,30 @@ bool make_directory(const std::string& path, std::string& error) {
     return false;
   }
   return true;
+}
+
+// The 8.3 mission number in the header of the file at `path` (the first
+// four digits of the8x3_filename), -1 if none; an LZ4 form (.?cd) is read
+// through its first block.
+long eight_three_mission(const std::string& path) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return -1;
+  std::string raw(std::size_t{64} * 1024 + 2, '\0');
+  raw.resize(std::fread(raw.data(), 1, raw.size(), file));
+  std::fclose(file);
+  std::string header = raw.substr(0, 1024);
+  if (path.size() > 4 && path.compare(path.size() - 2, 2, "cd") == 0 && raw.size() > 2) {
+    const std::size_t block =
+        (static_cast<std::size_t>(static_cast<unsigned char>(raw[0])) << 8) | static_cast<unsigned char>(raw[1]);
+    header.assign(1024, '\0');
+    const int n = LZ4_decompress_safe_partial(raw.data() + 2, header.data(),
+                                              static_cast<int>(std::min(block, raw.size() - 2)), 1024, 1024);
+    header.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  }
+  constexpr std::string_view kKey = "\nthe8x3_filename:";
+  const std::size_t at = header.find(kKey);
+  if (at == std::string::npos) return -1;
+  return std::strtol(header.c_str() + at + kKey.size(), nullptr, 10) / 10000;
 }
 
 }  // namespace
@@ -110,20 +137,8 @@ SlocumMissionNumbers next_slocum_mission(const std::string& directory, const std
       const int mission = std::atoi(name.substr(std::strlen(day_prefix)).data());
       if (mission + 1 > next.mission_of_day) next.mission_of_day = mission + 1;
     }
-    // The 8.3 mission number from the header's the8x3_filename line.
-    std::FILE* file = std::fopen((directory + "/" + std::string(name)).c_str(), "rb");
-    if (file == nullptr) continue;
-    char line[128];
-    for (int i = 0; i < 6 && std::fgets(line, sizeof line, file) != nullptr; ++i) {
-      const std::string_view text(line);
-      constexpr std::string_view kKey = "the8x3_filename:";
-      if (!text.starts_with(kKey)) continue;
-      const std::string digits(text.substr(kKey.size()));
-      const long number = std::strtol(digits.c_str(), nullptr, 10) / 10000;
-      if (number + 1 > next.mission_number) next.mission_number = static_cast<int>(number + 1);
-      break;
-    }
-    std::fclose(file);
+    const long number = eight_three_mission(directory + "/" + std::string(name));
+    if (number + 1 > next.mission_number) next.mission_number = static_cast<int>(number + 1);
   }
   ::closedir(dir);
   return next;

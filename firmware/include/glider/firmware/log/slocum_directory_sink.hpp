@@ -44,9 +44,9 @@ class SlocumDirectorySink final : public SlocumSink {
 
 // The numbers of a new mission's files, from the files already in
 // `directory` (start-up): the long name's <mission> is one more than the
-// highest of `vehicle`'s missions started the same UTC day (0 if none), the
-// 8.3 name's mission number one more than the highest 8.3 mission number (header the8x3_filename) of the
-// vehicle's files there (0 if none).
+// highest of `vehicle`'s missions started the same UTC day (0 if none); the
+// 8.3 mission number one more than the highest in the headers
+// (the8x3_filename) of the vehicle's files there, LZ4 forms included (0 if none).
 struct SlocumMissionNumbers {
   int mission_of_day = 0;
   int mission_number = 0;
