@@ -16,6 +16,8 @@
 #include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_list.hpp"
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/flight_summary.hpp"
@@ -127,6 +129,15 @@ int main(int argc, char** argv) {
       ->check(glider::cli::FiniteRange(1e-3, 1.0))
       ->capture_default_str();
   bool check_mission = false;
+  std::string slocum_dir;
+  std::string sbdlist_path;
+  bool slocum_lz4 = false;
+  app.add_option("--slocum-dir", slocum_dir,
+                 "also write the firmware's Slocum data files (.dbd, .sbd, cac/) into this directory "
+                 "(docs/slocum-binary.md, Writing)");
+  app.add_option("--sbdlist", sbdlist_path, "the .sbd's sensors and decimation (sbdlist.dat; default: built in)")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--slocum-lz4", slocum_lz4, "write the Slocum files' LZ4 forms (.dcd, .scd, cac/*.ccc), as a G3S");
   app.add_flag("--check-mission", check_mission, "read the vehicle and the mission, report, exit (nothing flown)");
   app.add_option("--summary-json", summary_json_path,
                  "also write the run's summary as JSON to this file (keys: docs/sil-summary.md)");
@@ -158,6 +169,13 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", messages[i].c_str());
     }
     if (!prepared.config) return tool.fail(glider::cli::kError, prepared.refusal);
+    if ((!sbdlist_path.empty() || slocum_lz4) && slocum_dir.empty()) {
+      return tool.fail(glider::cli::kUsage, "--sbdlist and --slocum-lz4 need --slocum-dir");
+    }
+    const glider::fw::SlocumListResult sbdlist =
+        sbdlist_path.empty() ? glider::fw::parse_slocum_list(glider::fw::kDefaultSbdList, "built-in sbdlist.dat")
+                             : glider::fw::read_slocum_list(sbdlist_path);
+    if (!sbdlist.error.empty()) return tool.fail(glider::cli::kError, sbdlist.error);
     if (check_mission) {
       std::fprintf(stderr, "glider-sil: %s: mission accepted for vehicle %s\n", mission_path.c_str(),
                    vehicle.name.c_str());
@@ -194,6 +212,18 @@ int main(int argc, char** argv) {
         {"dead_reckoning", dr_method},
         {"time", "m_present_time is seconds since the start of the mission"},
         {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
+
+    if (!slocum_dir.empty()) {
+      // The SIL's clock starts at 0: the names carry 1970-000 (m_present_time is mission seconds).
+      const glider::fw::SlocumMissionNumbers numbers = glider::fw::next_slocum_mission(slocum_dir, vehicle.name, 0);
+      options.slocum_directory = slocum_dir;
+      options.slocum_lz4 = slocum_lz4;
+      options.slocum.vehicle = vehicle.name;
+      options.slocum.mission_name = std::filesystem::path(mission_path).filename().string();
+      options.slocum.mission_of_day = numbers.mission_of_day;
+      options.slocum.mission_number = numbers.mission_number;
+      options.slocum.sbd = sbdlist.selection;
+    }
 
     const auto wall_start = std::chrono::steady_clock::now();
     const glider::sil::ScenarioResult result = glider::sil::run_scenario(vehicle, config, options);
@@ -262,6 +292,17 @@ int main(int argc, char** argv) {
       if (!out_path.empty()) {
         std::printf("  flight log     : %s (%llu rows)\n", out_path.c_str(),
                     static_cast<unsigned long long>(result.log_rows));
+      }
+      if (!slocum_dir.empty()) {
+        const std::uint64_t slocum_lost = result.slocum_dbd.cycles_lost + result.slocum_sbd.cycles_lost;
+        std::printf(
+            "  slocum files   : %s (%d segments; .dbd %llu cycles, .sbd %llu cycles, %llu lost, "
+            "%llu values not representable)\n",
+            slocum_dir.c_str(), result.slocum_segments,
+            static_cast<unsigned long long>(result.slocum_dbd.cycles_written),
+            static_cast<unsigned long long>(result.slocum_sbd.cycles_written),
+            static_cast<unsigned long long>(slocum_lost),
+            static_cast<unsigned long long>(result.slocum_unrepresentable));
       }
     }
     // Aborted, or stopped by the time limit before the mission ended.

@@ -8,6 +8,8 @@
 
 #include "glider/firmware/app/absent_devices.hpp"
 #include "glider/firmware/app/flight_application.hpp"
+#include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/portable_random.hpp"
@@ -92,7 +94,27 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     }
   }
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
-  TeeLogSink log(file_sink, result.stats);
+  // The Slocum files: set up (sink, caches) before the first cycle.
+  std::optional<fw::SlocumDirectorySink> slocum_sink;
+  std::optional<fw::SlocumLz4Sink> slocum_lz4;
+  std::optional<fw::SlocumLogger> slocum;
+  std::optional<fw::SlocumLogSink> slocum_rows;
+  if (!options.slocum_directory.empty()) {
+    slocum_sink.emplace(options.slocum_directory);
+    if (!slocum_sink->ok()) {
+      result.error = slocum_sink->error();
+      return result;
+    }
+    if (options.slocum_lz4) slocum_lz4.emplace(*slocum_sink);
+    slocum.emplace(slocum_lz4 ? static_cast<fw::SlocumSink&>(*slocum_lz4) : *slocum_sink, options.slocum);
+    if (!slocum->start()) {
+      result.error = options.slocum_directory + ": " + slocum->error();
+      return result;
+    }
+    slocum_rows.emplace(*slocum);
+  }
+  TeeLogSink file_and_stats(file_sink, result.stats);
+  TeeLogSink log(file_and_stats, slocum_rows ? static_cast<hal::LogSink&>(*slocum_rows) : no_file);
 
   // What the vehicle is not fitted with, the firmware gets as absent devices.
   const fw::app::FittedDevices& fitted = options.fitted;
@@ -164,6 +186,17 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
                                 : result.completed ? std::string("complete")
                                                    : std::string("stopped max_sim_time");
     if (!csv->finish(outcome, result.log_rows_lost)) result.error = csv->error();
+  }
+  if (slocum) {
+    const bool slocum_ok = slocum->finish();
+    result.slocum_segments = slocum->segments();
+    result.slocum_dbd = slocum->dbd();
+    result.slocum_sbd = slocum->sbd();
+    result.slocum_unrepresentable = slocum->unrepresentable();
+    if (!slocum_ok && result.error.empty()) {
+      result.error = options.slocum_directory + ": " + std::to_string(slocum->dbd().cycles_lost) + " .dbd and " +
+                     std::to_string(slocum->sbd().cycles_lost) + " .sbd cycles could not be written";
+    }
   }
   if (result.error.empty() && result.log_rows_lost > 0) {
     result.error = std::to_string(result.log_rows_lost) + " log rows could not be written";

@@ -14,12 +14,17 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "glider/cli/tool.hpp"
 #include "glider/firmware/app/flight_application.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_list.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
+#include "glider/firmware/log/slocum_writer.hpp"
 #include "glider/target/linux_hal.hpp"
 #include "glider/target/realtime_loop.hpp"
 #include "glider/target/target_board.hpp"
@@ -62,6 +67,12 @@ std::string wait_for_sensors(const hal::Hal& hal, target::LinuxHal& linux_hal, d
          " s of start-up (see the counters below)";
 }
 
+hal::Micros utc_now_us() {
+  timespec t{};
+  clock_gettime(CLOCK_REALTIME, &t);
+  return static_cast<hal::Micros>(t.tv_sec) * hal::kMicrosPerSecond + t.tv_nsec / 1000;
+}
+
 std::string default_log_name(const std::filesystem::path& directory) {
   const std::time_t now = std::time(nullptr);
   char name[64];
@@ -99,6 +110,16 @@ int main(int argc, char** argv) {
       ->check(glider::cli::FiniteRange(0.01, 1000.0));
   app.add_option("--legs", legs, ".mi: override goto_list num_legs_to_run");
   app.add_flag("--check-mission", check_mission, "read the board and the mission, report, exit (no device opened)");
+  std::string slocum_dir;
+  std::string sbdlist_path;
+  bool no_slocum = false;
+  bool slocum_lz4 = false;
+  app.add_option("--slocum-dir", slocum_dir,
+                 "where the Slocum data files go (.dbd, .sbd, cac/; default: slocum/ beside the flight log)");
+  app.add_option("--sbdlist", sbdlist_path, "the .sbd's sensors and decimation (sbdlist.dat; default: built in)")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--slocum-lz4", slocum_lz4, "write the Slocum files' LZ4 forms (.dcd, .scd, cac/*.ccc), as a G3S");
+  app.add_flag("--no-slocum", no_slocum, "write no Slocum data files (the CSV flight log only)");
   app.add_flag("--no-realtime", no_realtime, "do not ask for SCHED_FIFO or mlockall whatever the board says");
   return tool.run(argc, argv, [&]() -> int {
     target::block_stop_signals();  // before the log's writer thread exists
@@ -117,6 +138,13 @@ int main(int argc, char** argv) {
       std::fprintf(out, "%s\n", messages[i].c_str());
     }
     if (!prepared.config) return tool.fail(cli::kError, prepared.refusal);
+    if (no_slocum && (!slocum_dir.empty() || !sbdlist_path.empty() || slocum_lz4)) {
+      throw cli::ToolError(cli::kUsage, "--no-slocum contradicts --slocum-dir/--sbdlist/--slocum-lz4");
+    }
+    const fw::SlocumListResult sbdlist = sbdlist_path.empty()
+                                             ? fw::parse_slocum_list(fw::kDefaultSbdList, "built-in sbdlist.dat")
+                                             : fw::read_slocum_list(sbdlist_path);
+    if (!sbdlist.error.empty()) return tool.fail(cli::kError, sbdlist.error);
     if (check_mission) {
       std::fprintf(out, "glider-firmware: %s: mission accepted for board %s\n", mission_path.c_str(),
                    board.name.c_str());
@@ -130,6 +158,28 @@ int main(int argc, char** argv) {
       log_path = default_log_name(board.log_directory);
     }
     options.log_path = log_path;
+    // The Slocum data files: on unless --no-slocum (the shore's tools read
+    // only these), beside the flight log, written by the log's writer thread.
+    std::optional<fw::SlocumDirectorySink> slocum_sink;
+    std::optional<fw::SlocumLz4Sink> slocum_compressed;
+    std::optional<fw::SlocumLogger> slocum;
+    if (!no_slocum) {
+      if (slocum_dir.empty()) slocum_dir = (std::filesystem::path(log_path).parent_path() / "slocum").string();
+      slocum_sink.emplace(slocum_dir);
+      if (!slocum_sink->ok()) return tool.fail(cli::kError, slocum_sink->error());
+      const fw::SlocumMissionNumbers numbers = fw::next_slocum_mission(slocum_dir, board.name, utc_now_us());
+      fw::SlocumLogOptions slocum_options;
+      slocum_options.vehicle = board.name;
+      slocum_options.mission_name = std::filesystem::path(mission_path).filename().string();
+      slocum_options.mission_of_day = numbers.mission_of_day;
+      slocum_options.mission_number = numbers.mission_number;
+      slocum_options.sbd = sbdlist.selection;
+      if (slocum_lz4) slocum_compressed.emplace(*slocum_sink);
+      slocum.emplace(slocum_compressed ? static_cast<fw::SlocumSink&>(*slocum_compressed) : *slocum_sink,
+                     slocum_options);
+      if (!slocum->start()) return tool.fail(cli::kError, slocum_dir + ": " + slocum->error());
+      options.slocum = &*slocum;
+    }
     options.log_metadata = {{"source", "glider-firmware on the Linux target"},
                             {"board_file", board.source},
                             {"mission_file", mission_path},
@@ -190,6 +240,20 @@ int main(int argc, char** argv) {
                                 : reason == target::StopReason::kCycleLimit ? std::string("stopped cycle_limit")
                                                                             : std::string("stopped loop_error");
     const bool log_ok = linux_hal->log().close(outcome);
+    bool slocum_ok = true;
+    if (slocum) {  // the log's writer thread has stopped: the last rows are in
+      slocum_ok = slocum->finish();
+      const std::uint64_t slocum_lost = slocum->dbd().cycles_lost + slocum->sbd().cycles_lost;
+      std::fprintf(
+          out,
+          "glider-firmware: slocum files %s: %d segments, .dbd %llu cycles, .sbd %llu cycles, %llu lost, %llu values "
+          "not representable\n",
+          slocum_dir.c_str(), slocum->segments(), static_cast<unsigned long long>(slocum->dbd().cycles_written),
+          static_cast<unsigned long long>(slocum->sbd().cycles_written), static_cast<unsigned long long>(slocum_lost),
+          static_cast<unsigned long long>(slocum->unrepresentable()));
+      if (!slocum_ok)
+        std::fprintf(out, "glider-firmware: %s: writing the Slocum files lost rows\n", slocum_dir.c_str());
+    }
     std::fprintf(out, "glider-firmware: flight log %s: %llu rows, %llu lost (ring full %llu, disk %llu), %llu fsyncs\n",
                  log_path.c_str(), static_cast<unsigned long long>(linux_hal->log().rows_written()),
                  static_cast<unsigned long long>(linux_hal->log().rows_refused()) +
@@ -199,7 +263,7 @@ int main(int argc, char** argv) {
                  static_cast<unsigned long long>(linux_hal->log().fsyncs()));
     linux_hal->print_statistics(out);
     if (!log_ok) std::fprintf(out, "glider-firmware: %s: writing the flight log failed\n", log_path.c_str());
-    if (reason == target::StopReason::kError || !log_ok) return static_cast<int>(cli::kError);
+    if (reason == target::StopReason::kError || !log_ok || !slocum_ok) return static_cast<int>(cli::kError);
     // A clean stop (SIGTERM: systemctl stop) is success; an abort or the
     // cycle limit ends the flight early (systemd must not restart either).
     if (aborted || reason == target::StopReason::kCycleLimit) return static_cast<int>(cli::kStopped);

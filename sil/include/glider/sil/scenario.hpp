@@ -10,6 +10,7 @@
 #include "glider/firmware/app/vehicle_setup.hpp"
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/flight_software.hpp"
+#include "glider/firmware/log/slocum_writer.hpp"
 #include "glider/model/environment.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle.hpp"
@@ -52,6 +53,11 @@ struct ScenarioOptions {
   // An aborted firmware stays in its abort state for good; the run stops
   // this long after the abort (the vehicle is up by then, or never will be).
   double stop_after_abort_s = 3600.0;
+  // The firmware's Slocum data files (.dbd/.sbd, cac/; docs/slocum-binary.md,
+  // "Writing") into this directory; empty: none.
+  std::string slocum_directory;
+  bool slocum_lz4 = false;  // their LZ4 forms instead (.dcd/.scd, cac/*.ccc)
+  fw::SlocumLogOptions slocum;
 };
 
 // Where the vehicle truly was when the firmware counted a waypoint reached.
@@ -78,6 +84,11 @@ struct ScenarioResult {
   double abort_time_s = -1.0;      // first cycle in the abort phase
   double abort_surfaced_s = -1.0;  // first time after it that the antenna was truly out of the water
   double energy_used_j = 0.0;
+  // The Slocum files (when slocum_directory was given).
+  std::int32_t slocum_segments = 0;
+  fw::SlocumFileCounters slocum_dbd;
+  fw::SlocumFileCounters slocum_sbd;
+  std::uint64_t slocum_unrepresentable = 0;  // values the sensors' types cannot hold (not stored)
   double charge_used_amphr = 0.0;
   std::string error;  // set when the run could not start or the log failed
 };
