@@ -2,6 +2,7 @@
 #include "glider/sil/scenario.hpp"
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -55,6 +56,14 @@ class NullLogSink final : public hal::LogSink {
   bool write(const hal::FlightLogRecord&) override { return true; }
 };
 
+// The firmware's log goes through the comms task's tap once it exists.
+class ForwardingLogSink final : public hal::LogSink {
+ public:
+  explicit ForwardingLogSink(hal::LogSink* first) : target(first) {}
+  bool write(const hal::FlightLogRecord& r) override { return target->write(r); }
+  hal::LogSink* target;
+};
+
 }  // namespace
 
 ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::FlightSoftwareConfig& config,
@@ -93,6 +102,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   }
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
   TeeLogSink log(file_sink, result.stats);
+  ForwardingLogSink log_path(&log);
 
   // What the vehicle is not fitted with, the firmware gets as absent devices.
   const fw::app::FittedDevices& fitted = options.fitted;
@@ -106,7 +116,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
       .attitude = sim_hal.attitude(),
       .pump = sim_hal,
       .battery = sim_hal,
-      .log = log,
+      .log = log_path,
       .rudder = fitted.rudder ? sim_hal.rudder() : static_cast<hal::Rudder&>(fixed_rudder),
       .gps = sim_hal.gps(),
       .leak = fitted.leak_detector ? static_cast<hal::DigitalInput&>(sim_hal.leak()) : no_leak,
@@ -115,6 +125,22 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   fw::app::FlightApplication app(hal, config, nullptr, options.period_us);
   fw::Executive& executive = app.executive();
   const fw::FlightSoftware& flight = app.flight();
+
+  std::optional<SimModem> modem;
+  std::optional<fw::comms::CommsTask> comms;
+  if (options.comms) {
+    const ScenarioOptions::Comms& c = *options.comms;
+    fw::comms::CommsConfig comms_config = c.config;
+    comms_config.gps_wait_s = config.plan.gps_wait_s;
+    comms_config.keystroke_wait_s = config.plan.surface_dwell_s;
+    comms_config.printout_cycle_s = config.plan.printout_cycle_s;
+    comms_config.utc_at_zero_s = c.utc_at_launch_s;
+    modem.emplace(clock, c.link, c.far_end, derived_seed(options.seed, kModemStream));
+    comms.emplace(app.flight(), *modem, sim_hal.gps(), log, comms_config, c.transfer, c.reloader);
+    log_path.target = &*comms;
+    app.attach_comms(*comms);
+  }
+  double call_cycle_sum_us = 0.0;
 
   const double period_s = hal::to_seconds(options.period_us);
   YawDisturbance yaw_disturbance(vehicle.heading, derived_seed(options.seed, kYawDisturbanceStream));
@@ -126,7 +152,22 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
         sim_hal.inject(options.faults[i].name);
       }
     }
+    const bool in_call = comms && modem->in_call();
+    const auto cycle_start = std::chrono::steady_clock::now();
     executive.step();
+    if (in_call) {
+      const double us =
+          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - cycle_start).count();
+      ++result.call_cycles;
+      call_cycle_sum_us += us;
+      result.call_cycle_max_us = std::max(result.call_cycle_max_us, us);
+    }
+    if (comms && options.comms->after_cycle) options.comms->after_cycle(sim.time_s(), *comms);
+    if (comms && comms->reset_requested() && comms->state() == fw::comms::CommsState::kDone) {
+      result.reset_requested = true;
+      break;
+    }
+    const bool calling = comms && !comms->idle() && comms->state() != fw::comms::CommsState::kDone;
     const model::Truth truth = sim.truth();
     if (flight.navigator().waypoints_reached() > static_cast<std::int32_t>(result.waypoints.size())) {
       result.waypoints.push_back({flight.navigator().waypoints_reached(), sim.time_s(), truth.east_m, truth.north_m});
@@ -140,12 +181,17 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     }
     // An aborted mission is complete for the firmware once its depth says
     // it is up; the run goes on until the antenna is truly out (or the stop).
-    if (flight.complete() && !(result.abort_time_s >= 0.0 && result.abort_surfaced_s < 0.0)) break;
+    if (flight.complete() && !calling && !(result.abort_time_s >= 0.0 && result.abort_surfaced_s < 0.0)) break;
     sim.set_yaw_disturbance_rad_s(yaw_disturbance.next(period_s));
     sim.advance(period_s);
     clock.advance(options.period_us);
   }
 
+  if (comms) {
+    result.comms = comms->stats();
+    result.modem = modem->stats();
+    if (result.call_cycles > 0) result.call_cycle_mean_us = call_cycle_sum_us / static_cast<double>(result.call_cycles);
+  }
   result.completed = flight.complete();
   result.final_phase = flight.phase();
   result.abort_cause = flight.abort_cause();

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: Apache-2.0
+// The comms state machine over whole surfacings in SIL: the simulated modem
+// and link, an in-process shore that records the dialog and types commands.
+#include <CppUTest/TestHarness.h>
+
+#include <cmath>
+#include <cstring>
+#include <regex>
+#include <string>
+
+#include "glider/model/vehicle_file.hpp"
+#include "glider/sil/scenario.hpp"
+
+using namespace glider;
+
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// A waypoint mission that surfaces every 20 min (when_secs), waits up to
+// 120 s for GPS and 300 s for keystrokes, re-prints every 60 s.
+fw::FlightSoftwareConfig mission() {
+  fw::FlightSoftwareConfig c;
+  c.mission.start_at_launch = false;
+  c.mission.dive_to_m = 30.0;
+  c.mission.climb_to_m = 5.0;
+  c.mission.yos = 1000;
+  c.mission.max_depth_m = 60.0;
+  c.mission.max_duration_s = std::numeric_limits<double>::infinity();
+  c.plan.waypoint_count = 1;
+  c.plan.waypoints[0] = {41.5, -70.6};  // far away: never reached in the test
+  c.plan.legs_to_run = fw::kLegsLoopForever;
+  c.plan.surface_interval_s = 1200.0;
+  c.plan.gps_wait_s = 120.0;
+  c.plan.surface_dwell_s = 300.0;
+  c.plan.printout_cycle_s = 60.0;
+  return c;
+}
+
+sil::ScenarioOptions::Comms comms(sil::FarEnd* shore) {
+  sil::ScenarioOptions::Comms c;
+  std::snprintf(c.config.vehicle_name, sizeof c.config.vehicle_name, "unit_345");
+  std::snprintf(c.config.primary_number, sizeof c.config.primary_number, "0088160000519");
+  std::snprintf(c.config.secondary_number, sizeof c.config.secondary_number, "0088160000520");
+  const char* sensors[] = {"m_battery", "m_depth", "m_water_vx", "m_water_vy"};
+  for (const char* s : sensors) std::snprintf(c.config.sensors[c.config.sensor_count++].data(), 40, "%s", s);
+  c.link.drops_per_hour = 0.0;
+  c.link.connect_probability = 1.0;
+  c.link.availability = 1.0;
+  c.far_end = shore;
+  return c;
+}
+
+}  // namespace
+
+TEST_GROUP(CommsSil) {
+  model::VehicleParams vehicle = model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml");
+  sil::ScenarioOptions options;
+  void setup() override { options.max_sim_time_s = 2000.0; }
+};
+
+TEST(CommsSil, FullSurfacingDialogExactLinesAndReprintCadence) {
+  sil::FakeShore shore;
+  shore.script = {{20.0, "whoru\r"}, {25.0, "!get u_keystroke_wait_time\r"}};
+  options.comms = comms(&shore);
+  std::vector<double> dialog_times;
+  std::size_t seen = 0;
+  options.comms->after_cycle = [&](double t, const fw::comms::CommsTask&) {
+    const std::size_t n = count(shore.transcript(), "Vehicle Name: unit_345\r\nCurr Time:");
+    if (n > seen) dialog_times.push_back(t);
+    seen = n;
+  };
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, mission(), options);
+  STRCMP_EQUAL("", r.error.c_str());
+  const std::string& t = shore.transcript();
+  // The launch call: one connected call, the dialog re-printed every 60 s
+  // during the 300 s keystroke wait (the pilot's keys restart the wait).
+  CHECK(r.comms.calls_connected >= 1);
+  CHECK(dialog_times.size() >= 5);
+  for (std::size_t i = 1; i < dialog_times.size() && i < 5; ++i) {
+    const double gap = dialog_times[i] - dialog_times[i - 1];
+    CHECK_TEXT(gap >= 59.0 && gap <= 66.0, ("reprint gap " + std::to_string(gap)).c_str());
+  }
+  // The lines shore tools key on, in their exact formats.
+  CHECK(std::regex_search(t, std::regex("\r\nGlider unit_345 at surface\\.\r\n")));
+  CHECK(std::regex_search(t, std::regex("Because:[A-Za-z ]+ \\[behavior \\w+ start_when = [0-9.]+\\]\r\n")));
+  CHECK(std::regex_search(
+      t, std::regex("MissionName:MISSION\\.MI MissionNum:unit_345-\\d{4}-\\d{3}-0-\\d+ \\(\\d{4}\\.\\d{4}\\)\r\n")));
+  CHECK(std::regex_search(
+      t, std::regex("Curr Time: \\w{3} \\w{3} [ \\d]\\d \\d{2}:\\d{2}:\\d{2} \\d{4} MT:\\s+\\d+\r\n")));
+  CHECK(std::regex_search(
+      t, std::regex("DR  Location:\\s+-?\\d+\\.\\d{3} N\\s+-?\\d+\\.\\d{3} E measured\\s+[0-9.e+]+ secs ago\r\n")));
+  CHECK(std::regex_search(
+      t, std::regex("GPS TooFar:   69696969\\.000 N 69696969\\.000 E measured     1e\\+308 secs ago\r\n")));
+  CHECK(std::regex_search(
+      t, std::regex("GPS Location:\\s+-?\\d+\\.\\d{3} N\\s+-?\\d+\\.\\d{3} E measured\\s+[0-9.]+ secs ago\r\n")));
+  CHECK(std::regex_search(t, std::regex("   sensor:m_battery\\(V\\)=[0-9.]+\\s+[0-9.e+]+ secs ago\r\n")));
+  CHECK(std::regex_search(t, std::regex("devices:\\(t/m/s\\) errs:\\s*\\d+/\\s*\\d+/\\s*\\d+ "
+                                        "warn:\\s*\\d+/\\s*\\d+/\\s*\\d+ odd:\\s*\\d+/\\s*\\d+/\\s*\\d+\r\n")));
+  CHECK(std::regex_search(t, std::regex("ABORT HISTORY: total since reset: 0\r\n")));
+  CHECK(std::regex_search(t, std::regex("Hit Control-R to RESUME the mission")));
+  // The pilot's commands were echoed and answered.
+  STRCMP_CONTAINS("whoru\r\nVehicle Name: unit_345\r\n", t.c_str());
+  STRCMP_CONTAINS("u_keystroke_wait_time(s)=300", t.c_str());
+  // It hung up and dived: the mission goes on.
+  CHECK(shore.hangups() >= 1);
+  CHECK(r.yos > 0);
+  CHECK(r.call_cycles > 0);
+  std::printf("\ncomms: %llu call cycles, loop cost during the call: mean %.1f us, max %.1f us\n",
+              static_cast<unsigned long long>(r.call_cycles), r.call_cycle_mean_us, r.call_cycle_max_us);
+}
+
+TEST(CommsSil, SameSeedSameDialogBytes) {
+  options.max_sim_time_s = 1500.0;
+  sil::FakeShore a, b;
+  a.script = b.script = {{15.0, "whoru\r"}};
+  options.comms = comms(&a);
+  options.comms->link.availability = 0.7;
+  options.comms->link.corruption = 0.001;
+  options.comms->link.drops_per_hour = 2.0;
+  options.comms->link.connect_probability = 0.8;
+  sil::run_scenario(vehicle, mission(), options);
+  options.comms->far_end = &b;
+  sil::run_scenario(vehicle, mission(), options);
+  CHECK(a.transcript().size() > 1000);
+  CHECK(a.transcript() == b.transcript());
+}
+
+TEST(CommsSil, LinkDownForThreeSurfacingsKeepsTheMissionAndItsNoCommsLimit) {
+  options.max_sim_time_s = 4.5 * 3600.0;
+  sil::FakeShore shore;
+  options.comms = comms(&shore);
+  options.comms->link.outage_from_s = 0.0;
+  options.comms->link.outage_to_s = 1e9;  // no satellite all flight
+  std::vector<double> dives;
+  bool was_under = false;
+  double longest_without_attempt_s = 0.0;
+  double last_surface_s = 0.0;
+  options.comms->after_cycle = [&](double t, const fw::comms::CommsTask& c) {
+    const bool under = c.state() == fw::comms::CommsState::kIdle;
+    if (under && !was_under) dives.push_back(t);
+    if (!under) last_surface_s = t;
+    longest_without_attempt_s = std::max(longest_without_attempt_s, t - last_surface_s);
+    was_under = under;
+  };
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, mission(), options);
+  STRCMP_EQUAL("", r.error.c_str());
+  CHECK(r.comms.surfacings >= 3);
+  LONGS_EQUAL(0, r.comms.calls_connected);
+  // Every surfacing gave up calling (the last may still be trying when the run stops).
+  CHECK(r.comms.surfacings_without_call + 1 >= r.comms.surfacings);
+  CHECK(r.comms.dial_attempts == 0);  // CSQ 0 all along: it never dialled into no sky
+  LONGS_EQUAL(0, shore.calls());
+  CHECK(r.abort_cause == fw::AbortCause::kNone);
+  CHECK(dives.size() >= 3);  // it dived again after every failed surfacing
+  // "No comms for" when_secs (1200 s): the surfacing is asked for by then;
+  // add the climb from 30 m (at >= 0.15 m/s: 200 s) to the antenna.
+  std::printf("\nlink down: %u surfacings, longest under water between tries %.0f s\n", r.comms.surfacings,
+              longest_without_attempt_s);
+  CHECK_TEXT(longest_without_attempt_s <= 1200.0 + 200.0, std::to_string(longest_without_attempt_s).c_str());
+}
