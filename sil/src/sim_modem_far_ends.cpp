@@ -8,6 +8,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -17,7 +18,7 @@ namespace glider::sil {
 
 bool FakeShore::answer(const std::string& number, double now_s) {
   numbers_.push_back(number);
-  if (!listening) return false;
+  if (!listening || std::find(dead_numbers.begin(), dead_numbers.end(), number) != dead_numbers.end()) return false;
   ++calls_;
   connected_ = true;
   connect_s_ = now_s;

@@ -63,6 +63,7 @@ CommsTask::CommsTask(FlightSoftware& flight, hal::Modem& modem, hal::GpsReceiver
       at_(modem),
       console_(*this, parameters_, transfer, out_),
       u_callback_max_min_(config.callback_max_min) {
+  flight_.set_surface_hold(true);
   // The dialog's sensors: log columns by name (unknown names are printed as never seen).
   for (std::size_t i = 0; i < config_.sensor_count && i < kMaxDialogSensors; ++i) {
     const std::string_view name(config_.sensors[i].data());
@@ -330,7 +331,7 @@ void CommsTask::step_modem(hal::Micros now_us) {
     connected_this_surfacing_ = true;
     enter(CommsState::kDialog, now_us);
     last_key_us_ = now_us;
-    last_print_us_ = now_us - micros(config_.printout_cycle_s);  // print at once
+    print_dialog_now(now_us);  // every call shows the dialog at least once
     if (console_.feed(at_.data_after_connect())) last_key_us_ = now_us;
     stats_.bytes_received += at_.data_after_connect().size();
     at_.clear_data_after_connect();
@@ -475,7 +476,9 @@ void CommsTask::run(hal::Micros now_us) {
       break;
   }
   was_at_surface_ = up;
-  flight_.set_surface_hold(state_ != CommsState::kIdle && state_ != CommsState::kDone);
+  // Held except once done: under water the hold means nothing, and so it is
+  // already on in the first cycle up, before this task has seen the surface.
+  flight_.set_surface_hold(state_ != CommsState::kDone);
 }
 
 }  // namespace glider::fw::comms

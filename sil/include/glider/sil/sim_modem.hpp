@@ -108,7 +108,8 @@ class FakeShore final : public FarEnd {
     std::string text;
   };
   bool listening = true;
-  std::vector<Typed> script;  // typed in every call, relative to its CONNECT
+  std::vector<std::string> dead_numbers;  // calls to these are never answered
+  std::vector<Typed> script;              // typed in every call, relative to its CONNECT
 
   bool answer(const std::string& number, double now_s) override;
   void receive(std::span<const std::uint8_t> bytes, double now_s) override;
