@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 #include "glider/sil/sim_modem.hpp"
@@ -113,6 +114,23 @@ std::vector<std::uint8_t> TcpShore::take(std::size_t max, double) {
 void TcpShore::hangup(double) {
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
+}
+
+bool parse_shore_address(const std::string& text, std::string& host, int& port, std::string& error) {
+  const std::size_t colon = text.rfind(':');
+  host = colon == std::string::npos ? text : text.substr(0, colon);
+  if (host.empty()) host = "127.0.0.1";
+  port = kDefaultShorePort;
+  if (colon == std::string::npos) return true;
+  const std::string digits = text.substr(colon + 1);
+  char* end = nullptr;
+  const long value = std::strtol(digits.c_str(), &end, 10);
+  if (digits.empty() || *end != '\0' || value < 1 || value > 65535) {
+    error = "port value " + digits + " is outside the allowed range [1, 65535]";
+    return false;
+  }
+  port = static_cast<int>(value);
+  return true;
 }
 
 }  // namespace glider::sil

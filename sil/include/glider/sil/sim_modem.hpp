@@ -157,4 +157,9 @@ class TcpShore final : public FarEnd {
   std::string error_;
 };
 
+// `HOST`, `HOST:PORT` or `:PORT` (the shore station's default port 6565,
+// host 127.0.0.1). False with `error` set on a bad port.
+inline constexpr int kDefaultShorePort = 6565;
+bool parse_shore_address(const std::string& text, std::string& host, int& port, std::string& error);
+
 }  // namespace glider::sil
