@@ -9,6 +9,7 @@
 
 #include "glider/firmware/app/absent_devices.hpp"
 #include "glider/firmware/app/flight_application.hpp"
+#include "glider/firmware/comms/log_forward.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/portable_random.hpp"
@@ -56,14 +57,6 @@ class NullLogSink final : public hal::LogSink {
   bool write(const hal::FlightLogRecord&) override { return true; }
 };
 
-// The firmware's log goes through the comms task's tap once it exists.
-class ForwardingLogSink final : public hal::LogSink {
- public:
-  explicit ForwardingLogSink(hal::LogSink* first) : target(first) {}
-  bool write(const hal::FlightLogRecord& r) override { return target->write(r); }
-  hal::LogSink* target;
-};
-
 }  // namespace
 
 ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::FlightSoftwareConfig& config,
@@ -102,7 +95,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   }
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
   TeeLogSink log(file_sink, result.stats);
-  ForwardingLogSink log_path(&log);
+  fw::comms::LogForward log_path(log);  // through the comms task's tap once it exists
 
   // What the vehicle is not fitted with, the firmware gets as absent devices.
   const fw::app::FittedDevices& fitted = options.fitted;
@@ -137,7 +130,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     comms_config.utc_at_zero_s = c.utc_at_launch_s;
     modem.emplace(clock, c.link, c.far_end, derived_seed(options.seed, kModemStream));
     comms.emplace(app.flight(), *modem, sim_hal.gps(), log, comms_config, c.transfer, c.reloader);
-    log_path.target = &*comms;
+    log_path.retarget(*comms);
     app.attach_comms(*comms);
   }
   double call_cycle_sum_us = 0.0;

@@ -171,6 +171,9 @@ void SimModem::command(const std::string& raw) {
   }
 }
 
-hal::Carrier SimModem::carrier() const { return mode_ == Mode::kData ? hal::Carrier::kPresent : hal::Carrier::kLost; }
+hal::Carrier SimModem::carrier() const {
+  if (!link_.dcd_wired) return hal::Carrier::kUnknown;
+  return mode_ == Mode::kData ? hal::Carrier::kPresent : hal::Carrier::kLost;
+}
 
 }  // namespace glider::sil

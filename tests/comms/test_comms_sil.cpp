@@ -181,10 +181,13 @@ TEST(CommsSil, PrimaryDeadThenSecondaryNumber) {
   CHECK(r.comms.calls_connected >= 1);
 }
 
-TEST(CommsSil, CarrierDropMidDialogRedials) {
+// Dropped 100 s into the launch call for 30 s; `dcd`: whether the line has
+// the carrier-detect wire (without it the modem's NO CARRIER tells).
+void carrier_drop_redials(const model::VehicleParams& vehicle, sil::ScenarioOptions options, bool dcd) {
   options.max_sim_time_s = 900.0;
   sil::FakeShore shore;
   options.comms = comms(&shore);
+  options.comms->link.dcd_wired = dcd;
   // The sky goes away 60 s into the launch call for 30 s.
   std::optional<double> first_connect;
   options.comms->after_cycle = [&](double t, const fw::comms::CommsTask& c) {
@@ -200,6 +203,10 @@ TEST(CommsSil, CarrierDropMidDialogRedials) {
   CHECK(r.comms.calls_connected >= 2);  // called again after the drop
   CHECK(shore.calls() >= 2);
 }
+
+TEST(CommsSil, CarrierDropMidDialogRedials) { carrier_drop_redials(vehicle, options, true); }
+
+TEST(CommsSil, CarrierDropWithoutDcdSeenByNoCarrier) { carrier_drop_redials(vehicle, options, false); }
 
 TEST(CommsSil, ControlCEndsTheMissionAndRunFliesItOn) {
   options.max_sim_time_s = 1500.0;

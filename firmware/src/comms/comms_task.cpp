@@ -341,8 +341,25 @@ void CommsTask::step_modem(hal::Micros now_us) {
   enter(CommsState::kSignal, now_us);
 }
 
+bool CommsTask::saw_no_carrier(std::span<const std::uint8_t> bytes) {
+  static constexpr std::string_view kNoCarrier = "NO CARRIER";
+  for (const std::uint8_t b : bytes) {
+    if (b == static_cast<std::uint8_t>(kNoCarrier[no_carrier_match_])) {
+      if (++no_carrier_match_ == kNoCarrier.size()) {
+        no_carrier_match_ = 0;
+        return true;
+      }
+    } else {
+      no_carrier_match_ = b == static_cast<std::uint8_t>(kNoCarrier[0]) ? 1 : 0;
+    }
+  }
+  return false;
+}
+
 void CommsTask::step_dialog(hal::Micros now_us) {
-  if (modem_.carrier() == hal::Carrier::kLost) {
+  if (modem_.carrier() == hal::Carrier::kLost || carrier_gone_) {
+    carrier_gone_ = false;
+    no_carrier_match_ = 0;
     ++stats_.carrier_drops;
     if (transferring_ && transfer_ != nullptr) transfer_->cancel();
     transferring_ = false;
@@ -367,6 +384,11 @@ void CommsTask::step_dialog(hal::Micros now_us) {
   std::array<std::uint8_t, kReadPerCycle> input{};
   const std::size_t n = modem_.read(input);
   stats_.bytes_received += n;
+  // A line without DCD: the modem's own "NO CARRIER" ends the call (next cycle).
+  if (modem_.carrier() == hal::Carrier::kUnknown && saw_no_carrier(std::span<const std::uint8_t>(input.data(), n))) {
+    carrier_gone_ = true;
+    return;
+  }
   if (n > 0 && console_.feed(std::span<const std::uint8_t>(input.data(), n))) last_key_us_ = now_us;
   const bool running = mission_running();
   const bool idle_s_over = hal::to_seconds(now_us - last_key_us_) >= config_.keystroke_wait_s;

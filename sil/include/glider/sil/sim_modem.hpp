@@ -33,6 +33,7 @@ struct LinkModel {
   double outage_from_s = -1.0;
   double outage_to_s = -1.0;
   std::size_t tx_buffer_bytes = 2048;  // the modem's own buffer: write() takes what fits
+  bool dcd_wired = true;               // false: carrier() says kUnknown (only "NO CARRIER" tells)
 };
 
 // The shore side of a call.

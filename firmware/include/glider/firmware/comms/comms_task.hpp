@@ -129,6 +129,7 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   void enter(CommsState state, hal::Micros now_us);
   void step_modem(hal::Micros now_us);
   void step_dialog(hal::Micros now_us);
+  bool saw_no_carrier(std::span<const std::uint8_t> bytes);
   void step_hangup(hal::Micros now_us);
   void give_up(hal::Micros now_us);
   void flush_output();
@@ -166,6 +167,8 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   bool resume_ = false;
   bool reset_requested_ = false;
   bool was_at_surface_ = false;
+  bool carrier_gone_ = false;         // "NO CARRIER" seen on a line without DCD
+  std::size_t no_carrier_match_ = 0;  // characters of "NO CARRIER" matched so far
   double callback_minutes_ = 0.0;
   double u_callback_max_min_;  // put-able
   char refusal_[160] = {};
