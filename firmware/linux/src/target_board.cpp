@@ -82,7 +82,7 @@ hal_linux::PowerMonitorConfig read_power(const TomlDocument& doc) {
 
 // A dialled number: digits (and a leading +), at most 32 of them.
 std::string phone_number(const TomlDocument& doc, const std::string& key, const std::string& fallback) {
-  const std::string number = doc.string_or(key, fallback);
+  std::string number = doc.string_or(key, fallback);
   const bool digits = number.find_first_not_of("+0123456789") == std::string::npos && number.size() <= 32;
   if (!digits) doc.fail(key, "must be a phone number (digits, at most 32)");
   return number;

@@ -301,13 +301,14 @@ void CommsTask::step_modem(hal::Micros now_us) {
     if (r == AtResult::kPending) return;
     if (r == AtResult::kOk && at_.signal_quality() >= config_.min_signal) {
       enter(CommsState::kDial, now_us);
-    } else if (r == AtResult::kOk) {
-      step_ = 1;  // too few satellites: ask again later
-    } else if (++tries_ >= config_.at_retries) {
-      give_up(now_us);
-    } else {
-      step_ = 1;
+      return;
     }
+    // Too few satellites (ask again later), or no answer (a few times, then give up).
+    if (r != AtResult::kOk && ++tries_ >= config_.at_retries) {
+      give_up(now_us);
+      return;
+    }
+    step_ = 1;
     return;
   }
   // kDial
