@@ -239,3 +239,19 @@ TEST(CommsSil, CorruptedLinkNeverCrashesTheConsole) {
   // (A corrupted byte can become a command key: Control-C would end the
   // mission, as on a real console; so the test does not ask for a dive.)
 }
+
+TEST(CommsSil, NoKeystrokeWaitStillDeliversTheWholeDialog) {
+  // end_action 2 (resume): no keystroke wait; the call ends only once the
+  // text has had time to leave the modem at the link's rate.
+  options.max_sim_time_s = 900.0;
+  sil::FakeShore shore;
+  options.comms = comms(&shore);
+  options.comms->link.bytes_per_s = 100.0;  // a slow link: the dialog needs ~10 s to leave the modem
+  options.comms->config.link_bytes_per_s = 100.0;
+  fw::FlightSoftwareConfig config = mission();
+  config.plan.surface_dwell_s = 0.0;
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
+  CHECK(r.comms.calls_connected >= 1);
+  LONGS_EQUAL(r.comms.dialogs_printed, count(shore.transcript(), "Hit Control-W for a device report\r\n"));
+  CHECK(r.yos > 0);
+}

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/comms/comms_task.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -261,6 +262,10 @@ void CommsTask::flush_output() {
     if (chunk.size() > kWritePerCycle - offered) chunk = chunk.first(kWritePerCycle - offered);
     const std::size_t n = modem_.write(chunk);
     out_.consume(n);
+    if (n > 0) {
+      drained_at_us_ =
+          std::max(drained_at_us_, now_us_) + micros(static_cast<double>(n) / std::max(config_.link_bytes_per_s, 1.0));
+    }
     offered += chunk.size();
     stats_.bytes_sent += n;
     if (n < chunk.size()) break;  // the link is full this cycle
@@ -393,10 +398,12 @@ void CommsTask::step_dialog(hal::Micros now_us) {
   if (n > 0 && console_.feed(std::span<const std::uint8_t>(input.data(), n))) last_key_us_ = now_us;
   const bool running = mission_running();
   const bool idle_s_over = hal::to_seconds(now_us - last_key_us_) >= config_.keystroke_wait_s;
+  // Nothing is hung up on before the last text has left the modem.
+  const bool sent = out_.empty() && now_us >= drained_at_us_;
   if (callback_minutes_ > 0.0 || reset_requested_) {
-    if (out_.empty()) enter(CommsState::kHangup, now_us);
+    if (sent) enter(CommsState::kHangup, now_us);
   } else if (resume_ || (running && idle_s_over)) {
-    if (out_.empty()) enter(CommsState::kFinalGps, now_us);
+    if (sent) enter(CommsState::kFinalGps, now_us);
   } else if (!running && idle_s_over && hal::to_seconds(now_us - last_key_us_) >= 600.0) {
     callback_minutes_ = kDefaultCallbackMin;  // GliderDOS left alone: hang up, call again
   } else if (running && hal::to_seconds(now_us - last_print_us_) >= config_.printout_cycle_s && !transferring_) {

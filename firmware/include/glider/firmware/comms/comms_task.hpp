@@ -52,6 +52,9 @@ struct CommsConfig {
   double dial_budget_s = 600.0;  // from the modem start: give up calling after this
   double final_gps_wait_s = 60.0;
   double escape_guard_s = 1.0;  // silence before and after "+++"
+  // The link's payload rate: what was written is given this long to leave the
+  // modem's buffer before the call is hung up (Iridium: ~270 B/s; lower is safer).
+  double link_bytes_per_s = 250.0;
   double callback_max_min = 1440.0;
 };
 
@@ -159,9 +162,10 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   hal::Micros last_key_us_ = 0;
   hal::Micros last_print_us_ = 0;
   hal::Micros callback_at_us_ = 0;
-  std::int32_t step_ = 0;   // sub-step within a modem state
-  std::int32_t tries_ = 0;  // of the current AT command
-  std::int32_t dials_ = 0;  // this surfacing
+  hal::Micros drained_at_us_ = 0;  // when the bytes written so far have left at link_bytes_per_s
+  std::int32_t step_ = 0;          // sub-step within a modem state
+  std::int32_t tries_ = 0;         // of the current AT command
+  std::int32_t dials_ = 0;         // this surfacing
   bool connected_this_surfacing_ = false;
   bool transferring_ = false;
   bool resume_ = false;
