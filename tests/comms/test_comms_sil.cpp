@@ -255,3 +255,19 @@ TEST(CommsSil, NoKeystrokeWaitStillDeliversTheWholeDialog) {
   LONGS_EQUAL(r.comms.dialogs_printed, count(shore.transcript(), "Hit Control-W for a device report\r\n"));
   CHECK(r.yos > 0);
 }
+
+TEST(CommsSil, ShoreNotListeningKeepsTheMission) {
+  options.max_sim_time_s = 3.0 * 3600.0;
+  sil::FakeShore shore;
+  shore.listening = false;  // every call: NO CARRIER
+  options.comms = comms(&shore);
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, mission(), options);
+  STRCMP_EQUAL("", r.error.c_str());
+  CHECK(r.comms.surfacings >= 3);
+  LONGS_EQUAL(0, r.comms.calls_connected);
+  // Both numbers tried twice at every finished surfacing, then it gave up and dived.
+  CHECK(r.comms.dial_attempts >= 4 * (r.comms.surfacings - 1));
+  CHECK(r.comms.surfacings_without_call + 1 >= r.comms.surfacings);
+  CHECK(r.abort_cause == fw::AbortCause::kNone);
+  CHECK(r.yos > 0);
+}
