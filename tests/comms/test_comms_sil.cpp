@@ -271,3 +271,22 @@ TEST(CommsSil, ShoreNotListeningKeepsTheMission) {
   CHECK(r.abort_cause == fw::AbortCause::kNone);
   CHECK(r.yos > 0);
 }
+
+TEST(CommsSil, CallbackHangsUpAndCallsAgainLater) {
+  options.max_sim_time_s = 1200.0;
+  sil::FakeShore shore;
+  shore.script = {{20.0, "callback 2\r"}};
+  options.comms = comms(&shore);
+  std::vector<double> connects;
+  fw::comms::CommsState last = fw::comms::CommsState::kIdle;
+  options.comms->after_cycle = [&](double t, const fw::comms::CommsTask& c) {
+    if (c.state() == fw::comms::CommsState::kDialog && last != fw::comms::CommsState::kDialog) connects.push_back(t);
+    last = c.state();
+  };
+  sil::run_scenario(vehicle, mission(), options);
+  STRCMP_CONTAINS("Hanging up: calling back in 2 minutes", shore.transcript().c_str());
+  CHECK(connects.size() >= 2);
+  // Two minutes after the hang-up, plus the call set-up (12-20 s).
+  CHECK(connects[1] - connects[0] >= 120.0 + 20.0);
+  CHECK(connects[1] - connects[0] <= 120.0 + 80.0);
+}
