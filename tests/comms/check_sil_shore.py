@@ -13,7 +13,8 @@ glider_sil, source = sys.argv[1], sys.argv[2]
 server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
 server.bind(("127.0.0.1", 0))
 server.listen(4)
-server.settimeout(40)
+server.settimeout(0.2)
+stop = threading.Event()
 port = server.getsockname()[1]
 transcript = bytearray()
 calls = []
@@ -21,17 +22,22 @@ calls = []
 
 def shore():
     try:
-        while True:
-            conn, _ = server.accept()
+        while not stop.is_set():
+            try:
+                conn, _ = server.accept()
+            except socket.timeout:
+                continue
             calls.append(time.time())
-            conn.settimeout(20)
+            conn.settimeout(0.2)
             asked = False
             with conn:
                 while True:
                     try:
                         data = conn.recv(4096)
                     except socket.timeout:
-                        break
+                        if stop.is_set():
+                            break
+                        continue
                     if not data:
                         break
                     transcript.extend(data)
@@ -49,9 +55,12 @@ run = subprocess.run(
      "--vehicle", f"{source}/boards/vehicles/slocum_we01.toml", "--max-sim-time-s", "900",
      "--vehicle-name", "unit_345", "--shore", f"127.0.0.1:{port}"],
     capture_output=True, text=True, timeout=50)
-server.close()
+stop.set()
 thread.join(5)
+server.close()
 text = transcript.decode("latin-1")
+first = text.find("Glider ")
+print(text[first:text.find("Hit Control-W", first) + 40] if first >= 0 else text[:2000])
 print(run.stdout)
 print(run.stderr, file=sys.stderr)
 checks = {
