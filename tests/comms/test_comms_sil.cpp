@@ -337,3 +337,21 @@ TEST(CommsSil, SendHandsTheFilesToTheTransferEngine) {
   STRCMP_CONTAINS("transfer complete: 2 file(s) done, 0 failed, 1200 bytes", t.c_str());
   LONGS_EQUAL(1200, count(t, "Z"));  // the engine's bytes, not mixed with dialog text
 }
+
+TEST(CommsSil, MissionOverMakesOneLastCallThenTheRunEnds) {
+  // One waypoint where the vehicle is launched: the mission is over at the
+  // first fix (the navigator decides once the call lets it go). The vehicle
+  // calls once, hangs up, and the run ends there instead of calling on.
+  options.max_sim_time_s = 6.0 * 3600.0;
+  sil::FakeShore shore;
+  options.comms = comms(&shore);
+  fw::FlightSoftwareConfig config = mission();
+  config.plan.waypoints[0] = options.peripherals.gps.launch;
+  config.plan.legs_to_run = 1;
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
+  CHECK_TRUE(r.completed);
+  LONGS_EQUAL(1, r.comms.calls_connected);
+  STRCMP_CONTAINS("Because:Stack idle [behavior surface start_when = 1.0]", shore.transcript().c_str());
+  CHECK(r.sim_time_s < 1800.0);
+  LONGS_EQUAL(1, shore.hangups());
+}

@@ -14,6 +14,7 @@ namespace {
 constexpr std::size_t kReadPerCycle = 512;    // console bytes taken per cycle
 constexpr std::size_t kWritePerCycle = 1024;  // dialog bytes offered per cycle (the modem takes what fits)
 constexpr double kDefaultCallbackMin = 30.0;  // GliderDOS left idle: hang up, call again after this
+constexpr double kGliderDosIdleS = 600.0;     // ... once nobody has typed for this long
 
 hal::Micros micros(double seconds) { return static_cast<hal::Micros>(std::llround(seconds * 1e6)); }
 
@@ -397,14 +398,17 @@ void CommsTask::step_dialog(hal::Micros now_us) {
   }
   if (n > 0 && console_.feed(std::span<const std::uint8_t>(input.data(), n))) last_key_us_ = now_us;
   const bool running = mission_running();
+  // The pilot's Control-C left the vehicle at GliderDOS: it stays up and keeps
+  // calling. A mission over by itself (or an abort) makes this one call.
+  const bool at_gliderdos = flight_.ended_by_operator();
   const bool idle_s_over = hal::to_seconds(now_us - last_key_us_) >= config_.keystroke_wait_s;
   // Nothing is hung up on before the last text has left the modem.
   const bool sent = out_.empty() && now_us >= drained_at_us_;
   if (callback_minutes_ > 0.0 || reset_requested_) {
     if (sent) enter(CommsState::kHangup, now_us);
-  } else if (resume_ || (running && idle_s_over)) {
+  } else if (resume_ || (!at_gliderdos && idle_s_over)) {
     if (sent) enter(CommsState::kFinalGps, now_us);
-  } else if (!running && idle_s_over && hal::to_seconds(now_us - last_key_us_) >= 600.0) {
+  } else if (at_gliderdos && hal::to_seconds(now_us - last_key_us_) >= kGliderDosIdleS) {
     callback_minutes_ = kDefaultCallbackMin;  // GliderDOS left alone: hang up, call again
   } else if (running && hal::to_seconds(now_us - last_print_us_) >= config_.printout_cycle_s && !transferring_) {
     print_dialog_now(now_us);
