@@ -10,6 +10,7 @@
 // watchdog after every healthy cycle (packaging/glider-firmware.service).
 #include <CLI/CLI.hpp>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -20,11 +21,15 @@
 
 #include "glider/cli/tool.hpp"
 #include "glider/firmware/app/flight_application.hpp"
+#include "glider/firmware/app/mission_reload.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
 #include "glider/firmware/log/slocum_directory_sink.hpp"
 #include "glider/firmware/log/slocum_list.hpp"
 #include "glider/firmware/log/slocum_lz4_sink.hpp"
 #include "glider/firmware/log/slocum_writer.hpp"
+#include "glider/firmware/comms/comms_task.hpp"
+#include "glider/firmware/comms/log_forward.hpp"
+#include "glider/hal_linux/serial_modem.hpp"
 #include "glider/target/linux_hal.hpp"
 #include "glider/target/realtime_loop.hpp"
 #include "glider/target/target_board.hpp"
@@ -71,6 +76,30 @@ hal::Micros utc_now_us() {
   timespec t{};
   clock_gettime(CLOCK_REALTIME, &t);
   return static_cast<hal::Micros>(t.tv_sec) * hal::kMicrosPerSecond + t.tv_nsec / 1000;
+}
+
+// `exit reset` typed at the console: the service restarts the firmware.
+constexpr int kExitReset = 4;
+
+// What the comms task needs from the board's [modem] and the mission's surface behaviour.
+fw::comms::CommsConfig comms_config(const target::ModemBoardConfig& modem, const fw::FlightSoftwareConfig& flight,
+                                    const std::string& mission_path, hal::Micros clock_now_us) {
+  fw::comms::CommsConfig c;
+  std::snprintf(c.vehicle_name, sizeof c.vehicle_name, "%s", modem.vehicle_name.c_str());
+  std::snprintf(c.primary_number, sizeof c.primary_number, "%s", modem.primary_number.c_str());
+  std::snprintf(c.secondary_number, sizeof c.secondary_number, "%s", modem.secondary_number.c_str());
+  std::snprintf(c.mission_name, sizeof c.mission_name, "%s",
+                std::filesystem::path(mission_path).filename().string().c_str());
+  for (const std::string& name : modem.dialog_sensors) {
+    if (c.sensor_count == c.sensors.size()) break;
+    std::snprintf(c.sensors[c.sensor_count++].data(), fw::comms::kTextField, "%s", name.c_str());
+  }
+  c.gps_wait_s = flight.plan.gps_wait_s;
+  c.keystroke_wait_s = flight.plan.surface_dwell_s;
+  c.printout_cycle_s = flight.plan.printout_cycle_s;
+  const double utc_now_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  c.utc_at_zero_s = utc_now_s - hal::to_seconds(clock_now_us);
+  return c;
 }
 
 std::string default_log_name(const std::filesystem::path& directory) {
@@ -200,9 +229,36 @@ int main(int argc, char** argv) {
       return tool.fail(cli::kError, silent);
     }
     PlatformCycle platform(*linux_hal);
-    fw::app::FlightApplication application(hal, *prepared.config, &platform);
+    // The log goes through the comms task's tap when the board has a modem.
+    fw::comms::LogForward log_forward(hal.log);
+    const hal::Hal flight_hal{.clock = hal.clock,
+                              .depth = hal.depth,
+                              .attitude = hal.attitude,
+                              .pump = hal.pump,
+                              .battery = hal.battery,
+                              .log = log_forward,
+                              .rudder = hal.rudder,
+                              .gps = hal.gps,
+                              .leak = hal.leak,
+                              .drop_weight = hal.drop_weight,
+                              .power = hal.power};
+    fw::app::FlightApplication application(flight_hal, *prepared.config, &platform);
     if (!application.valid()) return tool.fail(cli::kError, "invalid task table");
     const fw::FlightSoftware& flight = application.flight();
+    std::optional<hal_linux::SerialModem> modem;
+    std::optional<fw::app::MissionFileReloader> reloader;
+    std::optional<fw::comms::CommsTask> comms;
+    if (board.modem) {
+      modem.emplace(board.modem->line);
+      reloader.emplace(mission_path, board.vehicle, mission_options);
+      comms.emplace(application.flight(), *modem, hal.gps, hal.log,
+                    comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()), nullptr,
+                    &*reloader);
+      log_forward.retarget(*comms);
+      application.attach_comms(*comms);
+    }
+    // Done when the mission is and the last call is over (or the pilot asked for `exit reset`).
+    const auto calls_over = [&] { return !comms || comms->idle() || comms->state() == fw::comms::CommsState::kDone; };
     std::fprintf(out, "glider-firmware: board %s, mission %s, flight log %s%s; flying\n", board.name.c_str(),
                  mission_path.c_str(), log_path.c_str(),
                  time_scale != 1.0 ? (", time scale x" + std::to_string(time_scale)).c_str() : "");
@@ -212,7 +268,7 @@ int main(int argc, char** argv) {
     try {
       target::RealtimeLoop loop(application.executive(), linux_hal->clock(), board.loop, out);
       std::uint32_t overruns_seen = 0;
-      reason = loop.run([&] { return flight.complete(); },
+      reason = loop.run([&] { return (flight.complete() || (comms && comms->reset_requested())) && calls_over(); },
                         [&] {
                           const bool healthy = application.executive().stats().overruns == overruns_seen;
                           overruns_seen = application.executive().stats().overruns;
@@ -262,8 +318,21 @@ int main(int argc, char** argv) {
                  static_cast<unsigned long long>(linux_hal->log().rows_lost_disk()),
                  static_cast<unsigned long long>(linux_hal->log().fsyncs()));
     linux_hal->print_statistics(out);
+    if (comms) {
+      const fw::comms::CommsStats& c = comms->stats();
+      std::fprintf(out,
+                   "glider-firmware: comms: %u surfacings, %u calls connected (%u dialled), %u without a call, %u "
+                   "carrier drops, %llu bytes sent, %llu received\n",
+                   c.surfacings, c.calls_connected, c.dial_attempts, c.surfacings_without_call, c.carrier_drops,
+                   static_cast<unsigned long long>(c.bytes_sent), static_cast<unsigned long long>(c.bytes_received));
+    }
     if (!log_ok) std::fprintf(out, "glider-firmware: %s: writing the flight log failed\n", log_path.c_str());
     if (reason == target::StopReason::kError || !log_ok || !slocum_ok) return static_cast<int>(cli::kError);
+    // The pilot's `exit reset`: systemd starts the firmware again (RestartForceExitStatus=4).
+    if (comms && comms->reset_requested()) {
+      std::fprintf(out, "glider-firmware: exit reset: restarting\n");
+      return kExitReset;
+    }
     // A clean stop (SIGTERM: systemctl stop) is success; an abort or the
     // cycle limit ends the flight early (systemd must not restart either).
     if (aborted || reason == target::StopReason::kCycleLimit) return static_cast<int>(cli::kStopped);

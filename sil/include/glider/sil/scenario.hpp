@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "glider/firmware/app/vehicle_setup.hpp"
+#include "glider/firmware/comms/comms_task.hpp"
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/flight_software.hpp"
 #include "glider/firmware/log/slocum_writer.hpp"
@@ -18,6 +19,7 @@
 #include "glider/sil/fault_injection.hpp"
 #include "glider/sil/flight_stats.hpp"
 #include "glider/sil/sim_hal.hpp"
+#include "glider/sil/sim_modem.hpp"
 
 namespace glider::sil {
 
@@ -58,6 +60,20 @@ struct ScenarioOptions {
   std::string slocum_directory;
   bool slocum_lz4 = false;  // their LZ4 forms instead (.dcd/.scd, cac/*.ccc)
   fw::SlocumLogOptions slocum;
+  // Comms (docs/comms.md): the simulated modem and link, the far end it
+  // calls, and the vehicle's comms settings (the surface waits come from the
+  // mission plan). None: the vehicle never calls.
+  struct Comms {
+    fw::comms::CommsConfig config;
+    LinkModel link;
+    FarEnd* far_end = nullptr;
+    fw::comms::FileTransfer* transfer = nullptr;
+    fw::comms::MissionReloader* reloader = nullptr;
+    double utc_at_launch_s = 1.7e9;  // Curr Time at launch
+    // Called after every cycle (tests sample the comms state).
+    std::function<void(double sim_time_s, const fw::comms::CommsTask& comms)> after_cycle;
+  };
+  std::optional<Comms> comms;
 };
 
 // Where the vehicle truly was when the firmware counted a waypoint reached.
@@ -91,6 +107,14 @@ struct ScenarioResult {
   std::uint64_t slocum_unrepresentable = 0;  // values the sensors' types cannot hold (not stored)
   double charge_used_amphr = 0.0;
   std::string error;  // set when the run could not start or the log failed
+  // With comms: the task's and the modem's counts, and the wall time of the
+  // control cycles spent in a call (the loop's cost during the dialog).
+  fw::comms::CommsStats comms;
+  SimModemStats modem;
+  std::uint64_t call_cycles = 0;
+  double call_cycle_mean_us = 0.0;
+  double call_cycle_max_us = 0.0;
+  bool reset_requested = false;
 };
 
 // Flies the flight software against the model in lockstep: one firmware
