@@ -46,6 +46,18 @@ struct Finding {
   std::optional<double> heldout_rms_battpos_in;  // pitch_trim_offset: what it explains
 };
 
+// Two effects this log cannot tell apart (identifiability): the chosen one and
+// an alternative that, fitted in its place with the other findings, explains
+// the held-out yos within the selection's own margins. Both readings are
+// reported; `separate` says what data would tell them apart.
+struct Ambiguity {
+  Effect chosen = Effect::kBuoyancyOffset, alternative = Effect::kBuoyancyOffset;
+  double correlation = 0.0;  // |partial correlation| of their depth-rate signatures on the fitted samples
+  double alternative_value = 0.0, alternative_ci95_low = 0.0, alternative_ci95_high = 0.0;
+  double chosen_heldout_rms_m_s = 0.0, alternative_heldout_rms_m_s = 0.0;
+  std::string separate;
+};
+
 // Which flight model the diagnosis fits: the dynamic one (the project's
 // dynamics driven by the measured pitch, through every sample, turns
 // included; the default) or the steady one (steady glides at the measured
@@ -89,7 +101,8 @@ struct Diagnosis {
   std::size_t samples_used = 0;
   std::size_t train_samples = 0, heldout_samples = 0;
   Baseline baseline;
-  std::vector<Finding> findings;  // strongest first, significant only
+  std::vector<Finding> findings;       // strongest first, significant only
+  std::vector<Ambiguity> ambiguities;  // findings the log cannot tell from another effect
   std::string cause = "none";
   EffectValues extended = nominal_values();
   std::optional<VerticalVelocityProfile> extended_profile;  // when the vertical velocity was fitted
@@ -138,6 +151,12 @@ struct DiagnoseOptions {
   // Fit exactly these effects (no selection, no significance test), e.g. to
   // compare with another tool's fit of the same parameters. Empty: select.
   std::vector<Effect> fit_only;
+  // Identifiability: an unused candidate whose depth-rate signature correlates
+  // with a finding's at least this much (after the other findings' are
+  // projected out) is fitted in the finding's place; if it explains the
+  // held-out yos within the selection's margins, the two are reported as
+  // ambiguous. Below this, the swap fit is not worth its cost.
+  double ambiguity_screen_correlation = 0.9;
   // See Diagnosis::retrimmed_to_kg_m3: how far the log's median density may be
   // from the vehicle's trim density before the vehicle is re-trimmed for it.
   double retrim_tolerance_kg_m3 = 5.0;
