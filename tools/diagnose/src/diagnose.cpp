@@ -897,9 +897,10 @@ std::string what_separates(Effect a, Effect b) {
 // each candidate not taken: their depth-rate signatures (the change of the
 // fitted samples' residuals for a step of each, one flight each) with the
 // other findings' signatures projected out, and the correlation of the two.
-// Where it is high, the candidate is fitted in the finding's place; if that
-// explains the held-out yos within the margins the selection itself uses,
-// the log cannot tell the two apart and both readings are reported.
+// Where it is high, the candidate is fitted in the finding's place, and the
+// pair is reported either way: told apart by the held-out yos, or - if the
+// swap explains them within the margins the selection itself uses -
+// ambiguous, with both readings and what data would separate them.
 void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                            const std::vector<Effect>& pool, const Candidate& current, const FitResult& current_fit,
                            Diagnosis& d) {
@@ -952,22 +953,27 @@ void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseO
       swapped.fitted[j] = alternative;
       FitResult f = fit_reported(set, swapped, s.train, s.heldout, options);
       const double value = f.parameters.values[static_cast<std::size_t>(alternative)];
-      if (!plausible(alternative, value)) continue;
       const double margin =
           std::max(current_fit.heldout_rms * options.min_heldout_improvement, options.min_heldout_improvement_m_s);
-      if (!(f.heldout_rms <= current_fit.heldout_rms + margin)) continue;  // the held-out yos tell them apart
-      add_intervals(set, swapped, s.train, options.intervals, f);
       Ambiguity amb;
       amb.chosen = effect;
       amb.alternative = alternative;
       amb.correlation = correlation;
       amb.alternative_value = is_lag(alternative) ? std::abs(value) : value;
-      amb.alternative_ci95_low = amb.alternative_value - 1.96 * f.sigma[j];
-      amb.alternative_ci95_high = amb.alternative_value + 1.96 * f.sigma[j];
-      if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
       amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
       amb.alternative_heldout_rms_m_s = f.heldout_rms;
-      amb.separate = what_separates(effect, alternative);
+      // Within the selection's own margins the held-out yos cannot tell them apart.
+      amb.ambiguous = f.heldout_rms <= current_fit.heldout_rms + margin;
+      // An implausible alternative is still stated: what rules it out is then
+      // the prior (flight_model.cpp's plausible ranges), not this log.
+      amb.ruled_out_by_prior = !plausible(alternative, value);
+      if (amb.ambiguous) {  // the second reading, with its interval (a Jacobian: only where reported)
+        add_intervals(set, swapped, s.train, options.intervals, f);
+        amb.alternative_ci95_low = amb.alternative_value - 1.96 * f.sigma[j];
+        amb.alternative_ci95_high = amb.alternative_value + 1.96 * f.sigma[j];
+        if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
+        amb.separate = what_separates(effect, alternative);
+      }
       d.ambiguities.push_back(std::move(amb));
     }
   }

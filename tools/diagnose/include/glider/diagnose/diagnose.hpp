@@ -46,16 +46,23 @@ struct Finding {
   std::optional<double> heldout_rms_battpos_in;  // pitch_trim_offset: what it explains
 };
 
-// Two effects this log cannot tell apart (identifiability): the chosen one and
-// an alternative that, fitted in its place with the other findings, explains
-// the held-out yos within the selection's own margins. Both readings are
-// reported; `separate` says what data would tell them apart.
+// Identifiability of a finding against an alternative whose depth-rate
+// signature resembles it: the alternative fitted in the finding's place with
+// the other findings. Ambiguous when it explains the held-out yos within the
+// selection's own margins (the log cannot tell them apart: both readings are
+// reported, `separate` says what data would); else told apart by the
+// held-out yos.
 struct Ambiguity {
   Effect chosen = Effect::kBuoyancyOffset, alternative = Effect::kBuoyancyOffset;
   double correlation = 0.0;  // |partial correlation| of their depth-rate signatures on the fitted samples
   double alternative_value = 0.0, alternative_ci95_low = 0.0, alternative_ci95_high = 0.0;
   double chosen_heldout_rms_m_s = 0.0, alternative_heldout_rms_m_s = 0.0;
   std::string separate;
+  // The alternative's value is outside the effect's plausible range
+  // (flight_model.cpp, e.g. a mean vertical water velocity beyond 2 cm/s):
+  // only that prior, not this log, rules it out.
+  bool ruled_out_by_prior = false;
+  bool ambiguous = false;
 };
 
 // Which flight model the diagnosis fits: the dynamic one (the project's
@@ -102,7 +109,7 @@ struct Diagnosis {
   std::size_t train_samples = 0, heldout_samples = 0;
   Baseline baseline;
   std::vector<Finding> findings;       // strongest first, significant only
-  std::vector<Ambiguity> ambiguities;  // findings the log cannot tell from another effect
+  std::vector<Ambiguity> ambiguities;  // every pair judged (state_identifiability), ambiguous or told apart
   std::string cause = "none";
   EffectValues extended = nominal_values();
   std::optional<VerticalVelocityProfile> extended_profile;  // when the vertical velocity was fitted
@@ -153,10 +160,11 @@ struct DiagnoseOptions {
   std::vector<Effect> fit_only;
   // Identifiability: an unused candidate whose depth-rate signature correlates
   // with a finding's at least this much (after the other findings' are
-  // projected out) is fitted in the finding's place; if it explains the
-  // held-out yos within the selection's margins, the two are reported as
-  // ambiguous. Below this, the swap fit is not worth its cost.
-  double ambiguity_screen_correlation = 0.9;
+  // projected out) is fitted in the finding's place, and the pair is judged
+  // (ambiguous or told apart). Below this, the swap fit is not worth its cost.
+  // 0.75 from fresh truth draws (docs/science.md): buoyancy offsets of
+  // -69..+56 g against a water velocity correlate 0.81-0.98.
+  double ambiguity_screen_correlation = 0.75;
   // See Diagnosis::retrimmed_to_kg_m3: how far the log's median density may be
   // from the vehicle's trim density before the vehicle is re-trimmed for it.
   double retrim_tolerance_kg_m3 = 5.0;
