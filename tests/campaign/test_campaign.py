@@ -158,7 +158,7 @@ class Campaigns(InTemporaryDirectory):
             text = f.read()
         self.assertRegex(text, r"(?m)^runs = [0-9]+$")
         with open(path, "w") as f:
-            f.write(re.sub(r"(?m)^runs = [0-9]+$", "runs = 0", text))
+            f.write(re.sub(r"(?m)^runs = [0-9]+$", "runs = 0", text).replace("../../boards", os.path.join(ROOT, "boards")))
         bad = tool("run", path, "--out", os.path.join(self.dir, "zero_runs"))
         self.assertEqual(bad.returncode, 1, bad.stderr)
         self.assertIn("runs = 0: must be an integer >= 1", bad.stderr)
