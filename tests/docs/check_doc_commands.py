@@ -31,6 +31,7 @@ A mark applies to every occurrence of the same command in every doc.
 
   check_doc_commands.py SOURCE_DIR BUILD_DIR DOC.md [--list]
 """
+import glob
 import os
 import re
 import shlex
@@ -43,7 +44,7 @@ import time
 TIMEOUT_S = 50  # per command
 # Programs that serve until stopped: started in the background, alive and answering after SERVER_CHECK_S is
 # their pass; in a transcript block they serve the block's later commands (docs/bench.md's session).
-SERVERS = ("./glider actuator-sim", "./glider plant")
+SERVERS = ("./glider actuator-sim", "./glider plant", "./glider shore serve")
 SERVER_CHECK_S = 2.0
 PROGRAM = r"(?:\./glider|glider-[a-z-]+|build/release/\S+)"
 SKIP = re.compile(r"<!--\s*doc-test:\s*skip\s+(.*?)\s*-->")
@@ -85,6 +86,15 @@ PLACEHOLDERS = {
     ("./glider diagnose-deployment", "--join", "N"): "1",
     ("./glider diagnose-deployment", "--days-apart", "D"): "1",
     ("./glider validate", None, "DIR"): "{tmp}/validation",
+    ("./glider benchmark diagnose", "--draws", "N"): "1",
+    ("./glider benchmark diagnose", "--jobs", "J"): "1",
+    ("./glider benchmark diagnose", "--seed", "S"): "1",
+    ("./glider benchmark diagnose", "--cases", "A,B+C"): "buoyancy_offset",
+    ("./glider convert", None, "DIR"): "tests/data/real/dbd/comet-2019",
+    ("./glider convert", "--metadata", "deployment.toml"): "tests/netcdf/data/comet.toml",
+    ("./glider convert", "--vehicle", "VEHICLE.toml"): "boards/vehicles/slocum_shallow.toml",
+    ("./glider shore queue", None, "GLIDER"): "comet",
+    ("./glider shore queue", None, "goto_l10.ma"): "boards/missions/comet-nsb3/mafiles/goto_l10.ma",
     ("./glider actuator-sim", "--tcp", "HOST:PORT"): "127.0.0.1:0",
     ("./glider actuator-sim", "--board", "FILE"): "boards/actuators/default_modbus.toml",
     ("./glider actuator-sim", "--fault", "KIND:VALUE"): "stall:5",
@@ -171,7 +181,7 @@ def extract(path):
                     # In the text, `./glider SUB` or `./glider SUB --option` names a command (checked to exist);
                     # with arguments, or in a table of commands, it is a command line (run).
                     words = span.split()
-                    reference = not in_table and all(w.startswith("-") for w in words[2:])
+                    reference = not in_table and all(w.startswith("-") or w == "..." for w in words[2:])
                     commands.append((number, span.replace("\\|", "|"), skip, "reference" if reference else "span"))
                 elif re.match(r"glider-[a-z-]+\s+-", span):
                     commands.append((number, span.replace("\\|", "|"), skip, "options"))
@@ -226,7 +236,7 @@ def command_key(words):
     if words[0] != "./glider":
         return os.path.basename(words[0])
     key = "./glider " + words[1] if len(words) > 1 else "./glider"
-    if len(words) > 2 and words[1] in ("campaign", "fleet"):
+    if len(words) > 2 and words[1] in ("campaign", "fleet", "shore", "benchmark"):
         key += " " + words[2].split("|")[0]
     return key
 
@@ -284,7 +294,8 @@ def instantiate(text, tmp):
     for word in words:
         value = word
         first = word.split("|")[0].removesuffix("...")
-        if not word.startswith("-") and " " not in word and (PLACEHOLDER.search(word) or word == "a,b,..."):
+        literal = (key, previous, word) in PLACEHOLDERS or (key, None, word) in PLACEHOLDERS
+        if not word.startswith("-") and " " not in word and (PLACEHOLDER.search(word) or word == "a,b,..." or literal):
             # After a flag (--yes) a positional looks like an option's value: the positional entry is the fallback.
             for candidate in ((key, previous, word), (key, previous, first), (None, previous, word),
                               (None, previous, first), (key, None, word), (key, None, first)):
@@ -366,7 +377,7 @@ def small_campaign(tmp):
 
 def start_server(argv, source_dir, build_dir, log_path):
     """Starts a server command; returns (process, None) once it has printed its first line, or (None, why)."""
-    env = dict(os.environ, GLIDER_NO_BUILD="1", GLIDER_BUILD_DIR=build_dir)
+    env = dict(os.environ, GLIDER_NO_BUILD="1", GLIDER_BUILD_DIR=build_dir, HOME=source_dir)
     log = open(log_path, "w+", encoding="utf-8")
     proc = subprocess.Popen(["bash", "./glider"] + argv[1:], cwd=source_dir, env=env, stdout=log,
                             stderr=subprocess.STDOUT, start_new_session=True)
@@ -423,7 +434,10 @@ def program_path(build_dir, name):
 
 
 def run(argv, source_dir, build_dir):
-    env = dict(os.environ, GLIDER_NO_BUILD="1", GLIDER_BUILD_DIR=build_dir, GLIDER_SKIP_CROSS="1")
+    env = dict(os.environ, GLIDER_NO_BUILD="1", GLIDER_BUILD_DIR=build_dir, GLIDER_SKIP_CROSS="1", HOME=source_dir)
+    # As the shell would: a word with * or ? is the files it matches (docs/netcdf.md's profiles/*.nc).
+    argv = [a for word in argv for a in (sorted(glob.glob(word, root_dir=source_dir)) or [word]
+                                         if re.search(r"[*?]", word) and not word.startswith("-") else [word])]
     if argv[0].startswith("build/release/"):
         argv = [os.path.join(build_dir, argv[0][len("build/release/"):])] + argv[1:]
     elif argv[0].startswith("glider-"):

@@ -13,7 +13,8 @@ import sys
 
 BEGIN = "<!-- packages: generated from ./glider's lists by tests/docs/readme_packages.py --write -->"
 END = "<!-- end of packages -->"
-LISTS = ("BUILD_PACKAGES", "REPORT_PACKAGES", "TEST_PACKAGES", "CAMPAIGN_PACKAGES", "BENCH_PACKAGES", "CROSS_PACKAGES")
+LISTS = ("BUILD_PACKAGES", "REPORT_PACKAGES", "TEST_PACKAGES", "CAMPAIGN_PACKAGES", "SHORE_PACKAGES", "BENCH_PACKAGES",
+         "CROSS_PACKAGES")
 
 
 def package_lists(source_dir):
@@ -43,8 +44,8 @@ def generated(lists):
         f"(REPORT_PACKAGES): {names(lists['REPORT_PACKAGES'])}.",
         "- `./glider regress`, `campaign`, `fleet` add (CAMPAIGN_PACKAGES): "
         f"{names(lists['CAMPAIGN_PACKAGES'])}; `./glider benchmark` adds (BENCH_PACKAGES): "
-        f"{names(lists['BENCH_PACKAGES'])}.",
-        "- `./glider test`: all of those but BENCH_PACKAGES, and the tests' peers and checkers (TEST_PACKAGES): "
+        f"{names(lists['BENCH_PACKAGES'])}; `./glider shore` adds (SHORE_PACKAGES): {names(lists['SHORE_PACKAGES'])}.",
+        "- `./glider test`: all of those but BENCH_PACKAGES and SHORE_PACKAGES, and the tests' peers and checkers (TEST_PACKAGES): "
         f"{names(lists['TEST_PACKAGES'])}.",
         "- `./glider cross` and the arm64 stage of `./glider test` (after `dpkg --add-architecture arm64`; "
         f"CROSS_PACKAGES): {names(lists['CROSS_PACKAGES'])}.",
