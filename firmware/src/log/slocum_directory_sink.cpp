@@ -86,6 +86,7 @@ bool SlocumDirectorySink::open(int slot, const char* name) {
   if (n <= 0 || static_cast<std::size_t>(n) >= path_.size()) return false;
   fd_[s] = ::open(path_.data(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   length_[s] = 0;
+  std::snprintf(open_name_[s].data(), open_name_[s].size(), "%s", name);
   return fd_[s] >= 0;
 }
 
@@ -109,6 +110,13 @@ bool SlocumDirectorySink::write(int slot, const char* data, std::size_t size) {
   }
   length_[s] += size;
   return true;
+}
+
+bool SlocumDirectorySink::is_open(const char* name) const {
+  for (std::size_t s = 0; s < fd_.size(); ++s) {
+    if (fd_[s] >= 0 && std::strcmp(open_name_[s].data(), name) == 0) return true;
+  }
+  return false;
 }
 
 bool SlocumDirectorySink::close(int slot) {
