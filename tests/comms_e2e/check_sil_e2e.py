@@ -152,7 +152,8 @@ try:
 
     # The goto: delivered, accepted, flown.
     text = "\n".join(open(j).read() for j in journals)
-    check("goto_l10.ma accepted" in text, "the vehicle accepted the uploaded goto_l10.ma")
+    check(text.count("goto_l10.ma accepted") == 1, "the vehicle accepted the uploaded goto_l10.ma, once")
+    check(text.count("goto_l10.ma refused (the old plan is flown)") == 1, "the truncated .ma refused once")
     accepted = next(i for i, j in enumerate(journals) if "goto_l10.ma accepted" in open(j).read()) \
         if "goto_l10.ma accepted" in text else None
     if accepted is not None:
@@ -174,6 +175,9 @@ try:
     check(open(os.path.join(mission, "mafiles/goto_l10.ma")).read() == open(goto).read(),
           "the mission's goto_l10.ma is the accepted one (the refused file did not replace it)")
 finally:
+    # E2E_KEEP=DIR keeps the shore's folders (the journals quoted in docs/comms.md).
+    if os.environ.get("E2E_KEEP"):
+        shutil.copytree(os.path.join(work, "shore"), os.environ["E2E_KEEP"], dirs_exist_ok=True)
     shutil.rmtree(work, ignore_errors=True)
 print("PASS" if not failures else f"FAILED: {len(failures)}")
 sys.exit(0 if not failures else 1)

@@ -42,6 +42,7 @@ void ZmodemTransfer::list_files() {
 
 bool ZmodemTransfer::begin_send(std::span<const FileName> files) {
   if (mode_ != Mode::kIdle || files.empty()) return false;
+  received_ = 0;  // what the last zr brought has been dealt with
   sender_.emplace(link_, outgoing_, options_);
   for (const FileName& f : files) {
     if (!sender_->add_file(f.text)) break;  // more than the engine's list: the rest next time
