@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 // The folder a Slocum mission's .ma files are read from (as mi_document
 // looks for them: mafiles/ beside the .mi, ../mafiles/, the .mi's folder).
 fs::path mafiles_folder(const fs::path& mission) {
-  const fs::path dir = mission.parent_path();
+  fs::path dir = mission.parent_path();
   for (const fs::path& candidate : {dir / "mafiles", dir / ".." / "mafiles"}) {
     if (fs::is_directory(candidate)) return candidate;
   }
