@@ -203,6 +203,7 @@ struct Args {
   std::uint64_t cut_after = UINT64_MAX;
   bool escape = false;
   double limit_s = 50.0;
+  std::uint32_t block = kMaxBlock;
 };
 
 struct SessionResult {
@@ -290,6 +291,8 @@ int main(int argc, char** argv) {
       args.seed = std::stoull(value);
     } else if (key == "--cut-after") {
       args.cut_after = std::stoull(value);
+    } else if (key == "--block") {
+      args.block = static_cast<std::uint32_t>(std::stoul(value));
     } else if (key == "--limit-s") {
       args.limit_s = std::stod(value);
     } else {
@@ -330,6 +333,7 @@ int main(int argc, char** argv) {
 
   Options options;
   options.escape_control = args.escape;
+  options.max_block = args.block;
   // The defaults (10 s, 10 repeats): lrzsz's own timeouts are 10 s, and sz
   // waits for 5 s of silence after a ZRINIT, so shorter repeats livelock it.
   const bool cut = args.cut_after != UINT64_MAX;

@@ -118,7 +118,10 @@ void Sender::on_header(const Header& header, hal::Micros now) {
             static_cast<std::uint32_t>(header.bytes[0]) | (static_cast<std::uint32_t>(header.bytes[1]) << 8);
         full_window_ = std::max(options_.window_bytes, max_block());
         if (receiver_buffer_ != 0) full_window_ = std::min(full_window_, receiver_buffer_);
+        // Block and window learn the link's noise for the whole session.
         window_ = full_window_;
+        block_ = max_block();
+        good_since_error_ = 0;
         progress(now);
         next_file(now);
       } else if (state_ == State::wait_eof_ack) {
@@ -216,9 +219,6 @@ void Sender::next_file(hal::Micros now) {
       file_open_ = true;
       acked_ = 0;
       tx_pos_ = 0;
-      block_ = max_block();
-      window_ = full_window_;
-      good_since_error_ = 0;
       send_file_header();
       state_ = State::wait_file_pos;
       ask(now);
@@ -313,23 +313,21 @@ void Sender::repeat_last(hal::Micros now) {
       send_file_header();
       return;
     case State::sending:
-      // Blocked on a lost ZACK or ZRPOS: the frame is closed (empty ZCRCW)
-      // and a ZDATA at our position with an empty ZCRCW asks the receiver
-      // where it is: ZACK if in step, ZRPOS at once if it had lost sync.
+      // Blocked on a lost ZACK or ZRPOS: the frame is closed (an empty
+      // ZCRCW, in step with a receiver that is) and the last block goes
+      // again under its own ZDATA with ZCRCW: a receiver in step answers
+      // ZACK or ZRPOS at our position, one that lost sync ZRPOS at its own.
       if (frame_open_) encoder_.subpacket({}, kCrcW, crc32_);
-      encoder_.binary_header(Header::at(Frame::data, static_cast<std::uint32_t>(tx_pos_)), crc32_);
-      encoder_.subpacket({}, kCrcW, crc32_);
-      frame_open_ = false;
+      resend_last_block(kCrcW);
       return;
     case State::wait_eof_ack:
       // A receiver whose subpacket end was garbled still reads data: an
-      // empty ZCRCE ends that subpacket (a CRC error, so it asks ZRPOS); one
-      // that hunts ignores it. lrzsz's rz ignores a ZEOF it is short of and
-      // waits for a silence to ask again; an empty ZDATA at the end makes
-      // it ask (ZRPOS) at once, or is taken in stride if it has everything.
+      // empty ZCRCE ends that subpacket (a CRC error: it asks ZRPOS); one
+      // that hunts ignores it. lrzsz's rz ignores a ZEOF it is short of
+      // (and waits 10 s of silence); the last block again under its ZDATA
+      // makes it ask at once, or completes it.
       encoder_.subpacket({}, kCrcE, crc32_);
-      encoder_.binary_header(Header::at(Frame::data, static_cast<std::uint32_t>(tx_pos_)), crc32_);
-      encoder_.subpacket({}, kCrcE, crc32_);
+      resend_last_block(kCrcE);
       encoder_.binary_header(Header::at(Frame::eof, static_cast<std::uint32_t>(tx_pos_)), crc32_);
       return;
     case State::wait_fin:
@@ -339,6 +337,23 @@ void Sender::repeat_last(hal::Micros now) {
       status_ = Status::done;
       return;
   }
+}
+
+void Sender::resend_last_block(std::uint8_t end) {
+  // Never an empty subpacket under a ZDATA that may be ahead of the
+  // receiver: lrzsz's rz keeps such "out of sync blocks" and loops forever
+  // on one of length 0 once it reaches its position (lrz.c, SAVE_OOSB).
+  // A link that has not taken what is queued gains nothing from more.
+  if (encoder_.room() < Encoder::subpacket_cost(block_) + 3 * Encoder::kHeaderCost) return;
+  const std::int64_t from = std::max(acked_, tx_pos_ - static_cast<std::int64_t>(block_));
+  const auto length = static_cast<std::size_t>(tx_pos_ - from);
+  if (!files_.seek(from) || files_.read(std::span<std::uint8_t>(block_buffer_.data(), length)) != length) {
+    cancel_link(Failure::file_error);
+    return;
+  }
+  encoder_.binary_header(Header::at(Frame::data, static_cast<std::uint32_t>(from)), crc32_);
+  encoder_.subpacket(std::span<const std::uint8_t>(block_buffer_.data(), length), end, crc32_);
+  frame_open_ = false;
 }
 
 void Sender::on_timeout(hal::Micros now) {

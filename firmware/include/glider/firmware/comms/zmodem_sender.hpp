@@ -46,6 +46,7 @@ class Sender : public Session {
   void on_rpos(std::uint32_t position, hal::Micros now);
   void on_timeout(hal::Micros now);
   void repeat_last(hal::Micros now);
+  void resend_last_block(std::uint8_t end);
   void ask(hal::Micros now);
   void arm_answer(hal::Micros now);
   void next_file(hal::Micros now);
