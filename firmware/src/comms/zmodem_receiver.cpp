@@ -162,6 +162,16 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
       // a repeated ZFIN answered meanwhile.
       deadline_ = now + options_.timeout_us / 10;
       return;
+    case Frame::nak:
+      // The sender saw our last header garbled (lrzsz's sz answers so, then
+      // waits): say it again.
+      if (state_ == State::receiving) {
+        accepting_ = false;
+        send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+      } else if (state_ == State::wait_file) {
+        send(rinit());
+      }
+      return;
     case Frame::freecnt:
       send(Header::at(Frame::ack, 0));  // 0: free space unknown
       return;
