@@ -4,6 +4,8 @@
 // a carrier lost mid-file then a second session that resumes, aborts.
 #include <CppUTest/TestHarness.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <random>
@@ -33,6 +35,12 @@ struct Run {
   Status sender = Status::idle;
   Status receiver = Status::idle;
   glider::hal::Micros elapsed_us = 0;
+  std::vector<double> step_us;  // wall time of each step() (information, not checked)
+  double quantile(double q) {
+    if (step_us.empty()) return 0.0;
+    std::sort(step_us.begin(), step_us.end());
+    return step_us[static_cast<std::size_t>(q * static_cast<double>(step_us.size() - 1))];
+  }
 };
 
 // Steps both ends every 1 ms of virtual time with `budget` bytes each (a
@@ -43,8 +51,13 @@ Run run_session(Sender& sender, Receiver& receiver, glider::hal::Micros limit_us
   sender.start(now);
   Run run;
   while (now < limit_us) {
+    const auto t0 = std::chrono::steady_clock::now();
     run.sender = sender.step(now, budget);
+    const auto t1 = std::chrono::steady_clock::now();
     run.receiver = receiver.step(now, budget);
+    const auto t2 = std::chrono::steady_clock::now();
+    run.step_us.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
+    run.step_us.push_back(std::chrono::duration<double, std::micro>(t2 - t1).count());
     const bool sender_running = run.sender == Status::running;
     const bool receiver_running = run.receiver == Status::running;
     if (!sender_running && !receiver_running) break;
@@ -87,11 +100,13 @@ void check_transfer(const std::vector<std::size_t>& sizes, double corruption, st
     glider_files.mtimes[name] = 1764201600 + static_cast<std::int64_t>(i);
     CHECK(sender.add_file(name));
   }
-  const Run run = run_session(sender, receiver, limit_us);
+  Run run = run_session(sender, receiver, limit_us);
   std::printf("  %.1f s virtual, %d errors seen by the sender, %d by the receiver, %llu + %llu bytes corrupted\n",
               static_cast<double>(run.elapsed_us) / 1e6, sender.errors(), receiver.errors(),
               static_cast<unsigned long long>(link.up.corrupted), static_cast<unsigned long long>(link.down.corrupted));
-  std::printf("  sender %s, receiver %s\n", failure_name(sender.failure()), failure_name(receiver.failure()));
+  std::printf("  sender %s, receiver %s; step() wall time (64-byte budget): median %.1f us, p99 %.1f us, max %.0f us\n",
+              failure_name(sender.failure()), failure_name(receiver.failure()), run.quantile(0.5), run.quantile(0.99),
+              run.quantile(1.0));
   CHECK(run.sender == Status::done);
   CHECK(run.receiver == Status::done);
   CHECK_EQUAL(sizes.size(), receiver.result_count());
@@ -115,8 +130,9 @@ TEST(ZmodemEngine, CleanLinkSeveralSizes) { check_transfer({0, 1, 1024, 300 * 10
 TEST(ZmodemEngine, OnePercentCorruption) { check_transfer({0, 1, 1024, 100 * 1024}, 0.01, 20261127, 600'000'000); }
 
 // At 5 % a ZFILE frame (~75 bytes) gets through about once in 50 tries:
-// the no-progress limit (2 x max_retries timeouts) is set for that link.
-TEST(ZmodemEngine, FivePercentCorruption) { check_transfer({1, 1024, 16 * 1024}, 0.05, 5, 1200'000'000, 40); }
+// the no-progress limit (2 x max_retries timeouts, here 40 s) is set for
+// that link; with the default 10 repeats the session gives up (measured).
+TEST(ZmodemEngine, FivePercentCorruption) { check_transfer({1, 1024, 16 * 1024}, 0.05, 5, 3000'000'000, 100); }
 
 TEST(ZmodemEngine, CarrierLostThenResumed) {
   const std::uint64_t seed = 3;

@@ -2,7 +2,6 @@
 #include "glider/firmware/comms/zmodem_receiver.hpp"
 
 #include <charconv>
-#include <cstdio>
 #include <cstring>
 #include <string_view>
 
@@ -113,10 +112,6 @@ void Receiver::on_event(Parser::Event event, std::uint8_t byte, hal::Micros now)
 }
 
 void Receiver::on_header(const Header& header, hal::Micros now) {
-#ifdef ZMODEM_TRACE
-  std::fprintf(stderr, "%lld R<- %d %u state %d off %lld\n", (long long)now, (int)header.type, header.position(),
-               (int)state_, (long long)offset_);
-#endif
   data_for_ = header.type;
   switch (header.type) {
     case Frame::rqinit:
@@ -162,8 +157,20 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
       state_ = State::finishing;
       o_count_ = 0;
       send(Header::flags(Frame::fin, 0));
-      // Waits one timeout for the sender's "OO", answering a repeated ZFIN.
-      arm(now);
+      // Every file is settled: the sender's "OO" (which lrzsz's sz may not
+      // get out before it hangs up) is waited for a tenth of the timeout,
+      // a repeated ZFIN answered meanwhile.
+      deadline_ = now + options_.timeout_us / 10;
+      return;
+    case Frame::nak:
+      // The sender saw our last header garbled (lrzsz's sz answers so, then
+      // waits): say it again.
+      if (state_ == State::receiving) {
+        accepting_ = false;
+        send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+      } else if (state_ == State::wait_file) {
+        send(rinit());
+      }
       return;
     case Frame::freecnt:
       send(Header::at(Frame::ack, 0));  // 0: free space unknown
@@ -252,18 +259,22 @@ void Receiver::record(bool published) {
 }
 
 void Receiver::on_timeout(hal::Micros now) {
-#ifdef ZMODEM_TRACE
-  std::fprintf(stderr, "%lld R timeout state %d\n", (long long)now, (int)state_);
-#endif
   if (state_ == State::finishing) {
     status_ = Status::done;
     return;
   }
   if (!retry(now)) return;
-  parser_.reset();  // a frame whose end was garbled is void: hunt for the next header
+  parser_.reset();
+  // A byte garbled into XOFF stops a peer tty with IXON (lrzsz's): XON first.
+  static constexpr std::array<std::uint8_t, 1> kXonByte = {kXon};
+  encoder_.raw(kXonByte);  // a frame whose end was garbled is void: hunt for the next header
   if (state_ == State::receiving) {
     accepting_ = false;
     send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+  } else if (state_ == State::file_info) {
+    // The ZFILE's subpacket never ended: ZNAK has it sent again (a ZRINIT
+    // here makes lrzsz's sz wait for 5 s of silence first).
+    send(Header::flags(Frame::nak, 0));
   } else {
     send(rinit());
   }

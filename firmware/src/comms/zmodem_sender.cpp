@@ -2,7 +2,6 @@
 #include "glider/firmware/comms/zmodem_sender.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstring>
 
 namespace glider::fw::comms::zmodem {
@@ -51,7 +50,7 @@ Status Sender::step(hal::Micros now, std::size_t budget) {
     pump(now);
     const std::size_t written = flush(left);
     if (written == 0) break;
-    arm(now);  // the link takes our bytes: not a silence
+    if (state_ == State::sending) arm_answer(now);  // the link takes our data: not a silence
     left -= std::min(written, left);
   }
   if (status_ == Status::running && expired(now)) on_timeout(now);
@@ -85,11 +84,31 @@ void Sender::on_event(Parser::Event event, hal::Micros now) {
   }
 }
 
+void Sender::ask(hal::Micros now) {
+  if (sample_pending_) return;
+  sample_pending_ = true;
+  asked_at_ = now;
+}
+
+void Sender::arm_answer(hal::Micros now) {
+  // Until a round trip is measured, the configured timeout; then four round
+  // trips (at least kMinWait), doubled for each repeat in a row, never
+  // beyond the timeout: a lost answer costs about a round trip, not 10 s.
+  hal::Micros wait = options_.timeout_us;
+  if (smoothed_rtt_us_ > 0) {
+    wait = std::max<hal::Micros>(4 * smoothed_rtt_us_, kMinWait);
+    for (int i = 0; i < retries_ && wait < options_.timeout_us; ++i) wait *= 2;
+    wait = std::min(wait, options_.timeout_us);
+  }
+  deadline_ = now + wait;
+}
+
 void Sender::on_header(const Header& header, hal::Micros now) {
-#ifdef ZMODEM_TRACE
-  std::fprintf(stderr, "%lld S<- %d %u state %d tx %lld ack %lld\n", (long long)now, (int)header.type,
-               header.position(), (int)state_, (long long)tx_pos_, (long long)acked_);
-#endif
+  if (sample_pending_) {
+    const hal::Micros sample = now - asked_at_;
+    smoothed_rtt_us_ = smoothed_rtt_us_ == 0 ? sample : (7 * smoothed_rtt_us_ + sample) / 8;
+    sample_pending_ = false;
+  }
   switch (header.type) {
     case Frame::rinit:
       if (state_ == State::wait_rinit) {
@@ -99,14 +118,17 @@ void Sender::on_header(const Header& header, hal::Micros now) {
             static_cast<std::uint32_t>(header.bytes[0]) | (static_cast<std::uint32_t>(header.bytes[1]) << 8);
         full_window_ = std::max(options_.window_bytes, max_block());
         if (receiver_buffer_ != 0) full_window_ = std::min(full_window_, receiver_buffer_);
+        // Block and window learn the link's noise for the whole session.
         window_ = full_window_;
+        block_ = max_block();
+        good_since_error_ = 0;
         progress(now);
         next_file(now);
       } else if (state_ == State::wait_eof_ack) {
         end_file(Outcome::sent, now);
       } else if (state_ == State::wait_file_pos) {
         send_file_header();  // the receiver missed our ZFILE
-        arm(now);
+        arm_answer(now);
       }
       return;
     case Frame::rpos:
@@ -120,7 +142,7 @@ void Sender::on_header(const Header& header, hal::Micros now) {
           good_since_error_ += position - acked_;
           acked_ = position;
           progress(now);
-          arm(now);
+          arm_answer(now);
           // Data gets through: grow the subpacket back, a step at a time.
           if (good_since_error_ >= 8 * static_cast<std::int64_t>(block_)) {
             block_ = std::min(block_ * 2, max_block());
@@ -182,7 +204,7 @@ void Sender::on_rpos(std::uint32_t position, hal::Micros now) {
   frame_open_ = false;
   state_ = State::sending;
   if (advanced) progress(now);
-  arm(now);
+  arm_answer(now);
 }
 
 void Sender::next_file(hal::Micros now) {
@@ -197,19 +219,17 @@ void Sender::next_file(hal::Micros now) {
       file_open_ = true;
       acked_ = 0;
       tx_pos_ = 0;
-      block_ = max_block();
-      window_ = full_window_;
-      good_since_error_ = 0;
       send_file_header();
       state_ = State::wait_file_pos;
-      arm(now);
+      ask(now);
+      arm_answer(now);
       return;
     }
     outcomes_[current_++] = Outcome::failed;  // missing or unreadable: the others still go
   }
   encoder_.hex_header(Header::at(Frame::fin, 0));
   state_ = State::wait_fin;
-  arm(now);
+  arm_answer(now);
 }
 
 void Sender::send_file_header() {
@@ -223,6 +243,7 @@ void Sender::send_file_header() {
   }
   const std::size_t length = format_file_info(info_, files_left, bytes_left, block_buffer_);
   encoder_.discard();
+  encoder_.subpacket({}, kCrcE, crc32_);  // ends a garbled ZFILE subpacket still being read
   encoder_.binary_header(Header::flags(Frame::file, kConvBinary), crc32_);
   encoder_.subpacket(std::span<const std::uint8_t>(block_buffer_.data(), length), kCrcW, crc32_);
 }
@@ -257,25 +278,33 @@ void Sender::pump(hal::Micros now) {
       encoder_.binary_header(Header::at(Frame::eof, static_cast<std::uint32_t>(tx_pos_)), crc32_);
       frame_open_ = false;
       state_ = State::wait_eof_ack;
-      arm(now);
+      ask(now);
+      arm_answer(now);
       return;
     }
-    // Every quarter window a checkpoint: ZCRCW (the receiver answers ZACK)
-    // and a fresh ZDATA header, which a receiver that lost sync (its ZRPOS
-    // lost on the way) answers with ZRPOS at once instead of after a timeout.
+    // A ZCRCQ every quarter window: the receiver's ZACKs open the window.
     std::uint8_t end = kCrcG;
-    if (tx_pos_ - last_query_ >= static_cast<std::int64_t>(window_ / 4)) {
-      end = kCrcW;
+    if (receiver_buffer_ != 0 && tx_pos_ - acked_ >= static_cast<std::int64_t>(window_)) {
+      end = kCrcW;  // a receiver with a buffer: the frame ends, its ZACK lets us go on
       frame_open_ = false;
       last_query_ = tx_pos_;
+      ask(now);
+    } else if (tx_pos_ - last_query_ >= static_cast<std::int64_t>(window_ / 4)) {
+      end = kCrcQ;
+      last_query_ = tx_pos_;
+      ask(now);
     }
     encoder_.subpacket(data, end, crc32_);
-    arm(now);
+    arm_answer(now);
   }
 }
 
 void Sender::repeat_last(hal::Micros now) {
-  arm(now);
+  sample_pending_ = false;  // an answer to a repeat says nothing of the round trip (Karn)
+  arm_answer(now);
+  // A byte garbled into XOFF stops a peer tty with IXON (lrzsz's): XON first.
+  static constexpr std::array<std::uint8_t, 1> kXonByte = {kXon};
+  encoder_.raw(kXonByte);
   switch (state_) {
     case State::wait_rinit:
       encoder_.hex_header(Header::at(Frame::rqinit, 0));
@@ -284,14 +313,21 @@ void Sender::repeat_last(hal::Micros now) {
       send_file_header();
       return;
     case State::sending:
-      // Blocked on a lost ZACK or ZRPOS: a ZDATA at our position with an
-      // empty ZCRCW asks the receiver where it is (ZACK or ZRPOS).
-      encoder_.discard();
-      if (!frame_open_) encoder_.binary_header(Header::at(Frame::data, static_cast<std::uint32_t>(tx_pos_)), crc32_);
-      encoder_.subpacket({}, kCrcW, crc32_);
-      frame_open_ = false;
+      // Blocked on a lost ZACK or ZRPOS: the frame is closed (an empty
+      // ZCRCW, in step with a receiver that is) and the last block goes
+      // again under its own ZDATA with ZCRCW: a receiver in step answers
+      // ZACK or ZRPOS at our position, one that lost sync ZRPOS at its own.
+      if (frame_open_) encoder_.subpacket({}, kCrcW, crc32_);
+      resend_last_block(kCrcW);
       return;
     case State::wait_eof_ack:
+      // A receiver whose subpacket end was garbled still reads data: an
+      // empty ZCRCE ends that subpacket (a CRC error: it asks ZRPOS); one
+      // that hunts ignores it. lrzsz's rz ignores a ZEOF it is short of
+      // (and waits 10 s of silence); the last block again under its ZDATA
+      // makes it ask at once, or completes it.
+      encoder_.subpacket({}, kCrcE, crc32_);
+      resend_last_block(kCrcE);
       encoder_.binary_header(Header::at(Frame::eof, static_cast<std::uint32_t>(tx_pos_)), crc32_);
       return;
     case State::wait_fin:
@@ -303,6 +339,23 @@ void Sender::repeat_last(hal::Micros now) {
   }
 }
 
+void Sender::resend_last_block(std::uint8_t end) {
+  // Never an empty subpacket under a ZDATA that may be ahead of the
+  // receiver: lrzsz's rz keeps such "out of sync blocks" and loops forever
+  // on one of length 0 once it reaches its position (lrz.c, SAVE_OOSB).
+  // A link that has not taken what is queued gains nothing from more.
+  if (encoder_.room() < Encoder::subpacket_cost(block_) + 3 * Encoder::kHeaderCost) return;
+  const std::int64_t from = std::max(acked_, tx_pos_ - static_cast<std::int64_t>(block_));
+  const auto length = static_cast<std::size_t>(tx_pos_ - from);
+  if (!files_.seek(from) || files_.read(std::span<std::uint8_t>(block_buffer_.data(), length)) != length) {
+    cancel_link(Failure::file_error);
+    return;
+  }
+  encoder_.binary_header(Header::at(Frame::data, static_cast<std::uint32_t>(from)), crc32_);
+  encoder_.subpacket(std::span<const std::uint8_t>(block_buffer_.data(), length), end, crc32_);
+  frame_open_ = false;
+}
+
 void Sender::on_timeout(hal::Micros now) {
   // Every file's outcome is known once ZFIN is out: a ZFIN still
   // unanswered after the repeats (the receiver already left) ends the
@@ -312,9 +365,6 @@ void Sender::on_timeout(hal::Micros now) {
     status_ = Status::done;
     return;
   }
-#ifdef ZMODEM_TRACE
-  std::fprintf(stderr, "%lld S timeout state %d\n", (long long)now, (int)state_);
-#endif
   parser_.reset();
   if (retry(now)) repeat_last(now);
 }

@@ -16,7 +16,7 @@ namespace glider::fw::comms::zmodem {
 class Encoder {
  public:
   // Room for one largest subpacket escaped byte for byte, plus a few headers.
-  static constexpr std::size_t kCapacity = 2 * 1024 + 256;
+  static constexpr std::size_t kCapacity = 2 * 1024 + 512;
 
   void set_escape_control(bool all) { escape_control_ = all; }
   std::size_t pending() const { return tail_ - head_; }

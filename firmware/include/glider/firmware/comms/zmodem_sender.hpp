@@ -12,9 +12,9 @@
 namespace glider::fw::comms::zmodem {
 
 // Zmodem sender (glider -> shore: data files). Streams ZDATA subpackets
-// (CRC-32 when the receiver offers it), a ZCRCW checkpoint and a new ZDATA
-// header every quarter window, at most options.window_bytes (or the
-// receiver's buffer) ahead of its last ZACK; a ZRPOS
+// (CRC-32 when the receiver offers it) with a ZCRCQ every quarter window, at
+// most options.window_bytes (or the receiver's buffer) ahead of its last
+// ZACK; a lost answer is asked again after about four measured round trips; a ZRPOS
 // rewinds to the receiver's offset (its last good byte, or the size of a
 // partial it already holds: resume) and halves the subpacket, which grows
 // back as data gets through. Non-blocking: step() reads and writes at most
@@ -46,6 +46,9 @@ class Sender : public Session {
   void on_rpos(std::uint32_t position, hal::Micros now);
   void on_timeout(hal::Micros now);
   void repeat_last(hal::Micros now);
+  void resend_last_block(std::uint8_t end);
+  void ask(hal::Micros now);
+  void arm_answer(hal::Micros now);
   void next_file(hal::Micros now);
   void send_file_header();
   void pump(hal::Micros now);
@@ -74,6 +77,12 @@ class Sender : public Session {
   std::int64_t acked_ = 0;
   std::int64_t last_query_ = 0;  // position of the last ZCRCQ/ZCRCW
   std::int64_t good_since_error_ = 0;
+  // Round trip, measured from a question (ZFILE, ZEOF, ZCRCQ) to the next
+  // header back; it sets how long a lost answer is waited for.
+  static constexpr hal::Micros kMinWait = 50'000;
+  hal::Micros smoothed_rtt_us_ = 0;
+  hal::Micros asked_at_ = 0;
+  bool sample_pending_ = false;
   std::array<std::uint8_t, kMaxBlock> block_buffer_{};
 };
 
