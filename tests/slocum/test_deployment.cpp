@@ -94,6 +94,27 @@ TEST(SlocumDeployment, LoaderReadsBinariesWithTheCsvReadersChecks) {
   }
 }
 
+TEST(SlocumDeployment, LoaderReadsScienceFilesAloneAsConvertDoes) {
+  const std::string ebd = (t::real_dbd_dir() / "comet-2019" / "comet-2019-222-02-154.ebd").string();
+  glider::flightlog::ReadOptions options;
+  options.required.clear();
+  const auto log = glider::slocum::load_flight_log({{ebd}, {}}, options);
+  const auto convert = glider::slocum::read_deployment(glider::slocum::deployment_files({ebd}), {});
+  STRCMP_EQUAL("sci_m_present_time", log.column_names().front().c_str());
+  CHECK_EQUAL(convert.log.rows(), log.rows());
+  CHECK(convert.log.column_names() == log.column_names());
+  // A tool that needs the flight computer's sensors is told which one is missing, not the time.
+  try {
+    glider::slocum::load_flight_log({{ebd}, {}}, glider::flightlog::ReadOptions{});
+    FAIL("no error");
+  } catch (const glider::flightlog::FlightLogError& e) {
+    STRCMP_EQUAL("m_pitch", e.column_name().c_str());
+  }
+  // Another time column asked for by name is still refused.
+  options.time_column = "m_present_time_other";
+  CHECK_THROWS(glider::flightlog::FlightLogError, glider::slocum::load_flight_log({{ebd}, {}}, options));
+}
+
 TEST(SlocumDeployment, ScienceFilesAloneUseTheScienceTime) {
   glider::slocum::DeploymentOptions options;
   options.columns = {"sci_water_temp"};

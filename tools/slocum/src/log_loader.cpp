@@ -45,7 +45,13 @@ flightlog::FlightLog load_flight_log(const LogSource& source, const flightlog::R
   if (warnings != nullptr) warnings->insert(warnings->end(), deployment.warnings.begin(), deployment.warnings.end());
   const flightlog::FlightLog& log = deployment.log;
   const std::string time_name = log.column_names().front();
-  if (time_name != options.time_column) {
+  // Science files alone (.ebd/.tbd/.nbd) have only the science computer's
+  // clock: their log is timed by sci_m_present_time, as glider-convert writes
+  // it. A tool asking for the default time takes it; one asking for another
+  // name is refused.
+  const bool science_time =
+      time_name == "sci_m_present_time" && options.time_column == flightlog::ReadOptions{}.time_column;
+  if (time_name != options.time_column && !science_time) {
     throw flightlog::FlightLogError(log.source(), 0, options.time_column, 0,
                                     "time column missing (Slocum binaries have " + time_name + ")");
   }
