@@ -85,7 +85,8 @@ def _build_module(config_settings):
     build = _build_dir(config_settings)
     suffix = sysconfig.get_config_var("EXT_SUFFIX")
     if not (build / "CMakeCache.txt").exists():
-        configure = ["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release"]
+        # The library and its module only: no test programs (nor CppUTest) needed.
+        configure = ["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DBUILD_TESTING=OFF"]
         if shutil.which("ninja"):
             configure += ["-G", "Ninja"]
         if "CMAKE_CXX_COMPILER_LAUNCHER" not in os.environ and shutil.which("ccache"):
