@@ -8,6 +8,7 @@ the one target glider_python in GLIDER_PIP_BUILD_DIR, from ccache)."""
 import os
 import subprocess
 import sys
+import tarfile
 import zipfile
 from pathlib import Path
 
@@ -48,16 +49,23 @@ def test_pip_install_into_a_venv_and_import_from_outside_the_tree(work):
     run([python, "-m", "pip", "install", "--no-build-isolation", "--no-index", ROOT], cwd=work, env=clean_env())
 
     code = (
-        "import glider\n"
+        "import glider, os\n"
         "print(glider.__file__)\n"
         f"log = glider.read_log({str(COMET_2016)!r})\n"
         "print(len(log), len(log.columns))\n"
+        "print(os.environ.get('GLIDER_BOARDS_DIR'))\n"
+        "print(glider.load_vehicle().name)\n"
     )
-    out = run([python, "-c", code], cwd=work, env=clean_env()).stdout.split("\n")
+    env = {k: v for k, v in clean_env().items() if k != "GLIDER_BOARDS_DIR"}
+    out = run([python, "-c", code], cwd=work, env=env).stdout.split("\n")
     module = Path(out[0])
     assert module.is_relative_to(venv), module  # the venv's copy, not the build tree's
     assert not module.is_relative_to(ROOT)
     assert out[1] == "3043 1465"
+    # The boards/ the wheel installed, not the source tree's: the default vehicle from there.
+    assert out[2] == str(venv / "share" / "glider" / "boards"), out[2]
+    assert (venv / "share" / "glider" / "boards" / "gliders.toml").is_file()
+    assert out[3] == "slocum_we01"
 
     listed = run([python, "-m", "pip", "show", "-f", "glider"], cwd=work, env=clean_env()).stdout
     assert "Version: 0.1.0" in listed and "Requires: numpy" in listed
@@ -66,8 +74,8 @@ def test_pip_install_into_a_venv_and_import_from_outside_the_tree(work):
     assert gone.returncode != 0
 
 
-def test_the_wheel_metadata_comes_from_the_project_files():
-    """Version from CMakeLists.txt, dependencies from pyproject.toml, tag of this interpreter."""
+def test_the_wheel_metadata_comes_from_the_project_files(tmp_path):
+    """Version from CMakeLists.txt, dependencies from pyproject.toml, tag of this interpreter; the sdist."""
     sys.path.insert(0, str(ROOT / "tools" / "python" / "packaging"))
     try:
         import glider_build_backend as backend
@@ -78,3 +86,11 @@ def test_the_wheel_metadata_comes_from_the_project_files():
     assert tag.startswith(f"cp{sys.version_info.major}{sys.version_info.minor}-") and "linux" in tag
     metadata = backend._metadata(backend._project())
     assert "Requires-Dist: numpy" in metadata and 'Requires-Dist: xarray; extra == "xarray"' in metadata
+    # The sdist: the files git tracks (what pip needs to build the wheel from it), not the build trees.
+    name = backend.build_sdist(str(tmp_path))
+    with tarfile.open(tmp_path / name) as sdist:
+        names = set(sdist.getnames())
+    for needed in ("pyproject.toml", "CMakeLists.txt", "tools/python/packaging/glider_build_backend.py",
+                   "tools/python/glider_module.cpp", "docs/python.md", "LICENSE", "PKG-INFO"):
+        assert f"glider-0.1.0/{needed}" in names, needed
+    assert not any(n.startswith("glider-0.1.0/build/") for n in names)

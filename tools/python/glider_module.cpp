@@ -7,8 +7,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <dlfcn.h>
+
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -158,9 +161,31 @@ py::dict steady_glide(const VehicleParams& vehicle, const py::array_t<double>& p
   return out;
 }
 
+// A module installed by `pip install .` uses the boards/ (vehicles, gliders.toml)
+// its wheel installed with it, in the installation's data directory
+// (<data>/share/glider/boards), so that it does not depend on the source tree it
+// was built from; GLIDER_BOARDS_DIR, when set, still decides (cli::boards_dir).
+// Child processes (the glider-* tools run from Python) inherit it.
+void use_installed_boards() {
+  if (std::getenv("GLIDER_BOARDS_DIR") != nullptr) return;
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&use_installed_boards), &info) == 0 || info.dli_fname == nullptr) return;
+  const py::module_ sysconfig = py::module_::import("sysconfig");
+  const std::filesystem::path platlib = sysconfig.attr("get_path")("platlib").cast<std::string>();
+  std::error_code error;
+  if (!std::filesystem::equivalent(std::filesystem::path(info.dli_fname).parent_path(), platlib, error)) return;
+  const auto boards =
+      std::filesystem::path(sysconfig.attr("get_path")("data").cast<std::string>()) / "share" / "glider" / "boards";
+  if (std::filesystem::is_directory(boards / "vehicles", error)) {
+    // Through os.environ, which sets the process's environment too: Python's view and the C++ one agree.
+    py::module_::import("os").attr("environ")["GLIDER_BOARDS_DIR"] = boards.string();
+  }
+}
+
 }  // namespace
 
 PYBIND11_MODULE(glider, m) {
+  use_installed_boards();
   m.doc() = "Underwater glider logs (CSV and Slocum binaries), flight models and diagnosis (docs/python.md)";
 
   py::class_<Log> log_class(m, "Log", "A flight log: one numpy array per column (NaN = no value that cycle)");

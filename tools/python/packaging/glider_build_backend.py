@@ -137,6 +137,11 @@ def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
         f"{info}/WHEEL": _wheel_file(tag).encode(),
         f"{info}/LICENSE": (ROOT / "LICENSE").read_bytes(),
     }
+    # boards/ (vehicle files, gliders.toml) to <data>/share/glider/boards, where the installed module looks.
+    data = f"{project['name']}-{project['version']}.data/data/share/glider/boards"
+    for path in sorted((ROOT / "boards").rglob("*")):
+        if path.is_file():
+            files[f"{data}/{path.relative_to(ROOT / 'boards').as_posix()}"] = path.read_bytes()
     name = f"{project['name']}-{project['version']}-{tag}.whl"
     record = io.StringIO()
     writer = csv.writer(record, lineterminator="\n")
