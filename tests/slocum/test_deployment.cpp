@@ -4,9 +4,12 @@
 #include <CppUTest/TestHarness.h>
 
 #include <cmath>
+#include <filesystem>
+#include <sstream>
 #include <string>
 
 #include "file_surgery.hpp"
+#include "glider/slocum/csv_export.hpp"
 #include "glider/slocum/deployment.hpp"
 #include "glider/slocum/log_loader.hpp"
 #include "reference.hpp"
@@ -92,6 +95,36 @@ TEST(SlocumDeployment, LoaderReadsBinariesWithTheCsvReadersChecks) {
     CHECK(std::string(e.what()).find("required column missing from the binary files (nor m_other)") !=
           std::string::npos);
   }
+}
+
+TEST(SlocumDeployment, LoaderReadsScienceFilesAloneAsConvertDoes) {
+  const std::string ebd = (t::real_dbd_dir() / "comet-2019" / "comet-2019-222-02-154.ebd").string();
+  glider::flightlog::ReadOptions options;
+  options.required.clear();
+  const auto log = glider::slocum::load_flight_log({{ebd}, {}}, options);
+  const auto convert = glider::slocum::read_deployment(glider::slocum::deployment_files({ebd}), {});
+  STRCMP_EQUAL("sci_m_present_time", log.column_names().front().c_str());
+  CHECK_EQUAL(convert.log.rows(), log.rows());
+  CHECK(convert.log.column_names() == log.column_names());
+  // A tool that needs the flight computer's sensors is told which one is missing, not the time.
+  try {
+    glider::slocum::load_flight_log({{ebd}, {}}, glider::flightlog::ReadOptions{});
+    FAIL("no error");
+  } catch (const glider::flightlog::FlightLogError& e) {
+    STRCMP_EQUAL("m_pitch", e.column_name().c_str());
+  }
+  // The CSV glider-convert writes of them loads as well, timed the same way.
+  std::ostringstream csv;
+  glider::slocum::write_csv(convert, csv);
+  const auto csv_path = std::filesystem::temp_directory_path() / "glider_slocum_tests_science_only.csv";
+  glider::slocum::test::write_bytes(csv_path, csv.str());
+  const auto from_csv = glider::slocum::load_flight_log({{csv_path.string()}, {}}, options);
+  std::filesystem::remove(csv_path);
+  STRCMP_EQUAL("sci_m_present_time", from_csv.column_names().front().c_str());
+  CHECK_EQUAL(log.rows(), from_csv.rows());
+  // Another time column asked for by name is still refused.
+  options.time_column = "m_present_time_other";
+  CHECK_THROWS(glider::flightlog::FlightLogError, glider::slocum::load_flight_log({{ebd}, {}}, options));
 }
 
 TEST(SlocumDeployment, ScienceFilesAloneUseTheScienceTime) {

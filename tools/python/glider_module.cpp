@@ -7,8 +7,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <dlfcn.h>
+
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -25,6 +28,8 @@
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/slocum/log_loader.hpp"
+#include "og1_xarray.hpp"
+#include "python_log.hpp"
 
 namespace py = pybind11;
 
@@ -33,17 +38,8 @@ namespace {
 using glider::flightlog::FlightLog;
 using glider::model::VehicleParams;
 
-struct Log {
-  FlightLog log;
-  std::vector<std::string> warnings;
-  std::string first_input;  // the first file or folder read: its name may name the glider
-};
-
-py::array_t<double> to_array(const std::vector<double>& values) {
-  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
-  std::copy(values.begin(), values.end(), out.mutable_data());
-  return out;
-}
+using glider::python::Log;
+using glider::python::to_array;
 
 std::vector<std::string> as_list(const py::object& value) {
   if (value.is_none()) return {};
@@ -165,13 +161,35 @@ py::dict steady_glide(const VehicleParams& vehicle, const py::array_t<double>& p
   return out;
 }
 
+// A module installed by `pip install .` uses the boards/ (vehicles, gliders.toml)
+// its wheel installed with it, in the installation's data directory
+// (<data>/share/glider/boards), so that it does not depend on the source tree it
+// was built from; GLIDER_BOARDS_DIR, when set, still decides (cli::boards_dir).
+// Child processes (the glider-* tools run from Python) inherit it.
+void use_installed_boards() {
+  if (std::getenv("GLIDER_BOARDS_DIR") != nullptr) return;
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&use_installed_boards), &info) == 0 || info.dli_fname == nullptr) return;
+  const py::module_ sysconfig = py::module_::import("sysconfig");
+  const std::filesystem::path platlib = sysconfig.attr("get_path")("platlib").cast<std::string>();
+  std::error_code error;
+  if (!std::filesystem::equivalent(std::filesystem::path(info.dli_fname).parent_path(), platlib, error)) return;
+  const auto boards =
+      std::filesystem::path(sysconfig.attr("get_path")("data").cast<std::string>()) / "share" / "glider" / "boards";
+  if (std::filesystem::is_directory(boards / "vehicles", error)) {
+    // Through os.environ, which sets the process's environment too: Python's view and the C++ one agree.
+    py::module_::import("os").attr("environ")["GLIDER_BOARDS_DIR"] = boards.string();
+  }
+}
+
 }  // namespace
 
 PYBIND11_MODULE(glider, m) {
+  use_installed_boards();
   m.doc() = "Underwater glider logs (CSV and Slocum binaries), flight models and diagnosis (docs/python.md)";
 
-  py::class_<Log>(m, "Log", "A flight log: one numpy array per column (NaN = no value that cycle)")
-      .def_property_readonly("source", [](const Log& l) { return l.log.source(); })
+  py::class_<Log> log_class(m, "Log", "A flight log: one numpy array per column (NaN = no value that cycle)");
+  log_class.def_property_readonly("source", [](const Log& l) { return l.log.source(); })
       .def_property_readonly("columns", [](const Log& l) { return l.log.column_names(); })
       .def_property_readonly("time", [](const Log& l) { return to_array(l.log.time()); })
       .def_property_readonly("metadata",
@@ -200,8 +218,9 @@ PYBIND11_MODULE(glider, m) {
       .def_readonly("description", &VehicleParams::description);
 
   m.def("read_log", &read_log, py::arg("inputs"), py::arg("cache") = py::none(), py::arg("columns") = py::none(),
-        "Read a flight-log CSV, or a glider's binary files (a directory, glob, file or list of them: .dbd .ebd ... "
-        "and LZ4 .dcd .ecd ...), merged as glider-convert does. cache: sensor-list cache directory(ies).");
+        "Read a flight-log CSV, an OG1.0 NetCDF file, or a glider's binary files (a directory, glob, file or list of "
+        "them: .dbd .ebd ... and LZ4 .dcd .ecd ...; science files alone too), merged as glider-convert does. cache: "
+        "sensor-list cache directory(ies).");
   m.def(
       "load_vehicle",
       [](const py::object& path) {
@@ -219,4 +238,5 @@ PYBIND11_MODULE(glider, m) {
         "steady: steady glides): predicted and measured depth rate of the scored samples");
   m.def("diagnose", &diagnose, py::arg("log"), py::arg("vehicle") = py::none(), py::arg("model") = "dynamic",
         "What the model gets wrong in the log: the same object as `glider-diagnose --json`");
+  glider::python::bind_og1(m, log_class);
 }

@@ -41,14 +41,14 @@ const Mapping kMappings[] = {
 std::vector<double> read_values(const NcFile& f, int var, std::size_t n) {
   std::vector<double> values(n);
   if (n) f.check(nc_get_var_double(f.id(), var, values.data()), "get_var_double");
+  // The _FillValue attribute marks the missing values whatever the file's
+  // fill mode (the writers here create files in NC_NOFILL mode, for which
+  // nc_inq_var_fill says "no fill" although every missing value is the fill).
   double fill = kNaN;
-  int no_fill = 0;
-  if (nc_inq_var_fill(f.id(), var, &no_fill, nullptr) == NC_NOERR && !no_fill) {
-    nc_type type = 0;
-    size_t length = 0;
-    if (nc_inq_att(f.id(), var, "_FillValue", &type, &length) == NC_NOERR && length == 1) {
-      f.check(nc_get_att_double(f.id(), var, "_FillValue", &fill), "get_att_double _FillValue");
-    }
+  nc_type type = 0;
+  size_t length = 0;
+  if (nc_inq_att(f.id(), var, "_FillValue", &type, &length) == NC_NOERR && length == 1) {
+    f.check(nc_get_att_double(f.id(), var, "_FillValue", &fill), "get_att_double _FillValue");
   }
   for (double& v : values) {
     if (!std::isfinite(v) || v == fill || (std::isfinite(fill) && std::abs(v - fill) <= 1e-6 * std::abs(fill))) {

@@ -6,6 +6,7 @@
 #include <netcdf.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "glider/netcdf/writers.hpp"
@@ -21,8 +22,12 @@ const char* const kCoordinates = "TIME LONGITUDE LATITUDE DEPTH";
 
 class Og1Writer {
  public:
-  Og1Writer(NcFile& file, const WriteContext& context)
-      : f_(file), c_(context), t_(*context.trajectory), m_(*context.metadata) {}
+  Og1Writer(DatasetSink& file, const WriteContext& context)
+      : f_(file),
+        c_(context),
+        t_(*context.trajectory),
+        m_(context.metadata != nullptr ? *context.metadata : kNoMetadata),
+        has_metadata_(context.metadata != nullptr) {}
 
   void write() {
     dim_ = f_.def_dim("N_MEASUREMENTS", 0);
@@ -33,7 +38,7 @@ class Og1Writer {
     parameters();
     phase_and_profile();
     if (c_.products != nullptr) flight_model();
-    scalars();
+    if (has_metadata_) scalars();
     f_.end_define();
     for (const auto& [var, values] : doubles_) f_.put(var, values);
     for (const auto& [var, values] : bytes_) f_.put(var, values);
@@ -75,13 +80,18 @@ class Og1Writer {
     auto g = [&](const char* name, const std::string& value) {
       if (!value.empty()) f_.put_att(-1, name, value);
     };
+    // Without the deployment metadata (an in-memory dataset of a log): only
+    // what the data say; the elements the metadata file gives are left out.
+    auto gm = [&](const char* name, const std::string& value) {
+      if (has_metadata_) g(name, value);
+    };
     g("title", m_.title);
     g("platform", "sub-surface gliders");
     g("platform_vocabulary", "https://vocab.nerc.ac.uk/collection/L06/current/27/");
-    g("id", og1_id(m_));
+    gm("id", og1_id(m_));
     g("naming_authority", m_.naming_authority);
     g("institution", m_.institution);
-    g("internal_mission_identifier", m_.platform_name + "_" + format_utc_compact(m_.deployment_time_s));
+    gm("internal_mission_identifier", m_.platform_name + "_" + format_utc_compact(m_.deployment_time_s));
     double lat_min = INFINITY, lat_max = -INFINITY, lon_min = INFINITY, lon_max = -INFINITY, z_min = INFINITY,
            z_max = -INFINITY;
     for (std::size_t i = 0; i < t_.size(); ++i) {
@@ -101,23 +111,25 @@ class Og1Writer {
       f_.put_att(-1, "geospatial_vertical_min", z_min);
       f_.put_att(-1, "geospatial_vertical_max", z_max);
     }
-    g("time_coverage_start", format_utc_compact(start));
-    g("time_coverage_end", format_utc_compact(end));
+    if (t_.size() || has_metadata_) {
+      g("time_coverage_start", format_utc_compact(start));
+      g("time_coverage_end", format_utc_compact(end));
+    }
     g("site", m_.site);
     g("project", m_.project);
     g("contributor_name", m_.pi_name);
     g("contributor_email", m_.pi_email);
     g("contributor_role", m_.pi_role);
-    g("contributor_role_vocabulary",
-      "https://github.com/OceanGlidersCommunity/OG-format-user-manual/blob/main/vocabularyCollection/"
-      "contributors_role.md");
+    gm("contributor_role_vocabulary",
+       "https://github.com/OceanGlidersCommunity/OG-format-user-manual/blob/main/vocabularyCollection/"
+       "contributors_role.md");
     g("contributing_institutions", m_.operator_institution);
     g("contributing_institutions_role", m_.operator_role);
-    g("contributing_institutions_role_vocabulary",
-      "https://github.com/OceanGlidersCommunity/OG-format-user-manual/blob/main/vocabularyCollection/"
-      "contributors_role.md");
+    gm("contributing_institutions_role_vocabulary",
+       "https://github.com/OceanGlidersCommunity/OG-format-user-manual/blob/main/vocabularyCollection/"
+       "contributors_role.md");
     g("rtqc_method", m_.rtqc_method);
-    g("start_date", format_utc_compact(m_.deployment_time_s));
+    gm("start_date", format_utc_compact(m_.deployment_time_s));
     g("date_created", format_utc_compact(c_.created_s));
     g("featureType", "trajectory");
     g("Conventions", "CF-1.10, ACDD-1.3, OG-1.0");
@@ -126,6 +138,11 @@ class Og1Writer {
     g("history", c_.history);
     g("source", "Slocum glider binary files converted by glider-convert (this project)");
     g("comment", "PHASE and PROFILE_NUMBER from the project's phase segmentation (docs/netcdf.md)");
+    if (!has_metadata_) {
+      g("glider_no_metadata",
+        "no deployment metadata file given: the platform, deployment, contributor and sensor elements OG1.0 "
+        "requires are not in this dataset (docs/netcdf.md, the deployment metadata file)");
+    }
   }
 
   void coordinates() {
@@ -216,7 +233,7 @@ class Og1Writer {
     if (ctd) f_.put_att(v, "vocabulary", std::string(kVocab) + name + "/");
     f_.put_att(v, "coordinates", kCoordinates);
     f_.put_att(v, "ancillary_variables", name + "_QC");
-    if (ctd) f_.put_att(v, "sensor", sensor_name());
+    if (ctd && has_metadata_) f_.put_att(v, "sensor", sensor_name());
     f_.put_att(v, "comment", source);
     qc(name, values);
   }
@@ -369,10 +386,12 @@ class Og1Writer {
     if (!m_.ctd_calibration_date.empty()) f_.put_att(v, "sensor_calibration_date", m_.ctd_calibration_date);
   }
 
-  NcFile& f_;
+  static inline const DeploymentMetadata kNoMetadata{};
+  DatasetSink& f_;
   const WriteContext& c_;
   const Trajectory& t_;
-  const DeploymentMetadata& m_;
+  const DeploymentMetadata& m_;  // kNoMetadata when none was given
+  bool has_metadata_;
   int dim_ = -1;
   std::size_t chunk_ = 1;
   std::vector<std::pair<int, std::vector<double>>> doubles_;
@@ -390,9 +409,16 @@ std::string og1_id(const DeploymentMetadata& m) {
 }
 
 void write_og1(const std::filesystem::path& path, const WriteContext& context) {
+  if (context.metadata == nullptr) throw std::invalid_argument(path.string() + ": an OG1.0 file needs the metadata");
   NcFile file = NcFile::create(path, NcFile::Kind::kNetcdf4);
   Og1Writer(file, context).write();
   file.close();
+}
+
+MemoryDataset og1_dataset(const WriteContext& context) {
+  MemoryDataset dataset;
+  Og1Writer(dataset, context).write();
+  return dataset;
 }
 
 }  // namespace glider::netcdf

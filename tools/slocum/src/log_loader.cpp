@@ -2,6 +2,9 @@
 #include "glider/slocum/log_loader.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include "glider/slocum/deployment.hpp"
 #ifdef GLIDER_LOG_LOADER_NETCDF
@@ -9,6 +12,36 @@
 #endif
 
 namespace glider::slocum {
+namespace {
+
+constexpr const char* kScienceTime = "sci_m_present_time";
+
+// Science files alone (.ebd/.tbd/.nbd) have only the science computer's clock:
+// glider-convert times their log by sci_m_present_time. A tool asking for the
+// default time column takes that one; a tool naming another is not changed.
+bool takes_science_time(const flightlog::ReadOptions& options, const std::string& time_name) {
+  return time_name == kScienceTime && options.time_column == flightlog::ReadOptions{}.time_column;
+}
+
+// The CSV glider-convert wrote from science files alone: its header (the
+// first line that is not a `#` line) has sci_m_present_time, not m_present_time.
+bool csv_of_science_files(const std::string& path) {
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line.front() == '#') continue;
+    std::istringstream header(line);
+    bool science = false;
+    for (std::string name; std::getline(header, name, ',');) {
+      while (!name.empty() && (name.back() == '\r' || name.back() == ' ')) name.pop_back();
+      if (name == flightlog::ReadOptions{}.time_column) return false;
+      science = science || name == kScienceTime;
+    }
+    return science;
+  }
+  return false;
+}
+
+}  // namespace
 
 bool is_binary_log(const std::vector<std::string>& inputs) {
   if (inputs.size() != 1) return true;
@@ -27,7 +60,14 @@ flightlog::FlightLog load_flight_log(const LogSource& source, const flightlog::R
     return netcdf::read_og1_log(source.inputs.front(), options);  // docs/netcdf.md, "Reading OG1.0 back"
   }
 #endif
-  if (!is_binary_log(source.inputs)) return flightlog::read_flight_log(source.inputs.front(), options);
+  if (!is_binary_log(source.inputs)) {
+    if (takes_science_time(options, kScienceTime) && csv_of_science_files(source.inputs.front())) {
+      flightlog::ReadOptions science = options;
+      science.time_column = kScienceTime;
+      return flightlog::read_flight_log(source.inputs.front(), science);
+    }
+    return flightlog::read_flight_log(source.inputs.front(), options);
+  }
 
   DeploymentOptions deployment_options;
   deployment_options.read.cache_dirs = source.cache_dirs;
@@ -45,7 +85,7 @@ flightlog::FlightLog load_flight_log(const LogSource& source, const flightlog::R
   if (warnings != nullptr) warnings->insert(warnings->end(), deployment.warnings.begin(), deployment.warnings.end());
   const flightlog::FlightLog& log = deployment.log;
   const std::string time_name = log.column_names().front();
-  if (time_name != options.time_column) {
+  if (time_name != options.time_column && !takes_science_time(options, time_name)) {
     throw flightlog::FlightLogError(log.source(), 0, options.time_column, 0,
                                     "time column missing (Slocum binaries have " + time_name + ")");
   }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "glider/netcdf/dataset_sink.hpp"
 #include "glider/netcdf/deployment_metadata.hpp"
 #include "glider/netcdf/flight_products.hpp"
 #include "glider/netcdf/trajectory.hpp"
@@ -18,15 +19,18 @@ namespace glider::netcdf {
 
 struct WriteContext {
   const Trajectory* trajectory = nullptr;
-  const DeploymentMetadata* metadata = nullptr;
-  const FlightProducts* products = nullptr;  // nullptr: no vehicle given, no flight-model variables
-  double created_s = 0.0;                    // date_created (SOURCE_DATE_EPOCH in tests: deterministic files)
-  std::string history;                       // the command that wrote the file
+  const DeploymentMetadata* metadata = nullptr;  // required by the files; og1_dataset() goes without
+  const FlightProducts* products = nullptr;      // nullptr: no vehicle given, no flight-model variables
+  double created_s = 0.0;                        // date_created (SOURCE_DATE_EPOCH in tests: deterministic files)
+  std::string history;                           // the command that wrote the file
 };
 
 // OG1.0 id "<platform_serial>_<start_date>_<data_mode>" (start = deployment time).
 std::string og1_id(const DeploymentMetadata& metadata);
 void write_og1(const std::filesystem::path& path, const WriteContext& context);
+// The same dataset in memory, by the same writer (the Python module's xarray
+// Dataset). context.metadata may be null: the elements it gives are left out.
+MemoryDataset og1_dataset(const WriteContext& context);
 
 // One file per profile in `directory` (created if missing), named as the
 // NGDAC asks: <glider>_<profile start yyyymmddTHHMMSS>Z_<rt|delayed>.nc.

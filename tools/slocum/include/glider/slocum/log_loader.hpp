@@ -24,8 +24,8 @@ struct LogSource {
 bool is_binary_log(const std::vector<std::string>& inputs);
 
 // Reads the log. For binaries, `options` applies as for a CSV: the time
-// column must be m_present_time (sci_m_present_time for a set of science
-// files), the required columns must be there (FlightLogError otherwise),
+// column must be options.time_column (the default m_present_time accepts
+// sci_m_present_time for a set of science files alone), the required columns must be there (FlightLogError otherwise),
 // `columns` limits what is kept, `rename` renames. Warnings about the
 // binaries (damaged or skipped files, dropped values) go to `warnings`.
 flightlog::FlightLog load_flight_log(const LogSource& source, const flightlog::ReadOptions& options,
