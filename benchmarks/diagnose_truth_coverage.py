@@ -142,8 +142,12 @@ def run_draw(args, case, seed):
     if diagnosed.returncode != 0:
         result['error'] = 'glider-diagnose exit %d: %s' % (diagnosed.returncode, diagnosed.stderr.strip()[-300:])
         return result
-    result['findings'] = [(e, v, lo, hi, bool(f.get('ambiguous') or f.get('alternatives')))
-                          for e, v, lo, hi, f in findings_of(json.loads(diagnosed.stdout))]
+    document = json.loads(diagnosed.stdout)
+    # glider-diagnose states ambiguity at the top level ("ambiguous": the pairs the held-out yos cannot tell
+    # apart, vertical plane); a finding is ambiguous when it is one side of such a pair.
+    paired = {side for a in document.get('ambiguous', []) for side in (a.get('effect'), a.get('alternative'))}
+    result['findings'] = [(e, v, lo, hi, bool(f.get('ambiguous') or f.get('alternatives') or e in paired))
+                          for e, v, lo, hi, f in findings_of(document)]
     result['ok'] = True
     if not args.keep:
         os.remove(log)
