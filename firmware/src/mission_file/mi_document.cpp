@@ -88,6 +88,11 @@ struct Reader {
   // An argument file: behavior_name=..., <start:b_arg> ... <end:b_arg>,
   // <start:waypoints> ... <end:waypoints>.
   void read_ma(const std::filesystem::path& path, MiBehavior& behavior, const SourceLocation& included_at) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+      error(included_at, "argument file " + path.string() + " is not a regular file (a FIFO or device never ends)");
+      return;
+    }
     std::ifstream in(path);
     if (!in) {
       error(included_at, "cannot open argument file " + path.string());
@@ -218,6 +223,13 @@ MiDocument parse_mi_text(const std::string& text, const std::string& file_name,
 
 MiDocument read_mi_file(const std::filesystem::path& path) {
   MiDocument doc;
+  // A FIFO or a device would block the read forever (or never end): refused.
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    doc.diagnostics.push_back(
+        {Severity::kError, path.string(), 0, "not a regular file (a FIFO, device or directory cannot be a mission)"});
+    return doc;
+  }
   std::ifstream in(path);
   if (!in) {
     doc.diagnostics.push_back({Severity::kError, path.string(), 0, "cannot open mission file"});

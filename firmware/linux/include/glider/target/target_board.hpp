@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "glider/firmware/app/mission_setup.hpp"
 #include "glider/firmware/app/vehicle_setup.hpp"
@@ -49,6 +50,9 @@ struct TargetBoard {
 
 // Init-time only: throws config::ConfigError naming file, line and problem.
 TargetBoard load_target_board(const std::filesystem::path& path);
+// Every number of the board file and its range, [vehicle] included (the
+// bad-value test tries each, tests/unit/test_board_limits.cpp).
+std::vector<config::KeyRange> target_board_limits();
 TargetBoard parse_target_board(const std::string& text, const std::string& source_name,
                                const std::filesystem::path& relative_to);
 
