@@ -48,7 +48,8 @@ const std::vector<config::KeyRange>& limits() {
       const std::string a = axis;
       const std::string u = unit;
       const auto add = [&](const std::string& leaf, Range range) {
-        names.push_back(a + "." + leaf);
+        names.push_back(a);
+        names.back().append(".").append(leaf);
         t.push_back({names.back().c_str(), range});
       };
       add("slave", {1.0, 247.0, ""});
