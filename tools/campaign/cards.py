@@ -71,6 +71,8 @@ def _known_metric(name):
 
 def parse_expectations(expect, where):
     """[expect] as a list of (text, metric, bound, value); bound is min, max or equals."""
+    if not isinstance(expect, dict):
+        raise CardError(f"{where}: expect = {expect!r}: must be an [expect] table of metric = value")
     out = []
     for path, value in _flatten(expect):
         text = f"{path} = {json.dumps(value)}" if isinstance(value, str) else f"{path} = {value}"  # as in TOML
@@ -128,13 +130,21 @@ def load_setup(doc, path, allowed_extra=()):
             if doc[key] not in allowed:
                 raise CardError(f"{path}: {key} = {doc[key]!r}: allowed {', '.join(allowed)}")
             setup[key] = doc[key]
+    for key in ("name", "description"):
+        if not isinstance(setup[key], str):
+            raise CardError(f"{path}: {key} = {setup[key]!r}: must be a string")
+    faults = doc.get("fault", [])
+    if not isinstance(faults, list):
+        raise CardError(f"{path}: fault = {faults!r}: must be [[fault]] tables (name, at_s)")
     setup["faults"] = []
-    for i, fault in enumerate(doc.get("fault", [])):
-        if set(fault) != {"name", "at_s"}:
+    for i, fault in enumerate(faults):
+        if not isinstance(fault, dict) or set(fault) != {"name", "at_s"} or not isinstance(fault["name"], str):
             raise CardError(f"{path}: [[fault]] #{i + 1} = {fault!r}: needs name = \"...\" and at_s (s)")
         check_number("at_s", fault["at_s"], f"{path}: [[fault]] #{i + 1}")
         setup["faults"].append({"name": fault["name"], "at_s": float(fault["at_s"])})
     # [set] keys are parameter names, quoted ("buoyancy.offset_kg") or nested: both give the dotted name.
+    if not isinstance(doc.get("set", {}), dict):
+        raise CardError(f"{path}: set = {doc['set']!r}: must be a [set] table of parameter = value")
     setup["set"] = dict(_flatten(doc.get("set", {})))
     return setup
 
