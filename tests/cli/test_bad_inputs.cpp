@@ -138,3 +138,17 @@ TEST(FileProbes, FaultTimesAreFiniteAndWithinSixtyDays) {
   CHECK_TRUE(fault.has_value());
   DOUBLES_EQUAL(5184000.0, fault->at_s, 0.0);
 }
+
+TEST(FileProbes, ArgumentFileFromMemory) {
+  namespace mf = glider::fw::mission_file;
+  const std::string good = read_text(GLIDER_SOURCE_DIR "/boards/missions/box_current/mafiles/goto_l10.ma");
+  const mf::MiDocument doc = mf::parse_ma_text(good, "goto_l10.ma", "goto_list");
+  CHECK_FALSE_TEXT(doc.has_errors(), doc.diagnostics.empty() ? "" : doc.diagnostics.front().text().c_str());
+  CHECK_TRUE(doc.behaviors.front().has_waypoint_section);
+  CHECK_FALSE(doc.behaviors.front().waypoints.empty());
+  const mf::MiDocument bad = mf::parse_ma_text(
+      "behavior_name=goto_list\n<start:waypoints>\n-7040.0 4140.0\nnan nan\n<end:waypoints>\n", "bad.ma", "goto_list");
+  CHECK_TRUE(bad.has_errors());
+  STRCMP_CONTAINS("bad.ma:4: error: waypoint must be 'lon lat' (finite numbers)",
+                  bad.diagnostics.front().text().c_str());
+}

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "glider/config/value_limits.hpp"
 
@@ -98,7 +99,12 @@ struct Reader {
       error(included_at, "cannot open argument file " + path.string());
       return;
     }
-    const std::string file = path.filename().string();
+    read_ma_stream(in, path.filename().string(), behavior, included_at);
+  }
+
+  // The argument file's text (from disk, or from memory: parse_ma_text).
+  void read_ma_stream(std::istream& in, const std::string& file, MiBehavior& behavior,
+                      const SourceLocation& included_at) {
     enum class Section { kNone, kArgs, kWaypoints } section = Section::kNone;
     bool named = false;
     const int lines =
@@ -218,6 +224,17 @@ MiDocument parse_mi_text(const std::string& text, const std::string& file_name,
   MiDocument doc;
   std::istringstream in(text);
   Reader{doc}.read_mi(in, file_name, source_dir);
+  return doc;
+}
+
+MiDocument parse_ma_text(const std::string& text, const std::string& file_name, const std::string& behavior_name) {
+  MiDocument doc;
+  MiBehavior behavior;
+  behavior.name = behavior_name;
+  behavior.where = {file_name, 0};
+  std::istringstream in(text);
+  Reader{doc}.read_ma_stream(in, file_name, behavior, behavior.where);
+  doc.behaviors.push_back(std::move(behavior));
   return doc;
 }
 
