@@ -21,6 +21,7 @@
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/diagnose/heading_report.hpp"
 #include "glider/diagnose/observations.hpp"
+#include "glider/diagnose/tool_inputs.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/slocum/log_loader.hpp"
@@ -35,6 +36,7 @@ using glider::model::VehicleParams;
 struct Log {
   FlightLog log;
   std::vector<std::string> warnings;
+  std::string first_input;  // the first file or folder read: its name may name the glider
 };
 
 py::array_t<double> to_array(const std::vector<double>& values) {
@@ -61,33 +63,22 @@ Log read_log(const py::object& inputs, const py::object& cache, const py::object
   options.required.clear();  // any log: the analyses check what they need
   options.columns = as_list(columns);
   std::vector<glider::slocum::Warning> warnings;
-  Log out{glider::slocum::load_flight_log(source, options, &warnings), {}};
+  Log out{glider::slocum::load_flight_log(source, options, &warnings), {}, source.inputs.front()};
   for (const auto& w : warnings) out.warnings.push_back(w.text());
   return out;
 }
 
-// The vehicle as glider-diagnose picks it: the file given, else the log's
-// vehicle.* metadata, else the project's default; with the same wording.
+// The vehicle as glider-diagnose picks it (glider::diagnose::nominal_vehicle:
+// the file given, else the log's vehicle.* metadata, else the vehicle
+// boards/gliders.toml gives for the glider the log names; no silent default).
 std::pair<VehicleParams, std::string> pick_vehicle(const Log& log, const py::object& vehicle) {
   if (!vehicle.is_none() && py::isinstance<VehicleParams>(vehicle)) {
     const auto& v = vehicle.cast<const VehicleParams&>();
     return {v, "vehicle " + v.name + " (given)"};
   }
-  if (!vehicle.is_none()) {
-    const std::string path = as_list(vehicle).front();
-    const auto metadata = log.log.vehicle_metadata();
-    return {glider::model::load_vehicle_file(path),
-            "file " + path + (metadata.empty() ? "" : "; the log's vehicle metadata is not used")};
-  }
-  const auto metadata = log.log.vehicle_metadata();
-  if (!metadata.empty()) {
-    std::vector<std::pair<std::string, std::string>> entries;
-    for (const auto& m : metadata) entries.emplace_back(m.key, m.value);
-    return {glider::model::vehicle_from_metadata(entries, log.log.source()), "the log's vehicle.* metadata"};
-  }
-  const std::string path = glider::cli::default_vehicle_path();
-  return {glider::model::load_vehicle_file(path),
-          "default vehicle " + std::filesystem::path(path).filename().string() + " (the log states none)"};
+  const std::string path = vehicle.is_none() ? std::string() : as_list(vehicle).front();
+  auto picked = glider::diagnose::nominal_vehicle({path, "", glider::cli::boards_dir()}, log.log, log.first_input);
+  return {std::move(picked.params), std::move(picked.source)};
 }
 
 glider::diagnose::FlightModelKind model_kind(const std::string& model) {

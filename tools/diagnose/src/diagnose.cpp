@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -613,6 +614,37 @@ std::optional<double> retrim_density(const model::VehicleParams& nominal, const 
   return median;
 }
 
+// A vehicle that cannot fly what the log flew is the wrong vehicle (or a
+// broken glider), not a glider with a cause to name: with no steady glide in
+// the logged direction at the logged pitch and ballast for most dives or
+// most climbs, every "finding" would be the fit straining at the impossible.
+void refuse_vehicle_that_cannot_glide(const FlightModel& steady, const Observations& obs) {
+  for (const bool diving : {true, false}) {
+    std::vector<std::size_t> samples;
+    for (std::size_t i = 0; i < obs.size(); ++i) {
+      if (obs.diving[i] == diving) samples.push_back(i);
+    }
+    std::vector<double> rate;
+    steady.predict(nominal_values(), false, samples, rate);
+    std::size_t flies = 0;
+    std::vector<double> ballast;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      if (std::isfinite(rate[k]) && (diving ? rate[k] > 0.0 : rate[k] < 0.0)) ++flies;
+      ballast.push_back(obs.ballast_cc[samples[k]]);
+    }
+    if (samples.empty() || 2 * flies >= samples.size()) continue;
+    std::nth_element(ballast.begin(), ballast.begin() + static_cast<long>(ballast.size() / 2), ballast.end());
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "cannot judge: the vehicle %s cannot %s as this log did: at the logged pitch and ballast (median "
+                  "%+.0f cc) it has a steady %s in only %zu of %zu %s samples; is it the right vehicle file "
+                  "(--vehicle), or was the glider far out of trim?",
+                  steady.vehicle().name.c_str(), diving ? "dive" : "climb", ballast[ballast.size() / 2],
+                  diving ? "dive" : "climb", flies, samples.size(), diving ? "steady-dive" : "steady-climb");
+    throw CannotJudge(text);
+  }
+}
+
 // The scored samples of the depth window, split into the yos fitted and
 // those held out, and by phase.
 struct Split {
@@ -623,10 +655,15 @@ Split split_samples(SampleSet& set, const DiagnoseOptions& options) {
   std::erase_if(set.usable, [&](std::size_t i) {
     return !(set.depth_m[i] >= options.window_min_m && set.depth_m[i] <= options.window_max_m);
   });
-  if (set.usable.empty()) throw std::invalid_argument("no samples in the depth window");
+  if (set.usable.empty()) throw CannotJudge("cannot judge: no scored samples in the depth window");
   Split s;
   s.all = set.usable;
   split_by_yo(s.all, set.yo, s.train, s.heldout);
+  if (s.train.empty() || s.heldout.empty()) {
+    throw CannotJudge("cannot judge: " + std::to_string(s.train.size()) + " samples in the yos to fit and " +
+                      std::to_string(s.heldout.size()) +
+                      " in the yos held out (the depth window and the glides leave too few)");
+  }
   s.dives = where_phase(set, flightlog::Phase::kDive);
   s.climbs = where_phase(set, flightlog::Phase::kClimb);
   s.turns = where_phase(set, flightlog::Phase::kInflection);
@@ -881,6 +918,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     d.retrimmed_to_kg_m3 = *rho;
   }
   const FlightModel steady_model(nominal, obs);
+  refuse_vehicle_that_cannot_glide(steady_model, obs);
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
   const bool dynamic = options.model == FlightModelKind::kDynamic && !obs.track.scored.empty();
   d.model = dynamic ? FlightModelKind::kDynamic : FlightModelKind::kSteady;

@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> inputs, renames, fit;
   std::vector<fs::path> cache_dirs;
   std::string vehicle_path, report_dir, flight_model = "dynamic";
-  std::string default_vehicle = glider::cli::default_vehicle_path();
+  std::string default_vehicle;
   bool json = false;
   std::size_t join = 1;
   double days_apart = 0.0;
@@ -84,11 +84,11 @@ int main(int argc, char** argv) {
       ->required();
   app.add_option("--cache", cache_dirs, "sensor-list cache directory for binary files");
   app.add_option("--vehicle", vehicle_path,
-                 "nominal vehicle file (else the first log's vehicle.* metadata, else the default)")
+                 "nominal vehicle file (else the first log's vehicle.* metadata, else --default-vehicle, else the "
+                 "vehicle boards/gliders.toml gives for the glider the logs name)")
       ->check(CLI::ExistingFile);
   app.add_option("--default-vehicle", default_vehicle, "vehicle used when neither --vehicle nor metadata give one")
-      ->check(CLI::ExistingFile)
-      ->capture_default_str();
+      ->check(CLI::ExistingFile);
   app.add_option("--model", flight_model, "flight model fitted in each segment: dynamic or steady")
       ->check(CLI::IsMember({"dynamic", "steady"}));
   app.add_option("--fit", fit, "fit exactly these effects in every segment (no selection pass)")->delimiter(',');
@@ -124,7 +124,8 @@ int main(int argc, char** argv) {
             glider::slocum::load_flight_log({files.inputs, cache_dirs}, read_options, &warnings);
         for (const auto& w : warnings) std::fprintf(stderr, "%s: warning: %s\n", tool.name().c_str(), w.text().c_str());
         if (!vehicle)
-          vehicle = glider::diagnose::nominal_vehicle(vehicle_path, log, files.inputs.front(), default_vehicle);
+          vehicle = glider::diagnose::nominal_vehicle({vehicle_path, default_vehicle, glider::cli::boards_dir()}, log,
+                                                      files.inputs.front());
         if (log.rows() > 0 && log.time().front() < kEarliestClockTime_s) {
           if (days_apart <= 0.0) {
             throw std::runtime_error("its times count from its start (" + std::to_string(log.time().front()) +
@@ -133,6 +134,8 @@ int main(int argc, char** argv) {
           in.time_offset_s = static_cast<double>(relative++) * days_apart * kSecondsPerDay;
         }
         in.observations = glider::diagnose::prepare_observations(log);
+      } catch (const glider::diagnose::NoVehicle&) {
+        throw;
       } catch (const std::exception& error) {
         in.problem = error.what();
         std::fprintf(stderr, "%s: %s: not diagnosed: %s\n", tool.name().c_str(), in.name.c_str(), error.what());

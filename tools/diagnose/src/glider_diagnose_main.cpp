@@ -208,7 +208,7 @@ int main(int argc, char** argv) {
       "Show what the simulation gets wrong in a flight log, name the cause, fit it, measure the gain");
   CLI::App& app = tool.app();
   std::string log_path, vehicle_path, report_dir;
-  std::string default_vehicle = glider::cli::default_vehicle_path();
+  std::string default_vehicle;
   bool json = false;
   std::vector<std::string> renames;
   std::string flight_model = "dynamic";
@@ -225,11 +225,11 @@ int main(int argc, char** argv) {
   app.add_option("--cache", log_source.cache_dirs,
                  "sensor-list cache directory for binary files (default: their folder and its cac/)");
   app.add_option("--vehicle", vehicle_path,
-                 "nominal vehicle file (else the log's vehicle.* metadata, else the default)")
+                 "nominal vehicle file (else the log's vehicle.* metadata, else --default-vehicle, else the vehicle "
+                 "boards/gliders.toml gives for the glider the log names)")
       ->check(CLI::ExistingFile);
   app.add_option("--default-vehicle", default_vehicle, "vehicle used when neither --vehicle nor metadata give one")
-      ->check(CLI::ExistingFile)
-      ->capture_default_str();
+      ->check(CLI::ExistingFile);
   app.add_option("--report", report_dir, "write the summary and the extended vehicle file here");
   tool.add_json_flag(json);
   app.add_option("--rename", renames, "read column FROM as TO (FROM=TO), for logs not in the contract's names");
@@ -296,7 +296,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "glider-diagnose: %s: %s\n", log_path.c_str(), log.end().describe(log.rows()).c_str());
       }
       const glider::diagnose::NominalVehicle nominal =
-          glider::diagnose::nominal_vehicle(vehicle_path, log, log_path, default_vehicle);
+          glider::diagnose::nominal_vehicle({vehicle_path, default_vehicle, glider::cli::boards_dir()}, log, log_path);
       const glider::model::VehicleParams& vehicle = nominal.params;
       const std::string& vehicle_source = nominal.source;
       const auto start = std::chrono::steady_clock::now();

@@ -2,11 +2,55 @@
 #include "glider/diagnose/observations.hpp"
 
 #include <cmath>
+#include <set>
+#include <string>
 
 #include "glider/diagnose/log_columns.hpp"
 #include "glider/flightlog/gaps.hpp"
 
 namespace glider::diagnose {
+
+namespace {
+
+// What a diagnosis needs before it may name anything: steady dives AND climbs
+// (a buoyancy offset and a drag change are told apart only by the two
+// directions), enough samples in each, and two yos (one fitted, one held out).
+// Below that the data cannot judge, and saying "none" or naming a cause would
+// be a guess presented as a result.
+void refuse_thin_data(const std::string& source, const Observations& obs, const ObservationOptions& options) {
+  std::size_t dives = 0;
+  std::set<int> yos_with_dives, yos_with_climbs;
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    dives += obs.diving[i] ? 1 : 0;
+    (obs.diving[i] ? yos_with_dives : yos_with_climbs).insert(obs.yo[i]);
+  }
+  const std::size_t climbs = obs.size() - dives;
+  const std::string where = "below " + std::to_string(static_cast<int>(options.min_depth_m)) +
+                            " m, 3 m or more of depth, with pitch and ballast logged";
+  if (dives == 0) throw flightlog::FlightLogError(source, 0, "", 0, "no steady dives found (" + where + ")");
+  if (climbs == 0) {
+    throw flightlog::FlightLogError(source, 0, "", 0,
+                                    "cannot judge: no steady climbs found (" + where +
+                                        "); dives alone cannot tell a buoyancy offset from a drag change");
+  }
+  const std::size_t need = options.min_samples_per_direction;
+  if (dives < need || climbs < need) {
+    throw flightlog::FlightLogError(
+        source, 0, "", 0,
+        "cannot judge: " + std::to_string(dives) + " steady-dive and " + std::to_string(climbs) +
+            " steady-climb samples; the diagnosis needs at least " + std::to_string(need) + " of each");
+  }
+  std::set<int> yos = yos_with_dives;
+  yos.insert(yos_with_climbs.begin(), yos_with_climbs.end());
+  if (yos.size() < 2) {
+    throw flightlog::FlightLogError(source, 0, "", 0,
+                                    "cannot judge: steady glides in " + std::to_string(yos.size()) +
+                                        " yo; the diagnosis fits alternate yos and scores the others on the yos "
+                                        "it did not fit, so it needs at least two");
+  }
+}
+
+}  // namespace
 
 Observations prepare_observations(const flightlog::FlightLog& log, const ObservationOptions& options) {
   // The steady model takes one sample at a time: sparse columns hold their last value.
@@ -53,14 +97,7 @@ Observations prepare_observations(const flightlog::FlightLog& log, const Observa
       obs.yo.push_back(c.yo[i]);
     }
   }
-  std::size_t dives = 0;
-  for (bool d : obs.diving) dives += d ? 1 : 0;
-  if (dives == 0) {
-    throw flightlog::FlightLogError(log.source(), 0, "", 0,
-                                    "no steady dives found (a dive must go 3 m or more down, below " +
-                                        std::to_string(static_cast<int>(options.min_depth_m)) +
-                                        " m, with pitch and ballast logged)");
-  }
+  refuse_thin_data(log.source(), obs, options);
   obs.track = prepare_track(log, options.track);
   return obs;
 }

@@ -4,6 +4,9 @@
 #include <algorithm>
 
 #include "glider/slocum/deployment.hpp"
+#ifdef GLIDER_LOG_LOADER_NETCDF
+#include "glider/netcdf/og1_reader.hpp"
+#endif
 
 namespace glider::slocum {
 
@@ -19,6 +22,11 @@ bool is_binary_log(const std::vector<std::string>& inputs) {
 flightlog::FlightLog load_flight_log(const LogSource& source, const flightlog::ReadOptions& options,
                                      std::vector<Warning>* warnings) {
   if (source.inputs.empty()) throw std::runtime_error("no flight log given");
+#ifdef GLIDER_LOG_LOADER_NETCDF
+  if (source.inputs.size() == 1 && netcdf::is_netcdf_file(source.inputs.front())) {
+    return netcdf::read_og1_log(source.inputs.front(), options);  // docs/netcdf.md, "Reading OG1.0 back"
+  }
+#endif
   if (!is_binary_log(source.inputs)) return flightlog::read_flight_log(source.inputs.front(), options);
 
   DeploymentOptions deployment_options;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,15 @@ struct DiagnoseOptions {
   std::function<void(const std::string& fitting)> progress;
 };
 
+// The data cannot judge this vehicle: a refusal, never a cause (exit 1).
+class CannotJudge : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws CannotJudge when the vehicle cannot fly the log's settings (no
+// steady glide in the logged direction at the logged pitch and ballast for
+// most dives or most climbs, or too few scored samples to fit and hold out).
 Diagnosis diagnose(const model::VehicleParams& nominal, const Observations& observations,
                    const DiagnoseOptions& options = {});
 

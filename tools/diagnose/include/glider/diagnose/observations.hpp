@@ -31,11 +31,15 @@ struct ObservationOptions {
   double min_pitch_rad = 0.1745;  // 10 deg: flatter is not a steady glide
   double settle_s = 30.0;         // skip the start of each glide (the pump and pitch settle)
   double max_fill_age_s = 60.0;   // forward fill of sparse columns
-  TrackOptions track;             // the whole log, for the dynamic model
+  // Fewer steady samples than this in dives or in climbs: "cannot judge" (a
+  // 4 s decimated .sbd of one 20 m yo has ~25 of each).
+  std::size_t min_samples_per_direction = 20;
+  TrackOptions track;  // the whole log, for the dynamic model
 };
 
 // Throws flightlog::FlightLogError (file, line, column) when the log has no
-// dives or lacks what the analysis needs.
+// dives or lacks what the analysis needs, and "cannot judge" when it has too
+// little to judge from: no climbs, too few samples, fewer than two yos.
 Observations prepare_observations(const flightlog::FlightLog& log, const ObservationOptions& options = {});
 
 }  // namespace glider::diagnose

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "session_journal.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <stdexcept>
+
+namespace glider::shore {
+namespace {
+
+std::string timestamp_now() {
+  const auto now = std::chrono::system_clock::now();
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
+  const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm tm{};
+  gmtime_r(&seconds, &tm);
+  char text[40];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &tm);
+  char full[48];
+  std::snprintf(full, sizeof full, "%s.%03lldZ", text, ms);
+  return full;
+}
+
+}  // namespace
+
+std::string escape_bytes(const std::string& bytes) {
+  std::string out;
+  out.reserve(bytes.size());
+  for (const char c : bytes) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte == '\\') {
+      out += "\\\\";
+    } else if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02X", byte);
+      out += hex;
+    }
+  }
+  return out;
+}
+
+void SessionJournal::write(char direction, const std::string& text) {
+  std::string line = timestamp_now() + " " + direction + " " + escape_bytes(text);
+  if (out_.is_open()) {
+    out_ << line << '\n';
+    out_.flush();  // a journal is read while the call goes on (tail -f)
+  } else {
+    held_.push_back(std::move(line));
+  }
+}
+
+void SessionJournal::open(const std::filesystem::path& path) {
+  out_.open(path, std::ios::app);
+  if (!out_) throw std::runtime_error(path.string() + ": cannot write the journal");
+  path_ = path;
+  for (const std::string& line : held_) out_ << line << '\n';
+  held_.clear();
+  out_.flush();
+}
+
+}  // namespace glider::shore
