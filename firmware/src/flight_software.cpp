@@ -180,10 +180,20 @@ NavigatorOutputs FlightSoftware::navigate(hal::Micros now_us, const CycleReading
   nav_in.depth_rate_ok = have_depth_rate_ && in.depth_ok;
   nav_in.depth_rate_m_s = depth_rate_m_s_;
   nav_in.fix = in.fix;
+  nav_in.hold_at_surface = surface_hold_;
+  nav_in.resume_now = resume_requested_;
+  resume_requested_ = false;
   const NavigatorOutputs nav = navigator_.update(nav_in);
   if (nav.start_segment) mission_.start_segment();
   if (nav.mission_complete) mission_over_ = true;
   return nav;
+}
+
+bool FlightSoftware::restart_mission() {
+  if (!ended_by_operator_ || !mission_over_ || last_.phase == Phase::kAbort) return false;
+  mission_over_ = false;
+  ended_by_operator_ = false;
+  return true;
 }
 
 // --- abort checks beyond the yo's envelope.

@@ -90,6 +90,13 @@ void Navigator::on_fix(const hal::GpsFix& fix, NavigatorOutputs& out) {
   }
 }
 
+void Navigator::replace_plan(const MissionPlan& plan) {
+  plan_ = plan;
+  waypoint_ = 0;
+  reached_ = 0;
+  if (state_ == State::kDone) state_ = State::kSurface;
+}
+
 NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
   NavigatorOutputs out;
   out.heading_target_rad = kNaN;
@@ -141,9 +148,9 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
     on_fix(in.fix, out);
   }
   const double at_surface_s = hal::to_seconds(in.now_us - surfaced_us_);
-  const bool dwelt = at_surface_s >= plan_.surface_dwell_s;
+  const bool dwelt = at_surface_s >= plan_.surface_dwell_s || in.resume_now;
   const bool gave_up = at_surface_s >= std::max(plan_.gps_wait_s, plan_.surface_dwell_s);
-  if (!((fix_this_surfacing_ && dwelt) || gave_up)) return out;
+  if (in.hold_at_surface || !((fix_this_surfacing_ && dwelt) || gave_up)) return out;
   if (list_done()) {
     state_ = State::kDone;
     out.mission_complete = true;

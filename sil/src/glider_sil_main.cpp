@@ -10,12 +10,16 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
+#include "glider/firmware/app/mission_reload.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_list.hpp"
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/flight_summary.hpp"
@@ -132,9 +136,26 @@ int main(int argc, char** argv) {
                   "the vehicle model's integration step (accuracy: docs/sil.md, Speed)")
       ->capture_default_str();
   bool check_mission = false;
+  std::string slocum_dir;
+  std::string sbdlist_path;
+  bool slocum_lz4 = false;
+  app.add_option("--slocum-dir", slocum_dir,
+                 "also write the firmware's Slocum data files (.dbd, .sbd, cac/) into this directory "
+                 "(docs/slocum-binary.md, Writing)");
+  app.add_option("--sbdlist", sbdlist_path, "the .sbd's sensors and decimation (sbdlist.dat; default: built in)")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--slocum-lz4", slocum_lz4, "write the Slocum files' LZ4 forms (.dcd, .scd, cac/*.ccc), as a G3S");
   app.add_flag("--check-mission", check_mission, "read the vehicle and the mission, report, exit (nothing flown)");
   app.add_option("--summary-json", summary_json_path,
                  "also write the run's summary as JSON to this file (keys: docs/sil-summary.md)");
+  std::string shore_address;
+  std::string comms_name;
+  std::vector<std::string> dialog_sensors{"m_battery", "m_depth", "m_water_vx", "m_water_vy", "m_coulomb_amphr_total"};
+  app.add_option("--shore", shore_address,
+                 "call a shore station at every surfacing over the simulated Iridium modem: HOST[:PORT] "
+                 "(default port 6565; docs/comms.md)");
+  app.add_option("--vehicle-name", comms_name, "the name the vehicle gives in its dialog (default: the vehicle's)");
+  app.add_option("--dialog-sensors", dialog_sensors, "log columns in the surface dialog")->delimiter(',');
   return tool.run(argc, argv, [&]() -> int {
     glider::model::VehicleParams vehicle;
     glider::sil::ScenarioOptions options;
@@ -163,6 +184,13 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", messages[i].c_str());
     }
     if (!prepared.config) return tool.fail(glider::cli::kError, prepared.refusal);
+    if ((!sbdlist_path.empty() || slocum_lz4) && slocum_dir.empty()) {
+      return tool.fail(glider::cli::kUsage, "--sbdlist and --slocum-lz4 need --slocum-dir");
+    }
+    const glider::fw::SlocumListResult sbdlist =
+        sbdlist_path.empty() ? glider::fw::parse_slocum_list(glider::fw::kDefaultSbdList, "built-in sbdlist.dat")
+                             : glider::fw::read_slocum_list(sbdlist_path);
+    if (!sbdlist.error.empty()) return tool.fail(glider::cli::kError, sbdlist.error);
     if (check_mission) {
       std::fprintf(stderr, "glider-sil: %s: mission accepted for vehicle %s\n", mission_path.c_str(),
                    vehicle.name.c_str());
@@ -200,6 +228,48 @@ int main(int argc, char** argv) {
         {"time", "m_present_time is seconds since the start of the mission"},
         {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
 
+    if (!slocum_dir.empty()) {
+      // The SIL's clock starts at 0: the names carry 1970-000 (m_present_time is mission seconds).
+      const glider::fw::SlocumMissionNumbers numbers = glider::fw::next_slocum_mission(slocum_dir, vehicle.name, 0);
+      options.slocum_directory = slocum_dir;
+      options.slocum_lz4 = slocum_lz4;
+      options.slocum.vehicle = vehicle.name;
+      options.slocum.mission_name = std::filesystem::path(mission_path).filename().string();
+      options.slocum.mission_of_day = numbers.mission_of_day;
+      options.slocum.mission_number = numbers.mission_number;
+      options.slocum.sbd = sbdlist.selection;
+    }
+
+    std::optional<glider::sil::TcpShore> shore;
+    std::optional<glider::fw::app::MissionFileReloader> reloader;
+    if (!shore_address.empty()) {
+      std::string host, error;
+      int port = 0;
+      if (!glider::sil::parse_shore_address(shore_address, host, port, error)) {
+        return tool.fail(glider::cli::kUsage, "--shore: " + error);
+      }
+      if (dialog_sensors.size() > glider::fw::comms::kMaxDialogSensors) {
+        return tool.fail(glider::cli::kUsage, "--dialog-sensors: at most 16 columns");
+      }
+      shore.emplace(host, port);
+      reloader.emplace(mission_path, setup, mission_options);
+      glider::sil::ScenarioOptions::Comms& c = options.comms.emplace();
+      std::snprintf(c.config.vehicle_name, sizeof c.config.vehicle_name, "%s",
+                    comms_name.empty() ? vehicle.name.c_str() : comms_name.c_str());
+      // The simulated modem connects any number to --shore (RUDICS: the call is a TCP connection).
+      std::snprintf(c.config.primary_number, sizeof c.config.primary_number, "0088160000519");
+      std::snprintf(c.config.mission_name, sizeof c.config.mission_name, "%s",
+                    std::filesystem::path(mission_path).filename().string().c_str());
+      for (const std::string& name : dialog_sensors) {
+        std::snprintf(c.config.sensors[c.config.sensor_count++].data(), glider::fw::comms::kTextField, "%s",
+                      name.c_str());
+      }
+      c.far_end = &*shore;
+      c.reloader = &*reloader;
+      c.utc_at_launch_s = static_cast<double>(
+          std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
+              .count());
+    }
     const auto wall_start = std::chrono::steady_clock::now();
     const glider::sil::ScenarioResult result = glider::sil::run_scenario(vehicle, config, options);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -260,6 +330,15 @@ int main(int argc, char** argv) {
       } else {
         std::printf("  simulated time : %.0f s (%.1f days)\n", result.sim_time_s, result.sim_time_s / 86400.0);
       }
+      if (options.comms) {
+        const auto& c = result.comms;
+        std::printf(
+            "  comms          : %u surfacings, %u calls connected (%u dialled), %u without a call, %u drops; "
+            "%llu bytes up, %llu down\n",
+            c.surfacings, c.calls_connected, c.dial_attempts, c.surfacings_without_call, c.carrier_drops,
+            static_cast<unsigned long long>(result.modem.bytes_up),
+            static_cast<unsigned long long>(result.modem.bytes_down));
+      }
       std::printf("  wall time      : %.4f s\n", wall_s);
       std::printf("  real-time factor: %.0fx\n", wall_s > 0.0 ? result.sim_time_s / wall_s : 0.0);
       std::printf("  loop overruns  : %u (cycles %llu)\n", result.executive.overruns,
@@ -267,6 +346,17 @@ int main(int argc, char** argv) {
       if (!out_path.empty()) {
         std::printf("  flight log     : %s (%llu rows)\n", out_path.c_str(),
                     static_cast<unsigned long long>(result.log_rows));
+      }
+      if (!slocum_dir.empty()) {
+        const std::uint64_t slocum_lost = result.slocum_dbd.cycles_lost + result.slocum_sbd.cycles_lost;
+        std::printf(
+            "  slocum files   : %s (%d segments; .dbd %llu cycles, .sbd %llu cycles, %llu lost, "
+            "%llu values not representable)\n",
+            slocum_dir.c_str(), result.slocum_segments,
+            static_cast<unsigned long long>(result.slocum_dbd.cycles_written),
+            static_cast<unsigned long long>(result.slocum_sbd.cycles_written),
+            static_cast<unsigned long long>(slocum_lost),
+            static_cast<unsigned long long>(result.slocum_unrepresentable));
       }
     }
     // Aborted, or stopped by the time limit before the mission ended.

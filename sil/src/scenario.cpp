@@ -2,12 +2,16 @@
 #include "glider/sil/scenario.hpp"
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <optional>
 
 #include "glider/firmware/app/absent_devices.hpp"
 #include "glider/firmware/app/flight_application.hpp"
+#include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
+#include "glider/firmware/comms/log_forward.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/portable_random.hpp"
@@ -92,7 +96,28 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     }
   }
   hal::LogSink& file_sink = csv ? static_cast<hal::LogSink&>(*csv) : no_file;
-  TeeLogSink log(file_sink, result.stats);
+  // The Slocum files: set up (sink, caches) before the first cycle.
+  std::optional<fw::SlocumDirectorySink> slocum_sink;
+  std::optional<fw::SlocumLz4Sink> slocum_lz4;
+  std::optional<fw::SlocumLogger> slocum;
+  std::optional<fw::SlocumLogSink> slocum_rows;
+  if (!options.slocum_directory.empty()) {
+    slocum_sink.emplace(options.slocum_directory);
+    if (!slocum_sink->ok()) {
+      result.error = slocum_sink->error();
+      return result;
+    }
+    if (options.slocum_lz4) slocum_lz4.emplace(*slocum_sink);
+    slocum.emplace(slocum_lz4 ? static_cast<fw::SlocumSink&>(*slocum_lz4) : *slocum_sink, options.slocum);
+    if (!slocum->start()) {
+      result.error = options.slocum_directory + ": " + slocum->error();
+      return result;
+    }
+    slocum_rows.emplace(*slocum);
+  }
+  TeeLogSink file_and_stats(file_sink, result.stats);
+  TeeLogSink log(file_and_stats, slocum_rows ? static_cast<hal::LogSink&>(*slocum_rows) : no_file);
+  fw::comms::LogForward log_path(log);  // through the comms task's tap once it exists
 
   // What the vehicle is not fitted with, the firmware gets as absent devices.
   const fw::app::FittedDevices& fitted = options.fitted;
@@ -106,7 +131,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
       .attitude = sim_hal.attitude(),
       .pump = sim_hal,
       .battery = sim_hal,
-      .log = log,
+      .log = log_path,
       .rudder = fitted.rudder ? sim_hal.rudder() : static_cast<hal::Rudder&>(fixed_rudder),
       .gps = sim_hal.gps(),
       .leak = fitted.leak_detector ? static_cast<hal::DigitalInput&>(sim_hal.leak()) : no_leak,
@@ -115,6 +140,22 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   fw::app::FlightApplication app(hal, config, nullptr, options.period_us);
   fw::Executive& executive = app.executive();
   const fw::FlightSoftware& flight = app.flight();
+
+  std::optional<SimModem> modem;
+  std::optional<fw::comms::CommsTask> comms;
+  if (options.comms) {
+    const ScenarioOptions::Comms& c = *options.comms;
+    fw::comms::CommsConfig comms_config = c.config;
+    comms_config.gps_wait_s = config.plan.gps_wait_s;
+    comms_config.keystroke_wait_s = config.plan.surface_dwell_s;
+    comms_config.printout_cycle_s = config.plan.printout_cycle_s;
+    comms_config.utc_at_zero_s = c.utc_at_launch_s;
+    modem.emplace(clock, c.link, c.far_end, derived_seed(options.seed, kModemStream));
+    comms.emplace(app.flight(), *modem, sim_hal.gps(), log, comms_config, c.transfer, c.reloader);
+    log_path.retarget(*comms);
+    app.attach_comms(*comms);
+  }
+  double call_cycle_sum_us = 0.0;
 
   const double period_s = hal::to_seconds(options.period_us);
   YawDisturbance yaw_disturbance(vehicle.heading, derived_seed(options.seed, kYawDisturbanceStream));
@@ -126,7 +167,22 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
         sim_hal.inject(options.faults[i].name);
       }
     }
+    const bool in_call = comms && modem->in_call();
+    const auto cycle_start = std::chrono::steady_clock::now();
     executive.step();
+    if (in_call) {
+      const double us =
+          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - cycle_start).count();
+      ++result.call_cycles;
+      call_cycle_sum_us += us;
+      result.call_cycle_max_us = std::max(result.call_cycle_max_us, us);
+    }
+    if (comms && options.comms->after_cycle) options.comms->after_cycle(sim.time_s(), *comms);
+    if (comms && comms->reset_requested() && comms->state() == fw::comms::CommsState::kDone) {
+      result.reset_requested = true;
+      break;
+    }
+    const bool calling = comms && !comms->idle() && comms->state() != fw::comms::CommsState::kDone;
     const model::Truth truth = sim.truth();
     if (flight.navigator().waypoints_reached() > static_cast<std::int32_t>(result.waypoints.size())) {
       result.waypoints.push_back({flight.navigator().waypoints_reached(), sim.time_s(), truth.east_m, truth.north_m});
@@ -140,12 +196,17 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     }
     // An aborted mission is complete for the firmware once its depth says
     // it is up; the run goes on until the antenna is truly out (or the stop).
-    if (flight.complete() && !(result.abort_time_s >= 0.0 && result.abort_surfaced_s < 0.0)) break;
+    if (flight.complete() && !calling && !(result.abort_time_s >= 0.0 && result.abort_surfaced_s < 0.0)) break;
     sim.set_yaw_disturbance_rad_s(yaw_disturbance.next(period_s));
     sim.advance(period_s);
     clock.advance(options.period_us);
   }
 
+  if (comms) {
+    result.comms = comms->stats();
+    result.modem = modem->stats();
+    if (result.call_cycles > 0) result.call_cycle_mean_us = call_cycle_sum_us / static_cast<double>(result.call_cycles);
+  }
   result.completed = flight.complete();
   result.final_phase = flight.phase();
   result.abort_cause = flight.abort_cause();
@@ -164,6 +225,17 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
                                 : result.completed ? std::string("complete")
                                                    : std::string("stopped max_sim_time");
     if (!csv->finish(outcome, result.log_rows_lost)) result.error = csv->error();
+  }
+  if (slocum) {
+    const bool slocum_ok = slocum->finish();
+    result.slocum_segments = slocum->segments();
+    result.slocum_dbd = slocum->dbd();
+    result.slocum_sbd = slocum->sbd();
+    result.slocum_unrepresentable = slocum->unrepresentable();
+    if (!slocum_ok && result.error.empty()) {
+      result.error = options.slocum_directory + ": " + std::to_string(slocum->dbd().cycles_lost) + " .dbd and " +
+                     std::to_string(slocum->sbd().cycles_lost) + " .sbd cycles could not be written";
+    }
   }
   if (result.error.empty() && result.log_rows_lost > 0) {
     result.error = std::to_string(result.log_rows_lost) + " log rows could not be written";

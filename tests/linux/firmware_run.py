@@ -157,6 +157,12 @@ def main():
         depth = float(rows[-1].split(",")[1])
         if abs(depth - (1.06 - 1.01325) * 1e5 / (1025 * 9.80665)) > 1e-3:
             fail("flight log depth %.4f m is not the transmitter's" % depth)
+        # The Slocum data files (on by default, beside the log): one segment, ended.
+        slocum = os.path.join(tmp, "slocum")
+        dbd = sorted(n for n in os.listdir(slocum) if n.endswith(".dbd")) if os.path.isdir(slocum) else []
+        if len(dbd) != 1 or not open(os.path.join(slocum, dbd[0]), "rb").read().endswith(b"X") or \
+                not re.search(r"slocum files .*: 1 segments, .dbd %d cycles, .sbd \d+ cycles, 0 lost" % (len(rows) - 1), err):
+            fail("Slocum files: expected one ended .dbd with every row, found %s" % dbd)
     for p in PROCESSES:
         p.terminate()
     print("PASS firmware_run")

@@ -16,6 +16,9 @@
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/flight_software.hpp"
 #include "glider/firmware/log/log_text.hpp"
+#include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
+#include "glider/firmware/log/slocum_writer.hpp"
 
 namespace {
 
@@ -58,6 +61,18 @@ int main() {
   nav_config.plan.gps_wait_s = 60.0;
   fw::FlightSoftware navigated(nav_fake.hal(), nav_config);
 
+  // The Slocum writer (.dbd/.sbd per segment, into a real directory) takes
+  // the navigated mission's rows: file closes and opens at every surfacing.
+  fw::SlocumDirectorySink slocum_dir(GLIDER_TEST_OUTPUT_DIR "/no_heap_slocum");
+  fw::SlocumLogOptions slocum_options;
+  slocum_options.sbd = fw::parse_slocum_list(fw::kDefaultSbdList, "built-in").selection;
+  fw::SlocumLogger slocum(slocum_dir, slocum_options);
+  // and their LZ4 forms (liblz4's block API, its state on the stack)
+  fw::SlocumDirectorySink slocum_lz4_dir(GLIDER_TEST_OUTPUT_DIR "/no_heap_slocum_lz4");
+  fw::SlocumLz4Sink slocum_lz4_sink(slocum_lz4_dir);
+  fw::SlocumLogger slocum_lz4(slocum_lz4_sink, slocum_options);
+  const bool slocum_started = slocum_dir.ok() && slocum.start() && slocum_lz4_dir.ok() && slocum_lz4.start();
+
   const unsigned long before = g_allocations.load();
   double depth = 0.5;
   int cycles = 0;
@@ -95,12 +110,16 @@ int main() {
     nav_fake.power.sample.time_us = nav_fake.now;
     nav_fake.gps.fix = {54.0 + north_m / 111195.0, 7.0, 1, 8, 1.0, nav_fake.now, !under_way};
     navigated.run(nav_fake.now);
+    slocum.write(nav_fake.last_row, nav_fake.now);
+    slocum_lz4.write(nav_fake.last_row, nav_fake.now);
     nav_fake.now += 1'000'000;
   }
   fake.sense(5.0, -0.4);
   aborting.run(fake.now);
   fake.pump_fault = true;
   aborting.run(fake.now + 1'000'000);
+  const bool slocum_ok = slocum_started && slocum.finish() && slocum.segments() >= 2 &&
+                         slocum.dbd().cycles_written == static_cast<std::uint64_t>(nav_cycles);
   const unsigned long during = g_allocations.load() - before;
 
   const bool flew = flight.complete() && flight.yos_completed() == config.mission.yos;
@@ -111,5 +130,7 @@ int main() {
       "heap allocations in the loop: %lu\n",
       cycles, flew, aborted, navigated_ok, nav_cycles, navigated.navigator().segments(), during);
   std::printf("log row text formatted: %zu characters\n", row_chars);
-  return flew && aborted && navigated_ok && during == 0 && row_chars > 0 ? 0 : 1;
+  std::printf("slocum files written: %d segments, %llu .dbd cycles, ok %d\n", slocum.segments(),
+              static_cast<unsigned long long>(slocum.dbd().cycles_written), slocum_ok);
+  return flew && aborted && navigated_ok && slocum_ok && during == 0 && row_chars > 0 ? 0 : 1;
 }

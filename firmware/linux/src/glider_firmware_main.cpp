@@ -10,18 +10,28 @@
 // watchdog after every healthy cycle (packaging/glider-firmware.service).
 #include <CLI/CLI.hpp>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "glider/cli/tool.hpp"
 #include "glider/firmware/app/flight_application.hpp"
+#include "glider/firmware/app/mission_reload.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/log/slocum_directory_sink.hpp"
+#include "glider/firmware/log/slocum_list.hpp"
+#include "glider/firmware/log/slocum_lz4_sink.hpp"
+#include "glider/firmware/log/slocum_writer.hpp"
+#include "glider/firmware/comms/comms_task.hpp"
+#include "glider/firmware/comms/log_forward.hpp"
 #include "glider/hal_linux/modbus_board.hpp"
+#include "glider/hal_linux/serial_modem.hpp"
 #include "glider/target/linux_hal.hpp"
 #include "glider/target/realtime_loop.hpp"
 #include "glider/target/target_board.hpp"
@@ -64,6 +74,36 @@ std::string wait_for_sensors(const hal::Hal& hal, target::LinuxHal& linux_hal, d
          " s of start-up (see the counters below)";
 }
 
+hal::Micros utc_now_us() {
+  timespec t{};
+  clock_gettime(CLOCK_REALTIME, &t);
+  return static_cast<hal::Micros>(t.tv_sec) * hal::kMicrosPerSecond + t.tv_nsec / 1000;
+}
+
+// `exit reset` typed at the console: the service restarts the firmware.
+constexpr int kExitReset = 4;
+
+// What the comms task needs from the board's [modem] and the mission's surface behaviour.
+fw::comms::CommsConfig comms_config(const target::ModemBoardConfig& modem, const fw::FlightSoftwareConfig& flight,
+                                    const std::string& mission_path, hal::Micros clock_now_us) {
+  fw::comms::CommsConfig c;
+  std::snprintf(c.vehicle_name, sizeof c.vehicle_name, "%s", modem.vehicle_name.c_str());
+  std::snprintf(c.primary_number, sizeof c.primary_number, "%s", modem.primary_number.c_str());
+  std::snprintf(c.secondary_number, sizeof c.secondary_number, "%s", modem.secondary_number.c_str());
+  std::snprintf(c.mission_name, sizeof c.mission_name, "%s",
+                std::filesystem::path(mission_path).filename().string().c_str());
+  for (const std::string& name : modem.dialog_sensors) {
+    if (c.sensor_count == c.sensors.size()) break;
+    std::snprintf(c.sensors[c.sensor_count++].data(), fw::comms::kTextField, "%s", name.c_str());
+  }
+  c.gps_wait_s = flight.plan.gps_wait_s;
+  c.keystroke_wait_s = flight.plan.surface_dwell_s;
+  c.printout_cycle_s = flight.plan.printout_cycle_s;
+  const double utc_now_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  c.utc_at_zero_s = utc_now_s - hal::to_seconds(clock_now_us);
+  return c;
+}
+
 std::string default_log_name(const std::filesystem::path& directory) {
   const std::time_t now = std::time(nullptr);
   char name[64];
@@ -104,6 +144,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   tool.add_integer("--legs", legs, -2, 100000, "", ".mi: override goto_list num_legs_to_run (-1 loop, -2 once)");
   app.add_flag("--check-mission", check_mission, "read the board and the mission, report, exit (no device opened)");
+  std::string slocum_dir;
+  std::string sbdlist_path;
+  bool no_slocum = false;
+  bool slocum_lz4 = false;
+  app.add_option("--slocum-dir", slocum_dir,
+                 "where the Slocum data files go (.dbd, .sbd, cac/; default: slocum/ beside the flight log)");
+  app.add_option("--sbdlist", sbdlist_path, "the .sbd's sensors and decimation (sbdlist.dat; default: built in)")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--slocum-lz4", slocum_lz4, "write the Slocum files' LZ4 forms (.dcd, .scd, cac/*.ccc), as a G3S");
+  app.add_flag("--no-slocum", no_slocum, "write no Slocum data files (the CSV flight log only)");
   app.add_flag("--no-realtime", no_realtime, "do not ask for SCHED_FIFO or mlockall whatever the board says");
   return tool.run(argc, argv, [&]() -> int {
     target::block_stop_signals();  // before the log's writer thread exists
@@ -122,6 +172,13 @@ int main(int argc, char** argv) {
       std::fprintf(out, "%s\n", messages[i].c_str());
     }
     if (!prepared.config) return tool.fail(cli::kError, prepared.refusal);
+    if (no_slocum && (!slocum_dir.empty() || !sbdlist_path.empty() || slocum_lz4)) {
+      throw cli::ToolError(cli::kUsage, "--no-slocum contradicts --slocum-dir/--sbdlist/--slocum-lz4");
+    }
+    const fw::SlocumListResult sbdlist = sbdlist_path.empty()
+                                             ? fw::parse_slocum_list(fw::kDefaultSbdList, "built-in sbdlist.dat")
+                                             : fw::read_slocum_list(sbdlist_path);
+    if (!sbdlist.error.empty()) return tool.fail(cli::kError, sbdlist.error);
     if (check_mission) {
       std::fprintf(out, "glider-firmware: %s: mission accepted for board %s\n", mission_path.c_str(),
                    board.name.c_str());
@@ -135,6 +192,28 @@ int main(int argc, char** argv) {
       log_path = default_log_name(board.log_directory);
     }
     options.log_path = log_path;
+    // The Slocum data files: on unless --no-slocum (the shore's tools read
+    // only these), beside the flight log, written by the log's writer thread.
+    std::optional<fw::SlocumDirectorySink> slocum_sink;
+    std::optional<fw::SlocumLz4Sink> slocum_compressed;
+    std::optional<fw::SlocumLogger> slocum;
+    if (!no_slocum) {
+      if (slocum_dir.empty()) slocum_dir = (std::filesystem::path(log_path).parent_path() / "slocum").string();
+      slocum_sink.emplace(slocum_dir);
+      if (!slocum_sink->ok()) return tool.fail(cli::kError, slocum_sink->error());
+      const fw::SlocumMissionNumbers numbers = fw::next_slocum_mission(slocum_dir, board.name, utc_now_us());
+      fw::SlocumLogOptions slocum_options;
+      slocum_options.vehicle = board.name;
+      slocum_options.mission_name = std::filesystem::path(mission_path).filename().string();
+      slocum_options.mission_of_day = numbers.mission_of_day;
+      slocum_options.mission_number = numbers.mission_number;
+      slocum_options.sbd = sbdlist.selection;
+      if (slocum_lz4) slocum_compressed.emplace(*slocum_sink);
+      slocum.emplace(slocum_compressed ? static_cast<fw::SlocumSink&>(*slocum_compressed) : *slocum_sink,
+                     slocum_options);
+      if (!slocum->start()) return tool.fail(cli::kError, slocum_dir + ": " + slocum->error());
+      options.slocum = &*slocum;
+    }
     options.log_metadata = {{"source", "glider-firmware on the Linux target"},
                             {"board_file", board.source},
                             {"mission_file", mission_path},
@@ -155,9 +234,36 @@ int main(int argc, char** argv) {
       return tool.fail(cli::kError, silent);
     }
     PlatformCycle platform(*linux_hal);
-    fw::app::FlightApplication application(hal, *prepared.config, &platform);
+    // The log goes through the comms task's tap when the board has a modem.
+    fw::comms::LogForward log_forward(hal.log);
+    const hal::Hal flight_hal{.clock = hal.clock,
+                              .depth = hal.depth,
+                              .attitude = hal.attitude,
+                              .pump = hal.pump,
+                              .battery = hal.battery,
+                              .log = log_forward,
+                              .rudder = hal.rudder,
+                              .gps = hal.gps,
+                              .leak = hal.leak,
+                              .drop_weight = hal.drop_weight,
+                              .power = hal.power};
+    fw::app::FlightApplication application(flight_hal, *prepared.config, &platform);
     if (!application.valid()) return tool.fail(cli::kError, "invalid task table");
     const fw::FlightSoftware& flight = application.flight();
+    std::optional<hal_linux::SerialModem> modem;
+    std::optional<fw::app::MissionFileReloader> reloader;
+    std::optional<fw::comms::CommsTask> comms;
+    if (board.modem) {
+      modem.emplace(board.modem->line);
+      reloader.emplace(mission_path, board.vehicle, mission_options);
+      comms.emplace(application.flight(), *modem, hal.gps, hal.log,
+                    comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()), nullptr,
+                    &*reloader);
+      log_forward.retarget(*comms);
+      application.attach_comms(*comms);
+    }
+    // Done when the mission is and the last call is over (or the pilot asked for `exit reset`).
+    const auto calls_over = [&] { return !comms || comms->idle() || comms->state() == fw::comms::CommsState::kDone; };
     std::fprintf(out, "glider-firmware: board %s, mission %s, flight log %s%s; flying\n", board.name.c_str(),
                  mission_path.c_str(), log_path.c_str(),
                  time_scale != 1.0 ? (", time scale x" + std::to_string(time_scale)).c_str() : "");
@@ -167,7 +273,7 @@ int main(int argc, char** argv) {
     try {
       target::RealtimeLoop loop(application.executive(), linux_hal->clock(), board.loop, out);
       std::uint32_t overruns_seen = 0;
-      reason = loop.run([&] { return flight.complete(); },
+      reason = loop.run([&] { return (flight.complete() || (comms && comms->reset_requested())) && calls_over(); },
                         [&] {
                           const bool healthy = application.executive().stats().overruns == overruns_seen;
                           overruns_seen = application.executive().stats().overruns;
@@ -195,6 +301,20 @@ int main(int argc, char** argv) {
                                 : reason == target::StopReason::kCycleLimit ? std::string("stopped cycle_limit")
                                                                             : std::string("stopped loop_error");
     const bool log_ok = linux_hal->log().close(outcome);
+    bool slocum_ok = true;
+    if (slocum) {  // the log's writer thread has stopped: the last rows are in
+      slocum_ok = slocum->finish();
+      const std::uint64_t slocum_lost = slocum->dbd().cycles_lost + slocum->sbd().cycles_lost;
+      std::fprintf(
+          out,
+          "glider-firmware: slocum files %s: %d segments, .dbd %llu cycles, .sbd %llu cycles, %llu lost, %llu values "
+          "not representable\n",
+          slocum_dir.c_str(), slocum->segments(), static_cast<unsigned long long>(slocum->dbd().cycles_written),
+          static_cast<unsigned long long>(slocum->sbd().cycles_written), static_cast<unsigned long long>(slocum_lost),
+          static_cast<unsigned long long>(slocum->unrepresentable()));
+      if (!slocum_ok)
+        std::fprintf(out, "glider-firmware: %s: writing the Slocum files lost rows\n", slocum_dir.c_str());
+    }
     std::fprintf(out, "glider-firmware: flight log %s: %llu rows, %llu lost (ring full %llu, disk %llu), %llu fsyncs\n",
                  log_path.c_str(), static_cast<unsigned long long>(linux_hal->log().rows_written()),
                  static_cast<unsigned long long>(linux_hal->log().rows_refused()) +
@@ -203,8 +323,21 @@ int main(int argc, char** argv) {
                  static_cast<unsigned long long>(linux_hal->log().rows_lost_disk()),
                  static_cast<unsigned long long>(linux_hal->log().fsyncs()));
     linux_hal->print_statistics(out);
+    if (comms) {
+      const fw::comms::CommsStats& c = comms->stats();
+      std::fprintf(out,
+                   "glider-firmware: comms: %u surfacings, %u calls connected (%u dialled), %u without a call, %u "
+                   "carrier drops, %llu bytes sent, %llu received\n",
+                   c.surfacings, c.calls_connected, c.dial_attempts, c.surfacings_without_call, c.carrier_drops,
+                   static_cast<unsigned long long>(c.bytes_sent), static_cast<unsigned long long>(c.bytes_received));
+    }
     if (!log_ok) std::fprintf(out, "glider-firmware: %s: writing the flight log failed\n", log_path.c_str());
-    if (reason == target::StopReason::kError || !log_ok) return static_cast<int>(cli::kError);
+    if (reason == target::StopReason::kError || !log_ok || !slocum_ok) return static_cast<int>(cli::kError);
+    // The pilot's `exit reset`: systemd starts the firmware again (RestartForceExitStatus=4).
+    if (comms && comms->reset_requested()) {
+      std::fprintf(out, "glider-firmware: exit reset: restarting\n");
+      return kExitReset;
+    }
     // A clean stop (SIGTERM: systemctl stop) is success; an abort or the
     // cycle limit ends the flight early (systemd must not restart either).
     if (aborted || reason == target::StopReason::kCycleLimit) return static_cast<int>(cli::kStopped);

@@ -81,6 +81,7 @@ std::unique_ptr<LinuxHal> LinuxHal::build(const TargetBoard& board, const LinuxH
   log_options.metadata = options.log_metadata;
   log_options.messages = log;
   log_options.loop_clock = &h->clock_;
+  log_options.slocum = options.slocum;
   h->log_ = std::make_unique<RingBufferLog>(options.log_path, std::move(log_options));
   return h;
 }

@@ -124,6 +124,7 @@ void RingBufferLog::drain() {
       flush_buffer();
     }
     const Slot& slot = ring_[tail];
+    if (options_.slocum != nullptr) options_.slocum->write(slot.record, slot.utc_us);
     const std::size_t n = fw::format_log_fields(slot.record, slot.utc_us, buffer_.data() + buffered_bytes_,
                                                 buffer_.size() - buffered_bytes_);
     if (n > 0) {

@@ -114,6 +114,42 @@ hal_linux::PowerMonitorConfig read_power(const TomlDocument& doc) {
   return power;
 }
 
+// A dialled number: digits (and a leading +), at most 32 of them.
+std::string phone_number(const TomlDocument& doc, const std::string& key, const std::string& fallback) {
+  std::string number = doc.string_or(key, fallback);
+  const bool digits = number.find_first_not_of("+0123456789") == std::string::npos && number.size() <= 32;
+  if (!digits) doc.fail(key, "must be a phone number (digits, at most 32)");
+  return number;
+}
+
+ModemBoardConfig read_modem(const TomlDocument& doc, const std::string& board_name) {
+  ModemBoardConfig modem;
+  modem.line.device = doc.string("modem.device");
+  modem.line.baud = baud(doc, "modem.baud", 19200);
+  modem.line.dcd_wired = doc.boolean_or("modem.dcd", false);
+  modem.vehicle_name = doc.string_or("modem.vehicle_name", board_name);
+  if (modem.vehicle_name.empty() || modem.vehicle_name.size() >= 40)
+    doc.fail("modem.vehicle_name", "1 to 39 characters");
+  modem.primary_number = phone_number(doc, "modem.primary_number", "");
+  if (modem.primary_number.empty()) doc.fail("modem.primary_number", "a number to dial is needed");
+  modem.secondary_number = phone_number(doc, "modem.secondary_number", "");
+  const std::string sensors = doc.string_or("modem.dialog_sensors", "");
+  if (!sensors.empty()) {
+    modem.dialog_sensors.clear();
+    std::size_t from = 0;
+    while (from <= sensors.size()) {
+      const std::size_t comma = sensors.find(',', from);
+      const std::string name = sensors.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+      if (name.empty() || name.size() >= 40) doc.fail("modem.dialog_sensors", "a comma-separated list of log columns");
+      modem.dialog_sensors.push_back(name);
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+    if (modem.dialog_sensors.size() > 16) doc.fail("modem.dialog_sensors", "at most 16 columns");
+  }
+  return modem;
+}
+
 TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& relative_to) {
   TargetBoard board;
   board.source = doc.source();
@@ -129,6 +165,7 @@ TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& rel
   board.compass = read_serial(doc, "compass", 19200, 3.0);
   board.depth = read_depth(doc);
   if (doc.has("power")) board.power = read_power(doc);
+  if (doc.has("modem")) board.modem = read_modem(doc, board.name);
   board.log_directory = doc.string_or("log.directory", board.log_directory.string());
   board.bench = doc.boolean_or("bench", false);
   fw::app::FittedDevices fitted;

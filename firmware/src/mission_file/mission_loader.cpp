@@ -74,7 +74,7 @@ const Rules& surface_rules() {
       {"c_pitch_value", ignored("surfacing climbs use the yo's climb pitch")},
       {"strobe_on", ignored("no strobe in the HAL")},
       {"report_all", ignored("no surface dialog")},
-      {"printout_cycle_time", ignored("no surface dialog")},
+      {"printout_cycle_time", used(10.0, 3600.0, "s")},
       {"when_wpt_dist", ignored("only used by start_when 7, which is refused")},
       {"when_utc_min", ignored("only used by start_when 13, which is refused")},
       {"when_utc_hour", ignored("only used by start_when 13, which is refused")},
@@ -261,6 +261,7 @@ void Loader::read_surface(const MiBehavior& b) {
   if (end_action < 0 || end_action > 2) fail(b.where, "surface: end_action must be 0, 1 or 2");
   p.gps_wait_s = std::max(p.gps_wait_s, value(b, "gps_wait_time", 0.0));
   // end_action 1 waits for the pilot's ^C for keystroke_wait_time, then resumes.
+  p.printout_cycle_s = value(b, "printout_cycle_time", p.printout_cycle_s);
   if (end_action == 1) p.surface_dwell_s = std::max(p.surface_dwell_s, value(b, "keystroke_wait_time", 0.0));
 }
 

@@ -2,6 +2,7 @@
 #include "glider/hal_linux/serial_port.hpp"
 
 #include <fcntl.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -98,6 +99,20 @@ long SerialPort::read_some(char* buffer, std::size_t size) noexcept {
   if (n == 0 || errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) return 0;
   ++stats_.errors;
   return -1;
+}
+
+long SerialPort::write_some(const char* bytes, std::size_t size) noexcept {
+  const ssize_t n = ::write(fd_, bytes, size);
+  if (n >= 0) return n;
+  if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) return 0;
+  ++stats_.errors;
+  return -1;
+}
+
+int SerialPort::carrier_detect() const noexcept {
+  int lines = 0;
+  if (::ioctl(fd_, TIOCMGET, &lines) != 0) return -1;
+  return (lines & TIOCM_CD) != 0 ? 1 : 0;
 }
 
 }  // namespace glider::hal_linux

@@ -71,6 +71,28 @@ class FlightSoftware final : public PeriodicTask {
   std::int32_t yos_completed() const { return last_.yos_completed; }
   const Navigator& navigator() const { return navigator_; }
   std::uint64_t log_rows_lost() const { return log_rows_lost_; }
+
+  // The comms task's hooks (surface dialog; firmware/src/comms). Each takes
+  // effect in the next run().
+  // Up and ready for a call: between segments, at the end, or after an abort.
+  bool at_surface() const {
+    return (last_.segment_complete && navigator_.at_surface()) || (last_.phase == Phase::kAbort && last_.complete);
+  }
+  void set_surface_hold(bool hold) { surface_hold_ = hold; }
+  void request_resume() { resume_requested_ = true; }  // Control-R: dive without the keystroke wait
+  void end_mission() {                                 // Control-C: the mission ends at the surface
+    mission_over_ = true;
+    ended_by_operator_ = true;
+  }
+  // `run`/`sequence` after Control-C: fly on. False if the mission was over anyway.
+  bool restart_mission();
+  bool ended_by_operator() const { return ended_by_operator_ && mission_over_; }
+  // Control-F: a validated plan replaces the flown one (waypoints from the first).
+  void replace_plan(const MissionPlan& plan) {
+    config_.plan = plan;
+    navigator_.replace_plan(plan);
+  }
+  const MissionPlan& plan() const { return config_.plan; }
   // Commands clamped to the vehicle's range (or non-finite) before they were sent.
   const GuardCounts& actuator_guard_counts() const { return guard_.counts(); }
 
@@ -119,6 +141,9 @@ class FlightSoftware final : public PeriodicTask {
   HeadingController heading_;
   PiController pitch_servo_;
   bool mission_over_ = false;  // the navigator's end of mission
+  bool ended_by_operator_ = false;
+  bool surface_hold_ = false;
+  bool resume_requested_ = false;
   bool drop_weight_released_ = false;
   const Executive* executive_ = nullptr;
 

@@ -37,6 +37,8 @@ struct MissionPlan {
   double gps_wait_s = 0.0;
   double surface_dwell_s = 0.0;
   bool current_correction = true;  // u_use_current_correction
+  // The surface dialog is re-printed this often during a call (printout_cycle_time).
+  double printout_cycle_s = 60.0;
 };
 
 // Abort limits of the abend behaviour; <= 0 disables a limit (as in Slocum),

@@ -23,6 +23,10 @@ struct NavigatorInputs {
   bool depth_rate_ok = false;
   double depth_rate_m_s = 0.0;
   hal::GpsFix fix{};  // as read; checked here
+  // The comms task (surface dialog): hold the vehicle up while it calls, or
+  // resume at once (the pilot's Control-R) without the keystroke wait.
+  bool hold_at_surface = false;
+  bool resume_now = false;
 };
 
 // What one surfacing's fix said about the dead reckoning.
@@ -58,6 +62,12 @@ class Navigator {
   std::int32_t waypoints_reached() const { return reached_; }
   std::int32_t segments() const { return segments_; }
   double speed_m_s() const { return dr_.last_speed_m_s(); }  // horizontal, through the water
+  // Up between segments (or before the first), and since when.
+  bool at_surface() const { return state_ != State::kUnderWater; }
+  hal::Micros surfaced_us() const { return surfaced_us_; }
+  hal::Micros dive_us() const { return dive_us_; }
+  // A re-read mission (Control-F, validated): fly its waypoints from the first.
+  void replace_plan(const MissionPlan& plan);
 
  private:
   enum class State { kSurface, kUnderWater, kDone };

@@ -60,6 +60,7 @@ enum RandomStream : std::uint64_t {
   // often the receiver is read (a HIL plant under load reads it at other
   // instants than SIL), and must not change the next surfacing's wait.
   kGpsAcquisitionStream = 5,
+  kModemStream = 6,  // the simulated modem's link (sim_modem.hpp)
 };
 
 }  // namespace glider::sil

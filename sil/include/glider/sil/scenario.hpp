@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "glider/firmware/app/vehicle_setup.hpp"
+#include "glider/firmware/comms/comms_task.hpp"
 #include "glider/firmware/executive.hpp"
 #include "glider/firmware/flight_software.hpp"
+#include "glider/firmware/log/slocum_writer.hpp"
 #include "glider/model/environment.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle.hpp"
@@ -17,6 +19,7 @@
 #include "glider/sil/fault_injection.hpp"
 #include "glider/sil/flight_stats.hpp"
 #include "glider/sil/sim_hal.hpp"
+#include "glider/sil/sim_modem.hpp"
 
 namespace glider::sil {
 
@@ -52,6 +55,25 @@ struct ScenarioOptions {
   // An aborted firmware stays in its abort state for good; the run stops
   // this long after the abort (the vehicle is up by then, or never will be).
   double stop_after_abort_s = 3600.0;
+  // The firmware's Slocum data files (.dbd/.sbd, cac/; docs/slocum-binary.md,
+  // "Writing") into this directory; empty: none.
+  std::string slocum_directory;
+  bool slocum_lz4 = false;  // their LZ4 forms instead (.dcd/.scd, cac/*.ccc)
+  fw::SlocumLogOptions slocum;
+  // Comms (docs/comms.md): the simulated modem and link, the far end it
+  // calls, and the vehicle's comms settings (the surface waits come from the
+  // mission plan). None: the vehicle never calls.
+  struct Comms {
+    fw::comms::CommsConfig config;
+    LinkModel link;
+    FarEnd* far_end = nullptr;
+    fw::comms::FileTransfer* transfer = nullptr;
+    fw::comms::MissionReloader* reloader = nullptr;
+    double utc_at_launch_s = 1.7e9;  // Curr Time at launch
+    // Called after every cycle (tests sample the comms state).
+    std::function<void(double sim_time_s, const fw::comms::CommsTask& comms)> after_cycle;
+  };
+  std::optional<Comms> comms;
 };
 
 // Where the vehicle truly was when the firmware counted a waypoint reached.
@@ -78,8 +100,21 @@ struct ScenarioResult {
   double abort_time_s = -1.0;      // first cycle in the abort phase
   double abort_surfaced_s = -1.0;  // first time after it that the antenna was truly out of the water
   double energy_used_j = 0.0;
+  // The Slocum files (when slocum_directory was given).
+  std::int32_t slocum_segments = 0;
+  fw::SlocumFileCounters slocum_dbd;
+  fw::SlocumFileCounters slocum_sbd;
+  std::uint64_t slocum_unrepresentable = 0;  // values the sensors' types cannot hold (not stored)
   double charge_used_amphr = 0.0;
   std::string error;  // set when the run could not start or the log failed
+  // With comms: the task's and the modem's counts, and the wall time of the
+  // control cycles spent in a call (the loop's cost during the dialog).
+  fw::comms::CommsStats comms;
+  SimModemStats modem;
+  std::uint64_t call_cycles = 0;
+  double call_cycle_mean_us = 0.0;
+  double call_cycle_max_us = 0.0;
+  bool reset_requested = false;
 };
 
 // Flies the flight software against the model in lockstep: one firmware

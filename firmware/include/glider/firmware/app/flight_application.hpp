@@ -15,7 +15,7 @@ class FlightApplication {
  public:
   // `platform` (may be null) runs before the flight software every cycle
   // (the target: fresh Modbus budgets). Budgets: platform 45 %, flight 50 %
-  // of the period.
+  // of the period, comms (when attached) 5 %.
   FlightApplication(const hal::Hal& hal, const FlightSoftwareConfig& config, PeriodicTask* platform = nullptr,
                     hal::Micros period_us = Executive::kDefaultPeriodUs);
   FlightApplication(const FlightApplication&) = delete;
@@ -26,10 +26,21 @@ class FlightApplication {
   const Executive& executive() const { return executive_; }
   FlightSoftware& flight() { return flight_; }
   const FlightSoftware& flight() const { return flight_; }
+  // The comms task (surface dialog, modem; firmware/src/comms) runs after
+  // the flight software every cycle once attached (it needs flight() first).
+  void attach_comms(PeriodicTask& comms) { comms_slot_.task = &comms; }
 
  private:
+  // Runs the attached comms task, if any.
+  struct CommsSlot final : PeriodicTask {
+    PeriodicTask* task = nullptr;
+    void run(hal::Micros now_us) override {
+      if (task != nullptr) task->run(now_us);
+    }
+  };
   FlightSoftware flight_;
-  std::array<TaskSlot, 2> tasks_;
+  CommsSlot comms_slot_;
+  std::array<TaskSlot, 3> tasks_;
   Executive executive_;
 };
 

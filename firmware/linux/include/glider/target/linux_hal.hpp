@@ -28,6 +28,7 @@ struct LinuxHalOptions {
   std::string log_path;       // the flight log file
   double time_scale = 1.0;    // the loop clock's rate (bench/HIL only; loop_clock.hpp)
   std::vector<std::pair<std::string, std::string>> log_metadata;  // `# key: value` lines of the flight log
+  fw::SlocumLogger* slocum = nullptr;  // the Slocum data files, fed by the log's writer thread (not owned)
 };
 
 class LinuxHal {

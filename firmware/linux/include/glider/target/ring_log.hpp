@@ -30,6 +30,7 @@
 
 #include <sys/types.h>
 
+#include "glider/firmware/log/slocum_writer.hpp"
 #include "glider/hal/log_record.hpp"
 #include "glider/target/loop_clock.hpp"
 
@@ -45,6 +46,9 @@ struct RingLogOptions {
   const LoopClock* loop_clock = nullptr;
   // The system call that writes the file (tests inject a full disk).
   ssize_t (*write_fn)(int fd, const void* data, std::size_t size) = nullptr;
+  // The Slocum data files (not owned; null: none): the writer thread hands
+  // it every row with its UTC time, so the loop pays nothing more for them.
+  fw::SlocumLogger* slocum = nullptr;
 };
 
 class RingBufferLog final : public hal::LogSink {

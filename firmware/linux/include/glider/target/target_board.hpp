@@ -13,6 +13,7 @@
 #include "glider/hal_linux/hwmon_power.hpp"
 #include "glider/hal_linux/keller_depth.hpp"
 #include "glider/hal_linux/modbus_board.hpp"
+#include "glider/hal_linux/serial_modem.hpp"
 #include "glider/target/realtime_loop.hpp"
 
 namespace glider::target {
@@ -28,6 +29,15 @@ struct DepthConfig {
   hal_linux::KellerConfig keller;
 };
 
+// [modem]: the Iridium modem and what the vehicle says and dials (docs/comms.md).
+struct ModemBoardConfig {
+  hal_linux::SerialModemConfig line;
+  std::string vehicle_name;      // default: the board's name
+  std::string primary_number;    // RUDICS number dialled first
+  std::string secondary_number;  // "" none
+  std::vector<std::string> dialog_sensors{"m_battery", "m_depth", "m_water_vx", "m_water_vy"};
+};
+
 struct TargetBoard {
   std::string source;
   std::string name;
@@ -38,6 +48,7 @@ struct TargetBoard {
   SerialSensorConfig compass;
   DepthConfig depth;
   std::optional<hal_linux::PowerMonitorConfig> power;  // absent: no battery readings (bench only)
+  std::optional<ModemBoardConfig> modem;               // absent: the vehicle never calls
   std::filesystem::path log_directory = "/var/lib/glider/logs";
   // What the flight application needs of the vehicle ([vehicle]); its fitted
   // devices are the ones this board configures: [gpio] (leak line and drop

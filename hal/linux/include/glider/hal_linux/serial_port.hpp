@@ -25,6 +25,10 @@ class SerialPort {
 
   // The bytes waiting, up to `size`: 0 when none (never blocks), -1 on error.
   long read_some(char* buffer, std::size_t size) noexcept;
+  // What the driver's buffer takes of `size` bytes: 0 when full (never blocks), -1 on error.
+  long write_some(const char* bytes, std::size_t size) noexcept;
+  // Data carrier detect: 1 on, 0 off, -1 when the line cannot say (a pty, no modem-control wires).
+  int carrier_detect() const noexcept;
   const SerialPortStats& stats() const { return stats_; }
   const std::string& device() const { return device_; }
 

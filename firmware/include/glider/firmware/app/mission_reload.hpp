@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Control-F at the surface: the mission's files are read again through the
+// one mission setup (the same validation as at launch: file:line, key,
+// value, range). Only a mission that passes replaces the flown plan (its
+// waypoints and surfacing; the yo and the abort limits stay those of the
+// launch); a refused one leaves the vehicle flying the old plan and the
+// reason goes into the next dialog. Reading files allocates: this runs only
+// in the cycle the pilot presses Control-F (docs/comms.md).
+#include <filesystem>
+
+#include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/app/vehicle_setup.hpp"
+#include "glider/firmware/comms/comms_task.hpp"
+
+namespace glider::fw::app {
+
+class MissionFileReloader final : public comms::MissionReloader {
+ public:
+  MissionFileReloader(std::filesystem::path mission, VehicleSetup setup, MissionOptions options)
+      : mission_(std::move(mission)), setup_(std::move(setup)), options_(options) {}
+  bool reread(FlightSoftware& flight, char* refusal, std::size_t size) override;
+
+ private:
+  std::filesystem::path mission_;
+  VehicleSetup setup_;
+  MissionOptions options_;
+};
+
+}  // namespace glider::fw::app
