@@ -29,6 +29,7 @@ const std::vector<config::KeyRange>& limits() {
       {"compass.baud", kBaud},
       {"compass.stale_after_s", kStaleAfter},
       {"depth.baud", kBaud},
+      {"modem.baud", kBaud},
       {"depth.response_timeout_ms", {1.0, 1000.0, "ms"}},
       {"depth.retries", {0.0, 5.0, ""}},
       {"depth.cycle_budget_ms", {1.0, 1000.0, "ms (and at least depth.response_timeout_ms)"}},
