@@ -9,6 +9,7 @@ usage: test_campaign.py GLIDER_SIL GLIDER_DIAGNOSE [unittest arguments]"""
 
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -149,6 +150,19 @@ class Campaigns(InTemporaryDirectory):
         other = tool("run", DEMO_SMALL, "--out", out, "--shards", "2")
         self.assertEqual(other.returncode, 2)
         self.assertIn("holds results of another campaign or sharding", other.stderr)
+
+    def test_a_bad_campaign_file_exits_1_and_a_usage_error_2(self):
+        # README's exit codes: bad input (the file's runs = 0) is 1; a missing argument is 2.
+        path = os.path.join(self.dir, "zero_runs.toml")
+        with open(DEMO_SMALL) as f:
+            text = f.read()
+        self.assertRegex(text, r"(?m)^runs = [0-9]+$")
+        with open(path, "w") as f:
+            f.write(re.sub(r"(?m)^runs = [0-9]+$", "runs = 0", text).replace("../../boards", os.path.join(ROOT, "boards")))
+        bad = tool("run", path, "--out", os.path.join(self.dir, "zero_runs"))
+        self.assertEqual(bad.returncode, 1, bad.stderr)
+        self.assertIn("runs = 0: must be an integer >= 1", bad.stderr)
+        self.assertEqual(tool("fleet", "status").returncode, 2)
 
     def test_a_bad_vehicle_key_is_a_run_that_could_not_fly(self):
         path = os.path.join(self.dir, "typo.toml")

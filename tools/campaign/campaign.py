@@ -23,7 +23,11 @@ RUNS_PER_SHARD = 50  # default chunk: a shard of the 30-day mission is ~20 min o
 
 
 class CampaignError(Exception):
-    pass
+    """Bad input (a campaign file, a value, a results directory): exit 1."""
+
+
+class CampaignUsageError(CampaignError):
+    """Missing or conflicting arguments: exit 2 (README, exit codes)."""
 
 
 def _flatten_vary(table, prefix=""):
@@ -178,8 +182,8 @@ def _prepare(directory, manifest):
         old = shards.read_manifest(directory)
         keys = ("sha256", "runs", "shards", "seed")
         if any(old.get(k) != manifest.get(k) for k in keys):
-            raise CampaignError(f"{directory} holds results of another campaign or sharding "
-                                f"({', '.join(f'{k} {old.get(k)}' for k in keys)}): choose another --out")
+            raise CampaignUsageError(f"{directory} holds results of another campaign or sharding "
+                                     f"({', '.join(f'{k} {old.get(k)}' for k in keys)}): choose another --out")
         return directory, old
     os.makedirs(directory, exist_ok=True)
     _snapshot_inputs(directory, manifest)

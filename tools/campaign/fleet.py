@@ -22,7 +22,11 @@ LOGS_PER_SHARD = 8
 
 
 class FleetError(Exception):
-    pass
+    """Bad input (a log, a value, a results directory): exit 1."""
+
+
+class FleetUsageError(FleetError):
+    """Missing or conflicting arguments: exit 2 (README, exit codes)."""
 
 
 def log_metadata(path):
@@ -128,7 +132,7 @@ def _prepare(args):
     if os.path.exists(os.path.join(directory, shards.MANIFEST)):
         old = shards.read_manifest(directory)
         if old.get("sha256") != manifest["sha256"] or old.get("shards") != manifest["shards"]:
-            raise FleetError(f"{directory} holds another fleet diagnosis: choose another --out")
+            raise FleetUsageError(f"{directory} holds another fleet diagnosis: choose another --out")
     else:
         shards.write_manifest(directory, manifest)
     return directory, manifest
@@ -202,7 +206,7 @@ def main(args):
             directory, manifest = _prepare(args)
         else:
             if len(args.args) != 1:
-                raise FleetError(f"fleet {args.action}: give the results directory")
+                raise FleetUsageError(f"fleet {args.action}: give the results directory")
             directory = os.path.abspath(args.args[0])
             manifest = shards.read_manifest(directory)
         if args.action == "run":
@@ -229,4 +233,4 @@ def main(args):
         return write_report(directory, manifest)
     except (FleetError, FileNotFoundError, slurm.SlurmError) as error:
         print(f"glider-campaign fleet: {error}", file=sys.stderr)
-        return 2
+        return 2 if isinstance(error, FleetUsageError) else 1

@@ -82,7 +82,8 @@ def main(argv):
         return campaign.main(args)
     except (cards.CardError, campaign.CampaignError) as error:
         print(f"glider-campaign: {error}", file=sys.stderr)
-        return 2
+        # README's exit codes: a bad file or value is 1, missing or conflicting arguments 2.
+        return 2 if isinstance(error, campaign.CampaignUsageError) else 1
 
 
 if __name__ == "__main__":

@@ -50,6 +50,8 @@ def write_junit(results, broken, path):
     suite.set("failures", str(failures))
     suite.set("errors", str(errors))
     ET.indent(suite)
+    # docs/campaigns.md's `--junit build/cards.xml` on a fresh clone: make the folder, as --out does.
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
 
 

@@ -28,7 +28,10 @@ int main(int argc, char** argv) {
   app.add_option("FILES", inputs, "data files, directories or glob patterns (read in segment order)")->required();
   app.add_option("--cache", cache_dirs,
                  "directory of the sensor-list caches <crc>.cac/.ccc (repeatable; default: each file's folder and "
-                 "its cac/)");
+                 "its cac/)")
+      // One directory per --cache, so the files after it are not taken as more cache directories (the
+      // documented order `--cache DIR --columns ... FILE... --out LOG.csv`).
+      ->allow_extra_args(false);
   app.add_option("--write-cache", write_cache, "store the sensor lists of files that carry their own here");
   app.add_option("--columns", columns, "only these columns, comma separated (default: every sensor with a value)");
   app.add_option("--out", out_path, "file to write (CSV, OG1.0 .nc), or the directory of the IOOS profile files")

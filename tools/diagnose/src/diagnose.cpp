@@ -866,6 +866,119 @@ void report_final_values(const DepthRateModel& model, const Candidate& current, 
   d.cause = d.findings.empty() ? "none" : info(d.findings.front().effect).id;
 }
 
+// What data would tell two effects apart: the physics of why this log could
+// not. Pairs not listed get the general answer.
+std::string what_separates(Effect a, Effect b) {
+  auto is = [&](Effect x, Effect y) { return (a == x && b == y) || (a == y && b == x); };
+  auto either = [&](Effect x) { return a == x || b == x; };
+  using E = Effect;
+  if (is(E::kBuoyancyOffset, E::kVerticalWaterVelocity) || is(E::kBuoyancyOffset, E::kWaterDensity) ||
+      is(E::kVerticalWaterVelocity, E::kWaterDensity)) {
+    return "dives and climbs with different pumped volumes or pitches (a buoyancy acts through the glide's speed, "
+           "water moves the glider whatever its speed), a speed-through-water reference (DVL), or the same water "
+           "flown on another day";
+  }
+  if (either(E::kHullCompressibility) || either(E::kThermalExpansion)) {
+    return "glides over a wider range of depths (compressibility) and of temperatures (thermal expansion), or the "
+           "same depths flown in other water";
+  }
+  if (is(E::kDragChange, E::kLiftChange)) {
+    return "glides at different pitches (drag acts along the path, lift across it), or a speed-through-water "
+           "reference (DVL)";
+  }
+  if (either(E::kPumpLag) || either(E::kDepthLag)) {
+    return "inflections at other pump rates, or the depth from a second clock (a CTD's pressure beside the flight "
+           "computer's)";
+  }
+  return "other flight: different pitches, pumped volumes and depths, or a speed-through-water reference (DVL)";
+}
+
+// Identifiability, stated instead of decided silently. For each finding and
+// each candidate not taken: their depth-rate signatures (the change of the
+// fitted samples' residuals for a step of each, one flight each) with the
+// other findings' signatures projected out, and the correlation of the two.
+// Where it is high, the candidate is fitted in the finding's place, and the
+// pair is reported either way: told apart by the held-out yos, or - if the
+// swap explains them within the margins the selection itself uses -
+// ambiguous, with both readings and what data would separate them.
+void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
+                           const std::vector<Effect>& pool, const Candidate& current, const FitResult& current_fit,
+                           Diagnosis& d) {
+  if (current.fitted.empty()) return;
+  std::vector<double> base;
+  residuals(set, current_fit.parameters, current.ctd_density, s.train, base);
+  const auto n = static_cast<Eigen::Index>(base.size());
+  // The signature of `e`: residual change for a step of a tenth of its scale from the fit
+  // (a profile steps every bin: a uniform vertical velocity).
+  auto signature = [&](Effect e) {
+    Parameters stepped = current_fit.parameters;
+    const double step = 0.1 * info(e).scale;
+    stepped.values[static_cast<std::size_t>(e)] += step;
+    if (e == Effect::kVerticalWaterVelocity && stepped.profile) {
+      for (double& w : stepped.profile->w_m_s) w += step;
+    }
+    std::vector<double> r;
+    residuals(set, stepped, current.ctd_density, s.train, r);
+    Eigen::VectorXd column(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double v = (r[static_cast<std::size_t>(i)] - base[static_cast<std::size_t>(i)]) / step;
+      column[i] = std::isfinite(v) ? v : 0.0;
+    }
+    return column;
+  };
+  std::vector<Eigen::VectorXd> chosen;
+  for (Effect e : current.fitted) chosen.push_back(signature(e));
+  for (std::size_t j = 0; j < current.fitted.size(); ++j) {
+    const Effect effect = current.fitted[j];
+    // The other findings' signatures, orthonormalised, projected out of both.
+    Eigen::MatrixXd others(n, static_cast<Eigen::Index>(chosen.size()) - 1);
+    for (std::size_t k = 0, c = 0; k < chosen.size(); ++k) {
+      if (k != j) others.col(static_cast<Eigen::Index>(c++)) = chosen[k];
+    }
+    const Eigen::MatrixXd q =
+        others.cols() > 0
+            ? Eigen::MatrixXd(others.householderQr().householderQ() * Eigen::MatrixXd::Identity(n, others.cols()))
+            : Eigen::MatrixXd(n, 0);
+    auto residual_of = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return v - q * (q.transpose() * v); };
+    const Eigen::VectorXd a = residual_of(chosen[j]);
+    for (Effect alternative : pool) {
+      if (alternative == Effect::kWaterDensity) continue;  // the CTD's, not a fitted number
+      if (std::find(current.fitted.begin(), current.fitted.end(), alternative) != current.fitted.end()) continue;
+      const Eigen::VectorXd b = residual_of(signature(alternative));
+      const double norms = a.norm() * b.norm();
+      if (!(norms > 0.0)) continue;
+      const double correlation = std::abs(a.dot(b)) / norms;
+      if (!(correlation >= options.ambiguity_screen_correlation)) continue;
+      Candidate swapped = current;
+      swapped.fitted[j] = alternative;
+      FitResult f = fit_reported(set, swapped, s.train, s.heldout, options);
+      const double value = f.parameters.values[static_cast<std::size_t>(alternative)];
+      const double margin =
+          std::max(current_fit.heldout_rms * options.min_heldout_improvement, options.min_heldout_improvement_m_s);
+      Ambiguity amb;
+      amb.chosen = effect;
+      amb.alternative = alternative;
+      amb.correlation = correlation;
+      amb.alternative_value = is_lag(alternative) ? std::abs(value) : value;
+      amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
+      amb.alternative_heldout_rms_m_s = f.heldout_rms;
+      // Within the selection's own margins the held-out yos cannot tell them apart.
+      amb.ambiguous = f.heldout_rms <= current_fit.heldout_rms + margin;
+      // An implausible alternative is still stated: what rules it out is then
+      // the prior (flight_model.cpp's plausible ranges), not this log.
+      amb.ruled_out_by_prior = !plausible(alternative, value);
+      if (amb.ambiguous) {  // the second reading, with its interval (a Jacobian: only where reported)
+        add_intervals(set, swapped, s.train, options.intervals, f);
+        amb.alternative_ci95_low = amb.alternative_value - 1.96 * f.sigma[j];
+        amb.alternative_ci95_high = amb.alternative_value + 1.96 * f.sigma[j];
+        if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
+        amb.separate = what_separates(effect, alternative);
+      }
+      d.ambiguities.push_back(std::move(amb));
+    }
+  }
+}
+
 // A lift whose interval reaches the lifts where the glides flown get a
 // stalled steady state (stall_branch.hpp): there the dynamic model's misfit
 // jumps wherever one glide changes branch, and the interval from its local
@@ -940,6 +1053,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     fit_requested(set, s, options, current, current_fit, d);
   }
   add_intervals(set, current, s.train, options.intervals, current_fit);
+  if (options.fit_only.empty()) state_identifiability(set, s, options, pool, current, current_fit, d);
   report_final_values(set.model, current, current_fit, d);
   if (dynamic) widen_lift_at_stall(nominal, obs.track, d);
 

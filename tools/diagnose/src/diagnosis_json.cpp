@@ -65,6 +65,28 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
     if (f.effect == Effect::kThermalExpansion) findings.back()["reference_temperature_c"] = d.thermal_reference_c;
   }
   j["findings"] = findings;
+  ordered_json ambiguous = ordered_json::array(), identifiability = ordered_json::array();
+  for (const auto& a : d.ambiguities) {
+    identifiability.push_back({{"effect", info(a.chosen).id},
+                               {"alternative", info(a.alternative).id},
+                               {"verdict", a.ambiguous ? "ambiguous" : "told apart by the held-out yos"},
+                               {"signature_correlation", a.correlation},
+                               {"heldout_rms_depth_rate_m_s", a.chosen_heldout_rms_m_s},
+                               {"alternative_heldout_rms_depth_rate_m_s", a.alternative_heldout_rms_m_s}});
+    if (!a.ambiguous) continue;
+    ambiguous.push_back({{"effect", info(a.chosen).id},
+                         {"alternative", info(a.alternative).id},
+                         {"alternative_value", a.alternative_value},
+                         {"alternative_unit", info(a.alternative).unit},
+                         {"alternative_ci95", {a.alternative_ci95_low, a.alternative_ci95_high}},
+                         {"heldout_rms_depth_rate_m_s", a.chosen_heldout_rms_m_s},
+                         {"alternative_heldout_rms_depth_rate_m_s", a.alternative_heldout_rms_m_s},
+                         {"signature_correlation", a.correlation},
+                         {"ruled_out_by_prior", a.ruled_out_by_prior},
+                         {"what_would_separate_them", a.separate}});
+  }
+  j["ambiguous"] = ambiguous;
+  j["identifiability"] = identifiability;
   j["cause"] = d.cause;
   j["extended"] = {{"rms_depth_rate_m_s", number_or_null(d.extended_all.depth_rate_m_s)},
                    {"heldout_rms_depth_rate_m_s", number_or_null(d.extended_heldout_rms_m_s)}};

@@ -118,6 +118,23 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
                   d.thermal_reference_c);
     }
   }
+  for (const auto& a : d.ambiguities) {
+    if (!a.ambiguous) {
+      std::printf(
+          "    told apart: %s, not %s (%+.4g %s in its place: held-out %.4f vs %.4f m/s; signatures correlate %.2f)\n",
+          info(a.chosen).id, info(a.alternative).id, a.alternative_value, info(a.alternative).unit,
+          a.alternative_heldout_rms_m_s, a.chosen_heldout_rms_m_s, a.correlation);
+      continue;
+    }
+    std::printf(
+        "    ambiguous: %s or %s %+.4g %s (95%% CI %.4g .. %.4g): fitted in its place it explains the held-out yos "
+        "as well (%.4f vs %.4f m/s; signatures correlate %.2f): this log cannot tell them apart%s; what would: %s\n",
+        info(a.chosen).id, info(a.alternative).id, a.alternative_value, info(a.alternative).unit,
+        a.alternative_ci95_low, a.alternative_ci95_high, a.alternative_heldout_rms_m_s, a.chosen_heldout_rms_m_s,
+        a.correlation,
+        a.ruled_out_by_prior ? " (only the plausibility prior on its size rules the alternative out)" : "",
+        a.separate.c_str());
+  }
   std::printf(
       "  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f "
       "%%\n",

@@ -51,8 +51,13 @@ GlideKinematics kinematics(const model::PitchGlideSolver& solver, const model::H
   if (sin_path < 0.05) return {};
   GlideKinematics k;
   k.speed_m_s = std::abs(depth_rate_m_s) / sin_path;
-  k.lift_factor =
-      hydro.cl_alpha != 0.0 ? model::force_coefficients(hydro, glide.glide->alpha_rad).lift / hydro.cl_alpha : 0.0;
+  // The dynamics' effective angle of attack (dynamics.cpp): the lift over the
+  // whole lift slope, hull AND wings. The hull's slope alone (as here until
+  // the independent-truth benchmark found it) made a winged glider's roll turn
+  // it twice as hard as the model flies it, and the fit paid with a spurious
+  // roll_offset of ~0.09 rad on 150 of 160 winged truth logs.
+  const double slope = model::lift_slope_per_rad(hydro);
+  k.lift_factor = slope != 0.0 ? model::force_coefficients(hydro, glide.glide->alpha_rad).lift / slope : 0.0;
   return k;
 }
 

@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""Identifiability stated, on data the diagnosis has never seen: a log of the
+independent truth simulator (tools/science/truth) with a hidden buoyancy
+offset on symmetric yos, where a uniform vertical water velocity moves dive
+and climb depth rates the same way. The diagnosis must not decide silently:
+where it names the offset or the water, it judges the pair: told apart by
+the held-out yos, or ambiguous with both readings and what would separate
+them (the verdict must follow from the held-out errors it states). How
+often and how well the offset is named is the coverage benchmark's
+(./glider benchmark diagnose), over many fresh draws.
+
+A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
+
+  check_ambiguity.py GLIDER_TRUTH GLIDER_DIAGNOSE VEHICLE WORKDIR
+"""
+import json
+import os
+import random
+import subprocess
+import sys
+
+
+def main(truth, diagnose, vehicle, workdir):
+    seed = int(os.environ.get("GLIDER_TEST_SEED") or random.SystemRandom().randrange(1, 2**31))
+    rng = random.Random(seed)
+    grams = rng.choice([-1, 1]) * rng.uniform(30.0, 80.0)
+    print(f"seed {seed} (replay: GLIDER_TEST_SEED={seed}): hidden buoyancy_offset {grams:+.1f} g")
+    os.makedirs(workdir, exist_ok=True)
+    log = os.path.join(workdir, f"offset_{seed}.csv")
+    subprocess.run([truth, "--variant", "shallow", "--effect", f"buoyancy_offset={grams}", "--seed", str(seed),
+                    "--out", log], check=True, capture_output=True, timeout=120)
+    run = subprocess.run([diagnose, log, "--vehicle", vehicle, "--plane", "vertical", "--json"],
+                         capture_output=True, text=True, timeout=300)
+    if run.returncode != 0:
+        print(f"FAIL: glider-diagnose exit {run.returncode}: {run.stdout[-400:]} {run.stderr[-400:]}")
+        return 1
+    d = json.loads(run.stdout)
+    named = {f["effect"]: f for f in d["findings"]}
+    print("findings:", {k: round(v["value"], 5) for k, v in named.items()})
+    print("ambiguous:", [(a["effect"], a["alternative"], round(a["alternative_value"], 5),
+                          round(a["signature_correlation"], 3)) for a in d["ambiguous"]])
+    print("identifiability:", [(a["effect"], a["alternative"], a["verdict"], round(a["signature_correlation"], 3),
+                                round(a["heldout_rms_depth_rate_m_s"], 5),
+                                round(a["alternative_heldout_rms_depth_rate_m_s"], 5)) for a in d["identifiability"]])
+    pair = {"buoyancy_offset", "vertical_water_velocity"}
+    judged = [a for a in d["identifiability"] if {a["effect"], a["alternative"]} == pair]
+    stated = [a for a in d["ambiguous"] if {a["effect"], a["alternative"]} == pair]
+    # How well the offset is sized is the coverage benchmark's to count over many fresh draws
+    # (./glider benchmark diagnose); one draw here would make CI fail at random. What this test holds
+    # the diagnosis to is that a named offset or water is never decided silently against the other.
+    if "buoyancy_offset" not in named and "vertical_water_velocity" not in named:
+        print("NOTE: neither the offset nor the water named in this draw (a coverage miss, counted by the benchmark)")
+        print("PASS identifiability judged (nothing to judge)")
+        return 0
+    if "buoyancy_offset" in named:
+        value = named["buoyancy_offset"]["value"]
+        print(f"NOTE: offset read {value:+.1f} g against {grams:+.1f} g ({100 * (value - grams) / grams:+.0f} %)")
+    if not judged:
+        print("FAIL: the offset/water pair is decided silently: it is not among the pairs judged")
+        return 1
+    for a in judged:  # the verdict must follow from the numbers it states (the selection's margins)
+        margin = max(0.03 * a["heldout_rms_depth_rate_m_s"], 0.0005)
+        ambiguous = a["alternative_heldout_rms_depth_rate_m_s"] <= a["heldout_rms_depth_rate_m_s"] + margin
+        if ambiguous != (a["verdict"] == "ambiguous") or ambiguous != bool(stated):
+            print("FAIL: a verdict that its own held-out errors contradict")
+            return 1
+    for a in stated:
+        if not a["what_would_separate_them"] or a["alternative_ci95"][0] > a["alternative_ci95"][1]:
+            print("FAIL: an ambiguity without its interval or what would separate it")
+            return 1
+    print("PASS identifiability judged")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(*sys.argv[1:5]))
