@@ -59,6 +59,8 @@ PLACEHOLDERS = {
     ("./glider sil", "--vehicle", "FILE"): "boards/vehicles/slocum_comet.toml",
     ("./glider sil", "--legs", "N"): "1",
     ("./glider sil", "--fault", "NAME@TIME"): "leak@150",
+    ("./glider sil", "--slocum-dir", "DIR"): "{tmp}/slocum",
+    ("./glider sil", "--sbdlist", "FILE"): "boards/sbdlist.dat",
     ("./glider regress", None, "DIR"): "tests/cards/abort_leak.toml",
     ("./glider regress", None, "DIR|CARD"): "tests/cards/abort_leak.toml",
     ("./glider campaign run", None, "FILE"): "tests/campaign/demo_small.toml",
@@ -94,6 +96,7 @@ PLACEHOLDERS = {
     ("./glider convert", "--metadata", "deployment.toml"): "tests/netcdf/data/comet.toml",
     ("./glider convert", "--vehicle", "VEHICLE.toml"): "boards/vehicles/slocum_shallow.toml",
     ("./glider shore queue", None, "GLIDER"): "comet",
+    ("./glider check-nc", None, "FILE.nc"): "{og1_file}",
     ("./glider shore queue", None, "goto_l10.ma"): "boards/missions/comet-nsb3/mafiles/goto_l10.ma",
     ("./glider actuator-sim", "--tcp", "HOST:PORT"): "127.0.0.1:0",
     ("./glider actuator-sim", "--board", "FILE"): "boards/actuators/default_modbus.toml",
@@ -114,6 +117,7 @@ PLACEHOLDERS = {
     (None, "--env", "ENV"): "boards/environments/steady_current.toml",
     (None, "--out", "LOG.csv"): "{tmp}/log.csv",
     (None, "--out", "DIR"): "{tmp}/out",
+    (None, "--out", "FILE.nc"): "{tmp}/out.nc",
     (None, "--report", "DIR"): "{tmp}/report",
     (None, "--junit", "FILE"): "{tmp}/junit.xml",
     (None, "--columns", "a,b,..."): "m_depth,m_pitch,m_ballast_pumped",
@@ -317,6 +321,8 @@ def instantiate(text, tmp):
             value = value.replace("{demo_log}", demo_log())
         if "{campaign}" in value:
             value = value.replace("{campaign}", small_campaign(tmp))
+        if "{og1_file}" in value:
+            value = value.replace("{og1_file}", og1_file(tmp))
         if "{actuator_sim}" in value:
             value = value.replace("{actuator_sim}", actuator_sim(tmp))
         argv.append(value.format(tmp=tmp))
@@ -337,6 +343,15 @@ def demo_log():
         subprocess.run([sil, "--quiet", "--mission", "boards/missions/demo_yo.toml", "--out", DEMO["log"]],
                        cwd=SMALL_CAMPAIGN["source"], capture_output=True, timeout=60, check=True)
     return DEMO["log"]
+
+
+def og1_file(tmp):
+    """An OG1.0 file glider-convert writes of one real segment (tests/netcdf's metadata): for check-nc."""
+    out = os.path.join(tmp, "comet-2019-154.og1.nc")
+    convert = program_path(SMALL_CAMPAIGN["build"], "glider-convert")
+    subprocess.run([convert, "--format", "og1", "--metadata", "tests/netcdf/data/comet.toml", COMET_DBD,
+                    "--out", out], cwd=SMALL_CAMPAIGN["source"], capture_output=True, timeout=60, check=True)
+    return out
 
 
 def demo_deployment():

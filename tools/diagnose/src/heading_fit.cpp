@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/heading_fit.hpp"
+#include "glider/diagnose/delay_search.hpp"
 #include "glider/diagnose/least_squares_functor.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 #include <optional>
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
@@ -18,6 +21,21 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // A sample a model cannot predict (NaN) counts as this many of the link's
 // typical errors: an effect must not "improve" the fit by losing samples.
 constexpr double kMissingPenalty = 1.0;
+
+// The dead times (a signal shifted in time): searched globally first.
+bool is_delay(HeadingEffect e) {
+  return e == HeadingEffect::kFinDelay || e == HeadingEffect::kYawDelay || e == HeadingEffect::kAutopilotDelay;
+}
+
+// A delay's grid: 0 to 60 s (its plausible range, at most) every 1 s for
+// the servo and the autopilot (a quarter of the comet logs' 4 s cycle: the
+// servo's residual is flat in its delay between the cycle's fin readings, so
+// the start must fall in the right flat; 61 replays of logged rows, cheap),
+// every 2 s for the yaw (31 replays of the plant, the costly link).
+DelayGrid delay_grid_of(HeadingEffect e) {
+  const double step = e == HeadingEffect::kYawDelay ? info(e).scale : 0.5 * info(e).scale;
+  return delay_grid(0.0, std::min(60.0, info(e).plausible_max), step);
+}
 
 struct Trial {
   std::vector<HeadingEffect> fitted;
@@ -59,6 +77,29 @@ class Problem {
   }
 
   void set_penalty_scale(double s) { penalty_scale_ = s; }
+  double train_rss(const HeadingValues& v) const {
+    std::vector<double> r;
+    residuals(v, samples_.train, r);
+    double s = 0.0;
+    for (double x : r) s += x * x;
+    return s;
+  }
+  // The global step of a delay's global-then-local search: the delay alone
+  // (the others at this problem's nominal) on its grid, its best point; once
+  // per delay and link (the cache is shared by the copies holding() makes:
+  // a threshold's grid fits the delay at every point).
+  double delay_start(HeadingEffect e) const {
+    if (const auto it = delay_start_->find(e); it != delay_start_->end()) return it->second;
+    const DelayGrid grid = delay_grid_of(e);
+    const std::vector<double> rss = rss_on_grid(grid, [&](double x) {
+      HeadingValues v = nominal_;
+      at(v, e) = x;
+      return train_rss(v);
+    });
+    const double start = best_on_grid(grid, rss);
+    delay_start_->emplace(e, start);
+    return start;
+  }
   // The same problem with one effect held at another value.
   Problem holding(HeadingEffect e, double x) const {
     Problem p = *this;
@@ -73,6 +114,7 @@ class Problem {
   const HeadingResiduals& residuals_;
   const LinkSamples& samples_;
   double penalty_scale_ = 1.0;
+  std::shared_ptr<std::map<HeadingEffect, double>> delay_start_ = std::make_shared<std::map<HeadingEffect, double>>();
 };
 
 struct Functor : LeastSquaresFunctor {
@@ -116,16 +158,50 @@ double train_rss(const Problem& problem, const std::vector<HeadingEffect>& fitte
   return s;
 }
 
+// A delay's interval where the Jacobian gives none (an exact replay's zero
+// residual, or a residual flat in the delay: a zero-width interval): the
+// 95 % profile over its grid with the other effects held at the fit, never
+// narrower than the grid's step (its resolution).
+Interval delay_profile(const Problem& problem, const Trial& trial, HeadingEffect e, int k) {
+  const DelayGrid grid = delay_grid_of(e);
+  const std::vector<double> rss = rss_on_grid(grid, [&](double x) {
+    HeadingValues v = trial.values;
+    at(v, e) = x;
+    return problem.train_rss(v);
+  });
+  const double value = at(trial.values, e);
+  return at_least_resolution(profile_interval(grid, rss, value, trial.train_rss, trial.n_eff, k), value,
+                             resolution_at(grid, value), 0.0);
+}
+
+// The final fit's delays whose Jacobian interval says nothing (zero width)
+// get their profile interval instead; only the reported fit's (a profile
+// costs a grid of replays, and most trials are only compared).
+void profile_failed_delays(const Problem& problem, Trial& trial) {
+  for (std::size_t j = 0; j < trial.fitted.size(); ++j) {
+    const HeadingEffect e = trial.fitted[j];
+    if (!is_delay(e) || !jacobian_failed(0.5 * (trial.ci_high[j] - trial.ci_low[j]), info(e).scale)) continue;
+    const Interval profile = delay_profile(problem, trial, e, static_cast<int>(trial.fitted.size()));
+    trial.ci_low[j] = profile.low;
+    trial.ci_high[j] = profile.high;
+  }
+}
+
 // The smooth effects by Levenberg-Marquardt, intervals from the Jacobian.
 Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
   Trial trial;
   trial.fitted = fitted;
   const auto k = static_cast<Eigen::Index>(fitted.size());
   Eigen::VectorXd p = Eigen::VectorXd::Zero(k);
-  // A magnitude at 0 has no gradient: start one scale away.
+  // A magnitude at 0 has no gradient: start one scale away. A delay starts
+  // at the best point of its grid (Problem::delay_start: the delay alone,
+  // the others at nominal), unless that is 0.
   for (Eigen::Index j = 0; j < k; ++j) {
     const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
     if (info(e).magnitude && at(problem.nominal(), e) == 0.0) p[j] = 1.0;
+    if (!is_delay(e)) continue;
+    const double start = problem.delay_start(e);
+    if (start > 0.0) p[j] = (start - at(problem.nominal(), e)) / info(e).scale;
   }
   Functor functor{{}, problem, fitted, {}};
   if (k > 0) {
@@ -300,6 +376,7 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
   } else if (options.select) {
     final_fit = backward(problem, forward(problem, candidates, baseline, options), options);
   }
+  profile_failed_delays(problem, final_fit);
   // Rank: the order each effect alone would cut the held-out error, the
   // cumulative gain along it.
   std::vector<std::pair<double, HeadingEffect>> ranked;

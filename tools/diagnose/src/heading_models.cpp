@@ -13,7 +13,13 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double wrap_pi(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
+// std::remainder is exact but slow (it was 40 % of a heading diagnosis, in
+// the autopilot replay); inside [-pi, pi] it returns its argument (a half
+// quotient rounds to the even 0), so that case skips it: same bits.
+double wrap_pi(double a) {
+  if (a >= -std::numbers::pi && a <= std::numbers::pi) return a;
+  return std::remainder(a, 2.0 * std::numbers::pi);
+}
 
 // Rows are under water (the fin and the autopilot act) below this depth.
 constexpr double kSubmergedM = 1.0;
@@ -26,10 +32,10 @@ std::size_t row_at_or_before(std::span<const double> time, double t) {
   return it == time.begin() ? SIZE_MAX : static_cast<std::size_t>(it - time.begin()) - 1;
 }
 
-// Linear interpolation of a row series at t (NaN outside or across a NaN);
-// `angle`: across the shorter way round.
-double interpolate(std::span<const double> time, std::span<const double> x, double t, bool angle = false) {
-  const std::size_t j = row_at_or_before(time, t);
+// Linear interpolation of a row series at t from row j, the last at or
+// before t (row_at_or_before; NaN outside or across a NaN); `angle`: across
+// the shorter way round.
+double interpolate_from(std::span<const double> time, std::span<const double> x, std::size_t j, double t, bool angle) {
   if (j == SIZE_MAX || j + 1 >= time.size()) return j + 1 == time.size() && time[j] == t ? x[j] : kNaN;
   const double w = (t - time[j]) / (time[j + 1] - time[j]);
   const double step = angle ? wrap_pi(x[j + 1] - x[j]) : x[j + 1] - x[j];
@@ -154,6 +160,7 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
   const std::span<const double> time(t.row_time_s);
   double integrator = 0.0;
   double last_heading = kNaN;
+  std::size_t after = 0;  // first row later than `when`: `when` only grows (rows sorted), so it only advances
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
@@ -161,8 +168,9 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
       continue;
     }
     const double when = time[i] - delay;
-    const double heading = interpolate(time, t.row_heading_rad, when, true);
-    const std::size_t c = row_at_or_before(time, when);
+    while (after < n && time[after] <= when) ++after;
+    const std::size_t c = after == 0 ? SIZE_MAX : after - 1;  // row_at_or_before(time, when)
+    const double heading = interpolate_from(time, t.row_heading_rad, c, when, true);
     const double command = c == SIZE_MAX ? kNaN : t.row_command_rad[c];
     if (!std::isfinite(heading) || !std::isfinite(command)) continue;
     const double error = wrap_pi(command - heading);
