@@ -4,14 +4,17 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <optional>
 
 #include "glider/firmware/app/absent_devices.hpp"
 #include "glider/firmware/app/flight_application.hpp"
+#include "glider/firmware/comms/file_access_posix.hpp"
+#include "glider/firmware/comms/log_forward.hpp"
+#include "glider/firmware/comms/zmodem_transfer.hpp"
 #include "glider/firmware/log/slocum_directory_sink.hpp"
 #include "glider/firmware/log/slocum_lz4_sink.hpp"
-#include "glider/firmware/comms/log_forward.hpp"
 #include "glider/model/simulator.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/portable_random.hpp"
@@ -141,8 +144,31 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
   fw::Executive& executive = app.executive();
   const fw::FlightSoftware& flight = app.flight();
 
+  // The segments still open are not offered to a send.
+  struct OpenSegments final : fw::comms::OpenFiles {
+    const fw::SlocumDirectorySink* sink = nullptr;
+    bool is_open(const char* name) const override { return sink != nullptr && sink->is_open(name); }
+  } open_segments;
   std::optional<SimModem> modem;
   std::optional<fw::comms::CommsTask> comms;
+  // With Slocum files and no engine given: Zmodem from the Slocum folder,
+  // uploads into its from-shore/ folder.
+  std::optional<fw::comms::PosixFileAccess> outgoing_files, incoming_files;
+  std::optional<fw::comms::ZmodemTransfer> zmodem;
+  if (options.comms && options.comms->transfer == nullptr && slocum_sink) {
+    const std::string incoming = options.slocum_directory + "/from-shore";
+    std::error_code ec;
+    std::filesystem::create_directories(incoming, ec);
+    if (ec) {
+      result.error = incoming + ": cannot create: " + ec.message();
+      return result;
+    }
+    open_segments.sink = &*slocum_sink;
+    outgoing_files.emplace(options.slocum_directory);
+    incoming_files.emplace(incoming);
+    zmodem.emplace(options.slocum_directory.c_str(), *outgoing_files, incoming.c_str(), *incoming_files,
+                   &open_segments);
+  }
   if (options.comms) {
     const ScenarioOptions::Comms& c = *options.comms;
     fw::comms::CommsConfig comms_config = c.config;
@@ -151,7 +177,8 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     comms_config.printout_cycle_s = config.plan.printout_cycle_s;
     comms_config.utc_at_zero_s = c.utc_at_launch_s;
     modem.emplace(clock, c.link, c.far_end, derived_seed(options.seed, kModemStream));
-    comms.emplace(app.flight(), *modem, sim_hal.gps(), log, comms_config, c.transfer, c.reloader);
+    comms.emplace(app.flight(), *modem, sim_hal.gps(), log, comms_config,
+                  c.transfer != nullptr ? c.transfer : (zmodem ? &*zmodem : nullptr), c.reloader);
     log_path.retarget(*comms);
     app.attach_comms(*comms);
   }

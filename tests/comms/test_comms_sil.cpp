@@ -308,7 +308,7 @@ struct SliceTransfer final : fw::comms::FileTransfer {
     return true;
   }
   bool begin_receive() override { return false; }
-  fw::comms::TransferProgress poll(hal::Micros, fw::comms::DataStream& stream) override {
+  fw::comms::TransferProgress poll(hal::Micros, fw::comms::ByteStream& stream) override {
     ++polls;
     std::array<std::uint8_t, 128> slice{};
     slice.fill('Z');

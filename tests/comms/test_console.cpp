@@ -49,7 +49,7 @@ struct FakeTransfer final : FileTransfer {
     return true;
   }
   bool begin_receive() override { return ++receives > 0; }
-  TransferProgress poll(hal::Micros, DataStream&) override { return {TransferState::kDone, 1, 0, 10}; }
+  TransferProgress poll(hal::Micros, ByteStream&) override { return {TransferState::kDone, 1, 0, 10}; }
   void cancel() override {}
 };
 

@@ -72,6 +72,11 @@ std::filesystem::path write_board_files(const std::filesystem::path& directory, 
     << "\nwater_density_kg_m3 = " << number(e.keller.water_density_kg_m3)
     << "\nmax_pressure_bar = " << number(e.keller.max_pressure_bar) << "\n\n[log]\ndirectory = \""
     << e.log_directory.string() << "\"\n";
+  if (!e.modem_device.empty()) {
+    // Any number reaches the plant's --shore; no DCD wire on a pty (NO CARRIER ends a call).
+    b << "\n[modem]\ndevice = \"" << e.modem_device << "\"\nbaud = 19200\ndcd = false\nvehicle_name = \""
+      << e.modem_vehicle_name << "\"\nprimary_number = \"0088160000519\"\n";
+  }
   const fw::mission_file::MissionVehicle& v = e.vehicle.vehicle;
   b << "\n[vehicle]   # the plant's vehicle model, as glider-sil derives it from the vehicle file\n"
     << "max_working_depth_m = " << rounded(v.max_working_depth_m)

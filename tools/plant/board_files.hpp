@@ -19,6 +19,8 @@ struct PlantEndpoints {
   std::string gps_device;
   std::string compass_device;
   std::string depth_device;
+  std::string modem_device;  // empty: no [modem] table
+  std::string modem_vehicle_name;
   hal_linux::KellerConfig keller;
   std::filesystem::path log_directory;
   // The board's [vehicle]: what the flight software must know of the

@@ -5,6 +5,7 @@
 // model at a time scale, and writes the target board file glider-firmware
 // flies with (docs/hil.md).
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,11 @@ int main(int argc, char** argv) {
   tool.add_number("--duration-s", options.duration_s, {0.0, 1e9, "s"},
                   "stop this long (simulated) after launch; 0: at SIGTERM")
       ->capture_default_str();
+  std::string shore;
+  app.add_option("--shore", shore,
+                 "serve the Iridium modem on a pty (board [modem]) and bridge its calls to this shore station: "
+                 "HOST:PORT over TCP (numeric host; docs/comms.md)");
+  app.add_option("--vehicle-name", options.vehicle_name, "the name the vehicle gives in its dialog (with --shore)");
   app.add_option("--fault", fault_texts, "plant fault NAME@TIME after launch (s, m or h), repeatable; --list-faults");
   app.add_flag("--list-faults", list_faults, "print the plant faults and their glider-sil counterparts");
   app.add_option("--truth", options.truth_path, "write the model's truth at 1 s to this CSV");
@@ -74,6 +80,16 @@ int main(int argc, char** argv) {
       const auto fault = glider::plant::parse_plant_fault(text, error);
       if (!fault) throw glider::cli::ToolError(glider::cli::kUsage, "--fault " + error);
       options.faults.push_back(*fault);
+    }
+    if (!shore.empty()) {
+      const std::size_t colon = shore.rfind(':');
+      char* end = nullptr;
+      const long port = colon == std::string::npos ? 0 : std::strtol(shore.c_str() + colon + 1, &end, 10);
+      if (colon == std::string::npos || end == nullptr || *end != '\0' || port < 1 || port > 65535) {
+        throw glider::cli::ToolError(glider::cli::kUsage, "--shore " + shore + ": expected HOST:PORT, port 1-65535");
+      }
+      options.shore_host = shore.substr(0, colon);
+      options.shore_port = static_cast<int>(port);
     }
     options.vehicle = glider::model::load_vehicle_file(vehicle_path);
     options.environment = env_path.empty() ? glider::model::still_water(options.vehicle.trim_density_kg_m3)

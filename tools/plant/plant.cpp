@@ -21,6 +21,7 @@
 #include "glider/target/loop_timing.hpp"
 #include "glider/units.hpp"
 #include "keller_server.hpp"
+#include "modem_bridge.hpp"
 #include "nmea_sentences.hpp"
 #include "plant_axis.hpp"
 #include "pty_device.hpp"
@@ -80,6 +81,7 @@ class Plant {
   std::unique_ptr<PtyDevice> compass_line_;
   std::unique_ptr<PtyDevice> depth_line_;
   std::unique_ptr<KellerServer> keller_;
+  std::unique_ptr<ModemBridge> modem_;
   hal_linux::KellerConfig keller_config_;
   std::ofstream truth_;
   int signal_fd_ = -1;
@@ -136,6 +138,12 @@ Plant::Plant(const PlantOptions& options, std::FILE* out)
   endpoints.compass_device = compass_line_->link();
   endpoints.depth_device = depth_line_->link();
   endpoints.keller = keller_config_;
+  if (options.shore_port > 0) {
+    modem_ = std::make_unique<ModemBridge>((options.directory / "modem").string(), options.shore_host,
+                                           options.shore_port, options.time_scale);
+    endpoints.modem_device = modem_->link();
+    endpoints.modem_vehicle_name = options.vehicle_name.empty() ? options.vehicle.name : options.vehicle_name;
+  }
   endpoints.log_directory = options.directory / "logs";
   endpoints.vehicle = sil::vehicle_setup(options.vehicle, fw::app::FittedDevices{}, options.max_working_depth_m, false,
                                          options.environment.water.at(0.0, 0.0).density_kg_m3);
@@ -317,6 +325,9 @@ void Plant::run() {
       fds.clear();
       fds.push_back({signal_fd_, POLLIN, 0});
       fds.push_back({depth_line_->master_fd(), POLLIN, 0});
+      const std::size_t modem_at = fds.size();
+      if (modem_) modem_->append_pollfds(fds);
+      const std::size_t tcp_at = fds.size();
       tcp_->append_pollfds(fds);
       const auto left = deadline - Clock::now();
       const auto left_ns =
@@ -326,8 +337,9 @@ void Plant::run() {
       if (ready > 0) {
         if ((fds[0].revents & POLLIN) != 0) stop = true;
         if ((fds[1].revents & POLLIN) != 0) keller_->on_readable([this] { return measure_depth(); }, depth_silent_);
-        tcp_->service(fds.data() + 2, fds.size() - 2, [this] { take_commands(); });
+        tcp_->service(fds.data() + tcp_at, fds.size() - tcp_at, [this] { take_commands(); });
       }
+      if (modem_) modem_->service(fds.data() + modem_at, tcp_at - modem_at);
       const Clock::time_point now = Clock::now();
       tcp_->expire(now);
       if (stop || now >= deadline) break;
@@ -361,6 +373,12 @@ void Plant::print_statistics(const char* why) {
                t.ignored);
   std::fprintf(out_, "glider-plant: depth: %llu requests, %llu rejected; gps %llu, compass %llu bytes dropped\n",
                keller_->requests(), keller_->rejected(), gps_line_->dropped_bytes(), compass_line_->dropped_bytes());
+  if (modem_) {
+    const ModemBridgeStats& m = modem_->stats();
+    std::fprintf(out_, "glider-plant: modem: %llu calls, %llu connected, %llu bytes up, %llu bytes down\n",
+                 static_cast<unsigned long long>(m.calls), static_cast<unsigned long long>(m.connects),
+                 static_cast<unsigned long long>(m.bytes_up), static_cast<unsigned long long>(m.bytes_down));
+  }
   std::fflush(out_);
 }
 

@@ -37,6 +37,11 @@ struct PlantOptions {
   double duration_s = 0.0;                  // stop this long after launch (0: at SIGTERM/SIGINT)
   double compass_interval_s = 0.5;          // $PTNTHPR cadence (simulated)
   TcpServerOptions tcp;
+  // The Iridium modem on a pty (board [modem]) bridged to this shore
+  // station over TCP; port 0: no modem (the vehicle never calls).
+  std::string shore_host = "127.0.0.1";
+  int shore_port = 0;
+  std::string vehicle_name;  // the dialog's name (board modem.vehicle_name); empty: the vehicle's
   std::vector<PlantFault> faults;
 };
 

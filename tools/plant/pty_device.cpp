@@ -6,6 +6,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -41,6 +42,14 @@ PtyDevice::~PtyDevice() {
   ::unlink(link_.c_str());
   if (slave_keepalive_ >= 0) ::close(slave_keepalive_);
   if (master_ >= 0) ::close(master_);
+}
+
+std::size_t PtyDevice::write_some(const char* data, std::size_t size) {
+  int queued = 0;
+  if (ioctl(slave_keepalive_, TIOCINQ, &queued) != 0) return 0;
+  const std::size_t room = queued < 3072 ? static_cast<std::size_t>(3072 - queued) : 0;
+  const ssize_t n = ::write(master_, data, std::min(room, size));
+  return n > 0 ? static_cast<std::size_t>(n) : 0;
 }
 
 bool PtyDevice::write_all_or_drop(const std::string& bytes) {

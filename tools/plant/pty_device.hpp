@@ -3,6 +3,7 @@
 // A serial line of the plant: a pseudo-terminal whose slave side the
 // firmware opens as its device (a symlink at a path of our choosing, as
 // udev would give it), and whose master side the plant reads and writes.
+#include <cstddef>
 #include <string>
 
 namespace glider::plant {
@@ -24,6 +25,9 @@ class PtyDevice {
   // drops what the sensor sends, as a UART with no listener would.
   bool write_all_or_drop(const std::string& bytes);
   unsigned long long dropped_bytes() const { return dropped_; }
+  // A byte stream (the modem's data): as much as the line's buffer has room
+  // for now (the same 3 KiB as write_all_or_drop); the caller keeps the rest.
+  std::size_t write_some(const char* data, std::size_t size);
 
  private:
   int master_ = -1;

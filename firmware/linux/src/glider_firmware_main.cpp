@@ -25,7 +25,9 @@
 #include "glider/firmware/app/mission_reload.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
 #include "glider/firmware/comms/comms_task.hpp"
+#include "glider/firmware/comms/file_access_posix.hpp"
 #include "glider/firmware/comms/log_forward.hpp"
+#include "glider/firmware/comms/zmodem_transfer.hpp"
 #include "glider/firmware/log/slocum_directory_sink.hpp"
 #include "glider/firmware/log/slocum_list.hpp"
 #include "glider/firmware/log/slocum_lz4_sink.hpp"
@@ -253,12 +255,29 @@ int main(int argc, char** argv) {
     std::optional<hal_linux::SerialModem> modem;
     std::optional<fw::app::MissionFileReloader> reloader;
     std::optional<fw::comms::CommsTask> comms;
+    // Zmodem: send from the Slocum folder (never its open segment), receive into its from-shore/.
+    struct OpenSegments final : fw::comms::OpenFiles {
+      const fw::SlocumDirectorySink* sink = nullptr;
+      bool is_open(const char* name) const override { return sink != nullptr && sink->is_open(name); }
+    } open_segments;
+    std::optional<fw::comms::PosixFileAccess> outgoing_files, incoming_files;
+    std::optional<fw::comms::ZmodemTransfer> zmodem;
+    const std::string incoming_dir = slocum_dir + "/from-shore";
+    if (board.modem && slocum_sink) {
+      std::error_code ec;
+      std::filesystem::create_directories(incoming_dir, ec);
+      if (ec) return tool.fail(cli::kError, incoming_dir + ": cannot create: " + ec.message());
+      open_segments.sink = &*slocum_sink;
+      outgoing_files.emplace(slocum_dir);
+      incoming_files.emplace(incoming_dir);
+      zmodem.emplace(slocum_dir.c_str(), *outgoing_files, incoming_dir.c_str(), *incoming_files, &open_segments);
+    }
     if (board.modem) {
       modem.emplace(board.modem->line);
       reloader.emplace(mission_path, board.vehicle, mission_options);
       comms.emplace(application.flight(), *modem, hal.gps, hal.log,
-                    comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()), nullptr,
-                    &*reloader);
+                    comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()),
+                    zmodem ? &*zmodem : nullptr, &*reloader);
       log_forward.retarget(*comms);
       application.attach_comms(*comms);
     }

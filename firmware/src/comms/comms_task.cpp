@@ -135,6 +135,7 @@ void CommsTask::resume_mission() {
 }
 
 void CommsTask::reread_mafiles() {
+  refusal_by_ = "Control-F";
   if (reloader_ == nullptr) {
     std::snprintf(refusal_, sizeof refusal_, "no mission files to re-read on this vehicle");
   } else if (reloader_->reread(flight_, refusal_, sizeof refusal_)) {
@@ -143,6 +144,39 @@ void CommsTask::reread_mafiles() {
     return;
   }
   out_.appendf("mafiles refused (the old plan is flown): %s\r\n", refusal_);
+}
+
+void CommsTask::print_prompt() {
+  // GliderDOS's prompt: how the last mission ended (N normal or by the
+  // pilot, A abort with its code) or I while one is in progress.
+  const bool aborted = flight_.phase() == Phase::kAbort;
+  const char letter = aborted ? 'A' : flight_.complete() ? 'N' : 'I';
+  const int code = aborted ? static_cast<int>(flight_.abort_cause()) : -1;
+  out_.appendf("GliderDos %c %d >", letter, code);
+}
+
+void CommsTask::transfer_ended(const TransferProgress& p) {
+  out_.appendf("\r\ntransfer %s: %d file(s) done, %d failed, %llu bytes\r\n",
+               p.state == TransferState::kDone ? "complete" : "failed", p.files_done, p.files_failed,
+               static_cast<unsigned long long>(p.bytes));
+  // A received .ma/.mi is used only once it passed the launch validation.
+  for (std::size_t i = 0; i < transfer_->received_count(); ++i) {
+    const char* path = transfer_->received_path(i);
+    const std::size_t n = std::strlen(path);
+    const bool mission_file = n > 3 && (std::strcmp(path + n - 3, ".ma") == 0 || std::strcmp(path + n - 3, ".mi") == 0);
+    if (!mission_file) continue;
+    const char* name = std::strrchr(path, '/') != nullptr ? std::strrchr(path, '/') + 1 : path;
+    char why[sizeof refusal_] = {};
+    if (reloader_ != nullptr && reloader_->install(flight_, path, why, sizeof why)) {
+      out_.appendf("%s accepted: the new plan is flown from its first waypoint\r\n", name);
+    } else {
+      if (why[0] == '\0') std::snprintf(why, sizeof why, "no mission layer to validate it on this vehicle");
+      std::snprintf(refusal_, sizeof refusal_, "%s", why);
+      refusal_by_ = name;
+      out_.appendf("%s refused (the old plan is flown): %s\r\n", name, refusal_);
+    }
+  }
+  print_prompt();
 }
 
 void CommsTask::device_report() {
@@ -252,7 +286,9 @@ void CommsTask::print_dialog_now(hal::Micros now_us) {
   s.aborts.last_mission = config_.mission_name;
   s.refusal = refusal_;
   s.keystroke_wait_s = config_.keystroke_wait_s;
+  s.refusal_by = refusal_by_;
   print_dialog(s, out_);
+  print_prompt();
   refusal_[0] = '\0';  // said once, in this dialog
 }
 
@@ -380,13 +416,16 @@ void CommsTask::step_dialog(hal::Micros now_us) {
     return;
   }
   if (transferring_ && transfer_ != nullptr) {
+    // The command's answer goes out before the engine's first byte.
+    if (!out_.empty()) {
+      flush_output();
+      return;
+    }
     const TransferProgress p = transfer_->poll(now_us, stream_);
     if (p.state == TransferState::kRunning) return;
     transferring_ = false;
     last_key_us_ = now_us;
-    out_.appendf("transfer %s: %d file(s) done, %d failed, %llu bytes\r\n",
-                 p.state == TransferState::kDone ? "complete" : "failed", p.files_done, p.files_failed,
-                 static_cast<unsigned long long>(p.bytes));
+    transfer_ended(p);
   }
   std::array<std::uint8_t, kReadPerCycle> input{};
   const std::size_t n = modem_.read(input);

@@ -98,9 +98,17 @@ void Console::on_control(char key) {
     default:
       break;
   }
+  actions_.print_prompt();
 }
 
 void Console::on_line() {
+  answer_line();
+  // The prompt says the console is ready again; a transfer prints it when it ends.
+  if (!transfer_running_) actions_.print_prompt();
+  transfer_running_ = false;
+}
+
+void Console::answer_line() {
   const std::size_t typed = typed_;
   const bool overlong = overlong_;
   line_[length_] = '\0';
@@ -168,6 +176,7 @@ void Console::execute(std::span<const char* const> t, bool bang) {
     if (transfer_ == nullptr || !transfer_->begin_receive()) {
       refuse("ERROR: %s: the file transfer is busy or not fitted", "zr");
     } else {
+      transfer_running_ = true;
       actions_.transfer_started();
     }
   } else if (std::strcmp(command, "callback") == 0) {
@@ -267,6 +276,7 @@ void Console::command_send(std::span<const char* const> t, bool allow_num) {
     return;
   }
   // Newest first (the engine lists oldest first), then back to oldest first.
+  transfer_->list_files();
   std::size_t picked = 0;
   const std::size_t max = limit > 0 ? static_cast<std::size_t>(limit) : kMaxFilesPerSend;
   for (std::size_t k = transfer_->file_count(); k > 0 && picked < max; --k) {
@@ -289,6 +299,7 @@ void Console::command_send(std::span<const char* const> t, bool allow_num) {
     return;
   }
   out_.appendf("Sending %zu file(s)\r\n", picked);
+  transfer_running_ = true;
   actions_.transfer_started();
 }
 

@@ -118,7 +118,7 @@ void print_dialog(const DialogSnapshot& s, DialogQueue& out) {
     out.appendf("ABORT HISTORY: last abort segment: %s\r\n", s.aborts.last_segment);
     out.appendf("ABORT HISTORY: last abort mission: %s\r\n", s.aborts.last_mission);
   }
-  if (s.refusal[0] != '\0') out.appendf("Control-F refused: %s\r\n", s.refusal);
+  if (s.refusal[0] != '\0') out.appendf("%s refused: %s\r\n", s.refusal_by, s.refusal);
   out.appendf("Hit Control-R to RESUME the mission, or wait %.0f secs\r\n", s.keystroke_wait_s);
   out.append("Hit Control-C to END the mission\r\n");
   out.append("Hit Control-F to re-read mafiles\r\n");

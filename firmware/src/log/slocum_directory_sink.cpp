@@ -86,6 +86,10 @@ bool SlocumDirectorySink::open(int slot, const char* name) {
   if (n <= 0 || static_cast<std::size_t>(n) >= path_.size()) return false;
   fd_[s] = ::open(path_.data(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   length_[s] = 0;
+  {
+    const std::lock_guard<std::mutex> lock(names_mutex_);
+    std::snprintf(open_name_[s].data(), open_name_[s].size(), "%s", fd_[s] >= 0 ? name : "");
+  }
   return fd_[s] >= 0;
 }
 
@@ -111,10 +115,22 @@ bool SlocumDirectorySink::write(int slot, const char* data, std::size_t size) {
   return true;
 }
 
+bool SlocumDirectorySink::is_open(const char* name) const {
+  const std::lock_guard<std::mutex> lock(names_mutex_);
+  for (const auto& open : open_name_) {
+    if (open[0] != '\0' && std::strcmp(open.data(), name) == 0) return true;
+  }
+  return false;
+}
+
 bool SlocumDirectorySink::close(int slot) {
   if (slot < 0 || slot >= kSlots) return false;
   const auto s = static_cast<std::size_t>(slot);
   if (fd_[s] < 0) return false;
+  {
+    const std::lock_guard<std::mutex> lock(names_mutex_);
+    open_name_[s][0] = '\0';
+  }
   const bool synced = ::fsync(fd_[s]) == 0;
   const bool closed = ::close(fd_[s]) == 0;
   fd_[s] = -1;

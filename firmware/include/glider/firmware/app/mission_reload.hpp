@@ -20,6 +20,11 @@ class MissionFileReloader final : public comms::MissionReloader {
   MissionFileReloader(std::filesystem::path mission, VehicleSetup setup, MissionOptions options)
       : mission_(std::move(mission)), setup_(std::move(setup)), options_(options) {}
   bool reread(FlightSoftware& flight, char* refusal, std::size_t size) override;
+  // An uploaded .ma (or the flown .mi) is tried on a staged copy of the
+  // mission's files beside the received one (<its folder>/.staging); only a
+  // plan that passes is flown, and only then does the file replace its
+  // namesake among the mission's files (temporary name, then rename).
+  bool install(FlightSoftware& flight, const char* received_path, char* refusal, std::size_t size) override;
 
  private:
   std::filesystem::path mission_;

@@ -13,8 +13,8 @@
 
 #include "glider/firmware/comms/at_driver.hpp"
 #include "glider/firmware/comms/console.hpp"
-#include "glider/firmware/comms/data_stream.hpp"
 #include "glider/firmware/comms/file_transfer.hpp"
+#include "glider/firmware/comms/modem_stream.hpp"
 #include "glider/firmware/comms/parameters.hpp"
 #include "glider/firmware/comms/surface_dialog.hpp"
 #include "glider/firmware/executive.hpp"
@@ -65,6 +65,13 @@ class MissionReloader {
  public:
   virtual ~MissionReloader() = default;
   virtual bool reread(FlightSoftware& flight, char* refusal, std::size_t size) = 0;
+  // A mission file received from shore (zr), complete: validated with the
+  // flown mission exactly as at launch; only if valid it joins the mission's
+  // files and its plan is flown. Refused: the plan and the files stay.
+  virtual bool install(FlightSoftware& /*flight*/, const char* /*received_path*/, char* refusal, std::size_t size) {
+    if (size > 0) refusal[0] = '\0';
+    return false;
+  }
 };
 
 enum class CommsState : std::int32_t {
@@ -128,6 +135,8 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   bool run_mission() override;
   void exit_reset() override;
   void transfer_started() override { transferring_ = true; }
+  void print_prompt() override;
+  void transfer_ended(const TransferProgress& progress);
 
   void enter(CommsState state, hal::Micros now_us);
   void step_modem(hal::Micros now_us);
@@ -176,6 +185,7 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   double callback_minutes_ = 0.0;
   double u_callback_max_min_;  // put-able
   char refusal_[160] = {};
+  const char* refusal_by_ = "Control-F";
 
   // The log tap's view.
   std::array<DialogSensor, kMaxDialogSensors> sensors_{};

@@ -30,6 +30,8 @@ class ConsoleActions {
   virtual bool run_mission() = 0;  // sequence / run (after ^C)
   virtual void exit_reset() = 0;
   virtual void transfer_started() = 0;  // send/s/zs/zr handed to the engine
+  // The GliderDOS prompt, after each answered line or key (none while a transfer runs).
+  virtual void print_prompt() {}
 };
 
 struct ConsoleStats {
@@ -54,6 +56,7 @@ class Console {
  private:
   void on_control(char key);
   void on_line();
+  void answer_line();
   void execute(std::span<const char* const> tokens, bool bang);
   void command_put(std::span<const char* const> tokens);
   void command_get(std::span<const char* const> tokens);
@@ -69,6 +72,7 @@ class Console {
   std::size_t length_ = 0;
   std::size_t typed_ = 0;  // characters typed on this line, kept or not
   bool overlong_ = false;
+  bool transfer_running_ = false;  // the line just answered started a transfer
   bool column_zero_ = true;
   bool last_was_cr_ = false;
   std::array<FileName, kMaxFilesPerSend> picked_{};

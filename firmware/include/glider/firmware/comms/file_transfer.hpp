@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <span>
 
-#include "glider/firmware/comms/data_stream.hpp"
+#include "glider/firmware/comms/byte_stream.hpp"
 #include "glider/hal/time.hpp"
 
 namespace glider::fw::comms {
@@ -42,6 +42,9 @@ class FileTransfer {
   // are the newest: `-num=N` sends the newest N that match).
   virtual std::size_t file_count() const = 0;
   virtual const char* file_name(std::size_t index) const = 0;
+  // Reads the vehicle's file list again (a send command does this first:
+  // new segments were closed since the last one).
+  virtual void list_files() {}
   // Starts sending these files to shore (send, s, zs). False: refused (busy).
   virtual bool begin_send(std::span<const FileName> files) = 0;
   // Starts receiving files from shore (zr); a received .ma/.mi is only
@@ -49,7 +52,11 @@ class FileTransfer {
   virtual bool begin_receive() = 0;
   // One bounded slice of the transfer over the stream; called every cycle
   // while running.
-  virtual TransferProgress poll(hal::Micros now_us, DataStream& stream) = 0;
+  virtual TransferProgress poll(hal::Micros now_us, ByteStream& stream) = 0;
+  // The files the last receive published complete (full paths), for the
+  // mission layer to validate a .ma/.mi before it is used.
+  virtual std::size_t received_count() const { return 0; }
+  virtual const char* received_path(std::size_t /*index*/) const { return ""; }
   // Carrier lost or the pilot gave up: stop at once (a partial file is never published).
   virtual void cancel() = 0;
 };

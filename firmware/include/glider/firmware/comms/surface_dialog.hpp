@@ -58,7 +58,8 @@ struct DialogSnapshot {
   std::span<const DialogSensor> sensors;
   DialogDevices devices;
   DialogAborts aborts;
-  const char* refusal = "";  // a re-read mission refused since the last dialog ("" none)
+  const char* refusal = "";              // a re-read mission refused since the last dialog ("" none)
+  const char* refusal_by = "Control-F";  // what asked for it: Control-F, or an upload (zr)
   double keystroke_wait_s = 0.0;
 };
 

@@ -7,6 +7,7 @@
 // fsyncs. No allocation after construction.
 #include <array>
 #include <cstdint>
+#include <mutex>
 #include <string>
 
 #include "glider/firmware/log/slocum_sink.hpp"
@@ -32,12 +33,19 @@ class SlocumDirectorySink final : public SlocumSink {
   const std::string& error() const { return error_; }
   const std::string& directory() const { return directory_; }
   std::uint64_t write_failures() const { return write_failures_; }
+  // True while `name` (a file name in the directory) is open for writing:
+  // a transfer must not send a segment that is still growing. Safe from
+  // another thread (the target writes from its log thread): the names are
+  // under a mutex held only to copy or compare them, never across I/O.
+  bool is_open(const char* name) const;
 
  private:
   std::string directory_;
   std::array<char, 4096> path_{};
   std::array<int, kSlots> fd_{};
-  std::array<std::uint64_t, kSlots> length_{};  // bytes known written: a buffer boundary
+  std::array<std::uint64_t, kSlots> length_{};
+  mutable std::mutex names_mutex_;
+  std::array<std::array<char, 128>, kSlots> open_name_{};  // bytes known written: a buffer boundary
   std::uint64_t write_failures_ = 0;
   std::string error_;
 };

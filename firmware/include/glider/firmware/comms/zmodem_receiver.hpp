@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "glider/firmware/comms/file_access.hpp"
+#include "glider/firmware/comms/zmodem_file_info.hpp"
+#include "glider/firmware/comms/zmodem_session.hpp"
+
+namespace glider::fw::comms::zmodem {
+
+// Zmodem receiver (shore -> glider: mission files). Each file is written to
+// a temporary name "<name>.<length>-<mtime>.zpart" and renamed to <name> only
+// after ZEOF at exactly the announced length, every subpacket's CRC having
+// been checked: a partial upload never appears under its real name. A later
+// session offered the same file (same name, length and mtime) resumes from
+// the partial's size (ZRPOS), the specification's crash recovery.
+// Non-blocking: step() reads and writes at most `budget` bytes each.
+class Receiver : public Session {
+ public:
+  static constexpr std::size_t kMaxResults = 16;
+  struct Result {
+    FileInfo info;
+    bool published = false;  // complete and renamed to its real name
+  };
+
+  Receiver(ByteStream& stream, FileAccess& files, const Options& options = {})
+      : Session(stream, options), files_(files) {
+    parser_.set_drop_control(options.escape_control);
+  }
+
+  void start(hal::Micros now);
+  Status step(hal::Micros now, std::size_t budget);
+  // Cancels the session (5+ CAN to the peer); a partial file is kept for resume.
+  void abort();
+
+  std::size_t result_count() const { return result_count_; }
+  const Result& result(std::size_t i) const { return results_[i]; }
+  // Offset reached in the file being received.
+  std::int64_t offset() const { return offset_; }
+
+ private:
+  enum class State : std::uint8_t { wait_file, file_info, receiving, finishing };
+  void on_event(Parser::Event event, std::uint8_t byte, hal::Micros now);
+  void on_header(const Header& header, hal::Micros now);
+  void on_subpacket(hal::Micros now);
+  void on_timeout(hal::Micros now);
+  void open_file(hal::Micros now);
+  void finish_file(hal::Micros now);
+  void close_partial();
+  void send(const Header& header);
+  Header rinit() const;
+  void record(bool published);
+
+  FileAccess& files_;
+  State state_ = State::wait_file;
+  Frame data_for_ = Frame::rqinit;  // the header whose subpackets are arriving
+  bool accepting_ = false;          // data at offset_ is being taken
+  bool file_open_ = false;
+  int o_count_ = 0;  // 'O's of the sender's "OO" after ZFIN
+  FileInfo info_;
+  std::array<char, kMaxName + 56> temp_name_{};
+  std::int64_t offset_ = 0;
+  std::array<Result, kMaxResults> results_{};
+  std::size_t result_count_ = 0;
+};
+
+}  // namespace glider::fw::comms::zmodem

@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/firmware/comms/zmodem_receiver.hpp"
+
+#include <charconv>
+#include <cstring>
+#include <string_view>
+
+namespace glider::fw::comms::zmodem {
+namespace {
+
+// The partial's name carries the length and mtime announced by the sender,
+// so a resume only ever continues the same version of a file.
+std::size_t make_temp_name(const FileInfo& info, std::span<char> out) {
+  std::size_t pos = info.name_length;
+  std::memcpy(out.data(), info.name.data(), pos);
+  const auto put_number = [&](char separator, std::int64_t value) {
+    out[pos++] = separator;
+    const auto [end, error] = std::to_chars(out.data() + pos, out.data() + out.size() - 8, value);
+    pos = error == std::errc() ? static_cast<std::size_t>(end - out.data()) : pos;
+  };
+  put_number('.', info.length);
+  put_number('-', info.mtime);
+  std::memcpy(out.data() + pos, ".zpart", 6);
+  pos += 6;
+  out[pos] = '\0';
+  return pos;
+}
+
+}  // namespace
+
+Header Receiver::rinit() const {
+  // Full duplex, overlapped I/O, CRC-32; buffer size 0: the sender may stream.
+  return Header::flags(
+      Frame::rinit, static_cast<std::uint8_t>(kCanFdx | kCanOvio | kCanFc32 | (options_.escape_control ? kEscCtl : 0)));
+}
+
+void Receiver::send(const Header& header) {
+  if (encoder_.room() >= Encoder::kHeaderCost) encoder_.hex_header(header);
+}
+
+void Receiver::start(hal::Micros now) {
+  status_ = Status::running;
+  failure_ = Failure::none;
+  state_ = State::wait_file;
+  result_count_ = 0;
+  parser_.reset();
+  progress(now);
+  send(rinit());
+  arm(now);
+}
+
+Status Receiver::step(hal::Micros now, std::size_t budget) {
+  if (status_ != Status::running) return status_;
+  read_input(budget, [&](Parser::Event event, std::uint8_t byte) { on_event(event, byte, now); });
+  if (status_ == Status::running && expired(now)) on_timeout(now);
+  if (status_ == Status::running && state_ != State::finishing) stalled(now);
+  flush(budget);
+  if (status_ == Status::failed) close_partial();
+  return status_;
+}
+
+void Receiver::abort() {
+  if (status_ != Status::running) return;
+  cancel_link(Failure::cancelled);
+  close_partial();
+}
+
+void Receiver::close_partial() {
+  // The partial stays under its temporary name: the next session resumes it.
+  if (file_open_) files_.close();
+  file_open_ = false;
+  accepting_ = false;
+}
+
+void Receiver::on_event(Parser::Event event, std::uint8_t byte, hal::Micros now) {
+  switch (event) {
+    case Parser::Event::cancelled:
+      close_partial();
+      fail(Failure::cancelled);
+      return;
+    case Parser::Event::header:
+      on_header(parser_.header(), now);
+      return;
+    case Parser::Event::subpacket:
+      on_subpacket(now);
+      return;
+    case Parser::Event::bad_header:
+      // Answered at once, so a noisy link costs a round trip, not a timeout:
+      // ZNAK makes the sender repeat its header; while resynchronising, the
+      // garbled header may have been the ZDATA we wait for.
+      error();
+      if (state_ == State::receiving && !accepting_) {
+        send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+      } else if (state_ == State::wait_file || state_ == State::file_info) {
+        send(Header::flags(Frame::nak, 0));
+      }
+      return;
+    case Parser::Event::bad_subpacket:
+      error();
+      if (state_ == State::receiving && accepting_) {
+        // Everything before offset_ is on file: ask for the rest again.
+        accepting_ = false;
+        send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+      } else if (state_ == State::file_info) {
+        send(Header::flags(Frame::nak, 0));
+      }
+      return;
+    case Parser::Event::none:
+      if (state_ == State::finishing && byte == 'O' && ++o_count_ >= 2) status_ = Status::done;
+      return;
+  }
+}
+
+void Receiver::on_header(const Header& header, hal::Micros now) {
+  data_for_ = header.type;
+  switch (header.type) {
+    case Frame::rqinit:
+      close_partial();
+      state_ = State::wait_file;
+      send(rinit());
+      arm(now);
+      return;
+    case Frame::sinit:
+      // The sender wants control characters escaped on our side too.
+      if (header.f0() & kTEscCtl) encoder_.set_escape_control(true);
+      return;
+    case Frame::file:
+      close_partial();
+      state_ = State::file_info;
+      arm(now);
+      return;
+    case Frame::data:
+      if (state_ != State::receiving) return;
+      accepting_ = header.position() == static_cast<std::uint32_t>(offset_);
+      if (!accepting_) {
+        error();
+        send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+      }
+      arm(now);
+      return;
+    case Frame::eof:
+      if (state_ == State::receiving) {
+        // A ZEOF short of what we hold went out before our ZRPOS: ask again.
+        if (header.position() == static_cast<std::uint32_t>(offset_)) {
+          finish_file(now);
+        } else {
+          send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+        }
+      } else if (state_ == State::wait_file) {
+        // Our ZRINIT after the last file was lost: repeat it.
+        send(rinit());
+      }
+      arm(now);
+      return;
+    case Frame::fin:
+      close_partial();
+      state_ = State::finishing;
+      o_count_ = 0;
+      send(Header::flags(Frame::fin, 0));
+      // Every file is settled: the sender's "OO" (which lrzsz's sz may not
+      // get out before it hangs up) is waited for a tenth of the timeout,
+      // a repeated ZFIN answered meanwhile.
+      deadline_ = now + options_.timeout_us / 10;
+      return;
+    case Frame::nak:
+      // The sender saw our last header garbled (lrzsz's sz answers so, then
+      // waits): say it again.
+      if (state_ == State::receiving) {
+        accepting_ = false;
+        send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+      } else if (state_ == State::wait_file) {
+        send(rinit());
+      }
+      return;
+    case Frame::freecnt:
+      send(Header::at(Frame::ack, 0));  // 0: free space unknown
+      return;
+    case Frame::abort:
+    case Frame::ferr:
+    case Frame::can:
+      close_partial();
+      send(Header::flags(Frame::fin, 0));
+      fail(Failure::cancelled);
+      return;
+    default:
+      return;  // ZCOMMAND and the rest: never executed, ignored
+  }
+}
+
+void Receiver::on_subpacket(hal::Micros now) {
+  const auto data = parser_.data();
+  if (data_for_ == Frame::sinit) {
+    send(Header::at(Frame::ack, 1));
+    return;
+  }
+  if (data_for_ == Frame::file && state_ == State::file_info) {
+    open_file(now);
+    return;
+  }
+  if (data_for_ != Frame::data || state_ != State::receiving || !accepting_) return;
+  if (!data.empty() && !files_.write(data)) {
+    close_partial();
+    cancel_link(Failure::file_error);
+    return;
+  }
+  offset_ += static_cast<std::int64_t>(data.size());
+  progress(now);
+  arm(now);
+  if (parser_.end() == kCrcQ || parser_.end() == kCrcW)
+    send(Header::at(Frame::ack, static_cast<std::uint32_t>(offset_)));
+}
+
+void Receiver::open_file(hal::Micros now) {
+  if (!parse_file_info(parser_.data(), info_)) {
+    // Not a plain file name (a path, a dot file, junk): refused.
+    state_ = State::wait_file;
+    send(Header::flags(Frame::skip, 0));
+    return;
+  }
+  make_temp_name(info_, temp_name_);
+  const std::string_view temp(temp_name_.data());
+  const std::int64_t have = files_.size(temp);
+  // Resume only a partial of this very version, never past its end.
+  const bool resume = info_.length >= 0 && have > 0 && have <= info_.length;
+  if (!files_.open(temp, resume ? FileAccess::Mode::append : FileAccess::Mode::create)) {
+    cancel_link(Failure::file_error);
+    return;
+  }
+  file_open_ = true;
+  offset_ = resume ? have : 0;
+  state_ = State::receiving;
+  accepting_ = false;
+  progress(now);
+  arm(now);
+  send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+}
+
+void Receiver::finish_file(hal::Micros now) {
+  file_open_ = false;
+  accepting_ = false;
+  const bool closed = files_.close();
+  const std::string_view temp(temp_name_.data());
+  // A file that ends short of (or past) its announced length is not the
+  // file the sender announced: it is dropped, never published.
+  const bool whole = info_.length < 0 || offset_ == info_.length;
+  const bool published = closed && whole && files_.rename(temp, info_.name_view());
+  if (!published) files_.remove(temp);
+  record(published);
+  progress(now);
+  state_ = State::wait_file;
+  send(rinit());
+}
+
+void Receiver::record(bool published) {
+  if (result_count_ >= kMaxResults) return;
+  results_[result_count_].info = info_;
+  results_[result_count_].published = published;
+  ++result_count_;
+}
+
+void Receiver::on_timeout(hal::Micros now) {
+  if (state_ == State::finishing) {
+    status_ = Status::done;
+    return;
+  }
+  if (!retry(now)) return;
+  parser_.reset();
+  // A byte garbled into XOFF stops a peer tty with IXON (lrzsz's): XON first.
+  static constexpr std::array<std::uint8_t, 1> kXonByte = {kXon};
+  encoder_.raw(kXonByte);  // a frame whose end was garbled is void: hunt for the next header
+  if (state_ == State::receiving) {
+    accepting_ = false;
+    send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+  } else if (state_ == State::file_info) {
+    // The ZFILE's subpacket never ended: ZNAK has it sent again (a ZRINIT
+    // here makes lrzsz's sz wait for 5 s of silence first).
+    send(Header::flags(Frame::nak, 0));
+  } else {
+    send(rinit());
+  }
+}
+
+}  // namespace glider::fw::comms::zmodem
