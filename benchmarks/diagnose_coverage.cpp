@@ -320,9 +320,10 @@ int main(int argc, char** argv) {
   Setup setup;
   setup.source_dir = GLIDER_SOURCE_DIR;
   setup.out_dir = (std::filesystem::temp_directory_path() / "glider_diagnose_coverage").string();
-  app.add_option("--draws", draws, "draws per case")->check(CLI::Range(1, 100000));
-  app.add_option("--jobs", jobs, "draws flown and diagnosed at once")->check(CLI::Range(1, 256));
-  app.add_option("--seed", seed, "draw i of a case uses seed + i");
+  tool.add_integer("--draws", draws, 1, 100000, "", "draws per case");
+  tool.add_integer("--jobs", jobs, 1, 256, "", "draws flown and diagnosed at once");
+  // Seeds up to seed + draws stay in 64 bits.
+  tool.add_integer("--seed", seed, 0, glider::cli::kMaxSeed - 100000, "", "draw i of a case uses seed + i");
   app.add_option("--cases", cases, "cases: effect ids, 'a+b' pairs, 'none' (clean logs)")->delimiter(',');
   app.add_option("--out", setup.out_dir, "directory for the SIL logs");
   std::string intervals = "lag1";

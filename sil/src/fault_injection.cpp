@@ -58,8 +58,10 @@ std::optional<double> parse_fault_time(std::string time) {
   }
   char* end = nullptr;
   const double at_s = std::strtod(time.c_str(), &end);
-  if (time.empty() || end != time.c_str() + time.size() || !(at_s >= 0.0)) return std::nullopt;
-  return at_s * scale;
+  if (time.empty() || end != time.c_str() + time.size()) return std::nullopt;
+  const double seconds = at_s * scale;
+  if (!(seconds >= 0.0 && seconds <= kMaxFaultTimeS)) return std::nullopt;  // NaN and inf fail too
+  return seconds;
 }
 
 std::optional<ScheduledFault> parse_fault(const std::string& text, std::string& error) {
@@ -76,7 +78,8 @@ std::optional<ScheduledFault> parse_fault(const std::string& text, std::string& 
   if (at != std::string::npos) {
     const auto time = parse_fault_time(text.substr(at + 1));
     if (!time) {
-      error = "fault time in '" + text + "' is not a non-negative number of s, m or h";
+      error = "fault time in '" + text + "' is not a number of s, m or h in [0, " +
+              std::to_string(static_cast<long>(kMaxFaultTimeS)) + "] s";
       return std::nullopt;
     }
     at_s = *time;

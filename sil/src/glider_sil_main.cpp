@@ -105,13 +105,18 @@ int main(int argc, char** argv) {
                  "flight log to write (CSV, docs/flight-log.md; a name ending in .glb: its binary form, "
                  "several times faster to write, read by every tool, glider-log-info --to-csv converts)");
   app.add_option("--env", env_path, "environment file: water profile, currents, tide (TOML)")->check(CLI::ExistingFile);
-  app.add_option("--seed", seed, "seed of the sensor noise")->capture_default_str();
-  app.add_option("--heading-deg", heading_deg, "initial heading (TOML missions fly it with the fin centred)")
+  tool.add_integer("--seed", seed, 0, glider::cli::kMaxSeed, "", "seed of the sensor noise")->capture_default_str();
+  tool.add_number("--heading-deg", heading_deg, {-360.0, 360.0, "deg"},
+                  "initial heading (TOML missions fly it with the fin centred)")
       ->capture_default_str();
-  app.add_option("--max-working-depth-m", max_working_depth_m, ".mi: the vehicle's depth rating (f_max_working_depth)")
+  tool.add_number("--max-working-depth-m", max_working_depth_m, {1.0, 11000.0, "m"},
+                  ".mi: the vehicle's depth rating (f_max_working_depth)")
       ->capture_default_str();
-  app.add_option("--legs", legs, ".mi: override goto_list num_legs_to_run (a looping list never ends)");
-  app.add_option("--max-sim-time-s", max_sim_time_s, "stop the simulation after this long (default: mission's)");
+  tool.add_integer("--legs", legs, -2, 100000, "",
+                   ".mi: override goto_list num_legs_to_run (-1 loop, -2 once; a looping list never ends)");
+  // 0: the mission's own limit; at most the 60 days a .mi mission may run.
+  tool.add_number("--max-sim-time-s", max_sim_time_s, {0.0, 60.0 * 86400.0, "s"},
+                  "stop the simulation after this long (default, 0: mission's)");
   app.add_option("--heading-law", heading_law, "fin autopilot: proportional (paper 001), slocum, compensated")
       ->check(CLI::IsMember({"proportional", "slocum", "compensated"}))
       ->capture_default_str();
@@ -123,12 +128,12 @@ int main(int argc, char** argv) {
                  "inject NAME@TIME (s, m or h), e.g. leak@1200s; repeatable; "
                  "names: depth_invalid depth_frozen attitude_invalid attitude_frozen "
                  "pump_fault pump_stuck battery_fault fin_fault leak gps_dead power_drain");
-  app.add_option("--launch-lat", launch_lat, "launch latitude, decimal degrees (default: comet 2019's first fix)");
-  app.add_option("--launch-lon", launch_lon, "launch longitude, decimal degrees");
+  tool.add_number("--launch-lat", launch_lat, {-90.0, 90.0, "deg"},
+                  "launch latitude, decimal degrees (default: comet 2019's first fix)");
+  tool.add_number("--launch-lon", launch_lon, {-180.0, 180.0, "deg"}, "launch longitude, decimal degrees");
   app.add_flag("--quiet", quiet, "print nothing but errors");
-  app.add_option("--integration-step-s", integration_step_s,
-                 "the vehicle model's integration step (accuracy: docs/sil.md, Speed)")
-      ->check(glider::cli::FiniteRange(1e-3, 1.0))
+  tool.add_number("--integration-step-s", integration_step_s, {1e-3, 1.0, "s"},
+                  "the vehicle model's integration step (accuracy: docs/sil.md, Speed)")
       ->capture_default_str();
   bool check_mission = false;
   std::string slocum_dir;

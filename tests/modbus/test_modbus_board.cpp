@@ -55,12 +55,14 @@ TEST(ModbusBoardFile, TheDefaultBoardReads) {
 TEST(ModbusBoardFile, ProblemsNameFileLineAndKey) {
   STRCMP_EQUAL("board.toml:3:13: bus.transport: expected \"tcp\" or \"rtu\", not \"can\"",
                error_of(replaced(kValid, "\"rtu\"", "\"can\"")).c_str());
-  STRCMP_EQUAL("board.toml:10:10: pump.max_cc: command limits must be increasing and inside the travel",
-               error_of(replaced(kValid, "max_cc = 250.0", "max_cc = 300.0")).c_str());
+  STRCMP_EQUAL(
+      "board.toml:10:10: pump.max_cc: command limits [-250, 300] must be increasing and inside the travel [-270, 270]",
+      error_of(replaced(kValid, "max_cc = 250.0", "max_cc = 300.0")).c_str());
   STRCMP_EQUAL("board.toml:14:15: unknown key 'slide.base_adress'",
                error_of(replaced(kValid, "base_address", "base_adress")).c_str());
-  STRCMP_EQUAL("board.toml:16:17: slide.travel_min_in: does not fit a 16-bit register at this counts_per_unit",
-               error_of(replaced(kValid, "travel_min_in = -1.2", "travel_min_in = -40.0")).c_str());
+  STRCMP_EQUAL(
+      "board.toml:16:17: slide.travel_min_in: value -40 does not fit a 16-bit register at counts_per_unit 1000",
+      error_of(replaced(kValid, "travel_min_in = -1.2", "travel_min_in = -40.0")).c_str());
   CHECK(error_of(replaced(kValid, "[slide]\nbase_address = 32", "[slide]")).find("overlaps") != std::string::npos);
   STRCMP_EQUAL("board.toml: missing required key 'pump.rate_cc_s'",
                error_of(replaced(kValid, "rate_cc_s = 30.0", "")).c_str());
@@ -84,6 +86,6 @@ TEST(ModbusBoardFile, AnOptionalRudderAxis) {
   CHECK_TRUE(board.rudder.has_value());
   STRCMP_EQUAL("deg", board.rudder->unit.c_str());
   DOUBLES_EQUAL(25.0, board.rudder->max, 0.0);
-  STRCMP_CONTAINS("rudder.base_address: overlaps the pump's registers on the same slave",
+  STRCMP_CONTAINS("rudder.base_address: value 0 overlaps the pump's registers on the same slave 1",
                   error_of(kValid + replaced(rudder, "slave = 2", "slave = 1")).c_str());
 }

@@ -11,6 +11,7 @@
 #include "actuator_server.hpp"
 #include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
+#include "glider/hal_linux/modbus_board.hpp"
 
 namespace {
 
@@ -29,14 +30,17 @@ int main(int argc, char** argv) {
   std::vector<std::string> faults;
   double time_scale = 1.0;
   app.add_option("--board", board_file, "board file (bus settings, axes)")->check(CLI::ExistingFile);
-  auto* tcp_option = app.add_option("--tcp", tcp,
-                                    "serve Modbus TCP on HOST:PORT (port 0: any free port); "
-                                    "default 127.0.0.1 and the board's port");
+  auto* tcp_option =
+      app.add_option("--tcp", tcp,
+                     "serve Modbus TCP on HOST:PORT (port 0: any free port); "
+                     "default 127.0.0.1 and the board's port")
+          ->check(CLI::Validator([](std::string& text) { return glider::hal_linux::tcp_endpoint_problem(text); },
+                                 "HOST:PORT"));
   app.add_option("--rtu", rtu, "serve Modbus RTU on this serial device (e.g. one end of a socat pty pair)")
       ->excludes(tcp_option);
   app.add_option("--fault", faults, "inject a fault: stall:S, silent:N, noise:N, exception:N, slow:MS (repeatable)");
-  app.add_option("--time-scale", time_scale, "simulated seconds per real second (faster bench demos)")
-      ->check(CLI::PositiveNumber);
+  tool.add_number("--time-scale", time_scale, {0.01, 1000.0, ""},
+                  "simulated seconds per real second (faster bench demos)");
   return tool.run(argc, argv, [&]() -> int {
     glider::sim_tools::ServerOptions options;
     options.board = glider::hal_linux::load_modbus_board(board_file);

@@ -11,6 +11,7 @@
 #include "bench_session.hpp"
 #include "glider/cli/tool.hpp"
 #include "glider/config/toml_document.hpp"
+#include "glider/hal_linux/modbus_board.hpp"
 
 namespace {
 
@@ -152,7 +153,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   Options o;
   app.add_option("--board", o.board_file, "board file (bus, axes, limits)")->check(CLI::ExistingFile);
-  auto* tcp = app.add_option("--tcp", o.tcp, "Modbus TCP device at HOST:PORT (overrides the board)");
+  auto* tcp = app.add_option("--tcp", o.tcp, "Modbus TCP device at HOST:PORT (overrides the board)")
+                  ->check(CLI::Validator(
+                      [](std::string& text) { return glider::hal_linux::tcp_endpoint_problem(text); }, "HOST:PORT"));
   app.add_option("--rtu", o.rtu, "Modbus RTU on this serial device (overrides the board)")->excludes(tcp);
   app.add_option("--csv", o.csv, "log every sample of the moves to this CSV file");
   app.add_flag("--yes,-y", o.yes, "do not ask before moving hardware");
@@ -164,13 +167,21 @@ int main(int argc, char** argv) {
   axis_arg(home);
   auto* move = app.add_subcommand("move", "move an axis to a volume (cc) or position (in)");
   axis_arg(move);
-  move->add_option("target", o.value, "cc for the pump, in for the slide")->required();
+  // Finite here; the board's limits of the axis are checked before anything moves.
+  tool.set_leading(
+      tool.add_number(move, "target", o.value, {-1e4, 1e4, "cc or in"}, "cc for the pump, in for the slide")
+          ->required(),
+      {"pump"});
   auto* step = app.add_subcommand("step", "step response: move by DELTA from where it is; rise, overshoot, settling");
   axis_arg(step);
-  step->add_option("delta", o.value, "step size, cc or in")->required();
+  tool.set_leading(tool.add_number(step, "delta", o.value, {-1e4, 1e4, "cc or in"}, "step size, cc or in")->required(),
+                   {"pump"});
   auto* cycle = app.add_subcommand("cycle", "full-travel cycle min -> max -> min: travel times and rates");
   axis_arg(cycle);
-  for (auto* sub : {move, step, cycle}) sub->add_option("--rate", o.rate, "unit/s (default: the board's rate)");
+  // 0 is not a rate: the option absent means the board's rate.
+  for (auto* sub : {move, step, cycle}) {
+    tool.add_number(sub, "--rate", o.rate, {1e-3, 1e3, "cc/s or in/s"}, "unit/s (default: the board's rate)");
+  }
   return tool.run(argc, argv, [&]() -> int {
     try {
       auto board = glider::hal_linux::load_modbus_board(o.board_file);

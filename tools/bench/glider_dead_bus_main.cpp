@@ -13,6 +13,7 @@
 
 #include "glider/cli/tool.hpp"
 #include "glider/hal_linux/modbus_actuators.hpp"
+#include "glider/hal_linux/modbus_board.hpp"
 
 int main(int argc, char** argv) {
   glider::cli::Tool tool("glider-dead-bus", "Worst-case blocking of one control cycle on a dead Modbus bus");
@@ -23,9 +24,12 @@ int main(int argc, char** argv) {
   int cycles = 10;
   std::string label = "dead bus";
   app.add_option("--board", board_file, "board file")->check(CLI::ExistingFile);
-  auto* tcp_option = app.add_option("--tcp", tcp, "HOST:PORT");
+  auto* tcp_option =
+      app.add_option("--tcp", tcp, "HOST:PORT")
+          ->check(CLI::Validator([](std::string& text) { return glider::hal_linux::tcp_endpoint_problem(text); },
+                                 "HOST:PORT"));
   app.add_option("--rtu", rtu, "serial device")->excludes(tcp_option);
-  app.add_option("--cycles", cycles, "control cycles to time")->check(CLI::PositiveNumber);
+  tool.add_integer("--cycles", cycles, 1, 1'000'000, "", "control cycles to time");
   app.add_option("--label", label, "what the bus is (for the report line)");
   return tool.run(argc, argv, [&]() -> int {
     auto board = glider::hal_linux::load_modbus_board(board_file);

@@ -26,8 +26,34 @@ SETUP_KEYS = {"name", "description", "mission", "vehicle", "environment", "seed"
               "max_working_depth_m", "legs", "heading_law", "dr", "heading_deg", "fault", "set", "expect"}
 
 
+# The numbers of a card and their ranges: (min, max, unit, integer). The same
+# as glider-sil's options they become (--max-sim-time-s ...); tests/cli checks
+# this table against glider-sil --list-numeric-options, so they cannot drift.
+# at_s is a [[fault]]'s time (glider-sil --fault NAME@TIME: at most 60 days).
+NUMBER_KEYS = {
+    "seed": (0, 2**63 - 1, "", True),
+    "max_sim_time_s": (0.0, 60.0 * 86400.0, "s", False),
+    "max_working_depth_m": (1.0, 11000.0, "m", False),
+    "heading_deg": (-360.0, 360.0, "deg", False),
+    "legs": (-2, 100000, "", True),
+}
+FAULT_TIME_RANGE = (0.0, 60.0 * 86400.0, "s", False)
+
+
 class CardError(Exception):
     pass
+
+
+def check_number(key, value, where):
+    """The value of `key` if it is a number (a whole one where the key needs
+    it) inside its range; else CardError naming the key, value and range."""
+    low, high, unit, integer = FAULT_TIME_RANGE if key == "at_s" else NUMBER_KEYS[key]
+    allowed = f"[{low:g}, {high:g}]{' ' + unit if unit else ''}" if not integer else f"[{low}, {high}]"
+    kind = "a whole number" if integer else "a number"
+    is_number = isinstance(value, int) or (isinstance(value, float) and not integer)
+    if isinstance(value, bool) or not is_number or not (low <= value <= high):  # NaN fails the comparison
+        raise CardError(f"{where}: {key} = {value!r}: must be {kind} in the allowed range {allowed}")
+    return value
 
 
 def _flatten(table, prefix=""):
@@ -45,6 +71,8 @@ def _known_metric(name):
 
 def parse_expectations(expect, where):
     """[expect] as a list of (text, metric, bound, value); bound is min, max or equals."""
+    if not isinstance(expect, dict):
+        raise CardError(f"{where}: expect = {expect!r}: must be an [expect] table of metric = value")
     out = []
     for path, value in _flatten(expect):
         text = f"{path} = {json.dumps(value)}" if isinstance(value, str) else f"{path} = {value}"  # as in TOML
@@ -93,26 +121,30 @@ def load_setup(doc, path, allowed_extra=()):
              "mission": _path(base, doc["mission"], "mission", path),
              "vehicle": _path(base, doc["vehicle"], "vehicle", path),
              "environment": _path(base, doc["environment"], "environment", path) if "environment" in doc else None,
-             "seed": doc.get("seed", 1)}
-    if not (isinstance(setup["seed"], int) and 0 <= setup["seed"] < 2**63):
-        raise CardError(f"{path}: seed = {setup['seed']!r}: must be an integer 0..2^63-1")
-    for key in ("max_sim_time_s", "max_working_depth_m", "heading_deg", "legs"):
+             "seed": 1}
+    for key in NUMBER_KEYS:
         if key in doc:
-            value = doc[key]
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not (value > 0 or key == "heading_deg"):
-                raise CardError(f"{path}: {key} = {value!r}: must be a positive number")
-            setup[key] = value
+            setup[key] = check_number(key, doc[key], path)
     for key, allowed in (("heading_law", ("proportional", "slocum", "compensated")), ("dr", ("assumed", "model"))):
         if key in doc:
             if doc[key] not in allowed:
                 raise CardError(f"{path}: {key} = {doc[key]!r}: allowed {', '.join(allowed)}")
             setup[key] = doc[key]
+    for key in ("name", "description"):
+        if not isinstance(setup[key], str):
+            raise CardError(f"{path}: {key} = {setup[key]!r}: must be a string")
+    faults = doc.get("fault", [])
+    if not isinstance(faults, list):
+        raise CardError(f"{path}: fault = {faults!r}: must be [[fault]] tables (name, at_s)")
     setup["faults"] = []
-    for i, fault in enumerate(doc.get("fault", [])):
-        if set(fault) != {"name", "at_s"} or not isinstance(fault["at_s"], (int, float)) or not fault["at_s"] >= 0:
-            raise CardError(f"{path}: [[fault]] #{i + 1} = {fault!r}: needs name = \"...\" and at_s >= 0 (s)")
+    for i, fault in enumerate(faults):
+        if not isinstance(fault, dict) or set(fault) != {"name", "at_s"} or not isinstance(fault["name"], str):
+            raise CardError(f"{path}: [[fault]] #{i + 1} = {fault!r}: needs name = \"...\" and at_s (s)")
+        check_number("at_s", fault["at_s"], f"{path}: [[fault]] #{i + 1}")
         setup["faults"].append({"name": fault["name"], "at_s": float(fault["at_s"])})
     # [set] keys are parameter names, quoted ("buoyancy.offset_kg") or nested: both give the dotted name.
+    if not isinstance(doc.get("set", {}), dict):
+        raise CardError(f"{path}: set = {doc['set']!r}: must be a [set] table of parameter = value")
     setup["set"] = dict(_flatten(doc.get("set", {})))
     return setup
 

@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
   std::vector<double> delays{0.0, 5.0, 10.0, 15.0, 20.0};
   app.add_option("--source", source, "repository root (boards/, tests/data/real)")->capture_default_str();
   app.add_option("--out", out_dir, "where the SIL logs go")->capture_default_str();
-  app.add_option("--delays", delays, "fin dead times to fly (s)")->capture_default_str();
+  tool.add_numbers("--delays", delays, {0.0, 600.0, "s"}, "fin dead times to fly (s)")->capture_default_str();
   bool replay_only = false;
   app.add_flag("--replay-only", replay_only,
                "only the replay: each real log's identified heading loop (glider-diagnose) flown in SIL");
@@ -94,11 +94,12 @@ int main(int argc, char** argv) {
                "offset so it glides at the log's speeds through the water)");
   bool no_disturbance = false;
   app.add_flag("--no-disturbance", no_disturbance, "replay: without the calibrated random yaw (compass noise only)");
-  app.add_option("--seed", replay_options.seed, "replay: the SIL runs' seed (compass noise, random yaw)")
+  tool.add_integer("--seed", replay_options.seed, 0, glider::cli::kMaxSeed, "",
+                   "replay: the SIL runs' seed (compass noise, random yaw)")
       ->capture_default_str();
-  app.add_option("--step", replay_options.integration_step_s, "replay: the plant's integration step (s)")
-      ->capture_default_str()
-      ->check(glider::cli::FiniteRange(0.01, 1.0));
+  tool.add_number("--step", replay_options.integration_step_s, {0.01, 1.0, "s"},
+                  "replay: the plant's integration step (s)")
+      ->capture_default_str();
   bool no_shear = false;
   app.add_flag("--no-shear", no_shear, "replay: in still water (without the identified shear of the current)");
   std::vector<std::string> real_logs;

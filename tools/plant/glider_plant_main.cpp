@@ -30,23 +30,24 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   app.add_option("--dir", directory, "directory for the devices (gps, compass, depth), board.toml and logs/");
-  app.add_option("--seed", options.seed, "seed of the sensor noise and GPS (as glider-sil --seed)")
+  tool.add_integer("--seed", options.seed, 0, glider::cli::kMaxSeed, "",
+                   "seed of the sensor noise and GPS (as glider-sil --seed)")
       ->capture_default_str();
-  app.add_option("--heading-deg", options.heading_deg, "initial heading (as glider-sil --heading-deg)")
+  tool.add_number("--heading-deg", options.heading_deg, {-360.0, 360.0, "deg"},
+                  "initial heading (as glider-sil --heading-deg)")
       ->capture_default_str();
-  app.add_option("--max-working-depth-m", options.max_working_depth_m,
-                 "board [vehicle] depth rating (as glider-sil --max-working-depth-m)")
-      ->capture_default_str()
-      ->check(glider::cli::FiniteRange(1.0, 11000.0));
+  tool.add_number("--max-working-depth-m", options.max_working_depth_m, {1.0, 11000.0, "m"},
+                  "board [vehicle] depth rating (as glider-sil --max-working-depth-m)")
+      ->capture_default_str();
   app.add_option("--heading-law", options.heading_law, "board [vehicle] fin autopilot (as glider-sil --heading-law)")
       ->capture_default_str()
       ->check(CLI::IsMember({"proportional", "slocum", "compensated"}));
-  app.add_option("--time-scale", options.time_scale, "simulated seconds per wall second (glider-firmware's the same)")
-      ->capture_default_str()
-      ->check(glider::cli::FiniteRange(0.01, 1000.0));
-  app.add_option("--duration-s", options.duration_s, "stop this long (simulated) after launch; 0: at SIGTERM")
-      ->capture_default_str()
-      ->check(glider::cli::FiniteRange(0.0, 1e9));
+  tool.add_number("--time-scale", options.time_scale, {0.01, 1000.0, ""},
+                  "simulated seconds per wall second (glider-firmware's the same)")
+      ->capture_default_str();
+  tool.add_number("--duration-s", options.duration_s, {0.0, 1e9, "s"},
+                  "stop this long (simulated) after launch; 0: at SIGTERM")
+      ->capture_default_str();
   std::string shore;
   app.add_option("--shore", shore,
                  "serve the Iridium modem on a pty (board [modem]) and bridge its calls to this shore station: "
@@ -56,19 +57,16 @@ int main(int argc, char** argv) {
   app.add_flag("--list-faults", list_faults, "print the plant faults and their glider-sil counterparts");
   app.add_option("--truth", options.truth_path, "write the model's truth at 1 s to this CSV");
   app.add_option("--host", options.tcp.host, "Modbus TCP address to serve on (numeric)")->capture_default_str();
-  app.add_option("--port", options.tcp.port, "Modbus TCP port (0: any free one, printed)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 65535));
-  app.add_option("--max-clients", options.tcp.max_clients, "Modbus TCP connection cap")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 4096));
-  app.add_option("--request-timeout-ms", options.tcp.request_timeout_ms,
-                 "a client's unfinished request is dropped after")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 600'000));
-  app.add_option("--idle-timeout-ms", options.tcp.idle_timeout_ms, "a silent client is dropped after")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 86'400'000));
+  tool.add_integer("--port", options.tcp.port, 0, 65535, "", "Modbus TCP port (0: any free one, printed)")
+      ->capture_default_str();
+  tool.add_integer("--max-clients", options.tcp.max_clients, 1, 4096, "", "Modbus TCP connection cap")
+      ->capture_default_str();
+  tool.add_integer("--request-timeout-ms", options.tcp.request_timeout_ms, 1, 600'000, "ms",
+                   "a client's unfinished request is dropped after")
+      ->capture_default_str();
+  tool.add_integer("--idle-timeout-ms", options.tcp.idle_timeout_ms, 1, 86'400'000, "ms",
+                   "a silent client is dropped after")
+      ->capture_default_str();
   return tool.run(argc, argv, [&] {
     if (list_faults) {
       for (const auto& f : glider::plant::plant_fault_names()) {

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+#include <vector>
 
 #include "modbus_request.hpp"
 
@@ -20,6 +21,14 @@ namespace {
 constexpr std::size_t kMbapLength = sim_tools::kMbapHeaderLength;
 
 int word_at(const std::uint8_t* p) { return (p[0] << 8) | p[1]; }
+
+// The exception reply built here, not by libmodbus: modbus_reply_exception
+// adds 0x80 to the function in a byte, so a request with function 0x99 was
+// answered as function 0x19. exception_reply sets the bit (0x99 stays 0x99).
+int send_exception(int fd, const std::uint8_t* frame, int code) {
+  const std::vector<std::uint8_t> reply = sim_tools::exception_reply(frame, code);
+  return static_cast<int>(send(fd, reply.data(), reply.size(), MSG_NOSIGNAL));
+}
 
 }  // namespace
 
@@ -150,13 +159,13 @@ bool ModbusTcpServer::answer(Client& client, std::size_t frame_length, const std
   int sent = 0;
   if (frame[6] != unit_id_ && frame[6] != 0xFF) {
     ++stats_.exceptions;
-    sent = modbus_reply_exception(context_, frame, MODBUS_EXCEPTION_GATEWAY_TARGET);
+    sent = send_exception(client.fd, frame, MODBUS_EXCEPTION_GATEWAY_TARGET);
   } else if (const int code = sim_tools::request_exception(frame, frame_length); code != 0) {
     ++stats_.exceptions;  // a function, quantity or byte count the register map does not serve
-    sent = modbus_reply_exception(context_, frame, static_cast<unsigned>(code));
+    sent = send_exception(client.fd, frame, code);
   } else if (request_writes_read_only(pdu, pdu_length)) {
     ++stats_.exceptions;
-    sent = modbus_reply_exception(context_, frame, MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS);
+    sent = send_exception(client.fd, frame, MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS);
   } else {
     sent = modbus_reply(context_, frame, static_cast<int>(frame_length), mapping_);
     const int function = pdu[0];

@@ -157,18 +157,14 @@ int main(int argc, char** argv) {
   std::string fetch = "*.sbd *.tbd";
   CLI::App* serve = app.add_subcommand("serve", "listen for gliders' calls (until SIGINT/SIGTERM)");
   serve->add_option("--listen", config.listen_address, "address to listen on")->capture_default_str();
-  serve->add_option("--port", config.port, "TCP port (0: any free port, see --port-file)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 65535));
+  tool.add_integer(serve, "--port", config.port, 0, 65535, "", "TCP port (0: any free port, see --port-file)")
+      ->capture_default_str();
   serve->add_option("--port-file", port_file, "write the port listened on to this file");
-  serve->add_option("--max-calls", config.max_calls, "calls served at once")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 256));
+  tool.add_integer(serve, "--max-calls", config.max_calls, 1, 256, "", "calls served at once")->capture_default_str();
   serve->add_option("--fetch", fetch, "file patterns asked for with `send` at each call (empty: none)")
       ->capture_default_str();
   serve->add_flag("--resume", config.resume_mission, "type Ctrl-R (resume the mission) when the shore's work is done");
   serve->add_option("--cache", config.cache_dirs, "sensor-list cache folder for the CSV conversion (repeatable)");
-  const glider::cli::FiniteRange seconds(0.1, 86400.0);
   struct SecondsOption {
     const char* name;
     double* value;
@@ -182,11 +178,11 @@ int main(int argc, char** argv) {
         SecondsOption{"--transfer-timeout", &config.transfer_timeout_s, "seconds for one Zmodem batch"},
         SecondsOption{"--linger", &config.linger_s, "seconds to keep the call open after the shore's work"},
         SecondsOption{"--call-timeout", &config.call_timeout_s, "seconds for a whole call"}}) {
-    serve->add_option(option.name, *option.value, option.help)->capture_default_str()->check(seconds);
+    tool.add_number(serve, option.name, *option.value, {0.1, 86400.0, "s"}, option.help)->capture_default_str();
   }
-  serve->add_option("--max-line", config.max_line, "longest console line kept whole (bytes)")
-      ->capture_default_str()
-      ->check(CLI::Range(80, 1 << 20));
+  tool.add_integer(serve, "--max-line", config.max_line, 80, 1 << 20, "bytes",
+                   "longest console line kept whole (bytes)")
+      ->capture_default_str();
 
   std::string glider;
   std::vector<std::string> files, commands;

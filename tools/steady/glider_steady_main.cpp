@@ -76,12 +76,21 @@ int main(int argc, char** argv) {
   double density = NAN;
   bool json = false;
   tool.add_vehicle_option(vehicle_path);
-  auto* ballast = app.add_option("--ballast-cc", ballast_cc, "pumped volume, cc (+ = more buoyant)");
-  auto* battery = app.add_option("--battpos-in", battpos_in, "battery position, in (+ = forward)");
-  auto* path = app.add_option("--glide-path-deg", glide_path_deg, "glide path angle magnitude, deg");
-  auto* buoyancy = app.add_option("--net-buoyancy-g", net_buoyancy_g, "net buoyancy, g (+ heavy: descending)");
-  app.add_option("--depth-m", depth_m, "depth of the glide (compressibility)")->capture_default_str();
-  app.add_option("--density", density, "water density, kg/m^3 (default: the vehicle's trim density)");
+  // Ranges: what any glider the model describes could be asked (a 50 kg
+  // SLOCUM pumps +-500 cc, slides +-2 in); the vehicle's own limits are
+  // checked after (a WARNING outside them).
+  auto* ballast =
+      tool.add_number("--ballast-cc", ballast_cc, {-5000.0, 5000.0, "cc"}, "pumped volume, cc (+ = more buoyant)");
+  auto* battery =
+      tool.add_number("--battpos-in", battpos_in, {-50.0, 50.0, "in"}, "battery position, in (+ = forward)");
+  auto* path =
+      tool.add_number("--glide-path-deg", glide_path_deg, {0.0, 90.0, "deg"}, "glide path angle magnitude, deg");
+  auto* buoyancy = tool.add_number("--net-buoyancy-g", net_buoyancy_g, {-5000.0, 5000.0, "g"},
+                                   "net buoyancy, g (+ heavy: descending)");
+  tool.add_number("--depth-m", depth_m, {0.0, 11000.0, "m"}, "depth of the glide (compressibility)")
+      ->capture_default_str();
+  tool.add_number("--density", density, {900.0, 1100.0, "kg/m^3"},
+                  "water density, kg/m^3 (default: the vehicle's trim density)");
   tool.add_json_flag(json);
   ballast->needs(battery);
   battery->needs(ballast);

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -31,6 +32,7 @@
 #include "glider/firmware/log/slocum_list.hpp"
 #include "glider/firmware/log/slocum_lz4_sink.hpp"
 #include "glider/firmware/log/slocum_writer.hpp"
+#include "glider/hal_linux/modbus_board.hpp"
 #include "glider/hal_linux/serial_modem.hpp"
 #include "glider/target/linux_hal.hpp"
 #include "glider/target/realtime_loop.hpp"
@@ -130,16 +132,19 @@ int main(int argc, char** argv) {
   app.add_option("--mission", mission_path, "mission: Slocum .mi (its .ma files in ../mafiles) or TOML")
       ->capture_default_str();
   app.add_option("--log", log_path, "flight log file (default: a new file in the board's log directory)");
-  app.add_option("--actuators-tcp", actuators_tcp, "override the actuator bus with Modbus TCP HOST:PORT (bench)");
-  app.add_option("--max-cycles", max_cycles, "stop after this many cycles (0: until done or SIGTERM)");
-  app.add_option("--sensor-wait-s", sensor_wait_s, "start-up: wait this long for depth and attitude")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  app.add_option("--time-scale", time_scale,
-                 "bench/HIL only (board file: bench = true): the loop clock runs this many times faster")
-      ->capture_default_str()
-      ->check(glider::cli::FiniteRange(0.01, 1000.0));
-  app.add_option("--legs", legs, ".mi: override goto_list num_legs_to_run");
+  app.add_option("--actuators-tcp", actuators_tcp, "override the actuator bus with Modbus TCP HOST:PORT (bench)")
+      ->check(
+          CLI::Validator([](std::string& text) { return glider::hal_linux::tcp_endpoint_problem(text); }, "HOST:PORT"));
+  tool.add_integer("--max-cycles", max_cycles, 0, std::numeric_limits<std::int64_t>::max(), "",
+                   "stop after this many cycles (0: until done or SIGTERM)");
+  // Up to a day: a sensor silent that long is not coming up.
+  tool.add_number("--sensor-wait-s", sensor_wait_s, {0.1, 86400.0, "s"},
+                  "start-up: wait this long for depth and attitude")
+      ->capture_default_str();
+  tool.add_number("--time-scale", time_scale, {0.01, 1000.0, ""},
+                  "bench/HIL only (board file: bench = true): the loop clock runs this many times faster")
+      ->capture_default_str();
+  tool.add_integer("--legs", legs, -2, 100000, "", ".mi: override goto_list num_legs_to_run (-1 loop, -2 once)");
   app.add_flag("--check-mission", check_mission, "read the board and the mission, report, exit (no device opened)");
   std::string slocum_dir;
   std::string sbdlist_path;

@@ -16,20 +16,47 @@ using config::Range;
 // Physical ranges of the board file's numbers (value_limits.hpp): refusals
 // name file:line:column, key, value and range.
 constexpr Range kStaleAfter{0.1, 600.0, "s"};
-constexpr Range kStatsEvery{1.0, 86400.0, "s"};
-constexpr Range kSurfacePressure{0.0, 1.2, "bar (0: gauge transmitter)"};
-constexpr Range kWaterDensity{990.0, 1050.0, "kg/m^3"};
-constexpr Range kMaxPressure{0.1, 1200.0, "bar"};
-constexpr Range kChargeUsed{0.0, 10000.0, "Ah"};
 constexpr Range kVoltage{1.0, 100.0, "V"};
+constexpr Range kBaud{300.0, 4'000'000.0, "baud"};
 
-int integer_in(const TomlDocument& doc, const std::string& key, std::int64_t fallback, std::int64_t lo,
-               std::int64_t hi) {
-  return static_cast<int>(doc.integer_or(key, fallback, lo, hi));
+// Every number of the board file but its [vehicle] table's (read_vehicle_setup's own).
+const std::vector<config::KeyRange>& limits() {
+  static const std::vector<config::KeyRange> table{
+      {"loop.priority", {1.0, 99.0, ""}},
+      {"loop.stats_every_s", {1.0, 86400.0, "s"}},
+      {"gps.baud", kBaud},
+      {"gps.stale_after_s", kStaleAfter},
+      {"compass.baud", kBaud},
+      {"compass.stale_after_s", kStaleAfter},
+      {"depth.baud", kBaud},
+      {"modem.baud", kBaud},
+      {"depth.response_timeout_ms", {1.0, 1000.0, "ms"}},
+      {"depth.retries", {0.0, 5.0, ""}},
+      {"depth.cycle_budget_ms", {1.0, 1000.0, "ms (and at least depth.response_timeout_ms)"}},
+      {"depth.slave", {1.0, 247.0, ""}},
+      {"depth.surface_pressure_bar", {0.0, 1.2, "bar (0: gauge transmitter)"}},
+      {"depth.water_density_kg_m3", {990.0, 1050.0, "kg/m^3"}},
+      {"depth.max_pressure_bar", {0.1, 1200.0, "bar"}},
+      {"power.charge_used_at_start_amphr", {0.0, 10000.0, "Ah"}},
+      {"power.min_voltage_v", kVoltage},
+      {"power.max_voltage_v", kVoltage},
+  };
+  return table;
+}
+
+double number_or(const TomlDocument& doc, const std::string& key, double fallback) {
+  return doc.number_or(key, fallback, config::range_of(limits(), key));
+}
+
+// An integer key of the table: a whole number in its range.
+int integer_in(const TomlDocument& doc, const std::string& key, std::int64_t fallback) {
+  const Range& range = config::range_of(limits(), key);
+  return static_cast<int>(
+      doc.integer_or(key, fallback, static_cast<std::int64_t>(range.min), static_cast<std::int64_t>(range.max)));
 }
 
 int baud(const TomlDocument& doc, const std::string& key, int fallback) {
-  const int value = integer_in(doc, key, fallback, 300, 4'000'000);
+  const int value = integer_in(doc, key, fallback);
   if (!hal_linux::supported_baud(value)) doc.fail(key, "not a standard baud rate");
   return value;
 }
@@ -47,8 +74,8 @@ SerialSensorConfig read_serial(const TomlDocument& doc, const std::string& table
   SerialSensorConfig sensor;
   sensor.device = doc.string(table + ".device");
   sensor.baud = baud(doc, table + ".baud", default_baud);
-  sensor.stale_after_us = static_cast<hal::Micros>(
-      std::llround(doc.number_or(table + ".stale_after_s", default_stale_s, kStaleAfter) * 1e6));
+  sensor.stale_after_us =
+      static_cast<hal::Micros>(std::llround(number_or(doc, table + ".stale_after_s", default_stale_s) * 1e6));
   return sensor;
 }
 
@@ -58,25 +85,33 @@ DepthConfig read_depth(const TomlDocument& doc) {
   bus.transport = hal_linux::Transport::kRtu;
   bus.device = doc.string("depth.device");
   bus.baud = baud(doc, "depth.baud", 9600);  // Keller's default line: 9600 8N1
-  bus.response_timeout_ms = integer_in(doc, "depth.response_timeout_ms", 100, 1, 1000);
-  bus.retries = integer_in(doc, "depth.retries", 1, 0, 5);
-  bus.cycle_budget_ms = integer_in(doc, "depth.cycle_budget_ms", 250, bus.response_timeout_ms, 1000);
+  bus.response_timeout_ms = integer_in(doc, "depth.response_timeout_ms", 100);
+  bus.retries = integer_in(doc, "depth.retries", 1);
+  bus.cycle_budget_ms = integer_in(doc, "depth.cycle_budget_ms", 250);
+  if (bus.cycle_budget_ms < bus.response_timeout_ms) {
+    doc.fail("depth.cycle_budget_ms", "value " + std::to_string(bus.cycle_budget_ms) +
+                                          " must allow at least one response timeout (depth.response_timeout_ms " +
+                                          std::to_string(bus.response_timeout_ms) + " ms)");
+  }
   hal_linux::KellerConfig& keller = depth.keller;
-  keller.slave = integer_in(doc, "depth.slave", 1, 1, 247);
-  keller.surface_pressure_bar =
-      doc.number_or("depth.surface_pressure_bar", keller.surface_pressure_bar, kSurfacePressure);
-  keller.water_density_kg_m3 = doc.number_or("depth.water_density_kg_m3", keller.water_density_kg_m3, kWaterDensity);
-  keller.max_pressure_bar = doc.number_or("depth.max_pressure_bar", keller.max_pressure_bar, kMaxPressure);
+  keller.slave = integer_in(doc, "depth.slave", 1);
+  keller.surface_pressure_bar = number_or(doc, "depth.surface_pressure_bar", keller.surface_pressure_bar);
+  keller.water_density_kg_m3 = number_or(doc, "depth.water_density_kg_m3", keller.water_density_kg_m3);
+  keller.max_pressure_bar = number_or(doc, "depth.max_pressure_bar", keller.max_pressure_bar);
   return depth;
 }
 
 hal_linux::PowerMonitorConfig read_power(const TomlDocument& doc) {
   hal_linux::PowerMonitorConfig power;
   power.hwmon_name = doc.string_or("power.hwmon_name", power.hwmon_name);
-  power.charge_used_at_start_amphr = doc.number_or("power.charge_used_at_start_amphr", 0.0, kChargeUsed);
-  power.min_voltage_v = doc.number_or("power.min_voltage_v", power.min_voltage_v, kVoltage);
-  power.max_voltage_v = doc.number_or("power.max_voltage_v", power.max_voltage_v, kVoltage);
-  if (power.min_voltage_v >= power.max_voltage_v) doc.fail("power.max_voltage_v", "must be above min_voltage_v");
+  power.charge_used_at_start_amphr = number_or(doc, "power.charge_used_at_start_amphr", 0.0);
+  power.min_voltage_v = number_or(doc, "power.min_voltage_v", power.min_voltage_v);
+  power.max_voltage_v = number_or(doc, "power.max_voltage_v", power.max_voltage_v);
+  if (power.min_voltage_v >= power.max_voltage_v) {
+    doc.fail("power.max_voltage_v", "value " + config::show_value(power.max_voltage_v) +
+                                        " must be above power.min_voltage_v (" +
+                                        config::show_value(power.min_voltage_v) + " V)");
+  }
   return power;
 }
 
@@ -122,10 +157,9 @@ TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& rel
   board.name = doc.string("name");
   doc.string_or("description", "");
   board.loop.sched_fifo = doc.boolean_or("loop.sched_fifo", false);
-  board.loop.priority = integer_in(doc, "loop.priority", 50, 1, 99);
+  board.loop.priority = integer_in(doc, "loop.priority", 50);
   board.loop.lock_memory = doc.boolean_or("loop.lock_memory", false);
-  board.loop.stats_every_us =
-      static_cast<hal::Micros>(std::llround(doc.number_or("loop.stats_every_s", 60.0, kStatsEvery) * 1e6));
+  board.loop.stats_every_us = static_cast<hal::Micros>(std::llround(number_or(doc, "loop.stats_every_s", 60.0) * 1e6));
   board.actuators_board = board_path(doc, "actuators.board", relative_to);
   if (doc.has("gpio.board")) board.gpio_board = board_path(doc, "gpio.board", relative_to);
   board.gps = read_serial(doc, "gps", 9600, 5.0);
@@ -155,6 +189,13 @@ TargetBoard read_board(const TomlDocument& doc, const std::filesystem::path& rel
 }
 
 }  // namespace
+
+std::vector<config::KeyRange> target_board_limits() {
+  std::vector<config::KeyRange> table = limits();
+  const auto& vehicle = fw::app::vehicle_setup_limits();
+  table.insert(table.end(), vehicle.begin(), vehicle.end());
+  return table;
+}
 
 TargetBoard load_target_board(const std::filesystem::path& path) {
   return read_board(TomlDocument::load(path), path.parent_path());

@@ -16,7 +16,10 @@ using config::Range;
 // pump at most, a battery slide of a few inches, missions up to two years).
 // Signs and orderings (dive pitch < 0, climb above dive...) are validate()'s.
 constexpr Range kDepth{0.0, 1500.0, "m"};
-constexpr Range kSurfacedDepth{0.0, 10.0, "m"};
+// At the surface the depth sensor reads ~0 m plus its noise and the hull's
+// draught: a threshold at 0 is never crossed reliably (the surface is never
+// detected and the mission ends in an overtime abort), so the range says why.
+constexpr Range kSurfacedDepth{0.3, 10.0, "m (at least 0.3 m: the depth sensor never reads 0 at the surface)"};
 constexpr Range kPumpCc{-1000.0, 1000.0, "cc"};
 constexpr Range kPitchDeg{-80.0, 80.0, "deg"};
 constexpr Range kDuration{1.0, 2.0 * 366.0 * 86400.0, "s"};

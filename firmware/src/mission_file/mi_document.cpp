@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "glider/config/value_limits.hpp"
 
@@ -88,12 +89,22 @@ struct Reader {
   // An argument file: behavior_name=..., <start:b_arg> ... <end:b_arg>,
   // <start:waypoints> ... <end:waypoints>.
   void read_ma(const std::filesystem::path& path, MiBehavior& behavior, const SourceLocation& included_at) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+      error(included_at, "argument file " + path.string() + " is not a regular file (a FIFO or device never ends)");
+      return;
+    }
     std::ifstream in(path);
     if (!in) {
       error(included_at, "cannot open argument file " + path.string());
       return;
     }
-    const std::string file = path.filename().string();
+    read_ma_stream(in, path.filename().string(), behavior, included_at);
+  }
+
+  // The argument file's text (from disk, or from memory: parse_ma_text).
+  void read_ma_stream(std::istream& in, const std::string& file, MiBehavior& behavior,
+                      const SourceLocation& included_at) {
     enum class Section { kNone, kArgs, kWaypoints } section = Section::kNone;
     bool named = false;
     const int lines =
@@ -216,8 +227,26 @@ MiDocument parse_mi_text(const std::string& text, const std::string& file_name,
   return doc;
 }
 
+MiDocument parse_ma_text(const std::string& text, const std::string& file_name, const std::string& behavior_name) {
+  MiDocument doc;
+  MiBehavior behavior;
+  behavior.name = behavior_name;
+  behavior.where = {file_name, 0};
+  std::istringstream in(text);
+  Reader{doc}.read_ma_stream(in, file_name, behavior, behavior.where);
+  doc.behaviors.push_back(std::move(behavior));
+  return doc;
+}
+
 MiDocument read_mi_file(const std::filesystem::path& path) {
   MiDocument doc;
+  // A FIFO or a device would block the read forever (or never end): refused.
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    doc.diagnostics.push_back(
+        {Severity::kError, path.string(), 0, "not a regular file (a FIFO, device or directory cannot be a mission)"});
+    return doc;
+  }
   std::ifstream in(path);
   if (!in) {
     doc.diagnostics.push_back({Severity::kError, path.string(), 0, "cannot open mission file"});

@@ -48,7 +48,8 @@ TomlDocument::~TomlDocument() = default;
 TomlDocument TomlDocument::load(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    throw ConfigError(path.string() + ": no such file");
+    // A FIFO or device would block the read or never end: refused by name.
+    throw ConfigError(path.string() + (std::filesystem::exists(path, ec) ? ": not a regular file" : ": no such file"));
   }
   try {
     auto impl = std::make_unique<Impl>();
@@ -202,6 +203,17 @@ std::string TomlDocument::string(std::string_view dotted_key) const {
 
 std::string TomlDocument::string_or(std::string_view dotted_key, std::string fallback) const {
   return has(dotted_key) ? string(dotted_key) : std::move(fallback);
+}
+
+void TomlDocument::reject_unknown_keys_in(std::string_view table) const {
+  const std::string prefix = std::string(table) + ".";
+  std::vector<std::pair<std::string, toml::source_region>> leaves;
+  collect_leaves(impl_->table, "", leaves);
+  for (const auto& leaf : leaves) {
+    if (leaf.first.starts_with(prefix) && used_.find(leaf.first) == used_.end()) {
+      throw ConfigError(location(source_, leaf.second) + ": unknown key '" + leaf.first + "'");
+    }
+  }
 }
 
 void TomlDocument::leave_table(std::string_view table) const { left_tables_.emplace_back(std::string(table) + "."); }

@@ -92,12 +92,11 @@ int main(int argc, char** argv) {
   app.add_option("--model", flight_model, "flight model fitted in each segment: dynamic or steady")
       ->check(CLI::IsMember({"dynamic", "steady"}));
   app.add_option("--fit", fit, "fit exactly these effects in every segment (no selection pass)")->delimiter(',');
-  app.add_option("--join", join, "binary files: this many consecutive segments make one (short segments)")
-      ->check(CLI::Range(1, 1000));
-  app.add_option("--days-apart", days_apart,
-                 "logs whose times count from their start (SIL logs) are placed this many days apart, in the "
-                 "order given")
-      ->check(glider::cli::FiniteRange(0.0, 1000.0));
+  tool.add_integer("--join", join, 1, 1000, "",
+                   "binary files: this many consecutive segments make one (short segments)");
+  tool.add_number("--days-apart", days_apart, {0.0, 1000.0, "days"},
+                  "logs whose times count from their start (SIL logs) are placed this many days apart, in the "
+                  "order given");
   app.add_option("--rename", renames, "read column FROM as TO (FROM=TO)");
   app.add_option("--report", report_dir, "write the summary, deployment.json and a plot per effect here");
   tool.add_json_flag(json);

@@ -261,15 +261,14 @@ int main(int argc, char** argv) {
   app.add_option("--fit", fit_only,
                  "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
       ->delimiter(',');
-  app.add_option("--window-m", window, "score and fit only samples between these depths (m): --window-m 10,35")
+  tool.add_numbers("--window-m", window, {0.0, 11000.0, "m"},
+                   "score and fit only samples between these depths (m): --window-m 10,35")
       ->delimiter(',')
       ->expected(2);
-  app.add_option("--rate-window", rate_window_s,
-                 "the measured depth rate is the slope of the depth over +-this many seconds (0: centred difference)")
-      ->check(glider::cli::FiniteRange(0.0, 60.0));
-  app.add_option("--pitch-window", pitch_window_s,
-                 "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)")
-      ->check(glider::cli::FiniteRange(0.0, 60.0));
+  tool.add_number("--rate-window", rate_window_s, {0.0, 60.0, "s"},
+                  "the measured depth rate is the slope of the depth over +-this many seconds (0: centred difference)");
+  tool.add_number("--pitch-window", pitch_window_s, {0.0, 60.0, "s"},
+                  "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)");
   return tool.run(argc, argv, [&]() -> int {
     log_path = log_source.inputs.front();
     glider::diagnose::DiagnoseOptions options;

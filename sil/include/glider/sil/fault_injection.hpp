@@ -37,8 +37,13 @@ const std::vector<std::pair<std::string, std::string>>& fault_names();
 // when the text is not a known fault at a time.
 std::optional<ScheduledFault> parse_fault(const std::string& text, std::string& error);
 
-// "1200s", "1200", "30m", "2h": seconds; nullopt unless a non-negative number
-// with an optional unit (shared with glider-plant's --fault).
+// The latest a fault may be scheduled: the 60 days a .mi mission may run
+// (a fault at inf or 1e308 h is a typo, never a fault that does not happen).
+inline constexpr double kMaxFaultTimeS = 60.0 * 86400.0;
+
+// "1200s", "1200", "30m", "2h": seconds; nullopt unless a number with an
+// optional unit that comes to [0, kMaxFaultTimeS] s (NaN and inf refused;
+// shared with glider-plant's --fault).
 std::optional<double> parse_fault_time(std::string time);
 
 // Switches a named fault on; false if the name is unknown.

@@ -81,14 +81,13 @@ int main(int argc, char** argv) {
   app.add_option("--vehicle", vehicle, "vehicle file whose published numbers the truth flies (overrides the variant's)")
       ->check(CLI::ExistingFile);
   app.add_option("--effect", effects, "hidden effect ID=VALUE (repeatable; ids of the diagnosis's vocabulary)");
-  app.add_option("--seed", request.seed, "draws (controller, cycle, depths, water, unmodelled terms, noise)")
+  tool.add_integer("--seed", request.seed, 0, glider::cli::kMaxSeed, "",
+                   "draws (controller, cycle, depths, water, unmodelled terms, noise)")
       ->capture_default_str();
-  app.add_option("--yos", request.yos, "yos flown")->check(CLI::Range(1, 200))->capture_default_str();
+  tool.add_integer("--yos", request.yos, 1, 200, "", "yos flown")->capture_default_str();
   app.add_option("--control", control, "pitch control (else drawn)")->check(CLI::IsMember({"pi", "bang-bang"}));
-  app.add_option("--cycle-s", cycle_s, "control and log cycle (else drawn in 1-8 s)")
-      ->check(glider::cli::FiniteRange(0.5, 10.0));
-  app.add_option("--dive-to-m", dive_to_m, "inflection depth (else drawn)")
-      ->check(glider::cli::FiniteRange(10.0, 1000.0));
+  tool.add_number("--cycle-s", cycle_s, {0.5, 10.0, "s"}, "control and log cycle (else drawn in 1-8 s)");
+  tool.add_number("--dive-to-m", dive_to_m, {10.0, 1000.0, "m"}, "inflection depth (else drawn)");
   app.add_option("--out", out_path, "flight-log CSV to write")->required();
   app.add_option("--truth", truth_path, "JSON with the hidden effects' true values and the draws");
   return tool.run(argc, argv, [&]() -> int {

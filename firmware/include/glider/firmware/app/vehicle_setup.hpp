@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "glider/config/toml_document.hpp"
 #include "glider/firmware/dead_reckoning.hpp"
@@ -51,5 +52,8 @@ FittedDevices read_fitted_devices(const config::TomlDocument& doc, const FittedD
 // deg of pitch in 1 deg steps) with dr_coast_time_constant_s. Throws
 // config::ConfigError with file:line for a bad value. `fitted` is the board's.
 VehicleSetup read_vehicle_setup(const config::TomlDocument& doc, const FittedDevices& fitted);
+// The numbers of the board file's [vehicle] table and their ranges (the
+// bad-value test tries each, tests/unit/test_value_limits.cpp).
+const std::vector<config::KeyRange>& vehicle_setup_limits();
 
 }  // namespace glider::fw::app

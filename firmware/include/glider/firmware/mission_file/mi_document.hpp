@@ -66,4 +66,8 @@ MiDocument read_mi_file(const std::filesystem::path& path);
 MiDocument parse_mi_text(const std::string& text, const std::string& file_name,
                          const std::filesystem::path& source_dir);
 
+// One argument file from text (tests, fuzzing): a document with one behavior
+// `behavior_name` holding the file's arguments and waypoints, and its problems.
+MiDocument parse_ma_text(const std::string& text, const std::string& file_name, const std::string& behavior_name);
+
 }  // namespace glider::fw::mission_file

@@ -61,6 +61,9 @@ struct TargetBoard {
 
 // Init-time only: throws config::ConfigError naming file, line and problem.
 TargetBoard load_target_board(const std::filesystem::path& path);
+// Every number of the board file and its range, [vehicle] included (the
+// bad-value test tries each, tests/unit/test_board_limits.cpp).
+std::vector<config::KeyRange> target_board_limits();
 TargetBoard parse_target_board(const std::string& text, const std::string& source_name,
                                const std::filesystem::path& relative_to);
 

@@ -55,6 +55,9 @@ class TomlDocument {
   // Every leaf key of the document that no accessor has asked for is a typo
   // or an unsupported setting: report the first one with its line.
   void reject_unknown_keys() const;
+  // The same for the keys under `table.` only (a table one reader owns, as
+  // a vehicle file's [fitted]: `ruder = false` must not keep the rudder).
+  void reject_unknown_keys_in(std::string_view table) const;
   // Keys under `table.` belong to another reader of the same file (e.g. the
   // [fitted] table of a vehicle file, read by the firmware): reject_unknown_keys()
   // leaves them to it.

@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "glider/config/value_limits.hpp"
 
 namespace glider::hal_linux {
 
@@ -60,10 +63,16 @@ struct ModbusBoard {
 // Init-time only: throws config::ConfigError naming file, line and problem.
 ModbusBoard load_modbus_board(const std::filesystem::path& path);
 ModbusBoard parse_modbus_board(const std::string& text, const std::string& source_name);
+// Every number of an actuator board file and its range (the bad-value test
+// tries each, tests/unit/test_board_limits.cpp).
+const std::vector<config::KeyRange>& modbus_board_limits();
 
 // Command-line overrides of the board's bus: "HOST:PORT" or a device path.
 // Throws config::ConfigError on a malformed HOST:PORT.
 void use_tcp_endpoint(BusConfig& bus, const std::string& host_port);
+// "" when `host_port` is a numeric IPv4 HOST:PORT use_tcp_endpoint takes,
+// else what is wrong (naming the value): for the programs' option checks.
+std::string tcp_endpoint_problem(const std::string& host_port);
 void use_rtu_device(BusConfig& bus, const std::string& device);
 
 // "tcp 127.0.0.1:1502" / "rtu /dev/ttyUSB0 19200 8N1".
