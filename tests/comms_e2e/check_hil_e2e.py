@@ -31,12 +31,14 @@ import sys
 import tempfile
 import time
 
+import hil_goto_mission
+
 build, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 args = sys.argv[3:]
 keep = args[args.index("--keep") + 1] if "--keep" in args else None
 CASE = "goto" if "goto" in args else "transfer"
 SCALE = 100.0 if CASE == "goto" else 20.0
-NEW_WPT = (5419.3000, 724.5880)  # goto case: DDMM.MMMM lat, lon; 620 m north of the launch point
+NEW_WPT = hil_goto_mission.NEW_WPT
 NAME = "unit_345"
 failures = []
 procs = []
@@ -58,26 +60,7 @@ for b in (firmware, plant_bin, shore_bin):
 
 work = tempfile.mkdtemp(prefix="hil_e2e_")
 try:
-    mission = os.path.join(work, "mission")
-    shutil.copytree(os.path.join(source, "tests/hil/waypoint"), mission)
-    mi = os.path.join(mission, "missions/hil.mi")
-    text = open(mi).read()
-    old = "b_arg: end_action(enum)          2   # resume"
-    assert old in text
-    open(mi, "w").write(text.replace(old, "b_arg: end_action(enum)          1   # wait for the pilot, then resume\n"
-                                          "    b_arg: keystroke_wait_time(s)  100"))
-    if CASE == "goto":
-        text = open(mi).read()
-        old = "b_arg: when_secs(sec)         1800"
-        assert old in text
-        open(mi, "w").write(text.replace(old, "b_arg: when_secs(sec)          500"))
-    goto = os.path.join(work, "goto_l10.ma")
-    ga = open(os.path.join(mission, "mafiles/goto_l10.ma")).read()
-    assert "724.7266 5418.9660" in ga
-    open(goto, "w").write(ga.replace("724.7266 5418.9660", "%.4f %.4f" % (NEW_WPT[1], NEW_WPT[0])))
-    os.makedirs(os.path.join(work, "broken"))
-    broken = os.path.join(work, "broken", "goto_l10.ma")
-    open(broken, "w").write(open(goto).read().split("<end:b_arg>")[0])
+    mission, mi, goto, broken = hil_goto_mission.prepare(source, work, CASE)
     root = os.path.join(work, "shore")
     port_file = os.path.join(work, "port")
     shore = subprocess.Popen([shore_bin, "serve", "--root", root, "--port", "0", "--port-file", port_file, "--resume",
