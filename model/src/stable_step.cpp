@@ -3,20 +3,14 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <complex>
 
 #include "glider/model/steady_glide.hpp"
 
 namespace glider::model {
-namespace {
 
-// The states the dynamics depend on (position and heading feed nothing).
-constexpr std::array<int, 6> kDynamicStates{kZ, kTheta, kP1, kP3, kPi2, kYawRate};
-
-// Jacobian of the state derivative (central differences) over those states.
-Eigen::Matrix<double, 6, 6> jacobian(const GliderDynamics& dyn, const State& s, const MassInputs& m) {
+Eigen::Matrix<double, 6, 6> dynamics_jacobian(const GliderDynamics& dyn, const State& s, const MassInputs& m) {
   Eigen::Matrix<double, 6, 6> j;
   for (std::size_t col = 0; col < kDynamicStates.size(); ++col) {
     const int k = kDynamicStates[col];
@@ -31,8 +25,6 @@ Eigen::Matrix<double, 6, 6> jacobian(const GliderDynamics& dyn, const State& s, 
   }
   return j;
 }
-
-}  // namespace
 
 double fastest_glide_mode_per_s(const GliderDynamics& dynamics) {
   const VehicleParams& v = dynamics.vehicle();
@@ -49,7 +41,7 @@ double fastest_glide_mode_per_s(const GliderDynamics& dynamics) {
       const SteadyGlide& g = *steady.glide;
       const State s = dynamics.make_state(kDepthM, g.pitch_rad, g.speed_m_s * std::cos(g.alpha_rad),
                                           g.speed_m_s * std::sin(g.alpha_rad), 0.0, m);
-      const Eigen::EigenSolver<Eigen::Matrix<double, 6, 6>> solver(jacobian(dynamics, s, m), false);
+      const Eigen::EigenSolver<Eigen::Matrix<double, 6, 6>> solver(dynamics_jacobian(dynamics, s, m), false);
       if (solver.info() != Eigen::Success) continue;
       for (int i = 0; i < 6; ++i) {
         const double magnitude = std::abs(solver.eigenvalues()[i]);

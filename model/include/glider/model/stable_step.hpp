@@ -7,11 +7,20 @@
 // modes come from the linearized steady glides at the pump's limits (the
 // fastest: hydrodynamic rates grow with speed), and the step is cut to keep
 // |lambda| h <= kMaxLambdaStep, the margin tests/unit/test_dynamics.cpp keeps.
+#include <Eigen/Core>
+#include <array>
+
 #include "glider/model/dynamics.hpp"
 
 namespace glider::model {
 
 inline constexpr double kMaxLambdaStep = 1.5;
+
+// The states the dynamics depend on (position and heading feed nothing).
+inline constexpr std::array<int, 6> kDynamicStates{kZ, kTheta, kP1, kP3, kPi2, kYawRate};
+
+// Jacobian of the state derivative (central differences) over kDynamicStates.
+Eigen::Matrix<double, 6, 6> dynamics_jacobian(const GliderDynamics& dyn, const State& s, const MassInputs& m);
 
 // Fastest |lambda| (1/s) of the linearized steady glides at the pump's
 // limits (battery at its zero, or at its travel's ends where that holds no
