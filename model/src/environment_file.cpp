@@ -46,6 +46,11 @@ Environment read(const TomlDocument& doc) {
   // Each profile column: absent = the default everywhere; else one value per depth.
   auto column = [&](const char* key, double fallback) {
     std::vector<double> values = doc.numbers_or_empty(key, range_of(key));
+    // Present but empty is not absent: `practical_salinity = []` would
+    // silently drop the TEOS-10 density for the default one.
+    if (values.empty() && doc.has(key)) {
+      doc.fail(key, "is empty: give one value per depth (" + std::to_string(depth.size()) + "), or leave the key out");
+    }
     if (values.empty()) return std::vector<double>(depth.size(), fallback);
     if (values.size() != depth.size()) {
       doc.fail(key, "has " + std::to_string(values.size()) + " values for " + std::to_string(depth.size()) + " depths");

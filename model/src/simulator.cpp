@@ -10,6 +10,7 @@
 
 #include "glider/model/first_order_lag.hpp"
 #include "glider/model/root_finding.hpp"
+#include "glider/model/stable_step.hpp"
 
 namespace glider::model {
 namespace {
@@ -27,7 +28,7 @@ RateLimitedServo make_slide(const SlidingMass& m, double initial) {
 
 GliderSimulator::GliderSimulator(const VehicleParams& vehicle, const Environment& environment, double step_s)
     : dynamics_(vehicle, environment),
-      step_s_(step_s),
+      step_s_(stable_step_s(dynamics_, step_s)),  // a stiff vehicle gets a shorter step, never NaN
       surface_zone_m_(vehicle.hull_diameter_m + kSurfaceZoneMarginM),
       pump_(vehicle.ballast.volume_min_m3, vehicle.ballast.volume_max_m3, vehicle.ballast.rate_m3_s, 0.0),
       battery_(make_slide(vehicle.battery, 0.0)),

@@ -150,8 +150,16 @@ def main():
         if not messages or not messages[0].startswith("READY=1") or messages[-1] != "STOPPING=1" or \
                 messages.count("WATCHDOG=1") < 3:
             fail("systemd notifications: expected READY=1, WATCHDOG=1 (3+), STOPPING=1")
+        # The two summary lines say the same rows lost (the log's count).
+        said = re.search(r"(\d+) log rows lost", err), re.search(r"flight log .*: \d+ rows, (\d+) lost", err)
+        if not all(said) or said[0].group(1) != said[1].group(1):
+            fail("the summary's rows lost disagree: %s" % [m.group(0) if m else None for m in said])
         with open(log) as f:
-            rows = [line for line in f if not line.startswith("#")]
+            text = f.read()
+        # Our writer names itself first: a log without the trailer reads as cut short.
+        if not text.startswith("# writer: glider-firmware\n"):
+            fail("flight log: the first line is not '# writer: glider-firmware'")
+        rows = [line + "\n" for line in text.splitlines() if not line.startswith("#")]
         if not rows[0].startswith("m_present_time,m_depth,") or len(rows) < 6:
             fail("flight log: expected the header and at least 5 rows, got %d lines" % len(rows))
         depth = float(rows[-1].split(",")[1])

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   glider::target::RingLogOptions options;
-  options.metadata = {{"writer", "glider-firmware"}, {"source", "ring_log_writer (kill -9 test)"}};
+  options.metadata = {{"source", "ring_log_writer (kill -9 test)"}};
   glider::target::RingBufferLog log(argv[1], options);
   std::printf("writing\n");
   std::fflush(stdout);

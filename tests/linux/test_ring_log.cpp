@@ -88,15 +88,17 @@ TEST(RingBufferLog, RowsReachTheFileInOrder) {
   CHECK_EQUAL(3000u, log.rows_written());
   CHECK_TRUE(log.fsyncs() >= 3000u / 60u - 1u);
   const std::vector<std::string> lines = read_lines(path);
-  CHECK_EQUAL(3003u, lines.size());  // metadata, header, rows, trailer
-  STRCMP_EQUAL("# source: test", lines[0].c_str());
-  STRCMP_EQUAL(fw::log_header().c_str(), lines[1].c_str());
-  for (std::size_t i = 2; i < 3002; ++i) CHECK_EQUAL(fields(lines[1]), fields(lines[i]));
+  CHECK_EQUAL(3004u, lines.size());  // writer, metadata, header, rows, trailer
+  // Our writer says so first: a log of it without the trailer was cut short.
+  STRCMP_EQUAL("# writer: glider-firmware", lines[0].c_str());
+  STRCMP_EQUAL("# source: test", lines[1].c_str());
+  STRCMP_EQUAL(fw::log_header().c_str(), lines[2].c_str());
+  for (std::size_t i = 3; i < 3003; ++i) CHECK_EQUAL(fields(lines[2]), fields(lines[i]));
   // m_present_time is UTC (the system clock), the rest the firmware's fields.
-  const double t0 = std::stod(lines[2].substr(0, lines[2].find(',')));
+  const double t0 = std::stod(lines[3].substr(0, lines[3].find(',')));
   CHECK_TRUE(std::fabs(t0 - now_s) < 60.0);
-  STRCMP_CONTAINS(",0.5,", lines[4].c_str());
-  STRCMP_CONTAINS(",,", lines[3002 - 1].c_str());  // NaN depth: an empty field
+  STRCMP_CONTAINS(",0.5,", lines[5].c_str());
+  STRCMP_CONTAINS(",,", lines[3003 - 1].c_str());  // NaN depth: an empty field
   // The test retries a row the full ring refused; each refusal counts as lost
   // (in flight the loop does not retry: the row is gone).
   STRCMP_EQUAL(("# end: complete rows=3000 lost=" + std::to_string(log.rows_refused())).c_str(), lines.back().c_str());
@@ -125,10 +127,10 @@ TEST(RingBufferLog, DiskFullLosesRowsCountedAndRecovers) {
   CHECK_EQUAL(20u, log.rows_written());
   CHECK_EQUAL(30u, log.rows_lost_disk());
   const std::vector<std::string> lines = read_lines(path);
-  CHECK_EQUAL(1u + 20u + 1u, lines.size());
+  CHECK_EQUAL(2u + 20u + 1u, lines.size());
   STRCMP_EQUAL("# end: aborted leak rows=20 lost=30", lines.back().c_str());
-  STRCMP_CONTAINS(",9,", lines[10].c_str());   // x_yo_count 9: the last row before the disk filled
-  STRCMP_CONTAINS(",40,", lines[11].c_str());  // then the first after it recovered
+  STRCMP_CONTAINS(",9,", lines[11].c_str());   // x_yo_count 9: the last row before the disk filled
+  STRCMP_CONTAINS(",40,", lines[12].c_str());  // then the first after it recovered
   const std::vector<std::string> said = read_lines(messages_path);
   CHECK_EQUAL(2u, said.size());
   STRCMP_CONTAINS("No space left on device: rows are lost (counted)", said[0].c_str());
@@ -165,8 +167,8 @@ TEST(RingBufferLogTmpfs, FullTmpfsKeepsWholeRowsAndRecovers) {
     CHECK_TRUE(log.rows_written() >= 20u);
   }
   const std::vector<std::string> lines = read_lines(path);
-  const std::size_t width = fields(lines[0]);
-  for (std::size_t i = 1; i + 1 < lines.size(); ++i) CHECK_EQUAL(width, fields(lines[i]));
+  const std::size_t width = fields(lines[1]);
+  for (std::size_t i = 2; i + 1 < lines.size(); ++i) CHECK_EQUAL(width, fields(lines[i]));
   STRCMP_CONTAINS("# end: complete rows=", lines.back().c_str());
   STRCMP_CONTAINS(",419,", lines[lines.size() - 2].c_str());  // the last row, written after recovery
   std::fclose(messages);

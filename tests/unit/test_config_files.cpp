@@ -215,6 +215,13 @@ TEST(ConfigFiles, EnvironmentWithSalinityIsTeos10Water) {
             .find("not both") != std::string::npos);
   CHECK(environment_error_of("[profile]\ndepth_m = [0]\npractical_salinity = [35]\n").find("needs temperature_c") !=
         std::string::npos);
+  // An empty optional column is refused (file:line:column), not read as absent.
+  for (const char* column : {"practical_salinity", "temperature_c", "density_kg_m3", "current_east_m_s"}) {
+    const std::string error = environment_error_of(std::string("[profile]\ndepth_m = [0, 10]\n") + column + " = []\n");
+    CHECK_EQUAL(0u, error.find("env.toml:3:"));
+    STRCMP_CONTAINS((std::string("profile.") + column).c_str(), error.c_str());
+    STRCMP_CONTAINS("is empty: give one value per depth (2), or leave the key out", error.c_str());
+  }
   CHECK(environment_error_of("[profile]\ndepth_m = [0]\ntemperature_c = [10]\npractical_salinity = [45]\n")
             .find("value 45 is outside the allowed range [0, 42]") != std::string::npos);
 }

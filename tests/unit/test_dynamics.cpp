@@ -7,6 +7,7 @@
 
 #include "glider/model/ctd_profile.hpp"
 #include "glider/model/simulator.hpp"
+#include "glider/model/stable_step.hpp"
 #include "glider/model/steady_glide.hpp"
 #include "glider/model/vehicle_file.hpp"
 
@@ -16,23 +17,8 @@ namespace {
 
 VehicleParams slocum() { return load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml"); }
 
-// The states that the dynamics depend on (position and heading feed nothing).
-constexpr std::array<int, 6> kDynamicStates{kZ, kTheta, kP1, kP3, kPi2, kYawRate};
-
-// Jacobian of the state derivative (central differences) over those states.
 Eigen::Matrix<double, 6, 6> jacobian(const GliderDynamics& dyn, const State& s, const MassInputs& m) {
-  Eigen::Matrix<double, 6, 6> j;
-  for (int col = 0; col < 6; ++col) {
-    const int k = kDynamicStates[static_cast<std::size_t>(col)];
-    const double h = 1e-6 * std::max(1.0, std::abs(s[k]));
-    State plus = s;
-    State minus = s;
-    plus[k] += h;
-    minus[k] -= h;
-    const State d = (dyn.derivative(0.0, plus, m) - dyn.derivative(0.0, minus, m)) / (2.0 * h);
-    for (int row = 0; row < 6; ++row) j(row, col) = d[kDynamicStates[static_cast<std::size_t>(row)]];
-  }
-  return j;
+  return dynamics_jacobian(dyn, s, m);
 }
 
 // Fly with fixed controls until steady.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "glider/flightlog/flight_log.hpp"
+#include "glider/hal/log_record.hpp"
 
 using glider::flightlog::FlightLogError;
 using glider::flightlog::LogEnd;
@@ -86,6 +87,22 @@ TEST(FlightLogEnd, ImplausibleValuesAreRefusedWithFileAndLine) {
   STRCMP_CONTAINS("t.csv:3:m_present_time: implausible: value 1e+300",
                   error_of(kHead + "1e300,0.5,-0.1,-250\n").c_str());
   STRCMP_CONTAINS("t.csv:3:m_pitch: implausible: value -7", error_of(kHead + "1000,0.5,-7,-250\n").c_str());
+  // Issue 28: one 1e308 in m_ballast_pumped moved diagnose's RMS without a word.
+  STRCMP_EQUAL(
+      "t.csv:5:m_ballast_pumped: implausible: value 1e+308 is outside the allowed range [-5000, 5000] cc (column 4)",
+      error_of(kHead + "1000.0,0.5,-0.1,-250\n1001.0,1,-0.4,-250\n1002.0,2,-0.4,1e308\n").c_str());
+}
+
+// The plausibility table covers every column of the one log schema, in its
+// units, and holds what the firmware writes at rest (zeros, except time).
+TEST(FlightLogEnd, EveryLogSchemaColumnHasAPlausibleRange) {
+  for (const glider::hal::LogColumn& column : glider::hal::kLogColumns) {
+    const glider::config::Range* range = glider::flightlog::plausible_range(column.name);
+    CHECK_TEXT(range != nullptr, std::string(column.name).c_str());
+    CHECK_TEXT(range->min < range->max, std::string(column.name).c_str());
+    if (column.name != "m_present_time")
+      CHECK_TEXT(range->min <= 0.0 && 0.0 <= range->max, std::string(column.name).c_str());
+  }
 }
 
 // Every prefix of a small log, as a cut at that byte leaves it: either a

@@ -311,15 +311,18 @@ int main(int argc, char** argv) {
                       : reason == target::StopReason::kDone  ? "done"
                       : reason == target::StopReason::kError ? "loop error"
                                                              : "cycle limit";
-    std::fprintf(out, "glider-firmware: %s; phase %s, %d yos, abort cause %s, %llu log rows lost\n", why,
-                 fw::to_string(flight.phase()), flight.yos_completed(), fw::to_string(flight.abort_cause()),
-                 static_cast<unsigned long long>(flight.log_rows_lost()));
     const std::string outcome = aborted ? std::string("aborted ") + fw::cause_id(flight.abort_cause())
                                 : reason == target::StopReason::kDone       ? std::string("complete")
                                 : reason == target::StopReason::kSignal     ? std::string("stopped signal")
                                 : reason == target::StopReason::kCycleLimit ? std::string("stopped cycle_limit")
                                                                             : std::string("stopped loop_error");
     const bool log_ok = linux_hal->log().close(outcome);
+    // The rows lost are the log's count (ring full + disk full), said the same
+    // in both summary lines: the flight only sees the ring's refusals.
+    const unsigned long long log_lost = static_cast<unsigned long long>(linux_hal->log().rows_refused()) +
+                                        static_cast<unsigned long long>(linux_hal->log().rows_lost_disk());
+    std::fprintf(out, "glider-firmware: %s; phase %s, %d yos, abort cause %s, %llu log rows lost\n", why,
+                 fw::to_string(flight.phase()), flight.yos_completed(), fw::to_string(flight.abort_cause()), log_lost);
     bool slocum_ok = true;
     if (slocum) {  // the log's writer thread has stopped: the last rows are in
       slocum_ok = slocum->finish();
@@ -335,9 +338,7 @@ int main(int argc, char** argv) {
         std::fprintf(out, "glider-firmware: %s: writing the Slocum files lost rows\n", slocum_dir.c_str());
     }
     std::fprintf(out, "glider-firmware: flight log %s: %llu rows, %llu lost (ring full %llu, disk %llu), %llu fsyncs\n",
-                 log_path.c_str(), static_cast<unsigned long long>(linux_hal->log().rows_written()),
-                 static_cast<unsigned long long>(linux_hal->log().rows_refused()) +
-                     static_cast<unsigned long long>(linux_hal->log().rows_lost_disk()),
+                 log_path.c_str(), static_cast<unsigned long long>(linux_hal->log().rows_written()), log_lost,
                  static_cast<unsigned long long>(linux_hal->log().rows_refused()),
                  static_cast<unsigned long long>(linux_hal->log().rows_lost_disk()),
                  static_cast<unsigned long long>(linux_hal->log().fsyncs()));

@@ -31,7 +31,9 @@ RingBufferLog::RingBufferLog(const std::string& path, RingLogOptions options)
   if (options_.fsync_every_rows == 0) options_.fsync_every_rows = 1;
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0) throw std::runtime_error(path + ": cannot open the flight log: " + std::strerror(errno));
-  std::string head;
+  // First line: the writer, so a log without the trailer reads as cut short
+  // (docs/flight-log.md: our writers always end a finished flight with one).
+  std::string head = "# writer: glider-firmware\n";
   for (const auto& [key, value] : options_.metadata)
     head.append("# ").append(key).append(": ").append(value).append("\n");
   head += fw::log_header() + "\n";

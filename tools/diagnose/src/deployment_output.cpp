@@ -170,7 +170,8 @@ void write_deployment_report(const std::string& dir, const DeploymentDiagnosis& 
             to_string(h.trend.shape) + "'");
   }
   if (!r.finish()) throw std::runtime_error("the plots could not be rendered (gnuplot)");
-  std::ofstream(std::filesystem::path(dir) / "deployment.json") << deployment_json(d, vehicle_source).dump(2) << '\n';
+  glider::report::write_file(std::filesystem::path(dir) / "deployment.json",
+                             deployment_json(d, vehicle_source).dump(2) + '\n');
 }
 
 }  // namespace glider::diagnose

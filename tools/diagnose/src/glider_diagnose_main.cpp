@@ -364,7 +364,7 @@ int main(int argc, char** argv) {
       if (!report_dir.empty()) {
         std::filesystem::create_directories(report_dir);
         if (vertical) write_plots(report_dir, vehicle, *obs, *vertical, log_path, options);
-        std::ofstream(std::filesystem::path(report_dir) / "diagnosis.json") << document().dump(2) << '\n';
+        glider::report::write_file(std::filesystem::path(report_dir) / "diagnosis.json", document().dump(2) + '\n');
         glider::model::VehicleParams extended =
             vertical ? glider::diagnose::apply(glider::diagnose::diagnosed_nominal(vehicle, *vertical),
                                                vertical->extended, vertical->thermal_reference_c)
@@ -373,10 +373,11 @@ int main(int argc, char** argv) {
         extended.name = vehicle.name + "_extended";
         extended.description =
             "extended by glider-diagnose from " + std::filesystem::path(log_path).filename().string();
-        std::ofstream(std::filesystem::path(report_dir) / "extended_vehicle.toml")
-            << "# Written by glider-diagnose. Water effects (vertical velocity, density) belong to the\n"
-            << "# environment, not the vehicle: see diagnosis.json.\n"
-            << glider::model::vehicle_file_text(extended);
+        glider::report::write_file(
+            std::filesystem::path(report_dir) / "extended_vehicle.toml",
+            "# Written by glider-diagnose. Water effects (vertical velocity, density) belong to the\n"
+            "# environment, not the vehicle: see diagnosis.json.\n" +
+                glider::model::vehicle_file_text(extended));
       }
     } catch (const std::exception& error) {
       return tool.fail(glider::cli::kError, error.what());

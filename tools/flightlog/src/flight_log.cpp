@@ -2,6 +2,7 @@
 #include "glider/flightlog/flight_log.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -347,18 +348,71 @@ std::vector<MetadataEntry> FlightLog::vehicle_metadata() const {
   return out;
 }
 
+// One table, every column of the log schema (hal::kLogColumns, in its units)
+// and the science columns of converted Slocum logs: wide physical bounds, a
+// value outside is a corrupt log, never a glider (one 1e308 in
+// m_ballast_pumped would otherwise move every fit without a word).
+struct PlausibleColumn {
+  std::string_view name;
+  config::Range range;
+};
+constexpr config::Range kTime{0.0, 4102444800.0, "s (1970 to 2100)"};
+constexpr config::Range kHeading{-12.567, 12.567, "rad (+-4 pi)"};
+constexpr config::Range kAngle{-3.1416, 3.1416, "rad"};
+constexpr config::Range kBallast{-5000.0, 5000.0, "cc"};
+constexpr config::Range kBattpos{-10.0, 10.0, "in"};
+constexpr config::Range kWaterSpeed{-10.0, 10.0, "m/s"};
+constexpr config::Range kCount{-1.0, 1e12, "count"};
+constexpr config::Range kEnum{-1.0, 1000.0, "enum"};
+constexpr config::Range kLat{-9000.0, 9000.0, "ddmm.mmmm or deg"};
+constexpr config::Range kLon{-18000.0, 18000.0, "ddmm.mmmm or deg"};
+constexpr config::Range kDistance{-1e8, 1e8, "m"};
+constexpr std::array kPlausibleColumns{
+    PlausibleColumn{"m_present_time", kTime},
+    PlausibleColumn{"sci_m_present_time", kTime},
+    PlausibleColumn{"m_depth", {-50.0, 11000.0, "m"}},
+    PlausibleColumn{"m_depth_rate", {-10.0, 10.0, "m/s"}},
+    PlausibleColumn{"m_pitch", {-1.5708, 1.5708, "rad"}},
+    PlausibleColumn{"m_roll", kAngle},
+    PlausibleColumn{"m_heading", kHeading},
+    PlausibleColumn{"m_ballast_pumped", kBallast},
+    PlausibleColumn{"c_ballast_pumped", kBallast},
+    PlausibleColumn{"m_battpos", kBattpos},
+    PlausibleColumn{"c_battpos", kBattpos},
+    PlausibleColumn{"c_pitch", kAngle},
+    PlausibleColumn{"m_depth_state", {-10.0, 100.0, "enum"}},
+    PlausibleColumn{"x_yo_count", kCount},
+    PlausibleColumn{"x_abort_cause", kEnum},
+    PlausibleColumn{"x_loop_overruns", kCount},
+    PlausibleColumn{"c_heading", kHeading},
+    PlausibleColumn{"m_fin", kAngle},
+    PlausibleColumn{"c_fin", kAngle},
+    PlausibleColumn{"m_gps_lat", kLat},
+    PlausibleColumn{"m_gps_lon", kLon},
+    PlausibleColumn{"m_gps_utc_s", kTime},
+    PlausibleColumn{"m_lat", kLat},
+    PlausibleColumn{"m_lon", kLon},
+    PlausibleColumn{"m_water_vx", kWaterSpeed},
+    PlausibleColumn{"m_water_vy", kWaterSpeed},
+    PlausibleColumn{"m_leakdetect", {-10.0, 10000.0, "enum"}},
+    PlausibleColumn{"m_coulomb_amphr_total", {-1e4, 1e5, "Ah"}},
+    PlausibleColumn{"m_battery", {0.0, 100.0, "V"}},
+    PlausibleColumn{"x_waypoint", kCount},
+    PlausibleColumn{"x_waypoints_reached", kCount},
+    PlausibleColumn{"x_segment", kCount},
+    PlausibleColumn{"x_dr_error_m", kDistance},
+    PlausibleColumn{"x_dr_distance_m", kDistance},
+    PlausibleColumn{"x_mission_complete", {0.0, 1.0, "bool"}},
+    PlausibleColumn{"sci_water_pressure", {-5.0, 1200.0, "bar"}},
+    PlausibleColumn{"m_pressure", {-5.0, 1200.0, "bar"}},
+    PlausibleColumn{"sci_water_temp", {-5.0, 60.0, "degC"}},
+    PlausibleColumn{"sci_water_cond", {-1.0, 100.0, "S/m"}},
+};
+
 const config::Range* plausible_range(std::string_view column_name) {
-  // Wide physical bounds: a value outside is a corrupt log, never a glider.
-  static constexpr config::Range kTime{0.0, 4102444800.0, "s (1970 to 2100)"};
-  static constexpr config::Range kDepth{-50.0, 11000.0, "m"};
-  static constexpr config::Range kPressure{-5.0, 1200.0, "bar"};
-  static constexpr config::Range kPitch{-1.5708, 1.5708, "rad"};
-  static constexpr config::Range kRoll{-3.1416, 3.1416, "rad"};
-  if (column_name == "m_present_time" || column_name == "sci_m_present_time") return &kTime;
-  if (column_name == "m_depth") return &kDepth;
-  if (column_name == "sci_water_pressure" || column_name == "m_pressure") return &kPressure;
-  if (column_name == "m_pitch") return &kPitch;
-  if (column_name == "m_roll") return &kRoll;
+  for (const PlausibleColumn& column : kPlausibleColumns) {
+    if (column.name == column_name) return &column.range;
+  }
   return nullptr;
 }
 

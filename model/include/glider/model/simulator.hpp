@@ -50,6 +50,7 @@ class GliderSimulator {
   static constexpr double kSurfaceStepS = 0.1;
   static constexpr double kSurfaceZoneMarginM = 1.5;
 
+  // `step_s` is cut to what the vehicle's fastest mode allows (stable_step.hpp).
   GliderSimulator(const VehicleParams& vehicle, const Environment& environment, double step_s = kDefaultStepS);
 
   // Floating at rest at the surface, servos at the given positions.
@@ -76,6 +77,7 @@ class GliderSimulator {
   // model and the next integration step all ask for it).
   const Evaluation& current() const;
   double time_s() const { return time_s_; }
+  double step_s() const { return step_s_; }  // the submerged step in use
   const State& state() const { return state_; }
   const GliderDynamics& dynamics() const { return dynamics_; }
   const RateLimitedServo& pump() const { return pump_; }

@@ -55,7 +55,8 @@ class RingBufferLog final : public hal::LogSink {
  public:
   static constexpr std::size_t kCapacity = 1024;  // rows: ~17 min at 1 Hz before a stuck writer loses data
 
-  // Start-up: opens (truncates) `path` and writes the metadata and header.
+  // Start-up: opens (truncates) `path` and writes `# writer: glider-firmware`,
+  // the metadata and the header.
   // Throws std::runtime_error naming the file when it cannot.
   explicit RingBufferLog(const std::string& path, RingLogOptions options = {});
   ~RingBufferLog() override;

@@ -142,15 +142,16 @@ class FlightLog {
 // duplicate column, a field that is not a number, a row with more or fewer
 // fields than the header, time empty or not strictly increasing, no rows, a
 // malformed end trailer or anything after it, and a physically impossible
-// value of time, depth, pressure, pitch or roll (plausible_range()). A torn
+// value in any column plausible_range() knows. A torn
 // last line (no newline) is dropped and reported in FlightLog::end().
 FlightLog read_flight_log(const std::filesystem::path& path, const ReadOptions& options = {});
 // The same on text in memory; source_name stands for the path in errors.
 FlightLog parse_flight_log(std::string_view text, const std::string& source_name, const ReadOptions& options = {});
 
-// The physical range a column's values must lie in, for the columns the
-// reader checks (time since 1970 up to 2100, depth, pressure, pitch, roll);
-// nullptr for the others.
+// The physical range a column's values must lie in: one table
+// (flight_log.cpp) for every column of the log schema (hal::kLogColumns) and
+// the Slocum science columns; nullptr for the others (the SIL's extra columns,
+// other Slocum sensors).
 const config::Range* plausible_range(std::string_view column_name);
 
 }  // namespace glider::flightlog

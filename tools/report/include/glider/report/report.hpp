@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace glider::report {
@@ -22,7 +23,7 @@ class Report {
   void plot(const std::string& name, const std::string& caption, const std::string& script);
 
   // Writes README.md and renders the plots; false (with a message on
-  // stderr) if gnuplot fails.
+  // stderr) if gnuplot fails. Every file is written by write_file (throws).
   bool finish();
 
  private:
@@ -32,5 +33,11 @@ class Report {
 };
 
 std::string fixed(double value, int decimals);
+
+// Writes `text` to `path` whole or not at all: into a temporary file beside
+// it, checked after closing, then renamed over `path`. On failure (a full
+// disk) removes the temporary file and throws std::runtime_error naming
+// `path`: an empty result file must never read as a result.
+void write_file(const std::filesystem::path& path, std::string_view text);
 
 }  // namespace glider::report
