@@ -150,3 +150,14 @@ std::string utc_iso(double unix_seconds) { return format_utc(unix_seconds, "%Y-%
 std::string utc_stamp(double unix_seconds) { return format_utc(unix_seconds, "%Y%m%dT%H%M%S"); }
 
 }  // namespace glider::shore
+
+namespace glider::shore {
+bool remove_command(const GliderFolders& folders, std::size_t index, const std::string& command) {
+  FolderLock lock(folders);
+  std::vector<std::string> lines = read_lines(folders.commands);
+  if (index >= lines.size() || lines[index] != command) return false;
+  lines.erase(lines.begin() + static_cast<long>(index));
+  write_lines(folders.commands, lines);
+  return true;
+}
+}  // namespace glider::shore

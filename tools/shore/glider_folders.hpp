@@ -44,3 +44,8 @@ std::string utc_stamp(double unix_seconds);
 double now_unix();
 
 }  // namespace glider::shore
+
+namespace glider::shore {
+// Removes the queued command at `index` if it is still `command` (the console's cancel); false otherwise.
+bool remove_command(const GliderFolders& folders, std::size_t index, const std::string& command);
+}  // namespace glider::shore

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -18,6 +19,8 @@
 #include "shore_server.hpp"
 #include "surface_dialog.hpp"
 #include "surfacing_event.hpp"
+#include "web/console_cli.hpp"
+#include "web/console_server.hpp"
 
 namespace fs = std::filesystem;
 namespace shore = glider::shore;
@@ -184,6 +187,9 @@ int main(int argc, char** argv) {
                    "longest console line kept whole (bytes)")
       ->capture_default_str();
 
+  shore::web::ConsoleOptions console;  // --http ...: the pilot's console (docs/console.md)
+  shore::web::add_console_options(tool, serve, app, console);
+
   std::string glider;
   std::vector<std::string> files, commands;
   CLI::App* queue = app.add_subcommand("queue", "queue files and console commands for a glider's next call");
@@ -205,8 +211,18 @@ int main(int argc, char** argv) {
       config.fetch.clear();
       std::istringstream words(fetch);
       for (std::string word; words >> word;) config.fetch.push_back(word);
+      std::unique_ptr<shore::web::ConsoleServer> console_server;
+      if (!console.http.empty()) {
+        shore::web::finish_console_config(console, root, argv[0]);
+        console_server = std::make_unique<shore::web::ConsoleServer>(console.config);
+        console_server->start();
+      }
       shore::serve_forever(config, port_file);
+      if (console_server) console_server->stop();
       return glider::cli::kOk;
+    }
+    if (*console.user) {
+      return shore::web::run_user_add(console, root);
     }
     if (*queue) return queue_work(root, glider, files, commands);
     if (*status) return show_status(root, json);

@@ -1,0 +1,271 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""The console in a real browser (headless Chromium driven by Selenium)
+against a glider-shore fed by three SIL gliders over loopback RUDICS:
+"healthy" (the box mission), "fouling" (the same with a fouled hull: drag
++40 %) and "aborting" (a leak at 2500 s: the firmware aborts, surfaces and
+calls). Health and forecast reports come from tests/console/fixture_reports.py
+(a clearly named fixture writer standing in for glider-health/glider-forecast:
+the test decides what they say). Steps:
+ 1. fleet page: three rows in attention order - aborting (abort), fouling
+    (health alert), healthy - with "no forecast yet" where there is none;
+ 2. fouling's page: the map's fixes, dead-reckoned track, waypoints and the
+    forecast ellipse; the health alert; the drag plot with its thresholds;
+ 3. aborting's page: the abort alert, "no forecast yet", acknowledged by a click;
+ 4. healthy's page: a goto .ma chosen in the file input and queued (rehearsal
+    result shown); without a reload the page then shows the next calls, the
+    file sent, and the journal shows it accepted by the SIL vehicle.
+Screenshots of every page go to WORK_DIR/screenshots (and to --docs DIR).
+Usage: check_console_browser.py GLIDER_SIL GLIDER_SHORE SOURCE_DIR WORK_DIR [--docs DIR].
+Exit 0 pass, 1 fail, 77 skipped (no chromium, chromedriver or python3-selenium)."""
+import glob
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, here)
+import console_harness as h  # noqa: E402
+import fixture_reports  # noqa: E402
+
+glider_sil, shore_bin, source, work = sys.argv[1:5]
+docs = sys.argv[sys.argv.index("--docs") + 1] if "--docs" in sys.argv else None
+CHROMIUM, DRIVER = shutil.which("chromium"), shutil.which("chromedriver")
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    from selenium.common.exceptions import StaleElementReferenceException
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import WebDriverWait
+except ImportError:
+    webdriver = None
+if webdriver is None or not CHROMIUM or not DRIVER:
+    print("SKIPPED: needs chromium, chromium-driver and python3-selenium (./glider test installs them)")
+    sys.exit(77)
+
+h.fresh_dir(work)
+shots = os.path.join(work, "screenshots")
+os.makedirs(shots)
+
+
+# Missions: box_current, the surface behaviour waiting for the pilot (as comms.e2e_sil_shore) so the
+# shore's work fits in each call; the pilot's copy of the .ma files in ROOT/GLIDER/mission/ for the map.
+root = os.path.join(work, "root")
+missions = {}
+for g in ("healthy", "fouling", "aborting"):
+    m = os.path.join(work, "mission_" + g)
+    shutil.copytree(os.path.join(source, "boards/missions/box_current"), m)
+    surfac = os.path.join(m, "mafiles/surfac10.ma")
+    text = open(surfac).read().replace("b_arg: end_action(enum)          2   # resume",
+                                       "b_arg: end_action(enum)          1\n    b_arg: keystroke_wait_time(s)  300")
+    open(surfac, "w").write(text)
+    os.makedirs(os.path.join(root, g, "mission"))
+    for ma in glob.glob(os.path.join(m, "mafiles/*.ma")):
+        shutil.copy(ma, os.path.join(root, g, "mission"))
+    missions[g] = os.path.join(m, "missions/box.mi")
+we01 = os.path.join(source, "boards/vehicles/slocum_we01.toml")
+fouled = os.path.join(work, "fouled.toml")
+text = open(we01).read()
+text, n = re.subn(r"(?m)^cd0 = 0\.214", "cd0 = 0.300", text)  # +40 % parasitic drag: a fouled hull
+assert n == 1
+open(fouled, "w").write(text)
+second = os.path.join(work, "we01_run2.toml")
+text, n = re.subn(r'(?m)^name = "slocum_we01"', 'name = "slocum_we01_run2"', open(we01).read())
+assert n == 1
+open(second, "w").write(text)
+goto = os.path.join(work, "goto_l10.ma")
+open(goto, "w").write("behavior_name=goto_list\n<start:b_arg>\n    b_arg: start_when(enum)          0\n"
+                      "    b_arg: list_stop_when(enum)      7\n    b_arg: list_when_wpt_dist(m)   150\n"
+                      "    b_arg: initial_wpt(enum)        -1\n    b_arg: num_waypoints(nodim)      1\n"
+                      "    b_arg: num_legs_to_run(nodim)   -2\n<end:b_arg>\n<start:waypoints>\n722.0000 5417.9000\n"
+                      "<end:waypoints>\n")
+
+notify_log = os.path.join(work, "notify.log")
+shore = h.Shore(shore_bin, work, ["--resume", "--linger", "20", "--identify-timeout", "20", "--prompt-timeout", "20",
+                                  "--transfer-idle-timeout", "20", "--http-tick", "0.2",
+                                  "--notify", "echo \"$GLIDER_ALERT_LEVEL $GLIDER_ALERT_ID\" >> " + notify_log])
+sils = {}
+
+
+def fly(g, vehicle, sim_s, extra=(), run=1):
+    log = open(os.path.join(work, "sil_%s_%d.log" % (g, run)), "w")
+    sils[g] = subprocess.Popen([glider_sil, missions[g], "--vehicle", vehicle, "--max-sim-time-s", str(sim_s),
+                                "--vehicle-name", g, "--shore", "127.0.0.1:%d" % shore.rudics_port, *extra],
+                               stdout=log, stderr=subprocess.STDOUT)
+
+
+def events(g):
+    return [json.load(open(p)) for p in sorted(glob.glob(os.path.join(root, g, "logs", "*.surfacing.json")))]
+
+
+driver = None
+try:
+    # Run 1 of each glider, with its Slocum files (the shore fetches the .sbd: the DR track).
+    fly("aborting", we01, 9000, ["--fault", "leak@2500", "--slocum-dir", os.path.join(work, "slocum_aborting")])
+    fly("fouling", fouled, 6000, ["--slocum-dir", os.path.join(work, "slocum_fouling")])
+    fly("healthy", we01, 6000, ["--slocum-dir", os.path.join(work, "slocum_healthy")])
+    for g in ("aborting", "fouling", "healthy"):
+        sils[g].wait(timeout=40)
+    fix = events("healthy")[-1]["gps"]
+    fixture_reports.write_health(os.path.join(root, "healthy"), "healthy", "ok", drag_ratio=1.0)
+    fixture_reports.write_forecast(os.path.join(root, "healthy"), "healthy", (fix["lat_deg"], fix["lon_deg"]),
+                                   fix["lat_deg"] + 0.006, fix["lon_deg"] + 0.004, abort_risk=0.01)
+    h.check(sils["aborting"].returncode == 3 and any(e["prompt"].startswith("GliderDos A") for e in events("aborting")),
+          "SIL 'aborting' aborted and called with the abort prompt")
+    h.check(len(events("fouling")) >= 3, "SIL 'fouling' called %d times" % len(events("fouling")))
+    fixture_reports.write_health(os.path.join(root, "aborting"), "aborting", "cannot judge")
+    fix = events("fouling")[-1]["gps"]
+    fixture_reports.write_health(os.path.join(root, "fouling"), "fouling", "alert", drag_ratio=1.12)
+    fixture_reports.write_forecast(os.path.join(root, "fouling"), "fouling", (fix["lat_deg"], fix["lon_deg"]),
+                                   fix["lat_deg"] + 0.005, fix["lon_deg"] - 0.003, abort_risk=0.05)
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,1000",
+              "--user-data-dir=" + os.path.join(work, "chromium")):
+        options.add_argument(a)
+    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    # The pages redraw on every change: an element found a moment ago may be replaced (stale): look again.
+    wait = WebDriverWait(driver, 20, poll_frequency=0.1, ignored_exceptions=[StaleElementReferenceException])
+
+    def retry(action):
+        """An action on an element the page may redraw meanwhile: try again on a stale reference."""
+        for _ in range(50):
+            try:
+                return action()
+            except StaleElementReferenceException:
+                time.sleep(0.05)
+        return action()
+
+    def text(css):
+        return retry(lambda: driver.find_element(By.CSS_SELECTOR, css).text)
+
+    def click(css):
+        retry(lambda: driver.find_element(By.CSS_SELECTOR, css).click())
+
+    def shot(name, height=None):
+        if height:
+            driver.set_window_size(1400, height)
+        path = os.path.join(shots, name)
+        driver.save_screenshot(path)
+        print("        screenshot", path)
+
+    # 1. Fleet.
+    driver.get(shore.url("/"))
+    order = []
+
+    def fleet_ready(d):
+        nonlocal_order = [r.get_attribute("id")[4:] for r in d.find_elements(By.CSS_SELECTOR, "#fleet tbody tr")]
+        order[:] = nonlocal_order
+        return nonlocal_order == ["aborting", "fouling", "healthy"]
+    try:
+        wait.until(fleet_ready)
+    except Exception:
+        pass
+    h.check(order == ["aborting", "fouling", "healthy"], "fleet ordered by attention: %s" % order)
+    row = {g: text("#row-" + g) for g in order}
+    h.check("aborted" in row.get("aborting", "") and "no forecast yet" in row.get("aborting", ""),
+          "aborting's row: aborted, no forecast yet")
+    h.check("health alert" in row.get("fouling", ""), "fouling's row: health alert")
+    h.check(re.search(r"\d+ s ago|\d+ min ago", row.get("healthy", "")) is not None, "time since the last call shown")
+    shot("fleet.png", 700)
+
+    # 2. Fouling: map, forecast ellipse, alert, plot.
+    driver.get(shore.url("/glider/fouling"))
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "path.forecast-ellipse"))
+    counts = {c: len(driver.find_elements(By.CSS_SELECTOR, "path." + c))
+              for c in ("fix", "dr-track", "waypoints", "waypoint", "forecast-ellipse", "forecast-point")}
+    print("        map layers:", counts)
+    h.check(counts["fix"] == len(events("fouling")) and counts["dr-track"] == 1 and counts["forecast-ellipse"] == 1 and
+          counts["waypoints"] >= 1, "map: one marker a fix, the DR track, waypoints, the forecast ellipse")
+    alerts = driver.find_elements(By.CSS_SELECTOR, "#alerts .alert[data-kind=health]")
+    h.check(len(alerts) == 1 and "drag up 12 %" in alerts[0].text, "the health alert is on the page")
+    h.check(len(driver.find_elements(By.CSS_SELECTOR, "svg.effect-plot line.threshold")) == 2,
+          "the drag plot with its two threshold lines")
+    h.check(len(driver.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing")) == len(events("fouling")),
+          "one table row a surfacing")
+    dr = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing td:nth-child(4)")]
+    h.check(any(re.fullmatch(r"\d+ m", t) for t in dr), "DR error shown at the surfacings with received files: %s" % dr)
+    shot("glider_fouling.png", 2300)
+
+    # 3. Aborting: abort alert, no forecast, acknowledge.
+    driver.set_window_size(1400, 1000)
+    driver.get(shore.url("/glider/aborting"))
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "#alerts .alert[data-kind=abort] button.ack"))
+    h.check("MS_ABORT_LEAK" in text("#alerts .alert[data-kind=abort]"),
+          "the abort alert names MS_ABORT_LEAK")
+    h.check(text("#no-forecast") == "no forecast yet", "'no forecast yet' shown")
+    click("#alerts .alert[data-kind=abort] button.ack")
+    wait.until(lambda d: "acked by" in text("#alerts .alert[data-kind=abort]"))
+    h.check(True, "acknowledged from the page (the alert shows who)")
+    shot("glider_aborting.png", 2000)
+
+    # 4. Healthy: queue a goto .ma through the page; it reaches the vehicle at its next call: a second SIL
+    # run of the glider from its last fix (a SIL run cannot be paused while a browser works).
+    driver.set_window_size(1400, 1000)
+    driver.get(shore.url("/glider/healthy"))
+    wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing"))
+    before = int(driver.find_element(By.TAG_NAME, "body").get_attribute("data-surfacings"))
+    driver.find_element(By.ID, "queue-file").send_keys(goto)
+    click("#queue-button")
+    wait.until(lambda d: text("#queue-result"))
+    if retry(lambda: driver.find_element(By.ID, "force-label").is_displayed()):  # a real rehearsal said no: override
+        print("        rehearsal:", text("#queue-result"), "- overriding, explicitly")
+        driver.find_element(By.ID, "queue-file").send_keys(goto)
+        click("#force")
+        click("#queue-button")
+        wait.until(lambda d: "queued" == text("#action-result"))
+    verdict = text("#rehearsal-verdict")
+    h.check(text("#action-result") == "queued" and verdict.startswith("rehearsal: "),
+          "queued from the page, rehearsal shown: '%s'" % verdict)
+    shot("glider_healthy_queued.png", 2300)
+    driver.set_window_size(1400, 1000)
+    fix = events("healthy")[-1]["gps"]
+    # Its files under another vehicle name: Slocum names restart with a new run (name-YYYY-DDD-MM-SSS), and the
+    # shore would replace run 1's files with run 2's of the same name.
+    fly("healthy", second, 4500, ["--launch-lat", str(fix["lat_deg"]), "--launch-lon", str(fix["lon_deg"]),
+                                  "--slocum-dir", os.path.join(work, "slocum_healthy_2")], run=2)
+    sent_seen = False
+    try:
+        WebDriverWait(driver, 30, poll_frequency=0.2, ignored_exceptions=[StaleElementReferenceException]).until(
+            lambda d: any("goto_l10.ma" in e.text for e in d.find_elements(By.CSS_SELECTOR, "li.sent-file")) and
+            int(d.find_element(By.TAG_NAME, "body").get_attribute("data-surfacings")) > before)
+        sent_seen = True
+    except Exception:
+        pass
+    after = int(driver.find_element(By.TAG_NAME, "body").get_attribute("data-surfacings"))
+    h.check(sent_seen and after > before, "without a reload the page shows goto_l10.ma sent and %d new calls"
+          % (after - before))
+    h.wait_for(lambda: any("goto_l10.ma accepted" in open(j).read()
+                           for j in glob.glob(os.path.join(root, "healthy", "logs", "*.journal"))), 30,
+               "the vehicle to accept goto_l10.ma")
+    h.check(True, "the SIL vehicle accepted goto_l10.ma at its next call (journal)")
+    rows = retry(lambda: [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#actions tr.action")])
+    h.check(any("queue_file goto_l10.ma" in r and "local" in r for r in rows), "the actions journal names the user")
+    h.check("queue_file" in open(os.path.join(root, "healthy", "actions.journal")).read(), "actions.journal written")
+    wait.until(lambda d: "goto_l10.ma accepted" in text("#transcript") or
+               any("goto_l10.ma accepted" in e.text for e in d.find_elements(By.CSS_SELECTOR, "#surfacings pre")))
+    h.check(True, "the acceptance is in the page's dialog excerpt or transcript")
+    shot("glider_healthy_sent.png", 2300)
+    notes = open(notify_log).read() if os.path.exists(notify_log) else ""
+    h.check("notify abort@" in notes, "the abort was notified through --notify")
+except Exception as error:  # a timeout or a missing element: a failure with its reason, not a crash
+    h.check(False, "%s: %s" % (type(error).__name__, str(error).splitlines()[0] if str(error) else ""))
+finally:
+    if driver is not None:
+        driver.quit()
+    for p in sils.values():
+        if p.poll() is None:
+            p.terminate()
+            p.wait(10)
+    print(shore.stop()[-500:])
+if docs:
+    os.makedirs(docs, exist_ok=True)
+    for png in glob.glob(os.path.join(shots, "*.png")):
+        shutil.copy(png, docs)
+print("screenshots in %s" % shots)
+h.finish()
