@@ -3,6 +3,7 @@
 
 #include <httplib.h>
 #include <openssl/crypto.h>
+#include <sys/socket.h>
 
 #include <atomic>
 #include <boost/asio/ip/address.hpp>
@@ -39,6 +40,14 @@ constexpr const char* kCookie = "glider_session";
 constexpr int kLockoutFailures = 5;
 constexpr double kLockoutS = 60.0;
 constexpr double kStreamHeartbeatS = 15.0;
+
+// Debian's libcpp-httplib is built with a listen backlog of 5 (CPPHTTPLIB_LISTEN_BACKLOG): 250 browsers
+// connecting at once overflow it and the kernel drops SYNs, which clients retry after 1, 3, 7 s. Linux takes
+// a second listen(2) on the bound socket as a new backlog; the socket is the server's protected member.
+class HttpServer : public httplib::Server {
+ public:
+  bool widen_backlog(int backlog) { return ::listen(svr_sock_, backlog) == 0; }
+};
 
 struct Asset {
   std::string content, type;
@@ -129,7 +138,7 @@ struct ConsoleServer::Impl {
   std::string local_csrf = random_hex(32);
   std::map<std::string, Asset> assets;
   ConsoleState state;
-  httplib::Server server;
+  HttpServer server;
   std::thread thread;
   int bound_port = 0;
   std::atomic<int> streams{0};
@@ -444,6 +453,7 @@ void ConsoleServer::start() {
     return new httplib::ThreadPool(static_cast<std::size_t>(threads));
   };
   s.server.set_payload_max_length(c.max_upload_bytes + 16 * 1024);  // the file and the form around it
+  s.server.set_tcp_nodelay(true);  // headers and body go as separate writes: no 40 ms Nagle/delayed-ACK wait
   s.server.set_keep_alive_timeout(2);
   s.server.set_read_timeout(10);
   s.server.set_write_timeout(10);
@@ -456,6 +466,7 @@ void ConsoleServer::start() {
   if (s.bound_port <= 0) {
     throw std::runtime_error("--http " + c.address + ":" + std::to_string(c.port) + ": cannot listen there");
   }
+  if (!s.server.widen_backlog(1024)) std::fprintf(stderr, "glider-shore console: listen backlog stays at 5\n");
   s.state.start();
   s.thread = std::thread([&s] { s.server.listen_after_bind(); });
   const std::string shown = c.address.find(':') != std::string::npos ? "[" + c.address + "]" : c.address;

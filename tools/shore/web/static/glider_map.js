@@ -4,7 +4,7 @@
 // waypoints and the forecast's next-surfacing ellipse.
 'use strict';
 const GliderMap = {
-  map: null, layer: null, fitted: false,
+  map: null, layer: null, userMoved: false,
 
   init() {
     if (!window.L) {
@@ -13,6 +13,9 @@ const GliderMap = {
     }
     GliderMap.map = L.map('map', {zoomSnap: 0.25, attributionControl: false});
     L.control.scale({imperial: false}).addTo(GliderMap.map);
+    // The map follows what is drawn (a new fix, a new waypoint) until the pilot pans or zooms it.
+    const container = document.getElementById('map');
+    for (const e of ['mousedown', 'wheel', 'touchstart']) container.addEventListener(e, () => { GliderMap.userMoved = true; });
     GliderMap.map.on('mousemove', e => {
       document.getElementById('cursor').textContent = e.latlng.lat.toFixed(5) + ', ' + e.latlng.lng.toFixed(5);
     });
@@ -74,6 +77,6 @@ const GliderMap = {
     if (!all.length) { GliderMap.map.setView([0, 0], 2); return; }
     const bounds = L.latLngBounds(all);
     GliderMap.layer = L.layerGroup([...GliderMap.grid(bounds), ...items]).addTo(GliderMap.map);
-    if (!GliderMap.fitted) { GliderMap.map.fitBounds(bounds.pad(0.15)); GliderMap.fitted = true; }
+    if (!GliderMap.userMoved) GliderMap.map.fitBounds(bounds.pad(0.15));
   },
 };
