@@ -43,8 +43,9 @@ try:
     from selenium.webdriver.support.ui import WebDriverWait
 except ImportError:
     webdriver = None
-if webdriver is None or not CHROMIUM or not DRIVER:
-    print("SKIPPED: needs chromium, chromium-driver and python3-selenium (./glider test installs them)")
+LEAFLET = "/usr/share/javascript/leaflet/leaflet.js"
+if webdriver is None or not CHROMIUM or not DRIVER or not os.path.exists(LEAFLET):
+    print("SKIPPED: needs chromium, chromium-driver, python3-selenium and libjs-leaflet (./glider test installs them)")
     sys.exit(77)
 
 h.fresh_dir(work)

@@ -35,6 +35,11 @@ r = subprocess.run([shore_bin, "serve", "--root", root, "--port", "0", "--http",
                    capture_output=True, text=True, timeout=20)
 h.check(r.returncode == 2 and "off loopback" in r.stderr, "off loopback without users: exit 2 (%d: %s)" %
       (r.returncode, r.stderr.strip()[:160]))
+for http, why in (("localhost:8080", "is not an IPv4 or IPv6 address"), ("127.0.0.1:65536", "outside the allowed range"),
+                  ("127.0.0.1", "give ADDR:PORT")):
+    r = subprocess.run([shore_bin, "serve", "--root", root, "--port", "0", "--http", http], capture_output=True,
+                       text=True, timeout=20)
+    h.check(r.returncode == 2 and why in r.stderr, "--http %s: exit 2, %s (%d)" % (http, why, r.returncode))
 for name, role, password in (("pilot1", "pilot", "correct horse battery"), ("viewer1", "viewer", "viewer password 1")):
     r = subprocess.run([shore_bin, "user", "add", name, "--role", role, "--users", users], input=password + "\n",
                        capture_output=True, text=True, timeout=30)

@@ -84,6 +84,10 @@ void finish_console_config(ConsoleOptions& o, const std::string& root, const std
                                  "--http " + o.http + ": port '" + port + "' is outside the allowed range [0, 65535]");
   }
   c.port = static_cast<unsigned>(std::stoul(port));
+  if (!is_ip_address(c.address)) {
+    throw glider::cli::ToolError(glider::cli::kUsage, "--http " + o.http + ": '" + c.address +
+                                                          "' is not an IPv4 or IPv6 address (e.g. 127.0.0.1, [::1])");
+  }
   if (!is_loopback(c.address) || c.force_auth) {
     if (!fs::is_regular_file(c.users_file)) {
       throw glider::cli::ToolError(glider::cli::kUsage,

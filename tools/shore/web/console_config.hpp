@@ -33,6 +33,7 @@ struct ConsoleConfig {
   double tick_s = 0.5;  // how often the folders are looked at
 };
 
-bool is_loopback(const std::string& address);
+bool is_ip_address(const std::string& address);  // an IPv4 or IPv6 literal
+bool is_loopback(const std::string& address);    // 127.0.0.0/8 or ::1
 
 }  // namespace glider::shore::web

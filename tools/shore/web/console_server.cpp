@@ -28,6 +28,12 @@ namespace glider::shore::web {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+bool is_ip_address(const std::string& address) {
+  boost::system::error_code error;
+  boost::asio::ip::make_address(address, error);
+  return !error;
+}
+
 bool is_loopback(const std::string& address) {
   boost::system::error_code error;
   const boost::asio::ip::address parsed = boost::asio::ip::make_address(address, error);
