@@ -221,11 +221,9 @@ int main(int argc, char** argv) {
       if (console_server) console_server->stop();
       return glider::cli::kOk;
     }
-    if (*console.user) {
-      return shore::web::run_user_add(console, root);
-    }
     if (*queue) return queue_work(root, glider, files, commands);
     if (*status) return show_status(root, json);
+    if (*console.user) return shore::web::run_user_add(console, root);
     return parse_dialog_file(dialog_file);
   });
 }
