@@ -54,7 +54,7 @@ os.makedirs(shots)
 
 
 # Missions: box_current, the surface behaviour waiting for the pilot (as comms.e2e_sil_shore) so the
-# shore's work fits in each call; the pilot's copy of the .ma files in ROOT/GLIDER/mission/ for the map.
+# shore's work fits in each call.
 root = os.path.join(work, "root")
 missions = {}
 for g in ("healthy", "fouling", "aborting"):
@@ -64,9 +64,8 @@ for g in ("healthy", "fouling", "aborting"):
     text = open(surfac).read().replace("b_arg: end_action(enum)          2   # resume",
                                        "b_arg: end_action(enum)          1\n    b_arg: keystroke_wait_time(s)  300")
     open(surfac, "w").write(text)
-    os.makedirs(os.path.join(root, g, "mission"))
-    for ma in glob.glob(os.path.join(m, "mafiles/*.ma")):
-        shutil.copy(ma, os.path.join(root, g, "mission"))
+    # The pilot's copy of the mission as the forecast reads it: ROOT/GLIDER/mission/{missions,mafiles}/.
+    shutil.copytree(m, os.path.join(root, g, "mission"))
     missions[g] = os.path.join(m, "missions/box.mi")
 we01 = os.path.join(source, "boards/vehicles/slocum_we01.toml")
 fouled = os.path.join(work, "fouled.toml")
@@ -112,7 +111,7 @@ try:
     for g in ("aborting", "fouling", "healthy"):
         sils[g].wait(timeout=40)
     fix = events("healthy")[-1]["gps"]
-    fixture_reports.write_health(os.path.join(root, "healthy"), "healthy", "ok", drag_ratio=1.0)
+    fixture_reports.write_health(os.path.join(root, "healthy"), "healthy", "ok", drag_ratio=1.0, vehicle=we01)
     fixture_reports.write_forecast(os.path.join(root, "healthy"), "healthy", (fix["lat_deg"], fix["lon_deg"]),
                                    fix["lat_deg"] + 0.006, fix["lon_deg"] + 0.004, abort_risk=0.01)
     h.check(sils["aborting"].returncode == 3 and any(e["prompt"].startswith("GliderDos A") for e in events("aborting")),

@@ -24,8 +24,15 @@ def _write(path, value):
     os.rename(tmp, path)
 
 
-def write_health(glider_dir, glider, state, drag_ratio=None):
-    """state "ok" | "alert" | "cannot judge"; with drag_ratio an effect drag_change rising to it."""
+def write_health(glider_dir, glider, state, drag_ratio=None, vehicle=None):
+    """state "ok" | "alert" | "cannot judge"; with drag_ratio an effect drag_change rising to it; with vehicle
+    (a vehicle file) health/vehicle.toml, the forecast's input (CONTRACTS.md), a copy of it."""
+    if vehicle is not None:
+        os.makedirs(os.path.join(glider_dir, "health"), exist_ok=True)
+        tmp = os.path.join(glider_dir, "health", ".vehicle.toml.tmp")
+        with open(vehicle) as src, open(tmp, "w") as dst:
+            dst.write(src.read())
+        os.rename(tmp, os.path.join(glider_dir, "health", "vehicle.toml"))
     effects, alerts = [], []
     if drag_ratio is not None:
         series = []

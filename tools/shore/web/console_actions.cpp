@@ -60,7 +60,16 @@ json rehearse(const ConsoleConfig& config, const fs::path& glider_dir, const fs:
   } else {
     result["verdict"] = "failed";
   }
-  if (!result.contains("message")) result["message"] = "glider-forecast rehearse exit " + std::to_string(run.exit_code);
+  if (!result.contains("message")) {  // its error (JSON mode), else the last line it wrote on stderr
+    std::string why = result.value("error", "");
+    if (why.empty()) {
+      std::string err = run.err;
+      while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
+      why = err.substr(err.find_last_of('\n') == std::string::npos ? 0 : err.find_last_of('\n') + 1);
+    }
+    result["message"] =
+        "glider-forecast rehearse exit " + std::to_string(run.exit_code) + (why.empty() ? "" : ": " + why);
+  }
   return result;
 }
 

@@ -245,7 +245,7 @@ void GliderReader::read(double now) {
     if (file.extension() == ".png") plots.push_back(file.filename().string());
   }
 
-  // Waypoints: the pilot's copy of the mission (mission/), replaced by a later sent file of the same name.
+  // Waypoints: the pilot's copy of the mission, replaced by a later sent file of the same name.
   std::map<std::string, json> waypoint_files;
   auto add_waypoints = [&](const fs::path& file, const std::string& name, const std::string& source) {
     const auto found = read_waypoints(file);
@@ -254,8 +254,11 @@ void GliderReader::read(double now) {
     for (const auto& [lat, lon] : found) list.push_back({lat, lon});
     waypoint_files[name] = {{"file", name}, {"source", source}, {"points", list}};
   };
-  for (const fs::path& file : files_in(base / "mission")) {
-    if (file.extension() == ".ma") add_waypoints(file, file.filename().string(), "mission/");
+  // mission/mafiles/ is the forecast's layout (mission/missions/*.mi beside it); plain mission/*.ma is taken too.
+  for (const char* folder : {"mission", "mission/mafiles"}) {
+    for (const fs::path& file : files_in(base / folder)) {
+      if (file.extension() == ".ma") add_waypoints(file, file.filename().string(), std::string(folder) + "/");
+    }
   }
   const std::vector<fs::path> sent = files_in(base / "to-glider" / "sent");
   for (const fs::path& file : sent) {
