@@ -124,6 +124,12 @@ try:
                  "/static/%2e%2e/%2e%2e/%2e%2e/etc/passwd"):
         status, _, data = get(path, pcookie)
         h.check(status in (400, 404) and b"root:" not in data, "traversal %s refused (%d)" % (path, status))
+    os.makedirs(os.path.join(root, "g1", "health", "plots"), exist_ok=True)
+    open(os.path.join(root, "g1", "health", "plots", "drag_change.png"), "wb").write(b"\x89PNG fixture")
+    status, headers, data = get("/api/gliders/g1/plots/drag_change.png", pcookie)
+    h.check(status == 200 and headers.get("content-type") == "image/png" and data == b"\x89PNG fixture",
+            "a health plot is served (%d)" % status)
+    h.check(get("/api/gliders/g1/plots/drag_change.png")[0] == 401, "not without a session")
     outside = os.path.join(root, "evil.ma")
     for name in ("../evil.ma", "..%2fevil.ma", "/tmp/evil.ma", "sub/evil.ma", ".hidden.ma", "evil.sh", "evil.ma\x00.txt"):
         status, data = post("/api/gliders/g1/queue", {}, pcookie, psession["csrf"],

@@ -15,7 +15,7 @@
     if (r) {
       lines.push(E('div', {class: r.verdict === 'ok' ? 'ok' : (r.verdict === 'not rehearsed' ? 'note' : 'bad'), id: 'rehearsal-verdict'},
                    'rehearsal: ' + r.verdict + (r.message ? ' - ' + r.message : '') +
-                   (isFinite(r.abort_risk) ? ' (abort risk ' + Math.round(100 * r.abort_risk) + ' %)' : '')));
+                   (isFinite(r.abort_risk) && !(r.message || '').includes('abort risk') ? ' (abort risk ' + Math.round(100 * r.abort_risk) + ' %)' : '')));
     }
     lines.push(E('div', {class: body.ok ? 'ok' : 'bad', id: 'action-result'},
                  body.ok ? (body.action ? body.action.result : 'done') : (body.error || (body.action && body.action.result) || 'refused')));
