@@ -174,7 +174,12 @@ try:
     h.check(re.search(r"\d+ s ago|\d+ min ago", row.get("healthy", "")) is not None, "time since the last call shown")
     shot("fleet.png", 700)
 
-    # 2. Fouling: map, forecast ellipse, alert, plot.
+    # 2. Fouling: map, forecast ellipse, alert, plot; text from files shown as text, never as HTML.
+    evil = '<img src=x onerror="window.pwned=1">'
+    subprocess.run([shore_bin, "queue", "--root", root, "fouling", "--command", "put " + evil], check=True,
+                   capture_output=True)
+    open(os.path.join(root, "fouling", "mission", "mafiles", evil.replace("/", "") + ".ma"), "w").write(
+        open(os.path.join(root, "fouling", "mission", "mafiles", "goto_l10.ma")).read())
     driver.get(shore.url("/glider/fouling"))
     wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "path.forecast-ellipse"))
     counts = {c: len(driver.find_elements(By.CSS_SELECTOR, "path." + c))
@@ -190,6 +195,15 @@ try:
           "one table row a surfacing")
     dr = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing td:nth-child(4)")]
     h.check(any(re.fullmatch(r"\d+ m", t) for t in dr), "DR error shown at the surfacings with received files: %s" % dr)
+    wait.until(lambda d: d.execute_script("return GliderMap.layer.getLayers().filter(l => l.getTooltip && "
+                                          "l.getTooltip() && String(l.getTooltip().getContent().textContent || "
+                                          "l.getTooltip().getContent()).includes('onerror')).length") > 0)
+    driver.execute_script("GliderMap.layer.eachLayer(l => { if (l.getTooltip && l.getTooltip()) l.openTooltip(); })")
+    h.check(driver.execute_script("return window.pwned") is None and not driver.find_elements(By.CSS_SELECTOR, "img[src=x]")
+            and evil in text("#queued"), "a command and a file name holding HTML are shown as text (no script ran)")
+    click("#cancel-command-0")
+    wait.until(lambda d: evil not in text("#queued"))
+    os.remove(os.path.join(root, "fouling", "mission", "mafiles", evil.replace("/", "") + ".ma"))
     shot("glider_fouling.png", 2300)
 
     # 3. Aborting: abort alert, no forecast, acknowledge.

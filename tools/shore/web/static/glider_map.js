@@ -6,6 +6,9 @@
 const GliderMap = {
   map: null, layer: null, userMoved: false,
 
+  // Leaflet puts a string tooltip in as HTML; names come from files and the glider: always as text.
+  tip(text) { const span = document.createElement('span'); span.textContent = text; return span; },
+
   init() {
     if (!window.L) {
       document.getElementById('map').textContent = 'Leaflet is missing (Debian package libjs-leaflet): no map.';
@@ -55,12 +58,12 @@ const GliderMap = {
       all.push(...g.dr_track);
     }
     for (const w of g.waypoints || []) {
-      items.push(L.polyline(w.points, {color: '#080', weight: 2, dashArray: '6 6', className: 'waypoints'}).bindTooltip(w.file + ' (' + w.source + ')'));
-      w.points.forEach((p, i) => items.push(L.circleMarker(p, {radius: 5, color: '#080', className: 'waypoint'}).bindTooltip(w.file + ' #' + i)));
+      items.push(L.polyline(w.points, {color: '#080', weight: 2, dashArray: '6 6', className: 'waypoints'}).bindTooltip(GliderMap.tip(w.file + ' (' + w.source + ')')));
+      w.points.forEach((p, i) => items.push(L.circleMarker(p, {radius: 5, color: '#080', className: 'waypoint'}).bindTooltip(GliderMap.tip(w.file + ' #' + i))));
       all.push(...w.points);
     }
     for (const f of g.fixes || []) {
-      items.push(L.circleMarker([f[0], f[1]], {radius: 4, color: '#c00', fillOpacity: 0.8, className: 'fix'}).bindTooltip('fix ' + f[2]));
+      items.push(L.circleMarker([f[0], f[1]], {radius: 4, color: '#c00', fillOpacity: 0.8, className: 'fix'}).bindTooltip(GliderMap.tip('fix ' + f[2])));
       all.push([f[0], f[1]]);
     }
     const fc = g.forecast && g.forecast.next_surfacing;
@@ -68,10 +71,10 @@ const GliderMap = {
       if (fc.ellipse && fc.ellipse.semi_major_m > 0) {
         const pts = GliderMap.ellipse(fc.lat_deg, fc.lon_deg, fc.ellipse);
         items.push(L.polygon(pts, {color: '#a0a', weight: 2, fillOpacity: 0.1, className: 'forecast-ellipse'})
-          .bindTooltip('forecast next surfacing, ' + Math.round(100 * (fc.ellipse.level || 0.95)) + ' %'));
+          .bindTooltip(GliderMap.tip('forecast next surfacing, ' + Math.round(100 * (fc.ellipse.level || 0.95)) + ' %')));
         all.push(...pts);
       }
-      items.push(L.circleMarker([fc.lat_deg, fc.lon_deg], {radius: 6, color: '#a0a', className: 'forecast-point'}).bindTooltip('forecast ' + (fc.time_utc || '')));
+      items.push(L.circleMarker([fc.lat_deg, fc.lon_deg], {radius: 6, color: '#a0a', className: 'forecast-point'}).bindTooltip(GliderMap.tip('forecast ' + (fc.time_utc || ''))));
       all.push([fc.lat_deg, fc.lon_deg]);
     }
     if (!all.length) { GliderMap.map.setView([0, 0], 2); return; }
