@@ -268,7 +268,13 @@ try:
     notes = open(notify_log).read() if os.path.exists(notify_log) else ""
     h.check("notify abort@" in notes, "the abort was notified through --notify")
 except Exception as error:  # a timeout or a missing element: a failure with its reason, not a crash
+    import traceback
+    traceback.print_exc()
     h.check(False, "%s: %s" % (type(error).__name__, str(error).splitlines()[0] if str(error) else ""))
+    if driver is not None:  # what the page showed then
+        print("page at the failure:", driver.current_url)
+        print(driver.find_element(By.TAG_NAME, "body").text[:2000])
+        driver.save_screenshot(os.path.join(shots, "failure.png"))
 finally:
     if driver is not None:
         driver.quit()
