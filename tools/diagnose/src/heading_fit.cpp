@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/heading_fit.hpp"
-#include "glider/diagnose/delay_search.hpp"
 #include "glider/diagnose/least_squares_functor.hpp"
 
 #include <Eigen/Dense>
@@ -13,8 +12,14 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include "glider/fitting_core/delay_search.hpp"
+#include "glider/fitting_core/effective_samples.hpp"
+#include "glider/fitting_core/intervals.hpp"
+
 namespace glider::diagnose {
 namespace {
+
+using namespace fitting_core;  // NOLINT(google-build-using-namespace): the one fitting core
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -130,17 +135,6 @@ struct Functor : LeastSquaresFunctor {
   }
 };
 
-// Independent samples among n serially correlated ones: n (1 - r1) / (1 + r1).
-double independent_samples(const std::vector<double>& r) {
-  double var = 0.0, lag1 = 0.0;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    var += r[i] * r[i];
-    if (i > 0) lag1 += r[i] * r[i - 1];
-  }
-  const double rho = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
-  return static_cast<double>(r.size()) * (1.0 - rho) / (1.0 + rho);
-}
-
 Eigen::VectorXd minimise(const Problem& problem, const std::vector<HeadingEffect>& fitted, Eigen::VectorXd p) {
   Functor functor{{}, problem, fitted, {}};
   Eigen::NumericalDiff<Functor> numeric(functor);
@@ -229,17 +223,16 @@ Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitte
   problem.residuals(trial.values, problem.samples().train, r);
   for (double x : r) trial.train_rss += x * x;
   const double n = static_cast<double>(r.size());
-  trial.bic = n * std::log(trial.train_rss / n) + static_cast<double>(k) * std::log(n);
-  trial.n_eff = std::max(independent_samples(r), static_cast<double>(k) + 2.0);
+  trial.bic = bic(trial.train_rss, n, static_cast<double>(k));
+  trial.n_eff = std::max(effective_sample_count(r), static_cast<double>(k) + 2.0);
   if (k > 0) {
     Eigen::NumericalDiff<Functor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(r.size()), k);
     numeric.df(p, jac);
-    const double variance = trial.train_rss / (trial.n_eff - static_cast<double>(k));
-    const Eigen::MatrixXd cov = (jac.transpose() * jac).completeOrthogonalDecomposition().pseudoInverse() * variance;
+    const Eigen::MatrixXd cov = noise_covariance(jac, r);
     for (Eigen::Index j = 0; j < k; ++j) {
       const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
-      const double half = 1.96 * std::sqrt(std::max(cov(j, j), 0.0)) * info(e).scale;
+      const double half = kZ95 * std::sqrt(std::max(cov(j, j), 0.0)) * info(e).scale;
       const double value = at(trial.values, e);
       trial.ci_low.push_back(info(e).magnitude ? std::max(0.0, value - half) : value - half);
       trial.ci_high.push_back(value + half);
@@ -270,7 +263,7 @@ Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
   const double k = static_cast<double>(fitted.size());
   const double n = static_cast<double>(problem.samples().train.size());
   trial.bic += std::log(n);  // the threshold is a parameter too
-  const double limit = trial.train_rss * (1.0 + 3.84 / std::max(1.0, trial.n_eff - k));
+  const double limit = profile_threshold(trial.train_rss, trial.n_eff, static_cast<int>(k));
   double low = best->first, high = best->first;
   for (const auto& [x, t] : profile) {
     if (t.train_rss > limit) continue;
@@ -295,8 +288,7 @@ bool plausible(HeadingEffect e, double v) {
 }
 
 bool improves(const Trial& better, const Trial& than, const HeadingSelectOptions& o) {
-  return better.heldout_rms < than.heldout_rms * (1.0 - o.min_relative_improvement) &&
-         better.heldout_rms < than.heldout_rms - o.min_absolute_improvement && better.bic < than.bic;
+  return beats({better.heldout_rms, better.bic}, {than.heldout_rms, than.bic}, o.margins);
 }
 
 // Forward: the candidate that cuts the held-out error most enters while it
