@@ -24,6 +24,7 @@
 #include "glider/fitting_core/identifiability.hpp"
 #include "glider/fitting_core/intervals.hpp"
 #include "glider/fitting_core/selection.hpp"
+#include "glider/fitting_core/stepwise.hpp"
 #include "glider/units.hpp"
 
 namespace glider::diagnose {
@@ -561,83 +562,6 @@ std::optional<SpeedScore> score_speed(const SampleSet& set, std::span<const std:
   return score;
 }
 
-Candidate without(Candidate c, Effect e) {
-  if (e == Effect::kWaterDensity) {
-    c.ctd_density = false;
-  } else {
-    std::erase(c.fitted, e);
-  }
-  return c;
-}
-
-// Does the final joint fit put the effect's value outside its nominal, with
-// 95 % confidence, and inside the plausible range?
-bool interval_excludes_nominal(const Candidate& c, const FitResult& f, Effect e) {
-  if (e == Effect::kWaterDensity) return true;  // measured, not fitted
-  const auto it = std::find(c.fitted.begin(), c.fitted.end(), e);
-  const std::size_t j = static_cast<std::size_t>(it - c.fitted.begin());
-  const double value = f.parameters.values[static_cast<std::size_t>(e)];
-  return std::abs(value - info(e).nominal) > kZ95 * f.sigma[j] && plausible(e, value);
-}
-
-// Forward selection is greedy: an effect taken early (a vertical-velocity
-// profile standing in for a buoyancy offset before the drag is known) can
-// become redundant once the others are in. Backward step: every effect must
-// still earn its place in the final joint fit - removing it must cost the
-// held-out error the same margins that let it in, raise the BIC, and its
-// interval must exclude the nominal. The weakest that does not is removed
-// and the rest refitted, until all do. Then the findings are ranked by what
-// each one is worth (the held-out error without it, largest first), and each
-// gets the held-out error and gain of the model with it and those ranked
-// above it.
-void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train, std::span<const std::size_t> heldout,
-                       const DiagnoseOptions& options, Candidate& current, FitResult& current_fit, Diagnosis& d) {
-  std::vector<std::pair<Effect, double>> worth;  // held-out RMS without the effect
-  for (;;) {
-    worth.clear();
-    add_intervals(set, current, train, options.intervals, current_fit);
-    std::optional<std::pair<Effect, FitResult>> weakest;
-    for (const Finding& finding : d.findings) {
-      const Effect e = finding.effect;
-      FitResult reduced = fit_reported(set, without(current, e), train, heldout, options);
-      worth.emplace_back(e, reduced.heldout_rms);
-      // The CTD's density is measured, not fitted: once it has earned its
-      // way in it stays (a fitted effect of the same shape - a mean vertical
-      // velocity - must not push out what the water was measured to be).
-      const bool earns = e == Effect::kWaterDensity || (beats(current_fit.score(), reduced.score(), options.margins) &&
-                                                        interval_excludes_nominal(current, current_fit, e));
-      if (!earns && (!weakest || reduced.heldout_rms < weakest->second.heldout_rms)) {
-        weakest.emplace(e, std::move(reduced));
-      }
-    }
-    if (!weakest) break;
-    current = without(current, weakest->first);
-    current_fit = std::move(weakest->second);
-    std::erase_if(d.findings, [&](const Finding& f) { return f.effect == weakest->first; });
-  }
-  auto worth_of = [&](Effect e) {
-    for (const auto& [effect, rms] : worth) {
-      if (effect == e) return rms;
-    }
-    return 0.0;
-  };
-  std::stable_sort(d.findings.begin(), d.findings.end(),
-                   [&](const Finding& a, const Finding& b) { return worth_of(a.effect) > worth_of(b.effect); });
-  Candidate cumulative;
-  for (std::size_t k = 0; k < d.findings.size(); ++k) {
-    Finding& finding = d.findings[k];
-    if (finding.effect == Effect::kWaterDensity) {
-      cumulative.ctd_density = true;
-    } else {
-      cumulative.fitted.push_back(finding.effect);
-    }
-    const double rms = k + 1 == d.findings.size() ? current_fit.heldout_rms
-                                                  : fit_reported(set, cumulative, train, heldout, options).heldout_rms;
-    finding.heldout_rms_m_s = rms;
-    finding.gain = 1.0 - rms / d.baseline.heldout_rms_m_s;
-  }
-}
-
 // A finding before its value is known (that comes from the final joint fit).
 Finding new_finding(Effect effect, double heldout_rms_m_s, const Diagnosis& d) {
   Finding finding;
@@ -799,87 +723,99 @@ void fit_requested(const SampleSet& set, const Split& s, const DiagnoseOptions& 
   for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
 }
 
-// Forward selection: of the candidates with a plausible value, the one that
-// cuts the held-out error most enters if it cuts it by the margins and lowers
-// the BIC.
-// The measured density is a known input, not a fitted number: where the log
-// has a CTD it is tried alone at the start of every round until it is taken,
-// so that a fitted effect of the same shape (a negative hull compressibility
-// in stratified water) cannot take its place.
-void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions& options, std::vector<Effect> remaining,
-                    Candidate& current, FitResult& current_fit, Diagnosis& d) {
-  bool ctd_declined_this_round = false;
-  while (!remaining.empty()) {
-    const auto ctd = std::find(remaining.begin(), remaining.end(), Effect::kWaterDensity);
-    const bool ctd_alone = ctd != remaining.end() && !ctd_declined_this_round;
-    std::optional<std::pair<std::size_t, FitResult>> best;
-    Candidate best_candidate;
-    for (std::size_t c = 0; c < remaining.size(); ++c) {
-      const bool is_ctd = remaining[c] == Effect::kWaterDensity;
-      if (ctd_alone != is_ctd) continue;
-      Candidate trial = current;
-      if (is_ctd) {
-        trial.ctd_density = true;
-      } else {
-        trial.fitted.push_back(remaining[c]);
-      }
-      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
-      // An implausible value is another effect's stand-in: the next best competes instead.
-      if (!is_ctd && !plausible(remaining[c], f.parameters.values[static_cast<std::size_t>(remaining[c])])) continue;
-      if (!best || f.heldout_rms < best->second.heldout_rms) {
-        best = std::make_pair(c, f);
-        best_candidate = trial;
-      }
-    }
-    if (!best) break;
-    const Effect effect = remaining[best->first];
-    const FitResult& f = best->second;
-    // Its interval is judged in the final joint fit (backward step):
-    // while another effect is still missing, the residuals are serially
-    // correlated and inflate every interval. (Only plausible values compete.)
-    if (!beats(f.score(), current_fit.score(), options.margins)) {
-      if (!ctd_alone) break;
-      ctd_declined_this_round = true;  // not yet: the other effects get their turn
-      continue;
-    }
-    ctd_declined_this_round = false;
-    current = best_candidate;
-    current_fit = f;
-    d.findings.push_back(new_finding(effect, f.heldout_rms, d));
-    remaining.erase(remaining.begin() + static_cast<long>(best->first));
+// The vertical plane's side of the fitting core's selection
+// (fitting_core/stepwise.hpp): the fit of each set of effects, once.
+class VerticalSelection : public SelectionProblem {
+ public:
+  VerticalSelection(const SampleSet& set, const Split& split, const DiagnoseOptions& options, FitResult nominal)
+      : set_(set), split_(split), options_(options) {
+    fits_.emplace(EffectSet{}, std::move(nominal));
   }
-}
+  static Candidate candidate(const EffectSet& effects) {
+    Candidate c;
+    for (int id : effects) {
+      const auto e = static_cast<Effect>(id);
+      if (e == Effect::kWaterDensity) {
+        c.ctd_density = true;
+      } else {
+        c.fitted.push_back(e);
+      }
+    }
+    return c;
+  }
+  FitResult& fitted(const EffectSet& effects) {
+    auto it = fits_.find(effects);
+    if (it == fits_.end()) {
+      it = fits_.emplace(effects, fit_reported(set_, candidate(effects), split_.train, split_.heldout, options_)).first;
+    }
+    return it->second;
+  }
+  Score score(const EffectSet& effects) override { return fitted(effects).score(); }
+  bool plausible(const EffectSet& effects, int effect) override {
+    const auto e = static_cast<Effect>(effect);
+    return e == Effect::kWaterDensity ||
+           diagnose::plausible(e, fitted(effects).parameters.values[static_cast<std::size_t>(effect)]);
+  }
+  // The 95 % interval from the joint fit (its Jacobian, once) excludes the nominal.
+  bool significant(const EffectSet& effects, int effect) override {
+    const auto e = static_cast<Effect>(effect);
+    if (e == Effect::kWaterDensity) return true;  // measured, not fitted
+    const Candidate c = candidate(effects);
+    FitResult& f = fitted(effects);
+    add_intervals(set_, c, split_.train, options_.intervals, f);
+    const auto j = static_cast<std::size_t>(std::find(c.fitted.begin(), c.fitted.end(), e) - c.fitted.begin());
+    return std::abs(f.parameters.values[static_cast<std::size_t>(effect)] - info(e).nominal) > kZ95 * f.sigma[j];
+  }
 
-// Forward selection, then the backward step. A vertical-velocity depth profile
-// (a parameter per 10 m bin) can stand in for any buoyancy that changes with
-// depth, and the greedy forward step takes it first when no single physical
-// effect explains as much (a hull compressibility comes with a buoyancy
-// offset: each alone explains less than the profile, the two together more).
-// So a selection that took the profile must beat the best selection without
-// it by the margins any effect must (held-out error and BIC); else that
-// selection stands (bench_diagnose_coverage: buoyancy_offset +
-// hull_compressibility was read as a profile in 46 % of the logs).
+ private:
+  const SampleSet& set_;
+  const Split& split_;
+  const DiagnoseOptions& options_;
+  std::map<EffectSet, FitResult> fits_;
+};
+
+// The fitting core's forward-then-backward selection (fitting_core/stepwise.hpp;
+// the CTD's density a measured input), then the findings ranked by worth,
+// each with the held-out error and gain of the model with it and those
+// ranked above it. A vertical-velocity depth profile (a parameter per 10 m
+// bin) can stand in for any buoyancy that changes with depth, and the
+// greedy forward step takes it first when no single physical effect
+// explains as much (a hull compressibility comes with a buoyancy offset:
+// each alone explains less than the profile, the two together more). So a
+// selection whose forward step took the profile must beat the best
+// selection without it by the margins any effect must (held-out error and
+// BIC); else that selection stands (bench_diagnose_coverage: buoyancy_offset
+// + hull_compressibility was read as a profile in 46 % of the logs). Taken,
+// the profile may also have kept out an effect and then left in the
+// backward step: the selection without it is then the one to compare with.
 void select_effects(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                     const std::vector<Effect>& pool, Candidate& current, FitResult& current_fit, Diagnosis& d) {
-  Candidate without_profile = current;
-  FitResult without_profile_fit = current_fit;
-  Diagnosis without_profile_d = d;
-  forward_select(set, s, options, pool, current, current_fit, d);
-  const auto profile = Effect::kVerticalWaterVelocity;
-  const bool took_profile = std::find(current.fitted.begin(), current.fitted.end(), profile) != current.fitted.end();
-  backward_and_rank(set, s.train, s.heldout, options, current, current_fit, d);
-  // Taken, the profile may also have kept out an effect and then left in the
-  // backward step (its mean, the value judged, near zero): the selection
-  // without it is then the one to compare with, too.
-  if (!took_profile) return;
-  std::vector<Effect> physical = pool;
-  std::erase(physical, profile);
-  forward_select(set, s, options, physical, without_profile, without_profile_fit, without_profile_d);
-  backward_and_rank(set, s.train, s.heldout, options, without_profile, without_profile_fit, without_profile_d);
-  if (beats(current_fit.score(), without_profile_fit.score(), options.margins)) return;
-  current = std::move(without_profile);
-  current_fit = std::move(without_profile_fit);
-  d = std::move(without_profile_d);
+  VerticalSelection problem(set, s, options, current_fit);
+  const SelectionRules rules{options.margins, {static_cast<int>(Effect::kWaterDensity)}};
+  std::vector<int> candidates;
+  for (Effect e : pool) candidates.push_back(static_cast<int>(e));
+  const EffectSet forward = forward_select(problem, {}, candidates, rules);
+  std::vector<double> worth;
+  EffectSet chosen = backward_eliminate(problem, forward, rules, worth);
+  const auto profile = static_cast<int>(Effect::kVerticalWaterVelocity);
+  if (std::find(forward.begin(), forward.end(), profile) != forward.end()) {
+    std::vector<double> other_worth;
+    const EffectSet other = backward_eliminate(
+        problem, forward_select(problem, {}, without(candidates, profile), rules), rules, other_worth);
+    if (!beats(problem.score(chosen), problem.score(other), options.margins)) {
+      chosen = other;
+      worth = other_worth;
+    }
+  }
+  current = VerticalSelection::candidate(chosen);
+  current_fit = problem.fitted(chosen);
+  const EffectSet ranked = rank_by_worth(chosen, worth);
+  EffectSet so_far;
+  for (int e : ranked) {
+    so_far.push_back(e);
+    const double rms = so_far.size() == ranked.size() ? current_fit.heldout_rms : problem.score(so_far).heldout_rms;
+    d.findings.push_back(new_finding(static_cast<Effect>(e), rms, d));
+  }
 }
 
 // Every finding's value and 95 % interval from the final joint fit, and the
