@@ -60,6 +60,18 @@ class PrescribedPitchDynamics {
 
  private:
   GliderDynamics dynamics_;  // its environment carries only the gravity
+  // What a stage needs of its inputs alone (masses, net weight, the pitch's
+  // sine and cosine), kept for the last inputs: RK4's two middle stages share
+  // them, and a step's last stage is usually the next step's first. The same
+  // expressions on the same inputs, so the same bits; a cache per object
+  // (one object per flight, never shared between threads).
+  struct StageInputs {
+    bool valid = false;
+    PrescribedPitchInputs in;
+    double a11 = 0.0, a33 = 0.0, a13 = 0.0, a23 = 0.0;  // translational mass (A(0,0), A(1,1), A(0,2), A(1,2))
+    double net_kg = 0.0, sin_theta = 0.0, cos_theta = 1.0;
+  };
+  mutable StageInputs stage_;
 };
 
 }  // namespace glider::model
