@@ -12,6 +12,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "glider/cli/tool.hpp"
@@ -156,6 +157,10 @@ int main(int argc, char** argv) {
                  "(default port 6565; docs/comms.md)");
   app.add_option("--vehicle-name", comms_name, "the name the vehicle gives in its dialog (default: the vehicle's)");
   app.add_option("--dialog-sensors", dialog_sensors, "log columns in the surface dialog")->delimiter(',');
+  double time_scale = 0.0;
+  tool.add_number("--time-scale", time_scale, {0.0, 1e6, ""},
+                  "at most this many simulated seconds per wall second (0: as fast as it goes); with --shore, "
+                  "a pilot or a script has wall time between calls, as in HIL at the same time scale");
   return tool.run(argc, argv, [&]() -> int {
     glider::model::VehicleParams vehicle;
     glider::sil::ScenarioOptions options;
@@ -270,6 +275,13 @@ int main(int argc, char** argv) {
           std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
               .count());
     }
+    if (time_scale > 0.0) {
+      const auto paced_from = std::chrono::steady_clock::now();
+      options.before_cycle = [paced_from, time_scale](double sim_time_s, glider::sil::SimHal&) {
+        std::this_thread::sleep_until(paced_from + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                       std::chrono::duration<double>(sim_time_s / time_scale)));
+      };
+    }
     const auto wall_start = std::chrono::steady_clock::now();
     const glider::sil::ScenarioResult result = glider::sil::run_scenario(vehicle, config, options);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -338,6 +350,10 @@ int main(int argc, char** argv) {
             c.surfacings, c.calls_connected, c.dial_attempts, c.surfacings_without_call, c.carrier_drops,
             static_cast<unsigned long long>(result.modem.bytes_up),
             static_cast<unsigned long long>(result.modem.bytes_down));
+        if (shore) {
+          std::printf("  shore pacing   : %u waits for the shore's answer, %u unanswered within %d ms\n",
+                      shore->waits(), shore->unanswered_waits(), glider::sil::TcpShore::kDefaultAnswerWaitMs);
+        }
       }
       std::printf("  wall time      : %.4f s\n", wall_s);
       std::printf("  real-time factor: %.0fx\n", wall_s > 0.0 ? result.sim_time_s / wall_s : 0.0);

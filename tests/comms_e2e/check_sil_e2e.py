@@ -26,6 +26,11 @@ import tempfile
 import time
 
 glider_sil, glider_shore, source = sys.argv[1:4]
+# SIL runs lockstep with the shore's answers during a call; between calls it
+# is paced at this many simulated seconds per wall second, so that the
+# pilot's queue (this script, reacting to an event) lands before the next
+# call: ~2000 s between surfacings = 2 s of wall time.
+TIME_SCALE = 1000
 NAME = "unit_345"
 # The new waypoint: 3.3 km south-west of the launch point, away from the box (north-east of it).
 NEW_WPT = (5417.9000, 722.0000)  # DDMM.MMMM lat, lon
@@ -96,7 +101,7 @@ try:
         [glider_sil, os.path.join(mission, "missions/box.mi"),
          "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
          "--max-sim-time-s", "9500", "--vehicle-name", NAME, "--shore", f"127.0.0.1:{port}",
-         "--slocum-dir", slocum],
+         "--slocum-dir", slocum, "--time-scale", str(TIME_SCALE)],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     logs = os.path.join(root, NAME, "logs")
     queued_goto = queued_broken = None

@@ -62,6 +62,12 @@ PER_DIVE_TOL_M = 12 * 1.0 * 0.5
 # for the shore (up to 20 ms a cycle while connected, docs/comms.md), so the
 # same call lasts other simulated seconds (in still water the vehicle does not
 # move at the surface: the fixes are unaffected).
+# SIL calls the shore in lockstep with its answers (TcpShore waits for the
+# shore between cycles, however loaded the machine); between calls it runs at
+# this time scale so that the pilot's queue (this script, reacting to an
+# event) lands before the next call as in HIL: 500-700 s between surfacings
+# = 2-2.8 s of wall time.
+SIL_TIME_SCALE = 250
 failures = []
 procs = []
 
@@ -150,7 +156,7 @@ try:
     sil = subprocess.Popen([glider_sil, mi, "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
                             "--seed", "1", "--heading-deg", "90", "--max-working-depth-m", "100",
                             "--max-sim-time-s", "4500", "--vehicle-name", NAME, "--shore", "127.0.0.1:" + port,
-                            "--slocum-dir", slocum], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                            "--slocum-dir", slocum, "--time-scale", str(SIL_TIME_SCALE)], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     procs.append(sil)
     logs = os.path.join(root, NAME, "logs")
     queued_goto = queued_broken = None
