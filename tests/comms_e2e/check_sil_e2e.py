@@ -141,7 +141,9 @@ try:
     check(all(e["end_reason"] == "hangup" for e in events), "every call ended by the glider hanging up")
 
     # Every closed .sbd the vehicle wrote, equal at the shore.
-    vehicle_sbd = sorted(glob.glob(os.path.join(slocum, "*.sbd")))
+    # (sent ones moved to sentlogs/ by the vehicle: docs/comms.md, End to end)
+    vehicle_sbd = sorted(glob.glob(os.path.join(slocum, "*.sbd")) + glob.glob(os.path.join(slocum, "sentlogs", "*.sbd")),
+                         key=os.path.basename)
     received = sorted(glob.glob(os.path.join(root, NAME, "from-glider", "*.sbd")))
     names = {os.path.basename(p) for p in received}
     # The last segment is still open at the last call (it holds that surfacing).
@@ -154,6 +156,12 @@ try:
         check(same, f"{name} received equal to the vehicle's ({os.path.getsize(p)} bytes)")
         check(os.path.exists(os.path.join(root, NAME, "from-glider", name + ".csv")), f"{name}.csv converted")
     check(not glob.glob(os.path.join(root, NAME, ".incoming", "*")), "nothing left half received")
+    # What was sent is not sent again: each file crosses the link in one call only.
+    got = [f["name"] for e in events for f in e["files_received"]]
+    check(len(got) == len(set(got)) and all(f["status"] == "new" for e in events for f in e["files_received"]),
+          f"no file received twice ({len(got)} receptions, {len(set(got))} files)")
+    check([os.path.basename(p) for p in glob.glob(os.path.join(slocum, "*.sbd"))] == [os.path.basename(vehicle_sbd[-1])],
+          "on the vehicle only the open segment is left unsent; the rest in sentlogs/")
 
     # The goto: delivered, accepted, flown.
     text = "\n".join(open(j).read() for j in journals)
