@@ -24,6 +24,7 @@
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/flight_summary.hpp"
+#include "glider/sil/launch_time.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
 #include "glider/units.hpp"
@@ -157,6 +158,10 @@ int main(int argc, char** argv) {
                  "(default port 6565; docs/comms.md)");
   app.add_option("--vehicle-name", comms_name, "the name the vehicle gives in its dialog (default: the vehicle's)");
   app.add_option("--dialog-sensors", dialog_sensors, "log columns in the surface dialog")->delimiter(',');
+  std::string launch_utc;
+  app.add_option("--launch-utc", launch_utc,
+                 "the simulated UTC at launch, YYYY-MM-DDTHH:MM:SSZ (2000..2099; default: now): the Slocum files' "
+                 "names and fileopen_time, the dialog's Curr Time");
   double time_scale = 0.0;
   tool.add_number("--time-scale", time_scale, {0.0, 1e6, ""},
                   "at most this many simulated seconds per wall second (0: as fast as it goes); with --shore, "
@@ -233,9 +238,20 @@ int main(int argc, char** argv) {
         {"time", "m_present_time is seconds since the start of the mission"},
         {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
 
+    // The simulated UTC at launch (SIL time 0): as a glider's clock at launch, now unless given.
+    std::int64_t launch_utc_s = static_cast<std::int64_t>(
+        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+    if (!launch_utc.empty()) {
+      std::string why;
+      if (!glider::sil::parse_launch_utc(launch_utc, launch_utc_s, why)) {
+        return tool.fail(glider::cli::kUsage, "--launch-utc: value '" + launch_utc + "' " + why);
+      }
+    }
     if (!slocum_dir.empty()) {
-      // The SIL's clock starts at 0: the names carry 1970-000 (m_present_time is mission seconds).
-      const glider::fw::SlocumMissionNumbers numbers = glider::fw::next_slocum_mission(slocum_dir, vehicle.name, 0);
+      // Names and fileopen_time from the simulated launch UTC (m_present_time is mission seconds).
+      const glider::fw::SlocumMissionNumbers numbers =
+          glider::fw::next_slocum_mission(slocum_dir, vehicle.name, launch_utc_s * 1'000'000);
+      options.slocum.utc_at_zero_us = launch_utc_s * 1'000'000;
       options.slocum_directory = slocum_dir;
       options.slocum_lz4 = slocum_lz4;
       options.slocum.vehicle = vehicle.name;
@@ -271,9 +287,7 @@ int main(int argc, char** argv) {
       }
       c.far_end = &*shore;
       c.reloader = &*reloader;
-      c.utc_at_launch_s = static_cast<double>(
-          std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
-              .count());
+      c.utc_at_launch_s = static_cast<double>(launch_utc_s);
     }
     if (time_scale > 0.0) {
       const auto paced_from = std::chrono::steady_clock::now();

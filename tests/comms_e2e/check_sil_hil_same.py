@@ -14,7 +14,8 @@ shores received is compared:
   `-MM-SSS` of `<name>-<yyyy>-<ddd>-<mission>-<segment>`) in the same calls,
   the same sensor list (sensor_list_crc, sensors_per_cycle). The names' other
   parts differ by design: the glider's name (the board's in HIL, the vehicle
-  file's in SIL) and the date (HIL: the wall clock; SIL: time 0 = 1970-000).
+  file's in SIL) and the date (HIL: the wall clock; SIL: its --launch-utc, by
+  default the time of the run: the same day unless a run crosses midnight).
   The bytes differ too: the rows hold times and the sensors' noise drawn at
   other instants (below);
 - each surfacing's fix, within the tolerance stated at GPS_TOL_M and PER_DIVE_TOL_M; the
