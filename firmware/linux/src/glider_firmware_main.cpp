@@ -264,6 +264,16 @@ int main(int argc, char** argv) {
       const fw::SlocumDirectorySink* sink = nullptr;
       bool is_open(const char* name) const override { return sink != nullptr && sink->is_open(name); }
     } open_segments;
+    // The log's writer thread: a call waits for the rows up to its surfacing (the segment closed then).
+    struct WriterProgress final : fw::comms::LogProgress {
+      target::RingBufferLog* log = nullptr;
+      bool written_through(hal::Micros time_us) override {
+        if (log->written_through_us() >= time_us) return true;
+        log->wake_writer();
+        return false;
+      }
+    } writer_progress;
+    writer_progress.log = &linux_hal->log();
     std::optional<fw::comms::PosixFileAccess> outgoing_files, incoming_files;
     std::optional<fw::comms::ZmodemTransfer> zmodem;
     const std::string incoming_dir = slocum_dir + "/from-shore";
@@ -282,6 +292,7 @@ int main(int argc, char** argv) {
       comms.emplace(application.flight(), *modem, hal.gps, hal.log,
                     comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()),
                     zmodem ? &*zmodem : nullptr, &*reloader);
+      comms->set_log_progress(&writer_progress);
       log_forward.retarget(*comms);
       application.attach_comms(*comms);
     }
