@@ -26,7 +26,7 @@ import tempfile
 
 PARTS = ("model", "firmware", "sil", "log", "other")
 RULES = (  # first match wins
-    ("log", re.compile(r"CsvFlightLog|LogRowFormatter|BinaryRowEncoder|glider::fw::format_log|glider::fw::\(anonymous namespace\)::put"
+    ("log", re.compile(r"CsvFlightLog|LogRowFormatter|BinaryRowEncoder|glider::fw::comms::crc32_update|glider::fw::format_log|glider::fw::\(anonymous namespace\)::put"
                        r"|glider::fw::\(anonymous namespace\)::format_fields|glider::sil::SimCtd")),
     ("model", re.compile(r"glider::model::|boost::numeric::odeint|Eigen::")),
     ("firmware", re.compile(r"glider::fw::|glider::hal::")),

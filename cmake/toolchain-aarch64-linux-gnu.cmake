@@ -22,4 +22,9 @@ set(ENV{PKG_CONFIG_LIBDIR} "/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgc
 set(ENV{PKG_CONFIG_SYSROOT_DIR} "")
 
 find_program(GLIDER_QEMU_AARCH64 NAMES qemu-aarch64 qemu-aarch64-static REQUIRED)
-set(CMAKE_CROSSCOMPILING_EMULATOR ${GLIDER_QEMU_AARCH64} -L /usr/aarch64-linux-gnu)
+# The arm64 loader and libraries from multiarch (/lib/ld-linux-aarch64.so.1,
+# libc6:arm64), not "-L /usr/aarch64-linux-gnu": that loader (libc6-arm64-cross)
+# finds libc6:arm64's libc through the host's ld.so.cache, and the two builds
+# of glibc together hang in the first pthread_create (a program that starts a
+# std::thread never got past it).
+set(CMAKE_CROSSCOMPILING_EMULATOR ${GLIDER_QEMU_AARCH64} -L /)

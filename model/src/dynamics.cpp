@@ -19,7 +19,8 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
   return flow_forces_at_speed(h, water_density, v1, v3, std::hypot(v1, v3));
 }
 
-FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s) {
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s,
+                                bool with_moment) {
   FlowForces out;
   out.speed_m_s = speed_m_s;
   out.alpha_rad = std::atan2(v3, v1);
@@ -33,7 +34,7 @@ FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, do
   const double sin_a = v3 / out.speed_m_s;
   out.f1 = out.lift_n * sin_a - out.drag_n * cos_a;
   out.f3 = -out.lift_n * cos_a - out.drag_n * sin_a;
-  out.moment_nm = dyn * moment_coefficient(h, out.alpha_rad);
+  if (with_moment) out.moment_nm = dyn * moment_coefficient(h, out.alpha_rad);
   return out;
 }
 

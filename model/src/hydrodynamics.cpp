@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace glider::model {
@@ -19,9 +20,20 @@ double fit_weight(const Hydrodynamics& h, double alpha_rad) {
 
 // Lift slope of the wing by its own area.
 double wing_slope_by_wing_area(const Hydrodynamics& h) {
+  // Remembered for the last wing asked about: force_coefficients needs it at
+  // every stage of every flight, and its tan and sqrt were a fifth of a
+  // diagnosis's CPU (perf, comet-2016). The same expression on the same
+  // inputs: the same bits.
+  thread_local double last_ar = std::numeric_limits<double>::quiet_NaN();
+  thread_local double last_sweep = std::numeric_limits<double>::quiet_NaN();
+  thread_local double last_slope = 0.0;
+  if (h.wing_aspect_ratio == last_ar && h.wing_sweep_rad == last_sweep) return last_slope;
   const double ar = h.wing_aspect_ratio;
   const double tan_sweep = std::tan(h.wing_sweep_rad);
-  return 2.0 * std::numbers::pi * ar / (2.0 + std::sqrt(ar * ar * (1.0 + tan_sweep * tan_sweep) + 4.0));
+  last_slope = 2.0 * std::numbers::pi * ar / (2.0 + std::sqrt(ar * ar * (1.0 + tan_sweep * tan_sweep) + 4.0));
+  last_ar = h.wing_aspect_ratio;
+  last_sweep = h.wing_sweep_rad;
+  return last_slope;
 }
 
 }  // namespace

@@ -44,6 +44,8 @@ CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, co
     pending_ += "# " + key + ": " + value + '\n';
   }
   pending_ += header() + '\n';
+  // The text lines join the first checked block (docs/flight-log.md, "Binary logs").
+  if (encoding_ == LogEncoding::kBinary) encoder_.cover(pending_.data(), pending_.size());
   flush();
 }
 
@@ -135,7 +137,16 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
     return false;
   }
   ++rows_;
-  return pending_.size() < kFlushBytes || flush();
+  if (pending_.size() < kFlushBytes) return true;
+  close_block();
+  return flush();
+}
+
+// A binary log's block ends where its bytes go to the file: a check record.
+void CsvFlightLog::close_block() {
+  if (encoding_ != LogEncoding::kBinary) return;
+  char check[fw::kBinaryCheckRecordBytes];
+  pending_.append(check, encoder_.close_block(check));
 }
 
 bool CsvFlightLog::append_csv_row(const hal::FlightLogRecord& r, std::span<const double> sim_values) {
@@ -160,7 +171,11 @@ bool CsvFlightLog::finish(std::string_view outcome, std::uint64_t lost) {
   if (fd_ < 0) return ok_;
   char trailer[256];
   const std::size_t n = fw::format_log_trailer(outcome, rows_, lost, trailer, sizeof trailer);
-  if (ok_) pending_.append(trailer, n);
+  if (ok_) {
+    pending_.append(trailer, n);
+    if (encoding_ == LogEncoding::kBinary) encoder_.cover(trailer, n);
+    close_block();  // a finished binary log ends in the check of its last block and trailer
+  }
   flush();
   return close();
 }

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "glider/cli/tool.hpp"
@@ -23,6 +24,7 @@
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/flight_summary.hpp"
+#include "glider/sil/launch_time.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
 #include "glider/units.hpp"
@@ -156,6 +158,14 @@ int main(int argc, char** argv) {
                  "(default port 6565; docs/comms.md)");
   app.add_option("--vehicle-name", comms_name, "the name the vehicle gives in its dialog (default: the vehicle's)");
   app.add_option("--dialog-sensors", dialog_sensors, "log columns in the surface dialog")->delimiter(',');
+  std::string launch_utc;
+  app.add_option("--launch-utc", launch_utc,
+                 "the simulated UTC at launch, YYYY-MM-DDTHH:MM:SSZ (2000..2099; default: now): the Slocum files' "
+                 "names and fileopen_time, the dialog's Curr Time");
+  double time_scale = 0.0;
+  tool.add_number("--time-scale", time_scale, {0.0, 1e6, ""},
+                  "at most this many simulated seconds per wall second (0: as fast as it goes); with --shore, "
+                  "a pilot or a script has wall time between calls, as in HIL at the same time scale");
   return tool.run(argc, argv, [&]() -> int {
     glider::model::VehicleParams vehicle;
     glider::sil::ScenarioOptions options;
@@ -228,9 +238,20 @@ int main(int argc, char** argv) {
         {"time", "m_present_time is seconds since the start of the mission"},
         {"conventions", "Slocum names, units and signs; sim_* are simulator truths"}};
 
+    // The simulated UTC at launch (SIL time 0): as a glider's clock at launch, now unless given.
+    std::int64_t launch_utc_s = static_cast<std::int64_t>(
+        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+    if (!launch_utc.empty()) {
+      std::string why;
+      if (!glider::sil::parse_launch_utc(launch_utc, launch_utc_s, why)) {
+        return tool.fail(glider::cli::kUsage, "--launch-utc: value '" + launch_utc + "' " + why);
+      }
+    }
     if (!slocum_dir.empty()) {
-      // The SIL's clock starts at 0: the names carry 1970-000 (m_present_time is mission seconds).
-      const glider::fw::SlocumMissionNumbers numbers = glider::fw::next_slocum_mission(slocum_dir, vehicle.name, 0);
+      // Names and fileopen_time from the simulated launch UTC (m_present_time is mission seconds).
+      const glider::fw::SlocumMissionNumbers numbers =
+          glider::fw::next_slocum_mission(slocum_dir, vehicle.name, launch_utc_s * 1'000'000);
+      options.slocum.utc_at_zero_us = launch_utc_s * 1'000'000;
       options.slocum_directory = slocum_dir;
       options.slocum_lz4 = slocum_lz4;
       options.slocum.vehicle = vehicle.name;
@@ -266,9 +287,14 @@ int main(int argc, char** argv) {
       }
       c.far_end = &*shore;
       c.reloader = &*reloader;
-      c.utc_at_launch_s = static_cast<double>(
-          std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
-              .count());
+      c.utc_at_launch_s = static_cast<double>(launch_utc_s);
+    }
+    if (time_scale > 0.0) {
+      const auto paced_from = std::chrono::steady_clock::now();
+      options.before_cycle = [paced_from, time_scale](double sim_time_s, glider::sil::SimHal&) {
+        std::this_thread::sleep_until(paced_from + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                       std::chrono::duration<double>(sim_time_s / time_scale)));
+      };
     }
     const auto wall_start = std::chrono::steady_clock::now();
     const glider::sil::ScenarioResult result = glider::sil::run_scenario(vehicle, config, options);
@@ -338,6 +364,10 @@ int main(int argc, char** argv) {
             c.surfacings, c.calls_connected, c.dial_attempts, c.surfacings_without_call, c.carrier_drops,
             static_cast<unsigned long long>(result.modem.bytes_up),
             static_cast<unsigned long long>(result.modem.bytes_down));
+        if (shore) {
+          std::printf("  shore pacing   : %u waits for the shore's answer, %u unanswered within %d ms\n",
+                      shore->waits(), shore->unanswered_waits(), glider::sil::TcpShore::kDefaultAnswerWaitMs);
+        }
       }
       std::printf("  wall time      : %.4f s\n", wall_s);
       std::printf("  real-time factor: %.0fx\n", wall_s > 0.0 ? result.sim_time_s / wall_s : 0.0);

@@ -179,6 +179,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     modem.emplace(clock, c.link, c.far_end, derived_seed(options.seed, kModemStream));
     comms.emplace(app.flight(), *modem, sim_hal.gps(), log, comms_config,
                   c.transfer != nullptr ? c.transfer : (zmodem ? &*zmodem : nullptr), c.reloader);
+    comms->set_log_progress(c.log_progress);
     log_path.retarget(*comms);
     app.attach_comms(*comms);
   }
@@ -204,6 +205,9 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
       call_cycle_sum_us += us;
       result.call_cycle_max_us = std::max(result.call_cycle_max_us, us);
     }
+    // A shore answering in wall time is given its time to answer here,
+    // between two cycles, while the glider listens (TcpShore).
+    if (comms) modem->end_of_cycle(comms->state() == fw::comms::CommsState::kDialog);
     if (comms && options.comms->after_cycle) options.comms->after_cycle(sim.time_s(), *comms);
     if (comms && comms->reset_requested() && comms->state() == fw::comms::CommsState::kDone) {
       result.reset_requested = true;

@@ -171,6 +171,10 @@ void SimModem::command(const std::string& raw) {
   }
 }
 
+void SimModem::end_of_cycle(bool listening) {
+  if (mode_ == Mode::kData && listening && to_shore_.empty() && far_end_ != nullptr) far_end_->settle();
+}
+
 hal::Carrier SimModem::carrier() const {
   if (!link_.dcd_wired) return hal::Carrier::kUnknown;
   return mode_ == Mode::kData ? hal::Carrier::kPresent : hal::Carrier::kLost;

@@ -48,7 +48,8 @@ void FakeShore::hangup(double) {
   connected_ = false;
 }
 
-TcpShore::TcpShore(std::string host, int port, int poll_ms) : host_(std::move(host)), port_(port), poll_ms_(poll_ms) {}
+TcpShore::TcpShore(std::string host, int port, int answer_wait_ms)
+    : host_(std::move(host)), port_(port), answer_wait_ms_(answer_wait_ms) {}
 
 TcpShore::~TcpShore() {
   if (fd_ >= 0) ::close(fd_);
@@ -93,27 +94,43 @@ void TcpShore::receive(std::span<const std::uint8_t> bytes, double) {
       sent += static_cast<std::size_t>(n);
     } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
       pollfd p{fd_, POLLOUT, 0};
-      if (::poll(&p, 1, poll_ms_) != 1) break;  // the shore is not reading: the rest is lost
+      if (::poll(&p, 1, answer_wait_ms_) != 1) break;  // the shore is not reading: the rest is lost
     } else {
       break;
     }
   }
+  if (sent > 0) answer_due_ = true;
 }
 
 std::vector<std::uint8_t> TcpShore::take(std::size_t max, double) {
   std::vector<std::uint8_t> out;
   if (fd_ < 0 || max == 0) return out;
   pollfd p{fd_, POLLIN, 0};
-  if (::poll(&p, 1, poll_ms_) != 1) return out;
-  out.resize(max);
-  const ssize_t n = ::recv(fd_, out.data(), max, MSG_DONTWAIT);
-  out.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  if (::poll(&p, 1, 0) == 1) {
+    out.resize(max);
+    const ssize_t n = ::recv(fd_, out.data(), max, MSG_DONTWAIT);
+    out.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  }
+  shore_was_talking_ = !out.empty();
+  if (!out.empty()) answer_due_ = false;
   return out;
+}
+
+void TcpShore::settle() {
+  if (fd_ < 0 || !(answer_due_ || shore_was_talking_)) return;
+  // Bytes already there, or the shore's next within the bound (not taken
+  // here: the link's rate decides when they reach the glider).
+  ++waits_;
+  pollfd p{fd_, POLLIN, 0};
+  if (::poll(&p, 1, answer_wait_ms_) != 1) ++unanswered_waits_;
+  answer_due_ = false;  // answered, or it had its chance
+  shore_was_talking_ = false;
 }
 
 void TcpShore::hangup(double) {
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
+  answer_due_ = shore_was_talking_ = false;
 }
 
 bool parse_shore_address(const std::string& text, std::string& host, int& port, std::string& error) {

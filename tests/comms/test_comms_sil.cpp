@@ -3,6 +3,7 @@
 // and link, an in-process shore that records the dialog and types commands.
 #include <CppUTest/TestHarness.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <regex>
@@ -354,4 +355,56 @@ TEST(CommsSil, MissionOverMakesOneLastCallThenTheRunEnds) {
   STRCMP_CONTAINS("Because:Stack idle [behavior surface start_when = 1.0]", shore.transcript().c_str());
   CHECK(r.sim_time_s < 1800.0);
   LONGS_EQUAL(1, shore.hangups());
+}
+
+namespace {
+
+// A log writer that lags behind the loop (the target's writer thread): rows
+// are written `lag_s` after their cycle, or never.
+struct LaggingWriter final : fw::comms::LogProgress {
+  double lag_s = 0.0;
+  bool stuck = false;
+  double now_s = 0.0;
+  bool written_through(hal::Micros time_us) override { return !stuck && now_s - hal::to_seconds(time_us) >= lag_s; }
+};
+
+// Seconds from the first cycle at the surface (the comms task out of idle)
+// to the modem's start (the call begins), in the launch call.
+double surfacing_to_dial_s(const model::VehicleParams& vehicle, sil::ScenarioOptions options, LaggingWriter* writer) {
+  sil::FakeShore shore;
+  options.max_sim_time_s = 300.0;
+  options.peripherals.gps.time_to_first_fix_min_s = 2.0;  // a fix at once: the log is what the call waits for
+  options.peripherals.gps.time_to_first_fix_max_s = 3.0;
+  options.comms = comms(&shore);
+  options.comms->log_progress = writer;
+  double up_s = -1.0, dial_s = -1.0;
+  options.comms->after_cycle = [&](double t, const fw::comms::CommsTask& c) {
+    if (writer != nullptr) writer->now_s = t + 1.0;  // the next cycle's "now"
+    if (up_s < 0.0 && c.state() != fw::comms::CommsState::kIdle) up_s = t;
+    if (dial_s < 0.0 && c.state() == fw::comms::CommsState::kModemStart) dial_s = t;
+  };
+  sil::run_scenario(vehicle, mission(), options);
+  return up_s >= 0.0 && dial_s >= 0.0 ? dial_s - up_s : -1.0;
+}
+
+}  // namespace
+
+TEST(CommsSil, CallWaitsForTheLogWriterToCloseTheSegment) {
+  // The segment closed at a surfacing must be a whole file when the call's
+  // first `send` lists the folder: a call waits for the rows up to its
+  // surfacing to be written (the target writes them on a thread, up to
+  // 500 ms later; at time scale 100 that is 50 simulated seconds).
+  const double in_cycle = surfacing_to_dial_s(vehicle, options, nullptr);
+  LaggingWriter lagging;
+  lagging.lag_s = 20.0;
+  const double behind = surfacing_to_dial_s(vehicle, options, &lagging);
+  LaggingWriter stuck;
+  stuck.stuck = true;
+  const double never = surfacing_to_dial_s(vehicle, options, &stuck);
+  // In cycle: the call starts at the first fix.
+  CHECK_TEXT(in_cycle >= 0.0 && in_cycle <= 15.0, std::to_string(in_cycle).c_str());
+  // Written 20 s late: the call waits for it (the surfacing's row, then the next cycle).
+  CHECK_TEXT(behind >= 20.0 && behind <= 23.0, std::to_string(behind).c_str());
+  // A writer that never catches up delays the call by the bound (30 s), no more.
+  CHECK_TEXT(never >= 30.0 && never <= 33.0, std::to_string(never).c_str());
 }

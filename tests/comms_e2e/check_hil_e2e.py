@@ -119,7 +119,9 @@ try:
               "event %s: glider, fix, prompt (%s)" % (e["journal"], e["end_reason"]))
     slocum = os.path.join(plant_dir, "logs", "slocum")
     fetched = ("*.sbd", "*.dbd") if CASE == "transfer" else ("*.sbd",)
-    vehicle_sbd = sorted(p for pattern in fetched for p in glob.glob(os.path.join(slocum, pattern)))
+    # (the sent ones moved to sentlogs/ by the firmware)
+    vehicle_sbd = sorted((p for pattern in fetched for folder in (slocum, os.path.join(slocum, "sentlogs"))
+                          for p in glob.glob(os.path.join(folder, pattern))), key=os.path.basename)
     received = os.path.join(root, NAME, "from-glider")
     # The last segment is open during the last call: not offered.
     stems = sorted({os.path.basename(p)[:-4] for p in vehicle_sbd})
@@ -129,6 +131,10 @@ try:
         r = os.path.join(received, os.path.basename(p))
         check(os.path.exists(r) and open(r, "rb").read() == open(p, "rb").read(),
               "%s received equal to the firmware's (%d bytes)" % (os.path.basename(p), os.path.getsize(p)))
+    # What was sent is not sent again: each file crosses the link in one call only.
+    got = [f["name"] for e in events for f in e["files_received"]]
+    check(len(got) == len(set(got)) and all(f["status"] == "new" for e in events for f in e["files_received"]),
+          "no file received twice (%d receptions, %d files)" % (len(got), len(set(got))))
     if CASE == "goto":
         journals = sorted(glob.glob(os.path.join(logs, "*.journal")))
         text = "\n".join(open(j).read() for j in journals)

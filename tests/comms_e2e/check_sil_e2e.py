@@ -26,6 +26,11 @@ import tempfile
 import time
 
 glider_sil, glider_shore, source = sys.argv[1:4]
+# SIL runs lockstep with the shore's answers during a call; between calls it
+# is paced at this many simulated seconds per wall second, so that the
+# pilot's queue (this script, reacting to an event) lands before the next
+# call: ~2000 s between surfacings = 2 s of wall time.
+TIME_SCALE = 1000
 NAME = "unit_345"
 # The new waypoint: 3.3 km south-west of the launch point, away from the box (north-east of it).
 NEW_WPT = (5417.9000, 722.0000)  # DDMM.MMMM lat, lon
@@ -96,7 +101,7 @@ try:
         [glider_sil, os.path.join(mission, "missions/box.mi"),
          "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
          "--max-sim-time-s", "9500", "--vehicle-name", NAME, "--shore", f"127.0.0.1:{port}",
-         "--slocum-dir", slocum],
+         "--slocum-dir", slocum, "--time-scale", str(TIME_SCALE)],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     logs = os.path.join(root, NAME, "logs")
     queued_goto = queued_broken = None
@@ -136,7 +141,9 @@ try:
     check(all(e["end_reason"] == "hangup" for e in events), "every call ended by the glider hanging up")
 
     # Every closed .sbd the vehicle wrote, equal at the shore.
-    vehicle_sbd = sorted(glob.glob(os.path.join(slocum, "*.sbd")))
+    # (sent ones moved to sentlogs/ by the vehicle: docs/comms.md, End to end)
+    vehicle_sbd = sorted(glob.glob(os.path.join(slocum, "*.sbd")) + glob.glob(os.path.join(slocum, "sentlogs", "*.sbd")),
+                         key=os.path.basename)
     received = sorted(glob.glob(os.path.join(root, NAME, "from-glider", "*.sbd")))
     names = {os.path.basename(p) for p in received}
     # The last segment is still open at the last call (it holds that surfacing).
@@ -149,6 +156,12 @@ try:
         check(same, f"{name} received equal to the vehicle's ({os.path.getsize(p)} bytes)")
         check(os.path.exists(os.path.join(root, NAME, "from-glider", name + ".csv")), f"{name}.csv converted")
     check(not glob.glob(os.path.join(root, NAME, ".incoming", "*")), "nothing left half received")
+    # What was sent is not sent again: each file crosses the link in one call only.
+    got = [f["name"] for e in events for f in e["files_received"]]
+    check(len(got) == len(set(got)) and all(f["status"] == "new" for e in events for f in e["files_received"]),
+          f"no file received twice ({len(got)} receptions, {len(set(got))} files)")
+    check([os.path.basename(p) for p in glob.glob(os.path.join(slocum, "*.sbd"))] == [os.path.basename(vehicle_sbd[-1])],
+          "on the vehicle only the open segment is left unsent; the rest in sentlogs/")
 
     # The goto: delivered, accepted, flown.
     text = "\n".join(open(j).read() for j in journals)

@@ -14,7 +14,8 @@ shores received is compared:
   `-MM-SSS` of `<name>-<yyyy>-<ddd>-<mission>-<segment>`) in the same calls,
   the same sensor list (sensor_list_crc, sensors_per_cycle). The names' other
   parts differ by design: the glider's name (the board's in HIL, the vehicle
-  file's in SIL) and the date (HIL: the wall clock; SIL: time 0 = 1970-000).
+  file's in SIL) and the date (HIL: the wall clock; SIL: its --launch-utc, by
+  default the time of the run: the same day unless a run crosses midnight).
   The bytes differ too: the rows hold times and the sensors' noise drawn at
   other instants (below);
 - each surfacing's fix, within the tolerance stated at GPS_TOL_M and PER_DIVE_TOL_M; the
@@ -62,6 +63,12 @@ PER_DIVE_TOL_M = 12 * 1.0 * 0.5
 # for the shore (up to 20 ms a cycle while connected, docs/comms.md), so the
 # same call lasts other simulated seconds (in still water the vehicle does not
 # move at the surface: the fixes are unaffected).
+# SIL calls the shore in lockstep with its answers (TcpShore waits for the
+# shore between cycles, however loaded the machine); between calls it runs at
+# this time scale so that the pilot's queue (this script, reacting to an
+# event) lands before the next call as in HIL: 500-700 s between surfacings
+# = 2-2.8 s of wall time.
+SIL_TIME_SCALE = 250
 failures = []
 procs = []
 
@@ -150,7 +157,7 @@ try:
     sil = subprocess.Popen([glider_sil, mi, "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
                             "--seed", "1", "--heading-deg", "90", "--max-working-depth-m", "100",
                             "--max-sim-time-s", "4500", "--vehicle-name", NAME, "--shore", "127.0.0.1:" + port,
-                            "--slocum-dir", slocum], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                            "--slocum-dir", slocum, "--time-scale", str(SIL_TIME_SCALE)], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     procs.append(sil)
     logs = os.path.join(root, NAME, "logs")
     queued_goto = queued_broken = None

@@ -14,7 +14,7 @@
 #include <random>
 #include <string>
 
-#include "glider/diagnose/delay_search.hpp"
+#include "glider/fitting_core/delay_search.hpp"
 #include "hidden_heading_flight.hpp"
 
 using namespace glider;
@@ -104,34 +104,34 @@ TEST(DiagnoseLongDelays, LongFinDeadTimeSizedWithAWideEnoughInterval) {
 // (the Jacobian's column zero) or exact (zero residual) still gives an
 // interval at least one grid step wide, the search's resolution.
 TEST(DiagnoseLongDelays, NoIntervalIsZeroWidth) {
-  const diagnose::DelayGrid grid = diagnose::delay_grid(0.0, 60.0, 2.0);
+  const glider::fitting_core::DelayGrid grid = glider::fitting_core::delay_grid(0.0, 60.0, 2.0);
   // Exact fit: zero residual at 20 s, the others far off.
   std::vector<double> rss;
   for (double x : grid.values) rss.push_back(x == 20.0 ? 0.0 : 1.0);
-  diagnose::Interval i = diagnose::profile_interval(grid, rss, 20.0, 0.0, 100.0, 1);
+  glider::fitting_core::Interval i = glider::fitting_core::profile_interval(grid, rss, 20.0, 0.0, 100.0, 1);
   DOUBLES_EQUAL(18.0, i.low, 1e-12);  // to the first grid values outside
   DOUBLES_EQUAL(22.0, i.high, 1e-12);
   // A flat minimum (a residual read at a log's cycle): its middle is the start.
   for (double x : grid.values) rss[static_cast<std::size_t>(x / 2.0)] = x >= 8.0 && x <= 12.0 ? 0.5 : 1.0;
-  DOUBLES_EQUAL(10.0, diagnose::best_on_grid(grid, rss), 1e-12);
+  DOUBLES_EQUAL(10.0, glider::fitting_core::best_on_grid(grid, rss), 1e-12);
   rss.assign(grid.values.size(), 1.0);
   // Flat: every delay fits as well: the interval is the whole range.
-  i = diagnose::profile_interval(grid, rss, 20.0, 1.0, 100.0, 1);
+  i = glider::fitting_core::profile_interval(grid, rss, 20.0, 1.0, 100.0, 1);
   DOUBLES_EQUAL(0.0, i.low, 1e-12);
   DOUBLES_EQUAL(60.0, i.high, 1e-12);
   // A Jacobian interval narrower than the resolution is widened to it.
-  i = diagnose::at_least_resolution({12.0, 12.0}, 12.0, grid.resolution_s, 0.0);
+  i = glider::fitting_core::at_least_resolution({12.0, 12.0}, 12.0, grid.resolution_s, 0.0);
   DOUBLES_EQUAL(grid.resolution_s, i.high - i.low, 1e-12);
-  i = diagnose::at_least_resolution({0.0, 0.0}, 0.0, grid.resolution_s, 0.0);  // at the range's end
+  i = glider::fitting_core::at_least_resolution({0.0, 0.0}, 0.0, grid.resolution_s, 0.0);  // at the range's end
   CHECK(i.high > i.low);
   CHECK(i.low >= 0.0);
   // The pump lag's grid (each point a flight through the log): doubling, and
   // an exact fit between two of its points reaches the points either side.
-  const diagnose::DelayGrid pump = diagnose::doubling_delay_grid(5.0, 120.0);
+  const glider::fitting_core::DelayGrid pump = glider::fitting_core::doubling_delay_grid(5.0, 120.0);
   LONGS_EQUAL(8, pump.values.size());
-  DOUBLES_EQUAL(20.0, diagnose::resolution_at(pump, 37.9), 1e-12);
+  DOUBLES_EQUAL(20.0, glider::fitting_core::resolution_at(pump, 37.9), 1e-12);
   rss.assign(pump.values.size(), 1.0);
-  i = diagnose::profile_interval(pump, rss, 37.9, 0.0, 100.0, 1);  // no grid point as good as the fit
+  i = glider::fitting_core::profile_interval(pump, rss, 37.9, 0.0, 100.0, 1);  // no grid point as good as the fit
   DOUBLES_EQUAL(10.0, i.low, 1e-12);
   DOUBLES_EQUAL(80.0, i.high, 1e-12);
 }

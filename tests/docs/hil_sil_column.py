@@ -24,7 +24,7 @@ def sil_events(source_dir, build_dir, name):
     os.chdir(source_dir)
     try:
         with tempfile.TemporaryDirectory(prefix="hil_sil_") as tmp:
-            return hil_flight.events(hil_flight.run_sil(build_dir, source_dir, hil_flight.CASES[name], tmp))
+            return hil_flight.events(hil_flight.run_sil(build_dir, source_dir, hil_flight.CASES[name], tmp)[0])
     finally:
         os.chdir(cwd)
 

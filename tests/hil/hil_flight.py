@@ -12,11 +12,12 @@ two flight logs are compared event by event within stated tolerances
 CASE is one of CASES below. Prints the SIL-vs-HIL table and the firmware's
 loop wake-up lateness; "PASS hil CASE" or "FAIL hil CASE: why".
 GLIDER_FIRMWARE / GLIDER_FIRMWARE_PREFIX run another build of the firmware
-(e.g. the arm64 one under "qemu-aarch64 -L /usr/aarch64-linux-gnu").
+(the arm64 one under "qemu-aarch64 -L /": ./glider cross runs every case so).
 """
 import argparse
 import csv
 import glob
+import json
 import math
 import os
 import re
@@ -202,6 +203,22 @@ def compare(sil, hil, case, table, scale):
         table.compare("mission complete at, s", sil["end_t"], hil["end_t"], time_tolerance(sil["end_t"]))
 
 
+def compare_drop_weight(sil_summary, firmware_stderr, case, table):
+    """The drop weight through the shipped paths: the vehicle file's [fitted]
+    in SIL (slocum_we01: drop_weight = true, released by every abort), the
+    board file on the target. The plant's board has no [gpio] (no GPIO chip
+    without a kernel), so the firmware must say its weight is not fitted:
+    what the board file says, not what SIL flew."""
+    abort = sil_summary["abort"]
+    sil_released = abort is not None and abort["drop_weight_released"]
+    m = re.findall(r"glider-firmware: drop weight: (.*)", firmware_stderr)
+    hil_said = m[-1] if m else "not said"
+    table.add("drop weight (SIL: vehicle file)", "released" if sil_released else "kept",
+              "(board)", sil_released == (case["end"] == "abort"), "abort releases")
+    table.add("drop weight (HIL: board file)", "fitted (vehicle)", hil_said,
+              hil_said == "not fitted (the board has no [gpio])", "board decides")
+
+
 def start(args, **kwargs):
     p = subprocess.Popen(args, **kwargs)
     PROCESSES.append(p)
@@ -209,15 +226,18 @@ def start(args, **kwargs):
 
 
 def run_sil(build, source, case, tmp):
+    """The SIL flight's log rows and its summary (docs/sil-summary.md)."""
     log = os.path.join(tmp, "sil.csv")
+    summary = os.path.join(tmp, "sil.json")
     args = [os.path.join(build, "sil", "glider-sil"), "--vehicle", VEHICLE, "--mission", case["mission"],
-            "--seed", str(SEED), "--out", log, "--quiet"]
+            "--seed", str(SEED), "--out", log, "--summary-json", summary, "--quiet"]
     for f in case["sil"]:
         args += ["--fault", f]
     result = subprocess.run(args, cwd=source, capture_output=True, text=True, timeout=60)
     if result.returncode not in (0, 2, 3):
         raise RuntimeError("glider-sil failed (%d): %s" % (result.returncode, result.stderr))
-    return read_log(log)
+    with open(summary) as f:
+        return read_log(log), json.load(f)
 
 
 def firmware_binary(build):
@@ -305,13 +325,19 @@ def main():
     case = CASES[a.case]
     prefix = os.environ.get("GLIDER_FIRMWARE_PREFIX", "").split()
     firmware = os.environ.get("GLIDER_FIRMWARE", firmware_binary(build))
-    usage = subprocess.run(prefix + [firmware, "--help"], capture_output=True, text=True, timeout=60).stdout
+    if "GLIDER_FIRMWARE" in os.environ and not os.access(firmware, os.X_OK):
+        fail(a.case, "GLIDER_FIRMWARE=%s is not an executable file" % firmware)
+    probe = subprocess.run(prefix + [firmware, "--help"], capture_output=True, text=True, timeout=60)
+    if probe.returncode != 0 and ("GLIDER_FIRMWARE" in os.environ or prefix):
+        # Another build asked for by name (the arm64 one in ./glider cross) must run, not be skipped.
+        fail(a.case, "%s --help exited %d: %s" % (" ".join(prefix + [firmware]), probe.returncode, probe.stderr[-500:]))
+    usage = probe.stdout
     if "--time-scale" not in usage:
         print("SKIP hil %s: %s has no --time-scale (the bench option of issue 12 item 3)" % (a.case, firmware))
         sys.exit(77)
     tmp = tempfile.mkdtemp(prefix="hil-")
     try:
-        sil_rows = run_sil(build, source, case, tmp) if case["sil"] is not None else None
+        sil_rows, sil_summary = run_sil(build, source, case, tmp) if case["sil"] is not None else (None, None)
         sil = events(sil_rows) if sil_rows else None
         if case["end"] == "complete":
             stop_s = sil["end_t"]
@@ -329,6 +355,7 @@ def main():
         if sil is not None:
             table = Table()
             compare(sil, hil, case, table, a.time_scale)
+            compare_drop_weight(sil_summary, err, case, table)
             print("SIL vs HIL, case %s (mission %s, vehicle %s, seed %d, time scale %g):" %
                   (a.case, case["mission"], VEHICLE, SEED, a.time_scale))
             table.print()
@@ -337,6 +364,11 @@ def main():
             if table.missing:
                 print("SKIP hil %s: all else within tolerance, but cannot compare %s" % (a.case, "; ".join(table.missing)))
                 sys.exit(77)
+        if sil is None:  # no table: the board's drop weight checked alone
+            said = re.findall(r"glider-firmware: drop weight: (.*)", err)
+            if not said or said[-1] != "not fitted (the board has no [gpio])":
+                fail(a.case, "the firmware said drop weight: %s (the plant's board has no [gpio])" %
+                     (said[-1] if said else "nothing"))
         if case["end"] == "abort":
             causes = case["cause"] if isinstance(case["cause"], tuple) else (case["cause"],)
             if hil["abort"] not in causes:

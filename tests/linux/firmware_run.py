@@ -9,7 +9,7 @@ loop jitter figures and every sensor's counters.
   firmware_run.py BUILD_DIR SOURCE_DIR
 
 GLIDER_FIRMWARE (a binary) and GLIDER_FIRMWARE_PREFIX (a command before it,
-e.g. "qemu-aarch64 -L /usr/aarch64-linux-gnu") run another
+e.g. "qemu-aarch64 -L /") run another
 build of the firmware the same way (the arm64 one, for its memory figures).
 """
 import os

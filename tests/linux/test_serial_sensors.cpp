@@ -40,12 +40,13 @@ class Writer {
 
 constexpr hal::Micros kStaleAfterUs = 3'000'000;
 
-// Reads once per "cycle" until `done` holds (socat forwards asynchronously)
-// or two seconds have passed.
+// Reads once per "cycle" until `done` holds (socat forwards asynchronously).
+// The 20 s bound only stops a hang: the wait ends on the event, so a loaded
+// machine (socat starved for seconds under a parallel ctest) cannot fail it.
 template <typename Sensor, typename Done>
 auto read_until(Sensor& sensor, Done&& done) {
   auto value = sensor.read();
-  for (int i = 0; i < 200 && !done(value); ++i) {
+  for (int i = 0; i < 2000 && !done(value); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     value = sensor.read();
   }
@@ -69,9 +70,13 @@ TEST(SerialSensors, GpsOverAPtyUsesOnlyGoodSentences) {
   const std::string good = nmea("GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,");
   const std::string bad_checksum = nmea("GPGGA,123519,5807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,", true);
   const std::string partial = "$GPGGA,123520,5907.0";
-  CHECK_TRUE(receiver.write("\x13\x7f garbage " + bad_checksum + partial));
+  const std::string noise = "\x13\x7f garbage " + bad_checksum + partial;
+  CHECK_TRUE(receiver.write(noise));
   CHECK_TRUE(receiver.write(good.substr(0, 20)));  // a sentence split across two reads
-  const auto first = read_until(gps, [](const hal::GpsFix&) { return false; });
+  // Wait until the driver has read every byte written so far (not a fixed time).
+  const auto first =
+      read_until(gps, [&](const hal::GpsFix&) { return gps.stream().port_stats().bytes >= noise.size() + 20; });
+  CHECK_EQUAL(noise.size() + 20, gps.stream().port_stats().bytes);
   CHECK_FALSE(first.valid);
   CHECK_TRUE(receiver.write(good.substr(20)));
   const hal::GpsFix fix = read_until(gps, [](const hal::GpsFix& f) { return f.valid; });
@@ -108,8 +113,9 @@ TEST(SerialSensors, ABabblingDeviceCannotHoldTheLoop) {
   hal_linux::SerialCompass compass(hal_linux::SerialPort::open(cable.glider_end(), 115200), clock, kStaleAfterUs);
   Writer sensor(cable.device_end());
   CHECK_TRUE(sensor.write(std::string(3 * hal_linux::NmeaSerialStream::kMaxBytesPerPoll, 'x')));
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  compass.read();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // lets socat forward most of it
+  // The first read that finds bytes must take no more than one poll's worth.
+  read_until(compass, [&](const hal::AttitudeSample&) { return compass.stream().port_stats().bytes > 0; });
   CHECK(compass.stream().port_stats().bytes <= hal_linux::NmeaSerialStream::kMaxBytesPerPoll);
   CHECK(compass.stream().port_stats().bytes > 0);
 }

@@ -77,6 +77,23 @@ def main():
         fail("aborted run: %s %s" % (s["result"], abort))
     if not (600.0 <= abort["time_s"] <= 602.0) or abort["surfaced_after_s"] is None:
         fail("aborted run: abort at %s, surfaced after %s" % (abort["time_s"], abort["surfaced_after_s"]))
+    # The drop weight through the shipped path: slocum_we01.toml's [fitted]
+    # drop_weight = true releases it on the abort; the same vehicle file with
+    # drop_weight = false (nothing else changed) keeps it.
+    if abort["drop_weight_released"] is not True:
+        fail("aborted run: slocum_we01 ([fitted] drop_weight = true): drop_weight_released %r"
+             % abort["drop_weight_released"])
+    with open(os.path.join(source, "boards/vehicles/slocum_we01.toml")) as f:
+        text = f.read()
+    if text.count("\ndrop_weight = true\n") != 1:
+        fail("boards/vehicles/slocum_we01.toml: no single '[fitted] drop_weight = true' line to turn off")
+    no_weight = os.path.join(out_dir, "we01_no_drop_weight.toml")
+    with open(no_weight, "w") as f:
+        f.write(text.replace("\ndrop_weight = true\n", "\ndrop_weight = false\n"))
+    s = run(sil, out_dir, "aborted_no_drop_weight", ["--mission", os.path.join(source, "boards/missions/demo_yo.toml"),
+                                                      "--vehicle", no_weight, "--fault", "leak@600s"], 3)
+    if s["abort"] is None or s["abort"]["cause"] != "leak" or s["abort"]["drop_weight_released"] is not False:
+        fail("aborted run, drop_weight = false: %s" % s["abort"])
 
     s = run(sil, out_dir, "stopped", demo + ["--max-sim-time-s", "300"], 3)
     if s["result"] != "stopped" or s["stop_reason"] != "max_sim_time" or s["sim_time_s"] > 302.0:

@@ -155,7 +155,13 @@ Replay replay_log(const std::string& source, const std::string& log_path, const 
   identified.rate_deadband_rad_s = d.configured.rate_deadband_rad_s;
   identified.heading_deadband_rad = diagnose::at(d.values, diagnose::HeadingEffect::kAutopilotDeadband);
   const std::string stem = out_dir + "/replay_" + std::filesystem::path(log_path).stem().string();
-  const model::Environment water = options.current_shear ? sheared_water(d.current_shear) : model::Environment{};
+  // The shear flown (and left out of the yaw the disturbance must explain): the replayed log's, or another's.
+  diagnose::ShearProfile shear_flown = d.current_shear;
+  if (!options.water_log.empty()) {
+    shear_flown = diagnose::diagnose_heading(nominal, slocum::load_flight_log({{options.water_log}, {}}, {}, &warnings))
+                      .current_shear;
+  }
+  const model::Environment water = options.current_shear ? sheared_water(shear_flown) : model::Environment{};
   // The comet logs' glider flies slower than the nominal vehicle at the
   // same pitch and pumped volume, and faster climbing than diving; the yaw
   // per fin is V fin_gain, and the time spent in each layer of a sheared
@@ -184,7 +190,8 @@ Replay replay_log(const std::string& source, const std::string& log_path, const 
     const diagnose::ShearProfile* shear = options.current_shear ? &d.current_shear : nullptr;
     const diagnose::UnexplainedYaw target =
         diagnose::unexplained_yaw(diagnose::prepare_heading_track(log, nominal), nominal, d.yaw.values, shear);
-    calibrate_disturbance(source, flown, water, identified, d, stem, options, target, shear);
+    calibrate_disturbance(source, flown, water, identified, d, stem, options, target,
+                          options.current_shear ? &shear_flown : nullptr);
   }
   r.yaw_disturbance_rad_s = flown.heading.yaw_disturbance_rad_s;
   r.yaw_disturbance_correlation_s = flown.heading.yaw_disturbance_correlation_s;

@@ -48,6 +48,11 @@ struct ReplayOptions {
   // The current's vertical shear across the heading the diagnosis
   // identified (heading_shear.hpp), flown as an east current profile.
   bool current_shear = true;
+  // The water (the current's shear across the heading) identified on this
+  // other log instead of the replayed one: the glider and its autopilot from
+  // one log flown in another log's water (tests/science_real). Empty: the
+  // replayed log's own.
+  std::string water_log;
   std::uint64_t seed = 1;                                             // the SIL runs' (compass noise, random yaw)
   double integration_step_s = model::GliderSimulator::kDefaultStepS;  // the plant's step (s): the SIL's
 };

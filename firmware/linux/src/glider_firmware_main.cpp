@@ -181,9 +181,13 @@ int main(int argc, char** argv) {
                                              ? fw::parse_slocum_list(fw::kDefaultSbdList, "built-in sbdlist.dat")
                                              : fw::read_slocum_list(sbdlist_path);
     if (!sbdlist.error.empty()) return tool.fail(cli::kError, sbdlist.error);
+    // Fitted from the board file: a [gpio] board gives the leak line and the drop weight's burn wire.
+    const bool drop_weight_fitted = prepared.config->aborts.drop_weight_fitted;
     if (check_mission) {
       std::fprintf(out, "glider-firmware: %s: mission accepted for board %s\n", mission_path.c_str(),
                    board.name.c_str());
+      std::fprintf(out, "glider-firmware: drop weight: %s\n",
+                   drop_weight_fitted ? "fitted, released by every abort" : "not fitted (the board has no [gpio])");
       return cli::kOk;
     }
     target::LinuxHalOptions options;
@@ -260,6 +264,16 @@ int main(int argc, char** argv) {
       const fw::SlocumDirectorySink* sink = nullptr;
       bool is_open(const char* name) const override { return sink != nullptr && sink->is_open(name); }
     } open_segments;
+    // The log's writer thread: a call waits for the rows up to its surfacing (the segment closed then).
+    struct WriterProgress final : fw::comms::LogProgress {
+      target::RingBufferLog* log = nullptr;
+      bool written_through(hal::Micros time_us) override {
+        if (log->written_through_us() >= time_us) return true;
+        log->wake_writer();
+        return false;
+      }
+    } writer_progress;
+    writer_progress.log = &linux_hal->log();
     std::optional<fw::comms::PosixFileAccess> outgoing_files, incoming_files;
     std::optional<fw::comms::ZmodemTransfer> zmodem;
     const std::string incoming_dir = slocum_dir + "/from-shore";
@@ -278,6 +292,7 @@ int main(int argc, char** argv) {
       comms.emplace(application.flight(), *modem, hal.gps, hal.log,
                     comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()),
                     zmodem ? &*zmodem : nullptr, &*reloader);
+      comms->set_log_progress(&writer_progress);
       log_forward.retarget(*comms);
       application.attach_comms(*comms);
     }
@@ -323,6 +338,10 @@ int main(int argc, char** argv) {
                                         static_cast<unsigned long long>(linux_hal->log().rows_lost_disk());
     std::fprintf(out, "glider-firmware: %s; phase %s, %d yos, abort cause %s, %llu log rows lost\n", why,
                  fw::to_string(flight.phase()), flight.yos_completed(), fw::to_string(flight.abort_cause()), log_lost);
+    std::fprintf(out, "glider-firmware: drop weight: %s\n",
+                 !drop_weight_fitted             ? "not fitted (the board has no [gpio])"
+                 : flight.drop_weight_released() ? "released"
+                                                 : "fitted, not released");
     bool slocum_ok = true;
     if (slocum) {  // the log's writer thread has stopped: the last rows are in
       slocum_ok = slocum->finish();

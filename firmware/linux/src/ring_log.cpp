@@ -136,6 +136,7 @@ void RingBufferLog::drain() {
     } else {
       rows_lost_disk_.fetch_add(1, std::memory_order_relaxed);  // cannot happen: a row fits kLogFieldsMaxChars
     }
+    written_through_us_.store(slot.record.time_us, std::memory_order_release);
     tail = (tail + 1) % kCapacity;
     tail_.store(tail, std::memory_order_release);
   }

@@ -15,6 +15,7 @@ constexpr std::size_t kReadPerCycle = 512;    // console bytes taken per cycle
 constexpr std::size_t kWritePerCycle = 1024;  // dialog bytes offered per cycle (the modem takes what fits)
 constexpr double kDefaultCallbackMin = 30.0;  // GliderDOS left idle: hang up, call again after this
 constexpr double kGliderDosIdleS = 600.0;     // ... once nobody has typed for this long
+constexpr double kLogWaitS = 30.0;            // a stuck log writer delays the call at most this long
 
 hal::Micros micros(double seconds) { return static_cast<hal::Micros>(std::llround(seconds * 1e6)); }
 
@@ -452,7 +453,9 @@ void CommsTask::step_dialog(hal::Micros now_us) {
   } else if (running && hal::to_seconds(now_us - last_print_us_) >= config_.printout_cycle_s && !transferring_) {
     print_dialog_now(now_us);
   }
-  if (!transferring_) flush_output();
+  // Also in the cycle a command starts a transfer: its answer (the echo, "Sending
+  // N file(s)") leaves before the engine's first byte, which comes next cycle.
+  flush_output();
 }
 
 void CommsTask::step_hangup(hal::Micros now_us) {
@@ -515,12 +518,17 @@ void CommsTask::run(hal::Micros now_us) {
         enter(CommsState::kGpsWait, now_us);
       }
       break;
-    case CommsState::kGpsWait:
-      if (fresh_fix_since(surfaced_us_) || seconds_in_state(now_us) >= config_.gps_wait_s) {
+    case CommsState::kGpsWait: {
+      // The segment closed at this surfacing is written (and closed) before
+      // the call, so the call's first `send` offers it; bounded.
+      const bool log_written = log_progress_ == nullptr || seconds_in_state(now_us) >= kLogWaitS ||
+                               log_progress_->written_through(surfaced_us_);
+      if (log_written && (fresh_fix_since(surfaced_us_) || seconds_in_state(now_us) >= config_.gps_wait_s)) {
         modem_start_us_ = now_us;
         enter(CommsState::kModemStart, now_us);
       }
       break;
+    }
     case CommsState::kModemStart:
     case CommsState::kSignal:
     case CommsState::kDial:

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/comms/zmodem_receiver.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <string_view>
@@ -35,13 +36,18 @@ Header Receiver::rinit() const {
 }
 
 void Receiver::send(const Header& header) {
-  if (encoder_.room() >= Encoder::kHeaderCost) encoder_.hex_header(header);
+  if (encoder_.room() < Encoder::kHeaderCost) return;
+  encoder_.hex_header(header);
+  if ((header.type == Frame::rpos || header.type == Frame::rinit) && asked_us_ < 0) asked_us_ = now_;
 }
 
 void Receiver::start(hal::Micros now) {
   status_ = Status::running;
   failure_ = Failure::none;
   state_ = State::wait_file;
+  now_ = now;
+  asked_us_ = -1;
+  round_trip_us_ = 0;
   result_count_ = 0;
   parser_.reset();
   progress(now);
@@ -51,6 +57,7 @@ void Receiver::start(hal::Micros now) {
 
 Status Receiver::step(hal::Micros now, std::size_t budget) {
   if (status_ != Status::running) return status_;
+  now_ = now;
   read_input(budget, [&](Parser::Event event, std::uint8_t byte) { on_event(event, byte, now); });
   if (status_ == Status::running && expired(now)) on_timeout(now);
   if (status_ == Status::running && state_ != State::finishing) stalled(now);
@@ -113,6 +120,10 @@ void Receiver::on_event(Parser::Event event, std::uint8_t byte, hal::Micros now)
 
 void Receiver::on_header(const Header& header, hal::Micros now) {
   data_for_ = header.type;
+  if (asked_us_ >= 0) {
+    round_trip_us_ = std::max(round_trip_us_, now - asked_us_);
+    asked_us_ = -1;
+  }
   switch (header.type) {
     case Frame::rqinit:
       close_partial();
@@ -158,9 +169,11 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
       o_count_ = 0;
       send(Header::flags(Frame::fin, 0));
       // Every file is settled: the sender's "OO" (which lrzsz's sz may not
-      // get out before it hangs up) is waited for a tenth of the timeout,
+      // get out before it hangs up) is waited for a tenth of the timeout, or
+      // three of the link's round trips if longer (Iridium: seconds; a stray
+      // "OO" would reach the console glued to the shore's next command),
       // a repeated ZFIN answered meanwhile.
-      deadline_ = now + options_.timeout_us / 10;
+      deadline_ = now + std::min(options_.timeout_us, std::max(options_.timeout_us / 10, 3 * round_trip_us_));
       return;
     case Frame::nak:
       // The sender saw our last header garbled (lrzsz's sz answers so, then

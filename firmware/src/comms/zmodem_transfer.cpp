@@ -15,6 +15,10 @@ ZmodemTransfer::ZmodemTransfer(const char* data_dir, FileAccess& outgoing, const
     : outgoing_(outgoing), incoming_(incoming), open_files_(open_files), options_(options) {
   std::snprintf(data_dir_.data(), data_dir_.size(), "%s", data_dir);
   std::snprintf(incoming_dir_.data(), incoming_dir_.size(), "%s", incoming_dir);
+  // Start-up: the folder sent files move to (none: they stay and are offered again).
+  std::array<char, kMaxPath + 16> sent{};
+  std::snprintf(sent.data(), sent.size(), "%s/%s", data_dir_.data(), kSentFolder);
+  ::mkdir(sent.data(), 0755);
 }
 
 void ZmodemTransfer::list_files() {
@@ -97,6 +101,7 @@ TransferProgress ZmodemTransfer::finish(zmodem::Status status) {
       const zmodem::Sender::Outcome o = sender_->outcome(i);
       if (o == zmodem::Sender::Outcome::sent || o == zmodem::Sender::Outcome::skipped) {
         ++p.files_done;
+        move_to_sent(sender_->file_name(i));
       } else {
         ++p.files_failed;
       }
@@ -126,6 +131,18 @@ TransferProgress ZmodemTransfer::finish(zmodem::Status status) {
   }
   mode_ = Mode::kIdle;
   return p;
+}
+
+void ZmodemTransfer::move_to_sent(std::string_view name) {
+  // The shore has it: into sentlogs/ (a rename in one folder tree: atomic,
+  // bounded; a name is at most kMaxFileName characters).
+  std::array<char, kMaxFileName + 16> to{};
+  const int n = std::snprintf(to.data(), to.size(), "%s/%.*s", kSentFolder, static_cast<int>(name.size()), name.data());
+  if (n > 0 && static_cast<std::size_t>(n) < to.size() && outgoing_.rename(name, std::string_view(to.data()))) {
+    ++moved_;
+  } else {
+    ++move_failures_;
+  }
 }
 
 void ZmodemTransfer::cancel() {

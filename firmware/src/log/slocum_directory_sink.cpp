@@ -140,23 +140,26 @@ bool SlocumDirectorySink::close(int slot) {
 SlocumMissionNumbers next_slocum_mission(const std::string& directory, const std::string& vehicle,
                                          hal::Micros start_utc_us) {
   SlocumMissionNumbers next;
-  DIR* dir = ::opendir(directory.c_str());
-  if (dir == nullptr) return next;
   const UtcDate date = utc_date(start_utc_us);
   char day_prefix[96];
   std::snprintf(day_prefix, sizeof day_prefix, "%s-%04d-%03d-", vehicle.c_str(), date.year, date.day_of_year);
   const std::string vehicle_prefix = vehicle + "-";
-  while (const dirent* entry = ::readdir(dir)) {
-    const std::string_view name(entry->d_name);
-    if (!name.starts_with(vehicle_prefix)) continue;
-    if (name.starts_with(day_prefix)) {
-      const int mission = std::atoi(name.substr(std::strlen(day_prefix)).data());
-      if (mission + 1 > next.mission_of_day) next.mission_of_day = mission + 1;
+  // The folder, and sentlogs/ where the comms move the files the shore has.
+  for (const std::string& folder : {directory, directory + "/sentlogs"}) {
+    DIR* dir = ::opendir(folder.c_str());
+    if (dir == nullptr) continue;
+    while (const dirent* entry = ::readdir(dir)) {
+      const std::string_view name(entry->d_name);
+      if (!name.starts_with(vehicle_prefix)) continue;
+      if (name.starts_with(day_prefix)) {
+        const int mission = std::atoi(name.substr(std::strlen(day_prefix)).data());
+        if (mission + 1 > next.mission_of_day) next.mission_of_day = mission + 1;
+      }
+      const long number = eight_three_mission(folder + "/" + std::string(name));
+      if (number + 1 > next.mission_number) next.mission_number = static_cast<int>(number + 1);
     }
-    const long number = eight_three_mission(directory + "/" + std::string(name));
-    if (number + 1 > next.mission_number) next.mission_number = static_cast<int>(number + 1);
+    ::closedir(dir);
   }
-  ::closedir(dir);
   return next;
 }
 

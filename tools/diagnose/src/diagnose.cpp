@@ -4,7 +4,6 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -15,16 +14,23 @@
 #include <stdexcept>
 #include <unsupported/Eigen/NonLinearOptimization>
 
-#include "glider/diagnose/delay_search.hpp"
 #include "glider/diagnose/dynamic_flight_model.hpp"
 #include "glider/diagnose/forward_difference.hpp"
 #include "glider/diagnose/speed_reference.hpp"
 #include "glider/diagnose/stall_branch.hpp"
 #include "glider/diagnose/thin.hpp"
+#include "glider/fitting_core/delay_search.hpp"
+#include "glider/fitting_core/effective_samples.hpp"
+#include "glider/fitting_core/identifiability.hpp"
+#include "glider/fitting_core/intervals.hpp"
+#include "glider/fitting_core/selection.hpp"
+#include "glider/fitting_core/stepwise.hpp"
 #include "glider/units.hpp"
 
 namespace glider::diagnose {
 namespace {
+
+using namespace fitting_core;  // NOLINT(google-build-using-namespace): the one fitting core
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // A sample the model cannot fly (no steady glide) counts as this error: an
@@ -115,19 +121,6 @@ Parameters unpack(const Candidate& c, const Layout& layout, const Eigen::VectorX
   return out;
 }
 
-// Samples of a log are serially correlated (1-4 s apart on minute-long
-// glides): the number of independent ones, n (1 - r1) / (1 + r1), from the
-// lag-1 autocorrelation r1 of the deviations from `mean` (clamped to 0..0.99).
-double effective_sample_count(std::span<const double> x, double mean) {
-  double var = 0.0, lag1 = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    var += (x[i] - mean) * (x[i] - mean);
-    if (i > 0) lag1 += (x[i] - mean) * (x[i - 1] - mean);
-  }
-  const double rho1 = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
-  return static_cast<double>(x.size()) * (1.0 - rho1) / (1.0 + rho1);
-}
-
 // Residuals (model - measured) of a set of samples.
 void residuals(const SampleSet& set, const Parameters& x, bool ctd, std::span<const std::size_t> samples,
                std::vector<double>& out) {
@@ -190,30 +183,15 @@ struct FitFunctor : LeastSquaresFunctor {
 Eigen::MatrixXd parameter_covariance(const SampleSet& set, std::span<const std::size_t> train,
                                      const Eigen::MatrixXd& jac, const std::vector<double>& r,
                                      DiagnoseOptions::Intervals intervals, double& t_over_normal) {
-  const auto k = static_cast<double>(jac.cols());
-  const double n = static_cast<double>(r.size());
-  const Eigen::MatrixXd bread = (jac.transpose() * jac).completeOrthogonalDecomposition().pseudoInverse();
   t_over_normal = 1.0;
-  if (intervals == DiagnoseOptions::Intervals::kLag1) {
-    double rss = 0.0;
-    for (double v : r) rss += v * v;
-    const double n_eff = std::max(effective_sample_count(r, 0.0), k + 2.0);
-    return bread * (rss / (n_eff - k));  // RSS / (n_eff - k) = s^2 n / n_eff: inflated for correlation
+  if (intervals == DiagnoseOptions::Intervals::kLag1) return noise_covariance(jac, r);
+  std::vector<long> cluster;  // a glide (a dive, a climb or a turn of one yo) or a yo
+  cluster.reserve(train.size());
+  for (std::size_t sample : train) {
+    const long glide = intervals == DiagnoseOptions::Intervals::kYos ? 0 : static_cast<long>(set.phase[sample]);
+    cluster.push_back(8L * set.yo[sample] + glide);
   }
-  std::map<std::pair<int, int>, Eigen::VectorXd> score;  // per cluster: J_g' r_g
-  for (std::size_t i = 0; i < train.size(); ++i) {
-    const std::size_t sample = train[i];
-    const int glide = intervals == DiagnoseOptions::Intervals::kYos ? 0 : static_cast<int>(set.phase[sample]);
-    auto [it, added] = score.try_emplace({set.yo[sample], glide}, Eigen::VectorXd::Zero(jac.cols()));
-    it->second += jac.row(static_cast<Eigen::Index>(i)).transpose() * r[i];
-  }
-  const double g = static_cast<double>(score.size());
-  if (g < 2.0) return bread * std::numeric_limits<double>::infinity();  // one cluster: no spread to see
-  Eigen::MatrixXd meat = Eigen::MatrixXd::Zero(jac.cols(), jac.cols());
-  for (const auto& [cluster, s] : score) meat += s * s.transpose();
-  const double small_sample = g / (g - 1.0) * (n - 1.0) / std::max(1.0, n - k);
-  t_over_normal = boost::math::quantile(boost::math::students_t_distribution<double>(g - 1.0), 0.975) / 1.96;
-  return bread * meat * bread * small_sample;
+  return cluster_covariance(jac, r, cluster, t_over_normal);
 }
 
 struct FitResult {
@@ -227,6 +205,7 @@ struct FitResult {
   double train_rss = 0.0;
   double heldout_rms = 0.0;
   double bic = 0.0;
+  Score score() const { return {heldout_rms, bic}; }
 };
 
 // The grid a lag is searched on, 0 to its plausible maximum: the depth lag
@@ -294,7 +273,7 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   residuals_of_both(set, result.parameters, candidate.ctd_density, train, heldout, result.train_residuals, h);
   const double n = static_cast<double>(result.train_residuals.size());
   for (double v : result.train_residuals) result.train_rss += v * v;
-  result.bic = n * std::log(result.train_rss / n) + static_cast<double>(k) * std::log(n);
+  result.bic = bic(result.train_rss, n, static_cast<double>(k));
   result.heldout_rms = rms_of(h);
   return result;
 }
@@ -322,7 +301,7 @@ double lag_profile_sigma(const SampleSet& set, const Candidate& candidate, std::
   const double n_eff = std::max(effective_sample_count(f.train_residuals, 0.0), static_cast<double>(k) + 2.0);
   const Interval profile = at_least_resolution(profile_interval(grid, rss, value, f.train_rss, n_eff, k), value,
                                                resolution_at(grid, value), 0.0);
-  return std::max(value - profile.low, profile.high - value) / 1.96;
+  return std::max(value - profile.low, profile.high - value) / kZ95;
 }
 
 // Parameter uncertainty of `f` (a fit of `candidate`) from the Jacobian at
@@ -356,7 +335,7 @@ void add_intervals(const SampleSet& set, const Candidate& candidate, std::span<c
       var_value = cov(o, o);
     }
     double sigma = std::sqrt(std::max(var_value, 0.0)) * info(e).scale * t_over_normal;
-    if (is_lag(e) && jacobian_failed(1.96 * sigma, info(e).scale)) {
+    if (is_lag(e) && jacobian_failed(kZ95 * sigma, info(e).scale)) {
       sigma = lag_profile_sigma(set, candidate, train, f, j, k);
     }
     f.sigma.push_back(sigma);
@@ -425,13 +404,12 @@ void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std:
   d.baseline.rms_battpos_in = rms_of(all_differences);
   const double value = -mean;  // nose-heavy = the servo holds the battery aft of the model's
   // As for the depth rate: relative and absolute (0.01 in: the slide's resolution) improvements.
-  if (std::abs(value) > 1.96 * sigma && after_rms < before_rms * (1.0 - options.min_heldout_improvement) &&
-      after_rms < before_rms - 0.01) {
+  if (std::abs(value) > kZ95 * sigma && improves_heldout(after_rms, before_rms, {options.margins.relative, 0.01})) {
     Finding f;
     f.effect = Effect::kPitchTrimOffset;
     f.value = value;
-    f.ci95_low = value - 1.96 * sigma;
-    f.ci95_high = value + 1.96 * sigma;
+    f.ci95_low = value - kZ95 * sigma;
+    f.ci95_high = value + kZ95 * sigma;
     f.heldout_rms_m_s = d.findings.empty() ? d.baseline.heldout_rms_m_s : d.findings.back().heldout_rms_m_s;
     f.gain = d.findings.empty() ? 0.0 : d.findings.back().gain;
     f.heldout_rms_battpos_in = after_rms;
@@ -582,85 +560,6 @@ std::optional<SpeedScore> score_speed(const SampleSet& set, std::span<const std:
   model.predict_speed(extended.values, ctd, measured_heldout, u);
   score.heldout_extended_rms_m_s = rms_difference(u, truth, measured_heldout, score.heldout_samples);
   return score;
-}
-
-Candidate without(Candidate c, Effect e) {
-  if (e == Effect::kWaterDensity) {
-    c.ctd_density = false;
-  } else {
-    std::erase(c.fitted, e);
-  }
-  return c;
-}
-
-// Does the final joint fit put the effect's value outside its nominal, with
-// 95 % confidence, and inside the plausible range?
-bool interval_excludes_nominal(const Candidate& c, const FitResult& f, Effect e) {
-  if (e == Effect::kWaterDensity) return true;  // measured, not fitted
-  const auto it = std::find(c.fitted.begin(), c.fitted.end(), e);
-  const std::size_t j = static_cast<std::size_t>(it - c.fitted.begin());
-  const double value = f.parameters.values[static_cast<std::size_t>(e)];
-  return std::abs(value - info(e).nominal) > 1.96 * f.sigma[j] && plausible(e, value);
-}
-
-// Forward selection is greedy: an effect taken early (a vertical-velocity
-// profile standing in for a buoyancy offset before the drag is known) can
-// become redundant once the others are in. Backward step: every effect must
-// still earn its place in the final joint fit - removing it must cost the
-// held-out error the same margins that let it in, raise the BIC, and its
-// interval must exclude the nominal. The weakest that does not is removed
-// and the rest refitted, until all do. Then the findings are ranked by what
-// each one is worth (the held-out error without it, largest first), and each
-// gets the held-out error and gain of the model with it and those ranked
-// above it.
-void backward_and_rank(const SampleSet& set, std::span<const std::size_t> train, std::span<const std::size_t> heldout,
-                       const DiagnoseOptions& options, Candidate& current, FitResult& current_fit, Diagnosis& d) {
-  std::vector<std::pair<Effect, double>> worth;  // held-out RMS without the effect
-  for (;;) {
-    worth.clear();
-    add_intervals(set, current, train, options.intervals, current_fit);
-    std::optional<std::pair<Effect, FitResult>> weakest;
-    for (const Finding& finding : d.findings) {
-      const Effect e = finding.effect;
-      FitResult reduced = fit_reported(set, without(current, e), train, heldout, options);
-      worth.emplace_back(e, reduced.heldout_rms);
-      // The CTD's density is measured, not fitted: once it has earned its
-      // way in it stays (a fitted effect of the same shape - a mean vertical
-      // velocity - must not push out what the water was measured to be).
-      const bool earns = e == Effect::kWaterDensity ||
-                         (current_fit.heldout_rms < reduced.heldout_rms * (1.0 - options.min_heldout_improvement) &&
-                          current_fit.heldout_rms < reduced.heldout_rms - options.min_heldout_improvement_m_s &&
-                          current_fit.bic < reduced.bic && interval_excludes_nominal(current, current_fit, e));
-      if (!earns && (!weakest || reduced.heldout_rms < weakest->second.heldout_rms)) {
-        weakest.emplace(e, std::move(reduced));
-      }
-    }
-    if (!weakest) break;
-    current = without(current, weakest->first);
-    current_fit = std::move(weakest->second);
-    std::erase_if(d.findings, [&](const Finding& f) { return f.effect == weakest->first; });
-  }
-  auto worth_of = [&](Effect e) {
-    for (const auto& [effect, rms] : worth) {
-      if (effect == e) return rms;
-    }
-    return 0.0;
-  };
-  std::stable_sort(d.findings.begin(), d.findings.end(),
-                   [&](const Finding& a, const Finding& b) { return worth_of(a.effect) > worth_of(b.effect); });
-  Candidate cumulative;
-  for (std::size_t k = 0; k < d.findings.size(); ++k) {
-    Finding& finding = d.findings[k];
-    if (finding.effect == Effect::kWaterDensity) {
-      cumulative.ctd_density = true;
-    } else {
-      cumulative.fitted.push_back(finding.effect);
-    }
-    const double rms = k + 1 == d.findings.size() ? current_fit.heldout_rms
-                                                  : fit_reported(set, cumulative, train, heldout, options).heldout_rms;
-    finding.heldout_rms_m_s = rms;
-    finding.gain = 1.0 - rms / d.baseline.heldout_rms_m_s;
-  }
 }
 
 // A finding before its value is known (that comes from the final joint fit).
@@ -824,94 +723,99 @@ void fit_requested(const SampleSet& set, const Split& s, const DiagnoseOptions& 
   for (Effect e : options.fit_only) d.findings.push_back(new_finding(e, current_fit.heldout_rms, d));
 }
 
-// Forward selection: of the candidates with a plausible value, the one that
-// cuts the held-out error most enters if it cuts it by the margins and lowers
-// the BIC.
-// The measured density is a known input, not a fitted number: where the log
-// has a CTD it is tried alone at the start of every round until it is taken,
-// so that a fitted effect of the same shape (a negative hull compressibility
-// in stratified water) cannot take its place.
-void forward_select(const SampleSet& set, const Split& s, const DiagnoseOptions& options, std::vector<Effect> remaining,
-                    Candidate& current, FitResult& current_fit, Diagnosis& d) {
-  bool ctd_declined_this_round = false;
-  while (!remaining.empty()) {
-    const auto ctd = std::find(remaining.begin(), remaining.end(), Effect::kWaterDensity);
-    const bool ctd_alone = ctd != remaining.end() && !ctd_declined_this_round;
-    std::optional<std::pair<std::size_t, FitResult>> best;
-    Candidate best_candidate;
-    for (std::size_t c = 0; c < remaining.size(); ++c) {
-      const bool is_ctd = remaining[c] == Effect::kWaterDensity;
-      if (ctd_alone != is_ctd) continue;
-      Candidate trial = current;
-      if (is_ctd) {
-        trial.ctd_density = true;
-      } else {
-        trial.fitted.push_back(remaining[c]);
-      }
-      FitResult f = fit_reported(set, trial, s.train, s.heldout, options);
-      // An implausible value is another effect's stand-in: the next best competes instead.
-      if (!is_ctd && !plausible(remaining[c], f.parameters.values[static_cast<std::size_t>(remaining[c])])) continue;
-      if (!best || f.heldout_rms < best->second.heldout_rms) {
-        best = std::make_pair(c, f);
-        best_candidate = trial;
-      }
-    }
-    if (!best) break;
-    const Effect effect = remaining[best->first];
-    const FitResult& f = best->second;
-    const bool helps = f.heldout_rms < current_fit.heldout_rms * (1.0 - options.min_heldout_improvement) &&
-                       f.heldout_rms < current_fit.heldout_rms - options.min_heldout_improvement_m_s;
-    const bool bic_better = f.bic < current_fit.bic;
-    // Its interval is judged in the final joint fit (backward step):
-    // while another effect is still missing, the residuals are serially
-    // correlated and inflate every interval. (Only plausible values compete.)
-    if (!(helps && bic_better)) {
-      if (!ctd_alone) break;
-      ctd_declined_this_round = true;  // not yet: the other effects get their turn
-      continue;
-    }
-    ctd_declined_this_round = false;
-    current = best_candidate;
-    current_fit = f;
-    d.findings.push_back(new_finding(effect, f.heldout_rms, d));
-    remaining.erase(remaining.begin() + static_cast<long>(best->first));
+// The vertical plane's side of the fitting core's selection
+// (fitting_core/stepwise.hpp): the fit of each set of effects, once.
+class VerticalSelection : public SelectionProblem {
+ public:
+  VerticalSelection(const SampleSet& set, const Split& split, const DiagnoseOptions& options, FitResult nominal)
+      : set_(set), split_(split), options_(options) {
+    fits_.emplace(EffectSet{}, std::move(nominal));
   }
-}
+  static Candidate candidate(const EffectSet& effects) {
+    Candidate c;
+    for (int id : effects) {
+      const auto e = static_cast<Effect>(id);
+      if (e == Effect::kWaterDensity) {
+        c.ctd_density = true;
+      } else {
+        c.fitted.push_back(e);
+      }
+    }
+    return c;
+  }
+  FitResult& fitted(const EffectSet& effects) {
+    auto it = fits_.find(effects);
+    if (it == fits_.end()) {
+      it = fits_.emplace(effects, fit_reported(set_, candidate(effects), split_.train, split_.heldout, options_)).first;
+    }
+    return it->second;
+  }
+  Score score(const EffectSet& effects) override { return fitted(effects).score(); }
+  bool plausible(const EffectSet& effects, int effect) override {
+    const auto e = static_cast<Effect>(effect);
+    return e == Effect::kWaterDensity ||
+           diagnose::plausible(e, fitted(effects).parameters.values[static_cast<std::size_t>(effect)]);
+  }
+  // The 95 % interval from the joint fit (its Jacobian, once) excludes the nominal.
+  bool significant(const EffectSet& effects, int effect) override {
+    const auto e = static_cast<Effect>(effect);
+    if (e == Effect::kWaterDensity) return true;  // measured, not fitted
+    const Candidate c = candidate(effects);
+    FitResult& f = fitted(effects);
+    add_intervals(set_, c, split_.train, options_.intervals, f);
+    const auto j = static_cast<std::size_t>(std::find(c.fitted.begin(), c.fitted.end(), e) - c.fitted.begin());
+    return std::abs(f.parameters.values[static_cast<std::size_t>(effect)] - info(e).nominal) > kZ95 * f.sigma[j];
+  }
 
-// Forward selection, then the backward step. A vertical-velocity depth profile
-// (a parameter per 10 m bin) can stand in for any buoyancy that changes with
-// depth, and the greedy forward step takes it first when no single physical
-// effect explains as much (a hull compressibility comes with a buoyancy
-// offset: each alone explains less than the profile, the two together more).
-// So a selection that took the profile must beat the best selection without
-// it by the margins any effect must (held-out error and BIC); else that
-// selection stands (bench_diagnose_coverage: buoyancy_offset +
-// hull_compressibility was read as a profile in 46 % of the logs).
+ private:
+  const SampleSet& set_;
+  const Split& split_;
+  const DiagnoseOptions& options_;
+  std::map<EffectSet, FitResult> fits_;
+};
+
+// The fitting core's forward-then-backward selection (fitting_core/stepwise.hpp;
+// the CTD's density a measured input), then the findings ranked by worth,
+// each with the held-out error and gain of the model with it and those
+// ranked above it. A vertical-velocity depth profile (a parameter per 10 m
+// bin) can stand in for any buoyancy that changes with depth, and the
+// greedy forward step takes it first when no single physical effect
+// explains as much (a hull compressibility comes with a buoyancy offset:
+// each alone explains less than the profile, the two together more). So a
+// selection whose forward step took the profile must beat the best
+// selection without it by the margins any effect must (held-out error and
+// BIC); else that selection stands (bench_diagnose_coverage: buoyancy_offset
+// + hull_compressibility was read as a profile in 46 % of the logs). Taken,
+// the profile may also have kept out an effect and then left in the
+// backward step: the selection without it is then the one to compare with.
 void select_effects(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                     const std::vector<Effect>& pool, Candidate& current, FitResult& current_fit, Diagnosis& d) {
-  Candidate without_profile = current;
-  FitResult without_profile_fit = current_fit;
-  Diagnosis without_profile_d = d;
-  forward_select(set, s, options, pool, current, current_fit, d);
-  const auto profile = Effect::kVerticalWaterVelocity;
-  const bool took_profile = std::find(current.fitted.begin(), current.fitted.end(), profile) != current.fitted.end();
-  backward_and_rank(set, s.train, s.heldout, options, current, current_fit, d);
-  // Taken, the profile may also have kept out an effect and then left in the
-  // backward step (its mean, the value judged, near zero): the selection
-  // without it is then the one to compare with, too.
-  if (!took_profile) return;
-  std::vector<Effect> physical = pool;
-  std::erase(physical, profile);
-  forward_select(set, s, options, physical, without_profile, without_profile_fit, without_profile_d);
-  backward_and_rank(set, s.train, s.heldout, options, without_profile, without_profile_fit, without_profile_d);
-  const double other = without_profile_fit.heldout_rms;
-  const bool earns = current_fit.heldout_rms < other * (1.0 - options.min_heldout_improvement) &&
-                     current_fit.heldout_rms < other - options.min_heldout_improvement_m_s &&
-                     current_fit.bic < without_profile_fit.bic;
-  if (earns) return;
-  current = std::move(without_profile);
-  current_fit = std::move(without_profile_fit);
-  d = std::move(without_profile_d);
+  VerticalSelection problem(set, s, options, current_fit);
+  const SelectionRules rules{options.margins, {static_cast<int>(Effect::kWaterDensity)}};
+  std::vector<int> candidates;
+  for (Effect e : pool) candidates.push_back(static_cast<int>(e));
+  const EffectSet forward = forward_select(problem, {}, candidates, rules);
+  std::vector<double> worth;
+  EffectSet chosen = backward_eliminate(problem, forward, rules, worth);
+  const auto profile = static_cast<int>(Effect::kVerticalWaterVelocity);
+  if (std::find(forward.begin(), forward.end(), profile) != forward.end()) {
+    std::vector<double> other_worth;
+    const EffectSet other = backward_eliminate(
+        problem, forward_select(problem, {}, without(candidates, profile), rules), rules, other_worth);
+    if (!beats(problem.score(chosen), problem.score(other), options.margins)) {
+      chosen = other;
+      worth = other_worth;
+    }
+  }
+  current = VerticalSelection::candidate(chosen);
+  current_fit = problem.fitted(chosen);
+  const EffectSet ranked = rank_by_worth(chosen, worth);
+  EffectSet so_far;
+  for (int e : ranked) {
+    so_far.push_back(e);
+    const double rms = so_far.size() == ranked.size() ? current_fit.heldout_rms : problem.score(so_far).heldout_rms;
+    d.findings.push_back(new_finding(static_cast<Effect>(e), rms, d));
+  }
 }
 
 // Every finding's value and 95 % interval from the final joint fit, and the
@@ -927,12 +831,12 @@ void report_final_values(const DepthRateModel& model, const Candidate& current, 
     const std::size_t j = static_cast<std::size_t>(it - current.fitted.begin());
     const std::size_t e = static_cast<std::size_t>(finding.effect);
     finding.value = current_fit.parameters.values[e];
-    finding.ci95_low = finding.value - 1.96 * current_fit.sigma[j];
-    finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
+    finding.ci95_low = finding.value - kZ95 * current_fit.sigma[j];
+    finding.ci95_high = finding.value + kZ95 * current_fit.sigma[j];
     if (is_lag(finding.effect)) {  // fitted as |value|: report the lag and its interval as such
       finding.value = std::abs(finding.value);
-      finding.ci95_low = std::max(0.0, finding.value - 1.96 * current_fit.sigma[j]);
-      finding.ci95_high = finding.value + 1.96 * current_fit.sigma[j];
+      finding.ci95_low = std::max(0.0, finding.value - kZ95 * current_fit.sigma[j]);
+      finding.ci95_high = finding.value + kZ95 * current_fit.sigma[j];
       current_fit.parameters.values[e] = finding.value;
     }
   }
@@ -1012,26 +916,17 @@ void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseO
     for (std::size_t k = 0, c = 0; k < chosen.size(); ++k) {
       if (k != j) others.col(static_cast<Eigen::Index>(c++)) = chosen[k];
     }
-    const Eigen::MatrixXd q =
-        others.cols() > 0
-            ? Eigen::MatrixXd(others.householderQr().householderQ() * Eigen::MatrixXd::Identity(n, others.cols()))
-            : Eigen::MatrixXd(n, 0);
-    auto residual_of = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return v - q * (q.transpose() * v); };
-    const Eigen::VectorXd a = residual_of(chosen[j]);
+    const Complement complement(others);
+    const Eigen::VectorXd a = complement.of(chosen[j]);
     for (Effect alternative : pool) {
       if (alternative == Effect::kWaterDensity) continue;  // the CTD's, not a fitted number
       if (std::find(current.fitted.begin(), current.fitted.end(), alternative) != current.fitted.end()) continue;
-      const Eigen::VectorXd b = residual_of(signature(alternative));
-      const double norms = a.norm() * b.norm();
-      if (!(norms > 0.0)) continue;
-      const double correlation = std::abs(a.dot(b)) / norms;
+      const double correlation = absolute_correlation(a, complement.of(signature(alternative)));
       if (!(correlation >= options.ambiguity_screen_correlation)) continue;
       Candidate swapped = current;
       swapped.fitted[j] = alternative;
       FitResult f = fit_reported(set, swapped, s.train, s.heldout, options);
       const double value = f.parameters.values[static_cast<std::size_t>(alternative)];
-      const double margin =
-          std::max(current_fit.heldout_rms * options.min_heldout_improvement, options.min_heldout_improvement_m_s);
       Ambiguity amb;
       amb.chosen = effect;
       amb.alternative = alternative;
@@ -1040,14 +935,14 @@ void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseO
       amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
       amb.alternative_heldout_rms_m_s = f.heldout_rms;
       // Within the selection's own margins the held-out yos cannot tell them apart.
-      amb.ambiguous = f.heldout_rms <= current_fit.heldout_rms + margin;
+      amb.ambiguous = indistinguishable(f.heldout_rms, current_fit.heldout_rms, options.margins);
       // An implausible alternative is still stated: what rules it out is then
       // the prior (flight_model.cpp's plausible ranges), not this log.
       amb.ruled_out_by_prior = !plausible(alternative, value);
       if (amb.ambiguous) {  // the second reading, with its interval (a Jacobian: only where reported)
         add_intervals(set, swapped, s.train, options.intervals, f);
-        amb.alternative_ci95_low = amb.alternative_value - 1.96 * f.sigma[j];
-        amb.alternative_ci95_high = amb.alternative_value + 1.96 * f.sigma[j];
+        amb.alternative_ci95_low = amb.alternative_value - kZ95 * f.sigma[j];
+        amb.alternative_ci95_high = amb.alternative_value + kZ95 * f.sigma[j];
         if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
         amb.separate = what_separates(effect, alternative);
       }

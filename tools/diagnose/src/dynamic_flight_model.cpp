@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <Eigen/Dense>
@@ -22,7 +23,12 @@ double lerp(double a, double b, double f) { return a + (b - a) * f; }
 }  // namespace
 
 DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s)
-    : nominal_(nominal), track_(track), max_step_s_(max_step_s), relative_flights_(track.run_first.size()) {}
+    : nominal_(nominal),
+      track_(track),
+      max_step_s_(max_step_s),
+      relative_flights_(track.run_first.size()),
+      start_states_(track.run_first.size()),
+      next_start_(track.run_first.size(), 0) {}
 
 void DynamicFlightModel::predict(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                                  std::vector<double>& out, const VerticalVelocityProfile* profile) const {
@@ -37,6 +43,46 @@ void DynamicFlightModel::predict_speed(const EffectValues& x, bool use_ctd, std:
 void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                              std::vector<double>* depth_rate, std::vector<double>* speed,
                              const VerticalVelocityProfile* profile) const {
+  const bool memo = samples.size() <= kFlightMemoSamples;
+  // Bit for bit (-0.0 is not +0.0 here): the same question, so the same answer.
+  auto same_bits = [](std::span<const double> a, std::span<const double> b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
+  };
+  auto same_question = [&](const FlightAnswer& a) {
+    return same_bits(a.values, x) && a.use_ctd == use_ctd && a.depth_rate == (depth_rate != nullptr) &&
+           a.speed == (speed != nullptr) && a.has_profile == (profile != nullptr) &&
+           (profile == nullptr || (same_bits(std::span(&a.profile.bin_m, 1), std::span(&profile->bin_m, 1)) &&
+                                   same_bits(std::span(&a.profile.first_m, 1), std::span(&profile->first_m, 1)) &&
+                                   same_bits(a.profile.w_m_s, profile->w_m_s))) &&
+           std::equal(a.samples.begin(), a.samples.end(), samples.begin(), samples.end());
+  };
+  if (memo) {
+    for (const FlightAnswer& a : answers_) {
+      if (!same_question(a)) continue;
+      if (depth_rate != nullptr) *depth_rate = a.depth_rate_out;
+      if (speed != nullptr) *speed = a.speed_out;
+      return;
+    }
+  }
+  fly_uncached(x, use_ctd, samples, depth_rate, speed, profile);
+  if (!memo) return;
+  if (answers_.size() < kFlightMemo) answers_.emplace_back();
+  FlightAnswer& a = answers_[next_answer_];
+  next_answer_ = (next_answer_ + 1) % kFlightMemo;
+  a.values = x;
+  a.use_ctd = use_ctd;
+  a.depth_rate = depth_rate != nullptr;
+  a.speed = speed != nullptr;
+  a.has_profile = profile != nullptr;
+  if (profile != nullptr) a.profile = *profile;
+  a.samples.assign(samples.begin(), samples.end());
+  if (depth_rate != nullptr) a.depth_rate_out = *depth_rate;
+  if (speed != nullptr) a.speed_out = *speed;
+}
+
+void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
+                                      std::vector<double>* depth_rate, std::vector<double>* speed,
+                                      const VerticalVelocityProfile* profile) const {
   if (depth_rate != nullptr) depth_rate->assign(samples.size(), kNaN);
   if (speed != nullptr) speed->assign(samples.size(), kNaN);
   if (!flyable(x)) return;  // no negative drag or lift
@@ -96,6 +142,34 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     // velocity moves the glider without changing its flight through the
     // water: ground_depth adds it (the start state aside, which the spin-up
     // fits on the depth over ground, a flight does not depend on it).
+    // The stages of the spin-up's intervals (three per RK4 step, and the
+    // interval's end for the speed): they depend on the values and the log,
+    // not on the start state, so the spin-up fit's many flights share them
+    // (computed by the same expressions: the same bits).
+    using Stage = model::PrescribedPitchDynamics::Stage;
+    std::vector<Stage>& plan = plan_;
+    std::vector<std::size_t>& plan_at = plan_at_;  // interval first + k starts at plan[plan_at[k]]
+    plan.clear();
+    plan_at.clear();
+    auto ensure_plan = [&](std::size_t last) {
+      double lagged = in0.pumped_volume_m3;
+      for (std::size_t i = first; i < last; ++i) {
+        plan_at.push_back(plan.size());
+        const double dt = t.time_s[i + 1] - t.time_s[i];
+        const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
+        for (int s = 0; s < steps; ++s) {
+          const double fa = static_cast<double>(s) / steps;
+          const double fb = (s + 0.5) / steps;
+          const double fc = static_cast<double>(s + 1) / steps;
+          const auto c = inputs(i, fc, lagged, fa);
+          plan.push_back(dynamics.stage(inputs(i, fa, lagged, fa)));
+          plan.push_back(dynamics.stage(inputs(i, fb, lagged, fa)));
+          plan.push_back(dynamics.stage(c));
+          lagged = c.pumped_volume_m3;
+        }
+        plan.push_back(dynamics.stage(inputs(i, 1.0, lagged, 1.0)));
+      }
+    };
     auto fly_run = [&](double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u) {
       Impulse p = dynamics.impulse(v1, v3, in0);
       double lagged = in0.pumped_volume_m3;
@@ -109,6 +183,27 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
         const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
         const double h = dt / steps;
         double depth = z[i - first];
+        if (i - first < plan_at.size()) {  // the planned stages
+          const Stage* stage = &plan[plan_at[i - first]];
+          for (int s = 0; s < steps; ++s, stage += 3) {
+            const Derivative d1 = dynamics.derivative(p, stage[0]);
+            const Impulse p2 = p + 0.5 * h * d1.p_dot;
+            const Derivative d2 = dynamics.derivative(p2, stage[1]);
+            const Impulse p3 = p + 0.5 * h * d2.p_dot;
+            const Derivative d3 = dynamics.derivative(p3, stage[1]);
+            const Impulse p4 = p + h * d3.p_dot;
+            const Derivative d4 = dynamics.derivative(p4, stage[2]);
+            depth +=
+                h / 6.0 * (d1.depth_rate_m_s + 2.0 * d2.depth_rate_m_s + 2.0 * d3.depth_rate_m_s + d4.depth_rate_m_s);
+            p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
+            lagged = stage[2].in.pumped_volume_m3;
+          }
+          if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
+          z[i + 1 - first] = depth;
+          if (u != nullptr) (*u)[i + 1 - first] = dynamics.velocities(p, *stage).norm();  // the interval's end
+          flown = i + 1;
+          continue;
+        }
         for (int s = 0; s < steps; ++s) {
           const double fa = static_cast<double>(s) / steps;
           const double fb = (s + 0.5) / steps;
@@ -166,64 +261,91 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     // spin-up, which is never scored; the guess is the steady glide at the
     // first pitch, scaled to the measured depth rate.
     double v1 = 0.0, v3 = 0.0;
-    const auto steady =
-        model::steady_glide_for_pitch(v.hydro, in0.density_kg_m3, in0.theta_rad, dynamics.net_buoyancy_kg(in0));
-    if (steady.glide) {
-      v1 = steady.glide->speed_m_s * std::cos(steady.glide->alpha_rad);
-      v3 = steady.glide->speed_m_s * std::sin(steady.glide->alpha_rad);
-      const double steady_rate = dynamics.depth_rate_m_s(dynamics.impulse(v1, v3, in0), in0);
-      const double measured_rate = t.depth_rate_m_s[first] - water_w(in0.depth_m);
-      if (std::abs(steady_rate) > 1e-3 && std::isfinite(measured_rate)) {
-        const double scale = std::clamp(measured_rate / steady_rate, 0.0, 1.5);
-        v1 *= scale;
-        v3 *= scale;
-      }
-    }
-    std::size_t fit_last = first;
-    while (fit_last + 1 < end && t.time_s[fit_last + 1] - t.time_s[first] <= t.spin_up_s) ++fit_last;
-    if (fit_last >= first + 3) {
-      const std::size_t n = fit_last - first;
-      std::vector<double>& zf = fit_buffer_;
-      std::vector<double>& rel = fit_relative_buffer_;
-      auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
-        if (fly_run(a, b, fit_last, rel, nullptr) != fit_last) return false;
-        // Not through the depth lag: the start state is a nuisance fitted on
-        // a part never scored, and without the lag it stays the same for
-        // every lag, so a depth_lag fit reuses the flight (only the depth
-        // over ground is read late again).
-        ground_depth(fit_last, rel, zf);
-        r.resize(static_cast<Eigen::Index>(n));
-        for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first + k];
-        return true;
-      };
-      // Chord method: the depth over half a minute is nearly linear in the
-      // start velocities, so the Jacobian at the guess serves every step
-      // (each step then costs one flight of the spin-up, not three).
-      Eigen::VectorXd r, r_trial, r_a, r_b;
-      constexpr double kDelta = 1e-4;  // m/s, finite-difference step
-      if (misfit(v1, v3, r) && misfit(v1 + kDelta, v3, r_a) && misfit(v1, v3 + kDelta, r_b)) {
-        Eigen::MatrixXd jac(r.size(), 2);
-        jac.col(0) = (r_a - r) / kDelta;
-        jac.col(1) = (r_b - r) / kDelta;
-        const Eigen::Matrix2d normal = jac.transpose() * jac + 1e-9 * Eigen::Matrix2d::Identity();
-        const auto solver = normal.ldlt();
-        for (int iteration = 0; iteration < 8; ++iteration) {
-          Eigen::Vector2d step = solver.solve(-jac.transpose() * r);
-          if (!step.allFinite()) break;
-          double taken = 0.0;  // length of the step taken (halved until the misfit does not grow)
-          for (int halving = 0; halving < 4 && taken == 0.0; ++halving) {
-            const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
-            if (misfit(a, b, r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
-              v1 = a;
-              v3 = b;
-              r.swap(r_trial);
-              taken = step.norm() + 1e-300;
-            }
-            step *= 0.5;
-          }
-          if (taken < 1e-6) break;  // converged, or no step helps
+    // The start state depends on the values (the depth lag aside), the
+    // density source and the water's profile only: a run's last few are
+    // remembered (about a third of the start fits of a real log's diagnosis
+    // repeat one: the Jacobian's depth-lag column, a refit), the same bits.
+    EffectValues start_key = x;
+    start_key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;
+    std::vector<StartState>& starts = start_states_[run];
+    auto same_start = [&](const StartState& s) {
+      return std::memcmp(s.values.data(), start_key.data(), sizeof start_key) == 0 && s.use_ctd == use_ctd &&
+             s.has_profile == (profile != nullptr) &&
+             (profile == nullptr || (s.profile.bin_m == profile->bin_m && s.profile.first_m == profile->first_m &&
+                                     s.profile.w_m_s.size() == profile->w_m_s.size() &&
+                                     std::memcmp(s.profile.w_m_s.data(), profile->w_m_s.data(),
+                                                 sizeof(double) * profile->w_m_s.size()) == 0));
+    };
+    const auto known = std::find_if(starts.begin(), starts.end(), same_start);
+    if (known != starts.end()) {
+      v1 = known->v1;
+      v3 = known->v3;
+    } else {
+      const auto steady =
+          model::steady_glide_for_pitch(v.hydro, in0.density_kg_m3, in0.theta_rad, dynamics.net_buoyancy_kg(in0));
+      if (steady.glide) {
+        v1 = steady.glide->speed_m_s * std::cos(steady.glide->alpha_rad);
+        v3 = steady.glide->speed_m_s * std::sin(steady.glide->alpha_rad);
+        const double steady_rate = dynamics.depth_rate_m_s(dynamics.impulse(v1, v3, in0), in0);
+        const double measured_rate = t.depth_rate_m_s[first] - water_w(in0.depth_m);
+        if (std::abs(steady_rate) > 1e-3 && std::isfinite(measured_rate)) {
+          const double scale = std::clamp(measured_rate / steady_rate, 0.0, 1.5);
+          v1 *= scale;
+          v3 *= scale;
         }
       }
+      std::size_t fit_last = first;
+      while (fit_last + 1 < end && t.time_s[fit_last + 1] - t.time_s[first] <= t.spin_up_s) ++fit_last;
+      if (fit_last >= first + 3) {
+        ensure_plan(fit_last);
+        const std::size_t n = fit_last - first;
+        std::vector<double>& zf = fit_buffer_;
+        std::vector<double>& rel = fit_relative_buffer_;
+        auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
+          if (fly_run(a, b, fit_last, rel, nullptr) != fit_last) return false;
+          // Not through the depth lag: the start state is a nuisance fitted on
+          // a part never scored, and without the lag it stays the same for
+          // every lag, so a depth_lag fit reuses the flight (only the depth
+          // over ground is read late again).
+          ground_depth(fit_last, rel, zf);
+          r.resize(static_cast<Eigen::Index>(n));
+          for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first + k];
+          return true;
+        };
+        // Chord method: the depth over half a minute is nearly linear in the
+        // start velocities, so the Jacobian at the guess serves every step
+        // (each step then costs one flight of the spin-up, not three).
+        Eigen::VectorXd r, r_trial, r_a, r_b;
+        constexpr double kDelta = 1e-4;  // m/s, finite-difference step
+        if (misfit(v1, v3, r) && misfit(v1 + kDelta, v3, r_a) && misfit(v1, v3 + kDelta, r_b)) {
+          Eigen::MatrixXd jac(r.size(), 2);
+          jac.col(0) = (r_a - r) / kDelta;
+          jac.col(1) = (r_b - r) / kDelta;
+          const Eigen::Matrix2d normal = jac.transpose() * jac + 1e-9 * Eigen::Matrix2d::Identity();
+          const auto solver = normal.ldlt();
+          for (int iteration = 0; iteration < 8; ++iteration) {
+            Eigen::Vector2d step = solver.solve(-jac.transpose() * r);
+            if (!step.allFinite()) break;
+            double taken = 0.0;  // length of the step taken (halved until the misfit does not grow)
+            for (int halving = 0; halving < 4 && taken == 0.0; ++halving) {
+              const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
+              if (misfit(a, b, r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+                v1 = a;
+                v3 = b;
+                r.swap(r_trial);
+                taken = step.norm() + 1e-300;
+              }
+              step *= 0.5;
+            }
+            if (taken < 1e-6) break;  // converged, or no step helps
+          }
+        }
+      }
+      if (starts.size() < kStartStates) starts.emplace_back();
+      StartState& slot = starts[next_start_[run]];
+      next_start_[run] = (next_start_[run] + 1) % kStartStates;
+      slot = {start_key, use_ctd, profile != nullptr, profile != nullptr ? *profile : VerticalVelocityProfile{},
+              v1,        v3};
     }
     // Fly up to the last requested sample of this run and on through its
     // estimator window (the slope at a sample uses the samples after it),

@@ -230,6 +230,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> renames;
   std::string flight_model = "dynamic";
   std::string plane = "both";
+  std::string intervals = "lag1";
   std::vector<std::string> fit_only;
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
@@ -258,6 +259,12 @@ int main(int argc, char** argv) {
                  "which plane to diagnose: vertical (depth rate), heading (servo, yaw, autopilot) or both")
       ->check(CLI::IsMember({"vertical", "heading", "both"}))
       ->capture_default_str();
+  app.add_option("--intervals", intervals,
+                 "how the vertical plane's 95 % intervals count the serially correlated samples: lag1 (the noise over "
+                 "an AR(1)'s effective sample count), glides or yos (cluster-robust, each glide or yo a cluster; "
+                 "fitting_core/intervals.hpp)")
+      ->check(CLI::IsMember({"lag1", "glides", "yos"}))
+      ->capture_default_str();
   app.add_option("--fit", fit_only,
                  "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
       ->delimiter(',');
@@ -274,6 +281,9 @@ int main(int argc, char** argv) {
     glider::diagnose::DiagnoseOptions options;
     options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
                                              : glider::diagnose::FlightModelKind::kDynamic;
+    options.intervals = intervals == "yos"      ? glider::diagnose::DiagnoseOptions::Intervals::kYos
+                        : intervals == "glides" ? glider::diagnose::DiagnoseOptions::Intervals::kGlides
+                                                : glider::diagnose::DiagnoseOptions::Intervals::kLag1;
     glider::diagnose::HeadingDiagnoseOptions heading_options;
     std::vector<std::string> depth_rate_ids;
     for (const std::string& id : fit_only) {

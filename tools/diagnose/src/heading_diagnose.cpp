@@ -81,7 +81,7 @@ HeadingResiduals against(
 LinkFit run_link(HeadingLink link, const HeadingValues& nominal, const HeadingResiduals& residuals,
                  const LinkSamples& samples, const HeadingDiagnoseOptions& options) {
   HeadingSelectOptions select;
-  select.min_absolute_improvement = min_absolute_improvement(link);
+  select.margins.absolute = min_absolute_improvement(link);
   const std::vector<HeadingEffect> candidates = effects_of(link, all_effects());
   if (!options.fit_only.empty()) {
     select.fit_only = effects_of(link, options.fit_only);

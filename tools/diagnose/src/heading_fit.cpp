@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/heading_fit.hpp"
-#include "glider/diagnose/delay_search.hpp"
 #include "glider/diagnose/least_squares_functor.hpp"
 
 #include <Eigen/Dense>
@@ -13,8 +12,15 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include "glider/fitting_core/delay_search.hpp"
+#include "glider/fitting_core/effective_samples.hpp"
+#include "glider/fitting_core/intervals.hpp"
+#include "glider/fitting_core/stepwise.hpp"
+
 namespace glider::diagnose {
 namespace {
+
+using namespace fitting_core;  // NOLINT(google-build-using-namespace): the one fitting core
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -130,17 +136,6 @@ struct Functor : LeastSquaresFunctor {
   }
 };
 
-// Independent samples among n serially correlated ones: n (1 - r1) / (1 + r1).
-double independent_samples(const std::vector<double>& r) {
-  double var = 0.0, lag1 = 0.0;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    var += r[i] * r[i];
-    if (i > 0) lag1 += r[i] * r[i - 1];
-  }
-  const double rho = var > 0.0 ? std::clamp(lag1 / var, 0.0, 0.99) : 0.0;
-  return static_cast<double>(r.size()) * (1.0 - rho) / (1.0 + rho);
-}
-
 Eigen::VectorXd minimise(const Problem& problem, const std::vector<HeadingEffect>& fitted, Eigen::VectorXd p) {
   Functor functor{{}, problem, fitted, {}};
   Eigen::NumericalDiff<Functor> numeric(functor);
@@ -229,17 +224,16 @@ Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitte
   problem.residuals(trial.values, problem.samples().train, r);
   for (double x : r) trial.train_rss += x * x;
   const double n = static_cast<double>(r.size());
-  trial.bic = n * std::log(trial.train_rss / n) + static_cast<double>(k) * std::log(n);
-  trial.n_eff = std::max(independent_samples(r), static_cast<double>(k) + 2.0);
+  trial.bic = bic(trial.train_rss, n, static_cast<double>(k));
+  trial.n_eff = std::max(effective_sample_count(r), static_cast<double>(k) + 2.0);
   if (k > 0) {
     Eigen::NumericalDiff<Functor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(r.size()), k);
     numeric.df(p, jac);
-    const double variance = trial.train_rss / (trial.n_eff - static_cast<double>(k));
-    const Eigen::MatrixXd cov = (jac.transpose() * jac).completeOrthogonalDecomposition().pseudoInverse() * variance;
+    const Eigen::MatrixXd cov = noise_covariance(jac, r);
     for (Eigen::Index j = 0; j < k; ++j) {
       const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
-      const double half = 1.96 * std::sqrt(std::max(cov(j, j), 0.0)) * info(e).scale;
+      const double half = kZ95 * std::sqrt(std::max(cov(j, j), 0.0)) * info(e).scale;
       const double value = at(trial.values, e);
       trial.ci_low.push_back(info(e).magnitude ? std::max(0.0, value - half) : value - half);
       trial.ci_high.push_back(value + half);
@@ -270,7 +264,7 @@ Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
   const double k = static_cast<double>(fitted.size());
   const double n = static_cast<double>(problem.samples().train.size());
   trial.bic += std::log(n);  // the threshold is a parameter too
-  const double limit = trial.train_rss * (1.0 + 3.84 / std::max(1.0, trial.n_eff - k));
+  const double limit = profile_threshold(trial.train_rss, trial.n_eff, static_cast<int>(k));
   double low = best->first, high = best->first;
   for (const auto& [x, t] : profile) {
     if (t.train_rss > limit) continue;
@@ -294,57 +288,41 @@ bool plausible(HeadingEffect e, double v) {
   return v >= i.plausible_min && v <= i.plausible_max;
 }
 
-bool improves(const Trial& better, const Trial& than, const HeadingSelectOptions& o) {
-  return better.heldout_rms < than.heldout_rms * (1.0 - o.min_relative_improvement) &&
-         better.heldout_rms < than.heldout_rms - o.min_absolute_improvement && better.bic < than.bic;
-}
-
-// Forward: the candidate that cuts the held-out error most enters while it
-// helps by the margins with a plausible value.
-Trial forward(const Problem& problem, std::vector<HeadingEffect> remaining, Trial current,
-              const HeadingSelectOptions& options) {
-  while (!remaining.empty()) {
-    std::optional<Trial> best;
-    std::size_t best_index = 0;
-    for (std::size_t c = 0; c < remaining.size(); ++c) {
-      std::vector<HeadingEffect> fitted = current.fitted;
-      fitted.push_back(remaining[c]);
-      Trial t = fit(problem, fitted);
-      if (!best || t.heldout_rms < best->heldout_rms) {
-        best = std::move(t);
-        best_index = c;
-      }
-    }
-    const HeadingEffect e = remaining[best_index];
-    if (!improves(*best, current, options) || !plausible(e, at(best->values, e))) break;
-    current = std::move(*best);
-    remaining.erase(remaining.begin() + static_cast<long>(best_index));
+// The heading plane's side of the fitting core's selection
+// (fitting_core/stepwise.hpp): the fit of each set of effects, once.
+class HeadingSelection : public SelectionProblem {
+ public:
+  explicit HeadingSelection(const Problem& problem) : problem_(problem) {}
+  static std::vector<HeadingEffect> effects(const EffectSet& set) {
+    std::vector<HeadingEffect> out;
+    for (int e : set) out.push_back(static_cast<HeadingEffect>(e));
+    return out;
   }
-  return current;
-}
-
-// Backward: an effect the joint fit no longer needs (without it the held-out
-// error is as good within the margin), or whose joint value is implausible,
-// leaves.
-Trial backward(const Problem& problem, Trial current, const HeadingSelectOptions& options) {
-  bool dropped = true;
-  while (dropped && !current.fitted.empty()) {
-    dropped = false;
-    for (std::size_t j = 0; j < current.fitted.size(); ++j) {
-      const HeadingEffect e = current.fitted[j];
-      std::vector<HeadingEffect> fewer = current.fitted;
-      fewer.erase(fewer.begin() + static_cast<long>(j));
-      if (fewer.empty() && plausible(e, at(current.values, e))) break;  // a single effect that entered stays
-      Trial t = fit(problem, fewer);
-      if (!improves(current, t, options) || !plausible(e, at(current.values, e))) {
-        current = std::move(t);
-        dropped = true;
-        break;
-      }
-    }
+  Trial& trial(const EffectSet& set) {
+    auto it = trials_.find(set);
+    if (it == trials_.end()) it = trials_.emplace(set, fit(problem_, effects(set))).first;
+    return it->second;
   }
-  return current;
-}
+  Score score(const EffectSet& set) override { return {trial(set).heldout_rms, trial(set).bic}; }
+  bool plausible(const EffectSet& set, int effect) override {
+    const auto e = static_cast<HeadingEffect>(effect);
+    return diagnose::plausible(e, at(trial(set).values, e));
+  }
+  // The 95 % interval (a delay's profile where its Jacobian says nothing, as
+  // reported) excludes the nominal.
+  bool significant(const EffectSet& set, int effect) override {
+    Trial& t = trial(set);
+    profile_failed_delays(problem_, t);
+    const auto e = static_cast<HeadingEffect>(effect);
+    const auto j = static_cast<std::size_t>(std::find(set.begin(), set.end(), effect) - set.begin());
+    const double nominal = at(problem_.nominal(), e);
+    return t.ci_low[j] > nominal || t.ci_high[j] < nominal;
+  }
+
+ private:
+  const Problem& problem_;
+  std::map<EffectSet, Trial> trials_;
+};
 
 double rms_of(const Problem& problem, const HeadingValues& v, const std::vector<std::size_t>& which) {
   return which.empty() ? kNaN : problem.rms(v, which);
@@ -368,25 +346,27 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
   out.baseline_rms = rms_of(problem, nominal, samples.all);
   out.baseline_rms_dive = rms_of(problem, nominal, samples.dives);
   out.baseline_rms_climb = rms_of(problem, nominal, samples.climbs);
-  const Trial baseline = fit(problem, {});
-  out.baseline_heldout_rms = baseline.heldout_rms;
-  Trial final_fit = baseline;
+  HeadingSelection selection(problem);
+  out.baseline_heldout_rms = selection.trial({}).heldout_rms;
+  EffectSet chosen;
+  std::vector<double> worth;
   if (!options.fit_only.empty()) {
-    final_fit = fit(problem, options.fit_only);
+    for (HeadingEffect e : options.fit_only) chosen.push_back(static_cast<int>(e));
+    for (int e : chosen) worth.push_back(selection.score(without(chosen, e)).heldout_rms);
   } else if (options.select) {
-    final_fit = backward(problem, forward(problem, candidates, baseline, options), options);
+    const SelectionRules rules{options.margins, {}};
+    std::vector<int> ids;
+    for (HeadingEffect e : candidates) ids.push_back(static_cast<int>(e));
+    chosen = backward_eliminate(selection, forward_select(selection, {}, ids, rules), rules, worth);
   }
+  Trial final_fit = selection.trial(chosen);
   profile_failed_delays(problem, final_fit);
-  // Rank: the order each effect alone would cut the held-out error, the
-  // cumulative gain along it.
-  std::vector<std::pair<double, HeadingEffect>> ranked;
-  for (HeadingEffect e : final_fit.fitted) ranked.emplace_back(fit(problem, {e}).heldout_rms, e);
-  std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<HeadingEffect> so_far;
-  for (const auto& [alone, e] : ranked) {
-    so_far.push_back(e);
-    const double heldout =
-        so_far.size() == final_fit.fitted.size() ? final_fit.heldout_rms : fit(problem, so_far).heldout_rms;
+  // Ranked by worth (the held-out error without each), the cumulative gain along it.
+  EffectSet so_far;
+  for (int id : rank_by_worth(chosen, worth)) {
+    const auto e = static_cast<HeadingEffect>(id);
+    so_far.push_back(id);
+    const double heldout = so_far.size() == chosen.size() ? final_fit.heldout_rms : selection.score(so_far).heldout_rms;
     const auto j = static_cast<std::size_t>(std::find(final_fit.fitted.begin(), final_fit.fitted.end(), e) -
                                             final_fit.fitted.begin());
     HeadingFinding f;

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <limits>
 #include <vector>
+#include "glider/fitting_core/intervals.hpp"
+#include "glider/fitting_core/selection.hpp"
 
 namespace glider::diagnose {
 namespace {
@@ -20,27 +22,17 @@ struct Points {
   std::size_t size() const { return y.size(); }
 };
 
-double t_quantile_975(double degrees_of_freedom) {
-  return boost::math::quantile(boost::math::students_t_distribution<double>(degrees_of_freedom), 0.975);
-}
-
 double two_sided_p(double t, double degrees_of_freedom) {
   if (!std::isfinite(t)) return 0.0;  // a perfect fit: the data leave no doubt
   return 2.0 * boost::math::cdf(boost::math::complement(
                    boost::math::students_t_distribution<double>(degrees_of_freedom), std::abs(t)));
 }
 
-Interval interval(double value, double standard_error, double degrees_of_freedom) {
-  const double half = t_quantile_975(degrees_of_freedom) * standard_error;
-  return {value, value - half, value + half};
-}
-
 // n ln(RSS/n) + k ln n, with the residual sum floored so that data a shape
 // fits exactly still compare (and a perfect fit is not -infinity).
 double bic(double rss, std::size_t n, std::size_t parameters, double scale) {
   const double floor = 1e-20 * std::max(scale, 1e-300);
-  const double nd = static_cast<double>(n);
-  return nd * std::log(std::max(rss, floor) / nd) + static_cast<double>(parameters) * std::log(nd);
+  return fitting_core::bic(std::max(rss, floor), static_cast<double>(n), static_cast<double>(parameters));
 }
 
 double mean_of(std::span<const double> y, std::size_t from, std::size_t to) {
@@ -82,8 +74,8 @@ void fit_linear(const Points& p, Trend& trend, double scale) {
   const double s2 = rss / dof;
   const double se_slope = std::sqrt(s2 / sxx);
   const double se_start = std::sqrt(s2 * (1.0 / static_cast<double>(n) + t_mean * t_mean / sxx));
-  trend.slope_per_day = interval(slope, se_slope, dof);
-  trend.at_start = interval(start, se_start, dof);
+  trend.slope_per_day = fitting_core::t_interval(slope, se_slope, dof);
+  trend.at_start = fitting_core::t_interval(start, se_start, dof);
   trend.p_slope = two_sided_p(slope / se_slope, dof);
   trend.bic_linear = bic(rss, n, 2, scale);
 }
@@ -110,7 +102,7 @@ void fit_step(const Points& p, const TrendOptions& options, Trend& trend, double
   const double dof = static_cast<double>(n - 2);
   const double se =
       std::sqrt(best_rss / dof * (1.0 / static_cast<double>(best_k) + 1.0 / static_cast<double>(n - best_k)));
-  trend.step_change = interval(after - before, se, dof);
+  trend.step_change = fitting_core::t_interval(after - before, se, dof);
   trend.level_before = before;
   trend.level_after = after;
   trend.step_before_s = p.first_time_s + p.t_day[best_k - 1] * kSecondsPerDay;
@@ -130,13 +122,6 @@ std::string number(double x) {
 std::string bracket(const Interval& i) { return "[" + number(i.low) + ", " + number(i.high) + "]"; }
 
 }  // namespace
-
-Interval mean_with_interval(std::span<const double> values) {
-  const std::size_t n = values.size();
-  const double mean = mean_of(values, 0, n);
-  const double se = std::sqrt(squares_about(values, 0, n, mean) / static_cast<double>(n - 1) / static_cast<double>(n));
-  return interval(mean, se, static_cast<double>(n - 1));
-}
 
 const char* to_string(TrendShape shape) {
   switch (shape) {

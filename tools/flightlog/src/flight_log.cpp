@@ -441,15 +441,17 @@ std::string LogEnd::describe(std::size_t rows_read) const {
     out += "; torn last line " + std::to_string(torn_line) + " (" + std::to_string(torn_bytes) +
            " bytes, no newline) dropped";
   }
+  if (!unchecked.empty()) out += "; " + unchecked;
   return out;
 }
 
 FlightLog parse_flight_log(std::string_view text, const std::string& source_name, const ReadOptions& options) {
   // The SIL's binary log is read as the CSV text it stands for.
   std::string converted;
+  std::string unchecked;
   if (is_binary_rows_log(text)) {
     std::string error;
-    converted = binary_rows_to_csv(text, error);
+    converted = binary_rows_to_csv(text, error, &unchecked);
     if (!error.empty()) throw FlightLogError(source_name, kNone, "", kNone, "binary log: " + error);
     text = converted;
   }
@@ -474,6 +476,7 @@ FlightLog parse_flight_log(std::string_view text, const std::string& source_name
     end.torn_line = torn.torn_line;
     end.torn_bytes = torn.torn_bytes;
   }
+  end.unchecked = std::move(unchecked);
   log.set_end(std::move(end));
   return log;
 }

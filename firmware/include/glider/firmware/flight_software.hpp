@@ -71,6 +71,8 @@ class FlightSoftware final : public PeriodicTask {
   std::int32_t yos_completed() const { return last_.yos_completed; }
   const Navigator& navigator() const { return navigator_; }
   std::uint64_t log_rows_lost() const { return log_rows_lost_; }
+  // The abort sequence commanded the burn wire and the output took it.
+  bool drop_weight_released() const { return drop_weight_released_; }
 
   // The comms task's hooks (surface dialog; firmware/src/comms). Each takes
   // effect in the next run().

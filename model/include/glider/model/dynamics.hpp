@@ -101,7 +101,10 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
 // The same with the speed |(v1, v3)| given: std::hypot (guarded against
 // overflow, and slow) is a fifth of a diagnosis' time, where a plain square
 // root of glider speeds loses nothing.
-FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s);
+// with_moment false: moment_nm left 0 (the prescribed-pitch model needs no
+// moment; the forces are the same bits either way).
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s,
+                                bool with_moment = true);
 
 // Heading rate (rad/s) per unit of the current's starboard shear (1/s) for a
 // glider whose depth grows at depth_rate_m_s, moving at speed_m_s through

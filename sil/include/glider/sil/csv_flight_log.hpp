@@ -77,6 +77,7 @@ class CsvFlightLog final : public hal::LogSink {
   hal::Micros draw_us(double min_s, double max_s);
 
   bool flush();
+  void close_block();
   bool append_csv_row(const hal::FlightLogRecord& record, std::span<const double> sim_values);
 
   std::string path_;

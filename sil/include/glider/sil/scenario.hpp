@@ -69,6 +69,9 @@ struct ScenarioOptions {
     FarEnd* far_end = nullptr;
     fw::comms::FileTransfer* transfer = nullptr;
     fw::comms::MissionReloader* reloader = nullptr;
+    // A log written after the cycle (as the target's writer thread): null, as
+    // SIL writes within the cycle. Tests model a slow writer with it.
+    fw::comms::LogProgress* log_progress = nullptr;
     double utc_at_launch_s = 1.7e9;  // Curr Time at launch
     // Called after every cycle (tests sample the comms state).
     std::function<void(double sim_time_s, const fw::comms::CommsTask& comms)> after_cycle;

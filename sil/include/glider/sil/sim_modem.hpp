@@ -47,6 +47,11 @@ class FarEnd {
   // Bytes the shore wants to send now (at most `max`).
   virtual std::vector<std::uint8_t> take(std::size_t max, double now_s) = 0;
   virtual void hangup(double now_s) = 0;
+  // The end of a cycle in which everything the glider wrote has reached the
+  // shore and the glider listens for an answer: a far end that answers in
+  // wall time (TcpShore) may wait for it here, so that its thinking costs no
+  // simulated time. In-process far ends answer at once: nothing to wait for.
+  virtual void settle() {}
 };
 
 struct SimModemStats {
@@ -68,6 +73,10 @@ class SimModem final : public hal::Modem {
 
   const SimModemStats& stats() const { return stats_; }
   bool in_call() const { return mode_ == Mode::kData; }
+  // Called by the SIL loop after each cycle: `listening` = the glider waits
+  // for the shore's input (its dialog). Lets the far end settle (FarEnd::settle)
+  // once the glider's bytes have all gone up the link.
+  void end_of_cycle(bool listening);
 
  private:
   enum class Mode { kCommand, kDialing, kData };
@@ -135,11 +144,20 @@ class FakeShore final : public FarEnd {
 
 // A real shore station over TCP (RUDICS: the call is a TCP connection).
 // Connects at answer() (bounded wait), then relays bytes both ways without
-// blocking; while connected each take() waits at most `poll_ms` for the
-// shore, so the lockstep SIL slows to the shore's pace during a call only.
+// blocking. The shore answers in wall time while SIL's clock is simulated,
+// so the call is paced in lockstep with the shore's answers: at the end of a
+// cycle in which the glider listens and has nothing left to send, settle()
+// waits (wall time, at most `answer_wait_ms`) for the shore's next byte if
+// the glider spoke last (a command's answer, a Zmodem header, the next typed
+// line are due) or the shore was still talking (a stream paused by the
+// shore's own work: a child started, a file read). The shore's thinking then
+// costs no simulated time, however loaded the machine, up to that bound; a
+// shore with nothing to say costs the bound once per silence
+// (docs/comms.md, End to end).
 class TcpShore final : public FarEnd {
  public:
-  TcpShore(std::string host, int port, int poll_ms = 20);
+  static constexpr int kDefaultAnswerWaitMs = 3000;
+  TcpShore(std::string host, int port, int answer_wait_ms = kDefaultAnswerWaitMs);
   ~TcpShore() override;
   TcpShore(const TcpShore&) = delete;
   TcpShore& operator=(const TcpShore&) = delete;
@@ -148,13 +166,21 @@ class TcpShore final : public FarEnd {
   void receive(std::span<const std::uint8_t> bytes, double now_s) override;
   std::vector<std::uint8_t> take(std::size_t max, double now_s) override;
   void hangup(double now_s) override;
+  void settle() override;
   const std::string& last_error() const { return error_; }
+  // Waits that ended without a byte from the shore (each cost answer_wait_ms).
+  std::uint32_t unanswered_waits() const { return unanswered_waits_; }
+  std::uint32_t waits() const { return waits_; }
 
  private:
   std::string host_;
   int port_;
-  int poll_ms_;
+  int answer_wait_ms_;
   int fd_ = -1;
+  bool answer_due_ = false;         // the glider spoke last: the shore has not answered yet
+  bool shore_was_talking_ = false;  // the last take() got bytes
+  std::uint32_t waits_ = 0;
+  std::uint32_t unanswered_waits_ = 0;
   std::string error_;
 };
 

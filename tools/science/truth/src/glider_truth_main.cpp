@@ -88,6 +88,10 @@ int main(int argc, char** argv) {
   app.add_option("--control", control, "pitch control (else drawn)")->check(CLI::IsMember({"pi", "bang-bang"}));
   tool.add_number("--cycle-s", cycle_s, {0.5, 10.0, "s"}, "control and log cycle (else drawn in 1-8 s)");
   tool.add_number("--dive-to-m", dive_to_m, {10.0, 1000.0, "m"}, "inflection depth (else drawn)");
+  double dvl_noise_m_s = -1.0;
+  tool.add_number("--dvl-noise", dvl_noise_m_s, {0.0, 1.0, "m/s"},
+                  "write a DVL's speed through water (sci_speed_through_water, dives below 12 m): the true speed plus "
+                  "white noise of this sigma");
   app.add_option("--out", out_path, "flight-log CSV to write")->required();
   app.add_option("--truth", truth_path, "JSON with the hidden effects' true values and the draws");
   return tool.run(argc, argv, [&]() -> int {
@@ -109,7 +113,7 @@ int main(int argc, char** argv) {
     if (dive_to_m > 0.0) request.dive_to_m = dive_to_m;
     const auto start = std::chrono::steady_clock::now();
     const glider::truth::FlightResult flight = glider::truth::fly(request);
-    const std::string text = glider::truth::log_text(flight, {request.vehicle_path, request.seed});
+    const std::string text = glider::truth::log_text(flight, {request.vehicle_path, request.seed, dvl_noise_m_s});
     {
       std::ofstream file(out_path, std::ios::binary);
       if (!(file << text) || !file.flush()) throw std::runtime_error("cannot write " + out_path);

@@ -36,8 +36,12 @@ std::string log_text(const FlightResult& f, const LogSettings& settings) {
                 "u_heading_rate_deadband=%.17g f_fin_safety_max=%.17g\n",
                 f.stated_gain, f.stated_igain, f.stated_dgain, f.rate_deadband_rad_s, f.vehicle.heading.fin_max_rad);
   out += settings_line;
+  const bool dvl = settings.dvl_noise_m_s >= 0.0;
   out += kHeader;
-  out += '\n';
+  out += dvl ? ",sci_speed_through_water\n" : "\n";
+  // Its own stream: the log without the DVL stays the same bits.
+  std::mt19937_64 dvl_rng(settings.seed ^ 0xd71a5eedu);
+  std::normal_distribution<double> dvl_noise(0.0, dvl ? settings.dvl_noise_m_s : 0.0);
   const double kNaN = std::numeric_limits<double>::quiet_NaN();
   double last_c_ballast = kNaN, last_c_battpos = kNaN, last_c_pitch = kNaN;
   std::size_t rows = 0;
@@ -59,6 +63,11 @@ std::string log_text(const FlightResult& f, const LogSettings& settings) {
           ctd ? s.temperature_c : kNaN, ctd ? s.pressure_bar : kNaN, ctd ? s.density_kg_m3 : kNaN}) {
       out += ',';
       number(out, x);
+    }
+    if (dvl) {
+      out += ',';
+      const double noise = dvl_noise(dvl_rng);
+      if (s.depth_state == 1 && s.true_depth_m > settings.dvl_min_depth_m) number(out, s.speed_m_s + noise);
     }
     out += '\n';
     ++rows;

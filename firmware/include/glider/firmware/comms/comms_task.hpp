@@ -74,6 +74,18 @@ class MissionReloader {
   }
 };
 
+// The log's writer, where rows are written after the cycle that made them
+// (the target's writer thread): the comms task calls only once the rows up
+// to the surfacing are written, so the segment the surfacing closed is a
+// whole file, offered to the call's first `send` (in SIL the log is written
+// within the cycle: no such wait). `written_through` must not block; it may
+// wake the writer.
+class LogProgress {
+ public:
+  virtual ~LogProgress() = default;
+  virtual bool written_through(hal::Micros time_us) = 0;
+};
+
 enum class CommsState : std::int32_t {
   kIdle = 0,      // under water (or not yet up)
   kGpsWait,       // up: waiting for the first fix (gps_wait_time)
@@ -114,6 +126,8 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   void run(hal::Micros now_us) override;
   bool write(const hal::FlightLogRecord& record) override;  // the log tap
 
+  // Optional (null: the log is written within the cycle).
+  void set_log_progress(LogProgress* progress) { log_progress_ = progress; }
   ParameterTable& parameters() { return parameters_; }
   CommsState state() const { return state_; }
   // No call in progress and nothing holding the vehicle up.
@@ -157,6 +171,7 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   CommsConfig config_;
   FileTransfer* transfer_;
   MissionReloader* reloader_;
+  LogProgress* log_progress_ = nullptr;
   ModemStream stream_;
   AtDriver at_;
   DialogQueue out_;

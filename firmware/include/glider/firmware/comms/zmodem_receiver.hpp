@@ -59,6 +59,11 @@ class Receiver : public Session {
   bool accepting_ = false;          // data at offset_ is being taken
   bool file_open_ = false;
   int o_count_ = 0;  // 'O's of the sender's "OO" after ZFIN
+  // The link's round trip, measured from a ZRPOS/ZRINIT to the next header:
+  // how long the sender's "OO" may take to arrive after our ZFIN.
+  hal::Micros now_ = 0;
+  hal::Micros asked_us_ = -1;  // a ZRPOS/ZRINIT waiting for its answer since (-1: none)
+  hal::Micros round_trip_us_ = 0;
   FileInfo info_;
   std::array<char, kMaxName + 56> temp_name_{};
   std::int64_t offset_ = 0;

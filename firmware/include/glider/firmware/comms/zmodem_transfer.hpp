@@ -25,8 +25,14 @@ class OpenFiles {
   virtual bool is_open(const char* name) const = 0;
 };
 
+// What was sent is not sent again (as a Slocum moves its sent logs to
+// SENTLOGS): a file the shore's receiver took whole (or skipped: it has it)
+// is moved into `<data_dir>/sentlogs/` when the send ends, so the next call's
+// `send *.sbd` offers only what is new; a file cut by a lost carrier stays
+// and is offered (and resumed) again.
 class ZmodemTransfer final : public FileTransfer {
  public:
+  static constexpr const char* kSentFolder = "sentlogs";
   static constexpr std::size_t kMaxListed = 512;
   static constexpr std::size_t kMaxPath = 256;
   // Bytes read and written per control cycle (the modem's buffer takes what fits).
@@ -48,6 +54,9 @@ class ZmodemTransfer final : public FileTransfer {
   const char* received_path(std::size_t index) const override { return received_paths_[index].data(); }
   // Why the last transfer failed ("none" if it did not).
   const char* last_failure() const { return zmodem::failure_name(failure_); }
+  // Files sent and moved to sentlogs/ so far; moves that failed (the file stays, offered again).
+  std::uint32_t files_moved_to_sent() const { return moved_; }
+  std::uint32_t sent_moves_failed() const { return move_failures_; }
 
  private:
   // The engine keeps one stream for its life; the call's stream is handed
@@ -60,6 +69,7 @@ class ZmodemTransfer final : public FileTransfer {
   };
   enum class Mode : std::uint8_t { kIdle, kSend, kReceive };
   TransferProgress finish(zmodem::Status status);
+  void move_to_sent(std::string_view name);
 
   std::array<char, kMaxPath> data_dir_{};
   std::array<char, kMaxPath> incoming_dir_{};
@@ -77,6 +87,8 @@ class ZmodemTransfer final : public FileTransfer {
   std::size_t listed_ = 0;
   std::array<std::array<char, kMaxPath>, zmodem::Receiver::kMaxResults> received_paths_{};
   std::size_t received_ = 0;
+  std::uint32_t moved_ = 0;
+  std::uint32_t move_failures_ = 0;
 };
 
 }  // namespace glider::fw::comms

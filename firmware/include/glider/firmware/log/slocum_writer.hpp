@@ -34,6 +34,11 @@ struct SlocumLogOptions {
   SlocumSelection sbd;                      // the .sbd's sensors (parse_slocum_list)
   bool write_sbd = true;
   std::uint32_t flush_every_cycles = 60;  // at most this many rows wait in a buffer
+  // UTC of row time 0, for the names' <yyyy>-<ddd> and the header's
+  // fileopen_time: the target's rows are UTC already (0); SIL's count from
+  // its launch, at the simulated UTC launch time given here. m_present_time
+  // stays the row's time (SIL: seconds since launch, as its CSV log).
+  hal::Micros utc_at_zero_us = 0;
 };
 
 struct SlocumFileCounters {

@@ -73,6 +73,12 @@ class RingBufferLog final : public hal::LogSink {
   std::uint64_t rows_refused() const { return rows_refused_.load(); }      // ring full
   std::uint64_t rows_lost_disk() const { return rows_lost_disk_.load(); }  // write failed (disk full)
   std::uint64_t fsyncs() const { return fsyncs_.load(); }
+  // The loop time (record.time_us) of the last row handed to the file and the
+  // Slocum files (-1: none yet), and a nudge for the writer, which otherwise
+  // wakes every 500 ms: the comms task waits for the surfacing's row
+  // (fw::comms::LogProgress).
+  hal::Micros written_through_us() const { return written_through_us_.load(std::memory_order_acquire); }
+  void wake_writer() { wake_.notify_one(); }
 
  private:
   struct Slot {
@@ -94,6 +100,7 @@ class RingBufferLog final : public hal::LogSink {
   std::atomic<std::uint64_t> rows_refused_{0};
   std::atomic<std::uint64_t> rows_lost_disk_{0};
   std::atomic<std::uint64_t> fsyncs_{0};
+  std::atomic<hal::Micros> written_through_us_{-1};
   // Writer thread only:
   std::vector<char> buffer_;
   std::size_t buffered_bytes_ = 0;

@@ -13,6 +13,7 @@
 
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/diagnose/observations.hpp"
+#include "glider/fitting_core/selection.hpp"
 
 namespace glider::diagnose {
 
@@ -129,11 +130,8 @@ struct Diagnosis {
 
 struct DiagnoseOptions {
   // A finding must cut the held-out RMS by 3 % AND by half a millimetre per
-  // second: on long logs tiny model-structure mismatches become statistically
-  // "significant" (tens of thousands of samples) without being of any
-  // consequence for flight or navigation.
-  double min_heldout_improvement = 0.03;
-  double min_heldout_improvement_m_s = 0.0005;
+  // second (fitting_core/selection.hpp: the rule every plane selects by).
+  fitting_core::Margins margins{0.03, 0.0005};
   // Samples 1 s apart on a glide are correlated over the vehicle's ~20 s
   // response: fits use an even stride that keeps at most this many samples
   // per half (the baseline and the reported RMS use every sample).

@@ -12,6 +12,7 @@
 
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/diagnose/track.hpp"
+#include "glider/model/prescribed_pitch.hpp"
 
 namespace glider::diagnose {
 
@@ -36,6 +37,9 @@ class DynamicFlightModel final : public DepthRateModel {
  private:
   void fly(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
            std::vector<double>* depth_rate, std::vector<double>* speed, const VerticalVelocityProfile* profile) const;
+  void fly_uncached(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                    std::vector<double>* depth_rate, std::vector<double>* speed,
+                    const VerticalVelocityProfile* profile) const;
 
   model::VehicleParams nominal_;
   const Track& track_;
@@ -53,6 +57,37 @@ class DynamicFlightModel final : public DepthRateModel {
     std::vector<double> depth, speed;
   };
   mutable std::vector<RelativeFlight> relative_flights_;
+  // A run's spin-up stages for the values being flown (fly's plan), reused across calls.
+  mutable std::vector<model::PrescribedPitchDynamics::Stage> plan_;
+  mutable std::vector<std::size_t> plan_at_;
+  // Each run's last start states (the body velocities fitted on its spin-up)
+  // by what they depend on: the values but the depth lag, the density
+  // source, the water's profile.
+  struct StartState {
+    EffectValues values{};
+    bool use_ctd = false, has_profile = false;
+    VerticalVelocityProfile profile;
+    double v1 = 0.0, v3 = 0.0;
+  };
+  static constexpr std::size_t kStartStates = 8;
+  mutable std::vector<std::vector<StartState>> start_states_;
+  mutable std::vector<std::size_t> next_start_;
+  // The last flights' answers, by their whole question: a selection asks the
+  // same values at the same samples again (about a quarter of the flights of
+  // a real log's diagnosis: a fit's start point, a refit of a set already
+  // fitted), and a flight is a deterministic function of them, so the answer
+  // is the same bits (docs/science.md, speed). Small: kFlightMemo entries,
+  // none for requests of more than kFlightMemoSamples samples.
+  struct FlightAnswer {
+    EffectValues values{};
+    bool use_ctd = false, has_profile = false, depth_rate = false, speed = false;
+    VerticalVelocityProfile profile;
+    std::vector<std::size_t> samples;
+    std::vector<double> depth_rate_out, speed_out;
+  };
+  static constexpr std::size_t kFlightMemo = 16, kFlightMemoSamples = 20000;
+  mutable std::vector<FlightAnswer> answers_;
+  mutable std::size_t next_answer_ = 0;  // the slot the next answer replaces (round robin)
 };
 
 }  // namespace glider::diagnose

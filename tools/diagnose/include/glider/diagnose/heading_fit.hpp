@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glider/diagnose/heading_effects.hpp"
+#include "glider/fitting_core/selection.hpp"
 
 namespace glider::diagnose {
 
@@ -40,10 +41,9 @@ struct LinkFit {
 };
 
 struct HeadingSelectOptions {
-  double min_relative_improvement = 0.03;
-  double min_absolute_improvement = 0.0;  // in the link's unit (rad, rad/s)
-  std::vector<HeadingEffect> fit_only;    // fit exactly these (no selection)
-  bool select = true;                     // false (and no fit_only): the baseline alone
+  fitting_core::Margins margins;        // fitting_core/selection.hpp; the absolute one in the link's unit (rad, rad/s)
+  std::vector<HeadingEffect> fit_only;  // fit exactly these (no selection)
+  bool select = true;                   // false (and no fit_only): the baseline alone
 };
 
 struct LinkSamples {

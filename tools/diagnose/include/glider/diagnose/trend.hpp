@@ -11,14 +11,15 @@
 #include <span>
 #include <string>
 
+#include "glider/fitting_core/intervals.hpp"
+
 namespace glider::diagnose {
 
 enum class TrendShape { kNone, kConstant, kLinear, kStep };
 const char* to_string(TrendShape shape);
 
-struct Interval {
-  double value = 0.0, low = 0.0, high = 0.0;  // estimate and 95 % interval
-};
+// An estimate and its 95 % interval (the fitting core's, as every plane's).
+using Interval = fitting_core::Estimate;
 
 struct Trend {
   TrendShape shape = TrendShape::kNone;  // kNone: fewer than 3 segments with a value
@@ -43,9 +44,7 @@ struct Trend {
   std::string describe(const char* unit) const;
 };
 
-// The mean of independent estimates of one value and its 95 % Student-t
-// interval from their scatter (n - 1 degrees of freedom); needs n >= 2.
-Interval mean_with_interval(std::span<const double> values);
+using fitting_core::mean_with_interval;
 
 struct TrendOptions {
   double significance = 0.05;     // chance of a spurious line or step in constant data

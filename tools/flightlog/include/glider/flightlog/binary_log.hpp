@@ -13,9 +13,12 @@ bool is_binary_rows_log(std::string_view file);
 
 // The CSV text of a binary log. A record cut short at the end (a killed
 // writer) becomes a last line without its newline, which the reader drops
-// and reports as torn; anything else that is not a record is an error
-// (`error` says where, the text up to there is returned).
-std::string binary_rows_to_csv(std::string_view file, std::string& error);
+// and reports as torn; anything else that is not a record, and a block whose
+// check record does not match its bytes (binary-rows-2), is an error
+// (`error` says where, the text up to there is returned). `note`, if given,
+// says what could not be checked: rows after the last check record (a cut
+// file), or a whole binary-rows-1 file (written before the checks).
+std::string binary_rows_to_csv(std::string_view file, std::string& error, std::string* note = nullptr);
 
 // Converts the binary log at `path` to its CSV text at `csv_path`; "" on
 // success, else what went wrong (naming the file).

@@ -84,13 +84,17 @@ struct LogEnd {
   std::size_t trailer_line = 0;  // 0 without a trailer
   std::size_t torn_line = 0;     // line of the dropped torn last line, 0 if none
   std::size_t torn_bytes = 0;    // its length
+  // What of a binary log could not be checked (binary_rows_to_csv's note), "" if all.
+  std::string unchecked;
   // The log names one of the project's writers (a '# writer: glider-...' line),
   // which always end a finished flight with a trailer. Logs converted from
   // elsewhere (Slocum .dbd, gliderflight) have none, and none is expected.
   bool trailer_expected = false;
   bool complete() const { return state == State::kComplete; }
   // Worth a warning: a flight of ours that did not finish, or any torn row.
-  bool unfinished() const { return (trailer_expected && state == State::kNoTrailer) || torn_line != 0; }
+  bool unfinished() const {
+    return (trailer_expected && state == State::kNoTrailer) || torn_line != 0 || !unchecked.empty();
+  }
   // One line for people: "complete: 120 rows, 0 lost", "no end trailer:
   // incomplete (crashed or cut) flight", + the torn row and any disagreement
   // between the trailer's count and the rows read.

@@ -18,6 +18,12 @@ namespace glider::truth {
 struct LogSettings {
   std::string vehicle_file;  // named in the metadata
   std::uint64_t seed = 1;    // the thinning's
+  // A DVL's speed through water (sci_speed_through_water) when >= 0: the
+  // true speed plus white noise of this sigma (m/s), on dives deeper than
+  // dvl_min_depth_m only, as gliderflight-adcp's processed DVL. Negative: no
+  // such column (the default: the diagnosis scores it, never fits it).
+  double dvl_noise_m_s = -1.0;
+  double dvl_min_depth_m = 12.0;
 };
 
 std::string log_text(const FlightResult& flight, const LogSettings& settings);

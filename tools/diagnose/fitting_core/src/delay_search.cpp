@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "glider/diagnose/delay_search.hpp"
+#include "glider/fitting_core/delay_search.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-namespace glider::diagnose {
+namespace glider::fitting_core {
 
 DelayGrid delay_grid(double low, double high, double step) {
   if (!(step > 0.0) || !(high >= low)) throw std::invalid_argument("delay_grid: step must be > 0 and high >= low");
@@ -53,11 +53,15 @@ std::vector<double> rss_on_grid(const DelayGrid& grid, const std::function<doubl
   return rss;
 }
 
+double profile_threshold(double best_rss, double n_eff, int k) {
+  return best_rss * (1.0 + 3.84 / std::max(1.0, n_eff - static_cast<double>(k)));
+}
+
 Interval profile_interval(const DelayGrid& grid, const std::vector<double>& rss, double value, double fitted_rss,
                           double n_eff, int k) {
   double best = std::isfinite(fitted_rss) ? fitted_rss : std::numeric_limits<double>::infinity();
   for (double r : rss) best = std::min(best, r);
-  const double limit = best * (1.0 + 3.84 / std::max(1.0, n_eff - static_cast<double>(k)));
+  const double limit = profile_threshold(best, n_eff, k);
   // The grid values inside (and `value`'s cell); the bound lies between the
   // last grid value inside and the first outside: the interval reaches the
   // first outside (the grid's resolution there).
@@ -93,4 +97,4 @@ bool jacobian_failed(double half_width, double scale) {
   return !std::isfinite(half_width) || half_width <= 1e-6 * scale;
 }
 
-}  // namespace glider::diagnose
+}  // namespace glider::fitting_core

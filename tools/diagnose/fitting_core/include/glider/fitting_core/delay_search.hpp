@@ -9,9 +9,11 @@
 // cannot give (a flat or exact residual: zero width) comes from the profile
 // of the residual over that grid, never narrower than its resolution.
 #include <functional>
-#include <vector>
 
-namespace glider::diagnose {
+#include <vector>
+#include "glider/fitting_core/intervals.hpp"
+
+namespace glider::fitting_core {
 
 // Delays from `low` to `high` (both included) every `step`; the grid's
 // resolution is its step.
@@ -37,9 +39,10 @@ double best_on_grid(const DelayGrid& grid, const std::vector<double>& rss);
 // The RSS of `objective` at every grid value.
 std::vector<double> rss_on_grid(const DelayGrid& grid, const std::function<double(double)>& objective);
 
-struct Interval {
-  double low = 0.0, high = 0.0;
-};
+// The training RSS a one-parameter 95 % profile may reach: `best_rss` plus
+// 3.84 noise variances, the noise from `n_eff` independent samples and `k`
+// parameters (every grid profile: delays, thresholds).
+double profile_threshold(double best_rss, double n_eff, int k);
 
 // The 95 % profile interval: the grid values whose RSS is within 3.84 noise
 // variances of the best fit's (`fitted_rss` at `value`, or the grid's best if
@@ -57,4 +60,4 @@ Interval at_least_resolution(Interval interval, double value, double resolution,
 // or not finite.
 bool jacobian_failed(double half_width, double scale);
 
-}  // namespace glider::diagnose
+}  // namespace glider::fitting_core

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: Apache-2.0
+// The 95 % intervals: their coverage of a known truth over many seeded
+// draws (the noise serially correlated, or shared within clusters), against
+// what a rule that ignores the correlation would cover; Student-t intervals
+// at printed quantiles.
+#include <CppUTest/TestHarness.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <vector>
+
+#include "draws.hpp"
+#include "glider/fitting_core/intervals.hpp"
+
+namespace fc = glider::fitting_core;
+
+namespace {
+
+// A mean fitted to `y`: the Jacobian of the residual (mean - y) is a column of ones.
+struct MeanFit {
+  Eigen::MatrixXd jac;
+  std::vector<double> r;
+  double mean = 0.0;
+};
+MeanFit fit_mean(const std::vector<double>& y) {
+  MeanFit f;
+  for (double v : y) f.mean += v / static_cast<double>(y.size());
+  f.jac = Eigen::MatrixXd::Ones(static_cast<Eigen::Index>(y.size()), 1);
+  for (double v : y) f.r.push_back(f.mean - v);
+  return f;
+}
+
+}  // namespace
+
+TEST_GROUP(FittingCoreIntervals) { std::mt19937_64 rng{20261128}; };
+
+TEST(FittingCoreIntervals, CorrelatedNoiseIntervalsCoverTheTruth) {
+  const int trials = 400;
+  int covered = 0, covered_if_independent = 0;
+  for (int t = 0; t < trials; ++t) {
+    const MeanFit f = fit_mean(fitting_core_test::ar1(rng, 400, 0.8, 1.0));  // truth: 0
+    const double sigma = std::sqrt(fc::noise_covariance(f.jac, f.r)(0, 0));
+    if (std::abs(f.mean) <= fc::kZ95 * sigma) ++covered;
+    double rss = 0.0;
+    for (double v : f.r) rss += v * v;
+    if (std::abs(f.mean) <= fc::kZ95 * std::sqrt(rss / 399.0 / 400.0)) ++covered_if_independent;
+  }
+  const double coverage = static_cast<double>(covered) / trials;
+  CHECK_TEXT(coverage >= 0.90 && coverage <= 0.99, ("coverage " + std::to_string(coverage)).c_str());
+  // Counting every sample as independent covers far less: the rule matters.
+  CHECK(static_cast<double>(covered_if_independent) / trials < 0.75);
+}
+
+TEST(FittingCoreIntervals, ClusterRobustIntervalsCoverSharedErrors) {
+  const int trials = 400, clusters = 8, per_cluster = 50;
+  int covered = 0, covered_by_noise_rule = 0;
+  for (int t = 0; t < trials; ++t) {
+    std::vector<double> y;
+    std::vector<long> cluster;
+    for (int g = 0; g < clusters; ++g) {
+      const double shared = fitting_core_test::normal(rng);  // one model error per glide
+      for (int i = 0; i < per_cluster; ++i) {
+        y.push_back(shared + 0.3 * fitting_core_test::normal(rng));
+        cluster.push_back(g);
+      }
+    }
+    const MeanFit f = fit_mean(y);
+    double t_over_normal = 0.0;
+    const double sigma = std::sqrt(fc::cluster_covariance(f.jac, f.r, cluster, t_over_normal)(0, 0));
+    DOUBLES_EQUAL(2.3646 / 1.96, t_over_normal, 1e-4);  // Student-t, 7 degrees of freedom
+    if (std::abs(f.mean) <= fc::kZ95 * t_over_normal * sigma) ++covered;
+    if (std::abs(f.mean) <= fc::kZ95 * std::sqrt(fc::noise_covariance(f.jac, f.r)(0, 0))) ++covered_by_noise_rule;
+  }
+  const double coverage = static_cast<double>(covered) / trials;
+  CHECK_TEXT(coverage >= 0.90 && coverage <= 0.99, ("coverage " + std::to_string(coverage)).c_str());
+  // The lag-1 rule sees errors shared over a whole glide only in part.
+  CHECK(covered_by_noise_rule < covered);
+}
+
+TEST(FittingCoreIntervals, OneClusterHasNoSpreadToSee) {
+  const MeanFit f = fit_mean({1.0, 2.0, 3.0});
+  double t_over_normal = 0.0;
+  const std::vector<long> one{4, 4, 4};
+  CHECK(std::isinf(fc::cluster_covariance(f.jac, f.r, one, t_over_normal)(0, 0)));
+}
+
+TEST(FittingCoreIntervals, StudentIntervals) {
+  DOUBLES_EQUAL(2.7764, fc::t_quantile_975(4.0), 1e-4);
+  const fc::Estimate e = fc::t_interval(10.0, 2.0, 4.0);
+  DOUBLES_EQUAL(10.0 - 2.0 * 2.7764, e.low, 1e-3);
+  DOUBLES_EQUAL(10.0 + 2.0 * 2.7764, e.high, 1e-3);
+  const std::vector<double> five{1.0, 2.0, 3.0, 4.0, 5.0};
+  const fc::Estimate m = fc::mean_with_interval(five);  // se = sqrt(2.5 / 5)
+  DOUBLES_EQUAL(3.0, m.value, 1e-12);
+  DOUBLES_EQUAL(3.0 - 2.7764 * std::sqrt(0.5), m.low, 1e-3);
+}

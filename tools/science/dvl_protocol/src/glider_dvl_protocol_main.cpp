@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: Apache-2.0
+// glider-dvl-protocol: glider-diagnose and gliderflight's flight model side
+// by side against a measured speed through water (a DVL's), under one
+// protocol: both fitted on the same training yos (the even ones: the
+// diagnosis's own split), both scored on the same held-out yos (the odd
+// ones), at the same samples, with every yo and without the yos whose
+// reference fails the diagnosis's reference check (speed_reference.hpp).
+// The speed is never fitted by either. docs/diagnose/README.md, "One
+// protocol". gliderflight's model is this project's implementation of its
+// published equations (gliderflight_model.hpp), checked against the
+// package's own example fit first (printed).
+//
+//   glider-dvl-protocol tests/data/real/gliderflight-adcp.csv --vehicle boards/vehicles/slocum_shallow.toml
+//       --rename time=m_present_time ... (./glider dvl-protocol does this)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "glider/cli/tool.hpp"
+#include "glider/diagnose/diagnose.hpp"
+#include "glider/diagnose/observations.hpp"
+#include "glider/diagnose/tool_inputs.hpp"
+#include "glider/model/vehicle_file.hpp"
+#include "glider/science/gliderflight_model.hpp"
+#include "glider/slocum/log_loader.hpp"
+
+namespace {
+
+using glider::science::GliderflightInput;
+using glider::science::GliderflightKind;
+using glider::science::GliderflightParameters;
+
+// The log's records that gliderflight can use (every input present), with
+// their row times.
+GliderflightInput gliderflight_input(const glider::flightlog::FlightLog& log) {
+  const auto& t = log.column("m_present_time");
+  const auto& p = log.column("sci_water_pressure");
+  const auto& pitch = log.column("m_pitch");
+  const auto& vb = log.column("m_ballast_pumped");
+  const auto* rho = log.find("sci_water_density");
+  if (rho == nullptr) throw std::runtime_error("the log has no sci_water_density: gliderflight's model needs it");
+  GliderflightInput in;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(t[i] + p[i] + pitch[i] + vb[i] + (*rho)[i])) continue;
+    if (!in.time_s.empty() && !(t[i] > in.time_s.back())) continue;
+    in.time_s.push_back(t[i]);
+    in.pressure_bar.push_back(p[i]);
+    in.pitch_rad.push_back(pitch[i]);
+    in.buoyancy_change_cc.push_back(vb[i]);
+    in.density_kg_m3.push_back((*rho)[i]);
+  }
+  return in;
+}
+
+// gliderflight's example mask: 10-35 dbar.
+bool in_example_window(double pressure_bar) { return pressure_bar * 10.0 >= 10.0 && pressure_bar * 10.0 <= 35.0; }
+
+double rms(const std::vector<double>& model, const std::vector<double>& measured, const std::vector<bool>& use) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    if (!use[i] || !std::isfinite(model[i] - measured[i])) continue;
+    sum += (model[i] - measured[i]) * (model[i] - measured[i]);
+    ++n;
+  }
+  return n > 0 ? std::sqrt(sum / static_cast<double>(n)) : std::nan("");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  glider::cli::Tool tool("glider-dvl-protocol",
+                         "glider-diagnose and gliderflight's model against a DVL's speed through water: both fitted "
+                         "on the even yos, both scored on the odd yos, with and without the yos the reference check "
+                         "excludes");
+  CLI::App& app = tool.app();
+  std::string log_path, vehicle_path;
+  std::vector<std::string> renames, fit_only;
+  app.add_option("LOG", log_path, "flight log with sci_speed_through_water and sci_water_density")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("--vehicle", vehicle_path, "nominal vehicle file for glider-diagnose")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("--rename", renames, "read column FROM as TO (FROM=TO)");
+  std::string samples_path;
+  app.add_option("--samples", samples_path,
+                 "write every scored sample here: time, depth, yo, measured, glider-diagnose, gliderflight dynamic, "
+                 "steady (m/s)");
+  app.add_option("--fit", fit_only, "glider-diagnose fits exactly these effects (default: its free selection)")
+      ->delimiter(',');
+  return tool.run(argc, argv, [&]() -> int {
+    glider::flightlog::ReadOptions read_options;
+    read_options.rename = glider::diagnose::column_renames(renames);
+    const glider::flightlog::FlightLog log = glider::slocum::load_flight_log({{log_path}, {}}, read_options, nullptr);
+    const glider::model::VehicleParams vehicle = glider::model::load_vehicle_file(vehicle_path);
+    const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log);
+    glider::diagnose::DiagnoseOptions options;
+    options.fit_only = glider::diagnose::depth_rate_effects(fit_only);
+    const glider::diagnose::Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
+    if (!d.speed_through_water) throw std::runtime_error(log_path + ": no sci_speed_through_water to score");
+    const glider::diagnose::Predictions pred = glider::diagnose::predict_all(vehicle, obs, d, options);
+
+    // Yo of each steady-glide sample, by its time (the diagnosis's split: even yos fitted).
+    std::map<double, int> yo_at;
+    for (std::size_t i = 0; i < obs.size(); ++i) yo_at[obs.time_s[i]] = obs.yo[i];
+    std::set<int> excluded;
+    for (const auto& y : d.speed_through_water->by_yo) {
+      if (!y.reference_consistent) excluded.insert(y.yo);
+    }
+
+    // gliderflight's records, and which of them the protocol fits on: the
+    // steady-glide samples of the even yos (the same samples glider-diagnose
+    // fits), inside gliderflight's own 10-35 dbar window.
+    const GliderflightInput in = gliderflight_input(log);
+    const std::size_t n = in.time_s.size();
+    std::vector<bool> fit_even(n, false), fit_all_example(n, false);
+    for (std::size_t i = 0; i < n; ++i) {
+      fit_all_example[i] = in_example_window(in.pressure_bar[i]);
+      const auto it = yo_at.find(in.time_s[i]);
+      fit_even[i] = it != yo_at.end() && it->second % 2 == 0 && in_example_window(in.pressure_bar[i]);
+    }
+
+    // 1. gliderflight's example fit (all records, 10-35 dbar) reproduced.
+    const auto* dvl_column = log.find("sci_speed_through_water");
+    std::map<double, double> dvl_at;
+    for (std::size_t i = 0; i < log.rows(); ++i) {
+      if (std::isfinite((*dvl_column)[i])) dvl_at[log.column("m_present_time")[i]] = (*dvl_column)[i];
+    }
+    std::vector<double> dvl(n, std::nan(""));
+    std::vector<bool> every(n, true);
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto it = dvl_at.find(in.time_s[i]);
+      if (it != dvl_at.end()) dvl[i] = it->second;
+    }
+    std::printf("%s: %zu records, %zu with a DVL speed; %zu steady-glide samples (diagnosis)\n", log_path.c_str(), n,
+                dvl_at.size(), obs.size());
+    std::printf(
+        "\ngliderflight's example fit reproduced (C_D0 and m_g on the depth rate of all records at 10-35 dbar;\n"
+        "its published figures: depth-rate RMS 3.92 cm/s; DVL RMS on all samples 0.0284 m/s dynamic, 0.0480 "
+        "steady):\n");
+    GliderflightParameters fitted[2];
+    for (const auto kind : {GliderflightKind::kDynamic, GliderflightKind::kSteady}) {
+      double fit_rms = 0.0;
+      const GliderflightParameters p = glider::science::gliderflight_calibrate(kind, {}, in, fit_all_example, &fit_rms);
+      const auto r = glider::science::gliderflight_solve(kind, p, in);
+      std::printf("  %-7s C_D0 %.4f  m_g %.3f kg  depth-rate RMS %.2f cm/s  DVL RMS all samples %.4f m/s\n",
+                  kind == GliderflightKind::kDynamic ? "dynamic" : "steady", p.cd0, p.mass_kg, 100.0 * fit_rms,
+                  rms(r.speed_m_s, dvl, every));
+    }
+
+    // 2. The protocol.
+    std::vector<double> gf_speed[2];
+    for (int k = 0; k < 2; ++k) {
+      const auto kind = k == 0 ? GliderflightKind::kDynamic : GliderflightKind::kSteady;
+      fitted[k] = glider::science::gliderflight_calibrate(kind, {}, in, fit_even);
+      gf_speed[k] = glider::science::gliderflight_solve(kind, fitted[k], in).speed_m_s;
+    }
+    std::map<double, std::size_t> record_at;
+    for (std::size_t i = 0; i < n; ++i) record_at[in.time_s[i]] = i;
+    // The scored samples: the diagnosis's, with a DVL speed and a gliderflight record.
+    std::vector<double> measured, ours, gf[2];
+    std::vector<int> yo;
+    for (std::size_t i = 0; i < pred.time_s.size(); ++i) {
+      const auto r = record_at.find(pred.time_s[i]);
+      const auto y = yo_at.find(pred.time_s[i]);
+      if (r == record_at.end() || y == yo_at.end() || !std::isfinite(pred.speed_measured_m_s[i])) continue;
+      measured.push_back(pred.speed_measured_m_s[i]);
+      ours.push_back(pred.speed_extended_m_s[i]);
+      gf[0].push_back(gf_speed[0][r->second]);
+      gf[1].push_back(gf_speed[1][r->second]);
+      yo.push_back(y->second);
+    }
+    if (!samples_path.empty()) {
+      std::FILE* f = std::fopen(samples_path.c_str(), "w");
+      if (f == nullptr) throw std::runtime_error("cannot write " + samples_path);
+      std::fprintf(f,
+                   "# time_s depth_m yo measured_m_s glider_diagnose_m_s gliderflight_dynamic_m_s "
+                   "gliderflight_steady_m_s\n");
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < pred.time_s.size(); ++i) {
+        if (record_at.count(pred.time_s[i]) == 0 || yo_at.count(pred.time_s[i]) == 0 ||
+            !std::isfinite(pred.speed_measured_m_s[i])) {
+          continue;
+        }
+        std::fprintf(f, "%.3f %.3f %d %.5f %.5f %.5f %.5f\n", pred.time_s[i], pred.depth_m[i], yo[k], measured[k],
+                     ours[k], gf[0][k], gf[1][k]);
+        ++k;
+      }
+      if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + samples_path);
+    }
+    auto select = [&](bool heldout_only, bool without_excluded) {
+      std::vector<bool> use(yo.size());
+      for (std::size_t i = 0; i < yo.size(); ++i) {
+        use[i] = (!heldout_only || yo[i] % 2 == 1) && (!without_excluded || excluded.count(yo[i]) == 0);
+      }
+      return use;
+    };
+    auto count = [](const std::vector<bool>& use) { return std::count(use.begin(), use.end(), true); };
+    const auto held = select(true, false), held_kept = select(true, true), all = select(false, false),
+               all_kept = select(false, true);
+    std::string excluded_text;
+    for (int y : excluded) {
+      for (const auto& b : d.speed_through_water->by_yo) {
+        if (b.yo != y) continue;
+        char line[160];
+        std::snprintf(line, sizeof line, "%syo %d (implied vertical water velocity %+.1f mm/s, log median %+.1f)",
+                      excluded_text.empty() ? "" : ", ", y, 1e3 * b.implied_water_w_m_s,
+                      1e3 * d.speed_through_water->implied_water_w_median_m_s);
+        excluded_text += line;
+      }
+    }
+    std::printf(
+        "\nThe protocol: fitted on the even yos, scored on the odd yos (%ld DVL samples held out, %ld without "
+        "the excluded yos).\nExcluded by the reference check: %s.\n\n",
+        static_cast<long>(count(held)), static_cast<long>(count(held_kept)),
+        excluded_text.empty() ? "none" : excluded_text.c_str());
+    std::string findings;
+    for (const auto& f : d.findings) {
+      char item[96];
+      std::snprintf(item, sizeof item, "%s%s %.4g", findings.empty() ? "" : ", ", glider::diagnose::info(f.effect).id,
+                    f.value);
+      findings += item;
+    }
+    std::printf(
+        "| model (fitted on the even yos' depth rate) | held out, every yo (cm/s) | held out, without "
+        "excluded (cm/s) | all yos, every yo | all yos, without excluded |\n|---|---|---|---|---|\n");
+    auto row = [&](const std::string& name, const std::vector<double>& model) {
+      std::printf("| %s | %.2f | %.2f | %.2f | %.2f |\n", name.c_str(), 100.0 * rms(model, measured, held),
+                  100.0 * rms(model, measured, held_kept), 100.0 * rms(model, measured, all),
+                  100.0 * rms(model, measured, all_kept));
+    };
+    row("glider-diagnose, " + std::string(glider::diagnose::to_string(d.model)) + " (" +
+            (options.fit_only.empty() ? "free selection: " : "fitted: ") + findings + ")",
+        ours);
+    char name[160];
+    std::snprintf(name, sizeof name, "gliderflight dynamic (C_D0 %.4f, m_g %.3f kg; 10-35 dbar)", fitted[0].cd0,
+                  fitted[0].mass_kg);
+    row(name, gf[0]);
+    std::snprintf(name, sizeof name, "gliderflight steady (C_D0 %.4f, m_g %.3f kg; 10-35 dbar)", fitted[1].cd0,
+                  fitted[1].mass_kg);
+    row(name, gf[1]);
+    const double r_every = rms(ours, measured, held) / rms(gf[0], measured, held);
+    const double r_kept = rms(ours, measured, held_kept) / rms(gf[0], measured, held_kept);
+    std::printf(
+        "\nheld-out ratio glider-diagnose / gliderflight dynamic: %.3f every yo, %.3f without the excluded yos "
+        "(goal <= 0.8)\n",
+        r_every, r_kept);
+    return static_cast<int>(glider::cli::kOk);
+  });
+}
