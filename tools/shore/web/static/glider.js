@@ -27,7 +27,7 @@
     const form = new FormData();
     for (const [k, v] of Object.entries(fields)) form.append(k, v);
     const body = await Console.post(url, form);
-    result(body);
+    if (!url.endsWith('/ack') || !body.ok) result(body);  // an acknowledgement shows in its alert
     await refresh();
     return body;
   }
