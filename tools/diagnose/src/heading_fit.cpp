@@ -53,8 +53,9 @@ struct Trial {
 
 class Problem {
  public:
-  Problem(const HeadingValues& nominal, const HeadingResiduals& residuals, const LinkSamples& samples)
-      : nominal_(nominal), residuals_(residuals), samples_(samples) {}
+  Problem(const HeadingValues& nominal, const HeadingResiduals& residuals, const LinkSamples& samples,
+          IntervalRule intervals)
+      : nominal_(nominal), residuals_(residuals), samples_(samples), intervals_(intervals) {}
 
   HeadingValues unpack(const std::vector<HeadingEffect>& fitted, const Eigen::VectorXd& p) const {
     HeadingValues v = nominal_;
@@ -113,12 +114,23 @@ class Problem {
     return p;
   }
   const LinkSamples& samples() const { return samples_; }
+  // The parameters' uncertainty from the Jacobian at the training samples,
+  // by the interval rule (fitting_core/intervals.hpp).
+  ParameterUncertainty uncertainty(const Eigen::MatrixXd& jac, const std::vector<double>& r) const {
+    const IntervalRule rule = samples_.yo.empty() ? IntervalRule::kLag1 : intervals_;
+    std::vector<long> cluster;
+    for (std::size_t i : samples_.train) {
+      cluster.push_back(rule == IntervalRule::kLag1 ? 0 : cluster_of(rule, samples_.yo[i], samples_.phase[i]));
+    }
+    return {jac, r, cluster, rule};
+  }
   const HeadingValues& nominal() const { return nominal_; }
 
  private:
   HeadingValues nominal_;
   const HeadingResiduals& residuals_;
   const LinkSamples& samples_;
+  IntervalRule intervals_;
   double penalty_scale_ = 1.0;
   std::shared_ptr<std::map<HeadingEffect, double>> delay_start_ = std::make_shared<std::map<HeadingEffect, double>>();
 };
@@ -230,10 +242,10 @@ Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitte
     Eigen::NumericalDiff<Functor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(r.size()), k);
     numeric.df(p, jac);
-    const Eigen::MatrixXd cov = noise_covariance(jac, r);
+    const ParameterUncertainty uncertainty = problem.uncertainty(jac, r);
     for (Eigen::Index j = 0; j < k; ++j) {
       const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
-      const double half = kZ95 * std::sqrt(std::max(cov(j, j), 0.0)) * info(e).scale;
+      const double half = kZ95 * uncertainty.sigma(j) * info(e).scale;
       const double value = at(trial.values, e);
       trial.ci_low.push_back(info(e).magnitude ? std::max(0.0, value - half) : value - half);
       trial.ci_high.push_back(value + half);
@@ -341,7 +353,7 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
   out.heldout_samples = samples.heldout.size();
   out.values = nominal;
   if (samples.train.empty() || samples.heldout.empty()) return out;
-  Problem problem(nominal, residuals, samples);
+  Problem problem(nominal, residuals, samples, options.intervals);
   problem.set_penalty_scale(std::max(1e-6, problem.rms(nominal, samples.all)));
   out.baseline_rms = rms_of(problem, nominal, samples.all);
   out.baseline_rms_dive = rms_of(problem, nominal, samples.dives);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glider/diagnose/heading_effects.hpp"
+#include "glider/fitting_core/intervals.hpp"
 #include "glider/fitting_core/selection.hpp"
 
 namespace glider::diagnose {
@@ -43,11 +44,17 @@ struct LinkFit {
 struct HeadingSelectOptions {
   fitting_core::Margins margins;        // fitting_core/selection.hpp; the absolute one in the link's unit (rad, rad/s)
   std::vector<HeadingEffect> fit_only;  // fit exactly these (no selection)
-  bool select = true;                   // false (and no fit_only): the baseline alone
+  // How the 95 % intervals count correlated samples (fitting_core/intervals.hpp;
+  // LinkSamples::yo and phase name each sample's glide and yo).
+  fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;
+  bool select = true;  // false (and no fit_only): the baseline alone
 };
 
 struct LinkSamples {
   std::vector<std::size_t> all, train, heldout, dives, climbs;
+  // By sample index: the sample's yo and phase (0 dive, 1 climb), for the
+  // intervals' clusters; empty: every interval by the lag-1 rule.
+  std::vector<int> yo, phase;
 };
 
 LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect>& candidates,
