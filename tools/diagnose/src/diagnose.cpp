@@ -877,10 +877,10 @@ void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseO
   if (current.fitted.empty()) return;
   std::vector<double> base;
   residuals(set, current_fit.parameters, current.ctd_density, s.train, base);
-  const auto n = static_cast<Eigen::Index>(base.size());
   // The signature of `e`: residual change for a step of a tenth of its scale from the fit
   // (a profile steps every bin: a uniform vertical velocity).
-  auto signature = [&](Effect e) {
+  auto signature = [&](int id) {
+    const auto e = static_cast<Effect>(id);
     Parameters stepped = current_fit.parameters;
     const double step = 0.1 * info(e).scale;
     stepped.values[static_cast<std::size_t>(e)] += step;
@@ -889,54 +889,43 @@ void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseO
     }
     std::vector<double> r;
     residuals(set, stepped, current.ctd_density, s.train, r);
-    Eigen::VectorXd column(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double v = (r[static_cast<std::size_t>(i)] - base[static_cast<std::size_t>(i)]) / step;
-      column[i] = std::isfinite(v) ? v : 0.0;
-    }
-    return column;
+    return signature_column(r, base, step);
   };
-  std::vector<Eigen::VectorXd> chosen;
-  for (Effect e : current.fitted) chosen.push_back(signature(e));
-  for (std::size_t j = 0; j < current.fitted.size(); ++j) {
+  EffectSet chosen;
+  for (Effect e : current.fitted) chosen.push_back(static_cast<int>(e));
+  std::vector<int> alternatives;
+  for (Effect e : pool) {
+    if (e != Effect::kWaterDensity) alternatives.push_back(static_cast<int>(e));  // the CTD's, not a fitted number
+  }
+  for (const ScreenedPair& pair : screen_pairs(chosen, alternatives, signature, options.ambiguity_screen_correlation)) {
+    const std::size_t j = pair.finding;
     const Effect effect = current.fitted[j];
-    // The other findings' signatures, orthonormalised, projected out of both.
-    Eigen::MatrixXd others(n, static_cast<Eigen::Index>(chosen.size()) - 1);
-    for (std::size_t k = 0, c = 0; k < chosen.size(); ++k) {
-      if (k != j) others.col(static_cast<Eigen::Index>(c++)) = chosen[k];
+    const auto alternative = static_cast<Effect>(pair.alternative);
+    const double correlation = pair.correlation;
+    Candidate swapped = current;
+    swapped.fitted[j] = alternative;
+    FitResult f = fit_reported(set, swapped, s.train, s.heldout, options);
+    const double value = f.parameters.values[static_cast<std::size_t>(alternative)];
+    Ambiguity amb;
+    amb.chosen = effect;
+    amb.alternative = alternative;
+    amb.correlation = correlation;
+    amb.alternative_value = is_lag(alternative) ? std::abs(value) : value;
+    amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
+    amb.alternative_heldout_rms_m_s = f.heldout_rms;
+    // Within the selection's own margins the held-out yos cannot tell them apart.
+    amb.ambiguous = indistinguishable(f.heldout_rms, current_fit.heldout_rms, options.margins);
+    // An implausible alternative is still stated: what rules it out is then
+    // the prior (flight_model.cpp's plausible ranges), not this log.
+    amb.ruled_out_by_prior = !plausible(alternative, value);
+    if (amb.ambiguous) {  // the second reading, with its interval (a Jacobian: only where reported)
+      add_intervals(set, swapped, s.train, options.intervals, f);
+      amb.alternative_ci95_low = amb.alternative_value - kZ95 * f.sigma[j];
+      amb.alternative_ci95_high = amb.alternative_value + kZ95 * f.sigma[j];
+      if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
+      amb.separate = what_separates(effect, alternative);
     }
-    const Complement complement(others);
-    const Eigen::VectorXd a = complement.of(chosen[j]);
-    for (Effect alternative : pool) {
-      if (alternative == Effect::kWaterDensity) continue;  // the CTD's, not a fitted number
-      if (std::find(current.fitted.begin(), current.fitted.end(), alternative) != current.fitted.end()) continue;
-      const double correlation = absolute_correlation(a, complement.of(signature(alternative)));
-      if (!(correlation >= options.ambiguity_screen_correlation)) continue;
-      Candidate swapped = current;
-      swapped.fitted[j] = alternative;
-      FitResult f = fit_reported(set, swapped, s.train, s.heldout, options);
-      const double value = f.parameters.values[static_cast<std::size_t>(alternative)];
-      Ambiguity amb;
-      amb.chosen = effect;
-      amb.alternative = alternative;
-      amb.correlation = correlation;
-      amb.alternative_value = is_lag(alternative) ? std::abs(value) : value;
-      amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
-      amb.alternative_heldout_rms_m_s = f.heldout_rms;
-      // Within the selection's own margins the held-out yos cannot tell them apart.
-      amb.ambiguous = indistinguishable(f.heldout_rms, current_fit.heldout_rms, options.margins);
-      // An implausible alternative is still stated: what rules it out is then
-      // the prior (flight_model.cpp's plausible ranges), not this log.
-      amb.ruled_out_by_prior = !plausible(alternative, value);
-      if (amb.ambiguous) {  // the second reading, with its interval (a Jacobian: only where reported)
-        add_intervals(set, swapped, s.train, options.intervals, f);
-        amb.alternative_ci95_low = amb.alternative_value - kZ95 * f.sigma[j];
-        amb.alternative_ci95_high = amb.alternative_value + kZ95 * f.sigma[j];
-        if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
-        amb.separate = what_separates(effect, alternative);
-      }
-      d.ambiguities.push_back(std::move(amb));
-    }
+    d.ambiguities.push_back(std::move(amb));
   }
 }
 

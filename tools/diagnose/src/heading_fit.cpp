@@ -14,6 +14,7 @@
 
 #include "glider/fitting_core/delay_search.hpp"
 #include "glider/fitting_core/effective_samples.hpp"
+#include "glider/fitting_core/identifiability.hpp"
 #include "glider/fitting_core/intervals.hpp"
 #include "glider/fitting_core/stepwise.hpp"
 
@@ -336,6 +337,50 @@ class HeadingSelection : public SelectionProblem {
   std::map<EffectSet, Trial> trials_;
 };
 
+// Identifiability, stated as in the vertical plane (diagnose.cpp's
+// state_identifiability, the core's screen and verdict): each finding's
+// signature (the change of the training residuals for a tenth of a scale)
+// against every unused candidate's, the other findings' projected out;
+// where they correlate, the candidate is fitted in the finding's place.
+std::vector<HeadingAmbiguity> judge_pairs(const Problem& problem, HeadingSelection& selection, const EffectSet& chosen,
+                                          const std::vector<HeadingEffect>& candidates,
+                                          const HeadingSelectOptions& options) {
+  std::vector<HeadingAmbiguity> out;
+  if (chosen.empty()) return out;
+  const Trial final_fit = selection.trial(chosen);
+  std::vector<double> base;
+  problem.residuals(final_fit.values, problem.samples().train, base);
+  auto signature = [&](int id) {
+    const auto e = static_cast<HeadingEffect>(id);
+    HeadingValues stepped = final_fit.values;
+    const double step = 0.1 * info(e).scale;
+    at(stepped, e) += step;
+    std::vector<double> r;
+    problem.residuals(stepped, problem.samples().train, r);
+    return signature_column(r, base, step);
+  };
+  std::vector<int> alternatives;
+  for (HeadingEffect e : candidates) alternatives.push_back(static_cast<int>(e));
+  for (const ScreenedPair& pair : screen_pairs(chosen, alternatives, signature, options.ambiguity_screen_correlation)) {
+    const std::size_t j = pair.finding;
+    const auto alternative = static_cast<HeadingEffect>(pair.alternative);
+    const double correlation = pair.correlation;
+    EffectSet swapped = chosen;
+    swapped[j] = static_cast<int>(alternative);
+    const Trial t = selection.trial(swapped);
+    HeadingAmbiguity amb;
+    amb.chosen = static_cast<HeadingEffect>(chosen[j]);
+    amb.alternative = alternative;
+    amb.correlation = correlation;
+    amb.alternative_value = at(t.values, alternative);
+    amb.chosen_heldout_rms = final_fit.heldout_rms;
+    amb.alternative_heldout_rms = t.heldout_rms;
+    amb.ambiguous = indistinguishable(t.heldout_rms, final_fit.heldout_rms, options.margins);
+    out.push_back(amb);
+  }
+  return out;
+}
+
 double rms_of(const Problem& problem, const HeadingValues& v, const std::vector<std::size_t>& which) {
   return which.empty() ? kNaN : problem.rms(v, which);
 }
@@ -370,6 +415,7 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
     std::vector<int> ids;
     for (HeadingEffect e : candidates) ids.push_back(static_cast<int>(e));
     chosen = backward_eliminate(selection, forward_select(selection, {}, ids, rules), rules, worth);
+    out.identifiability = judge_pairs(problem, selection, chosen, candidates, options);
   }
   Trial final_fit = selection.trial(chosen);
   profile_failed_delays(problem, final_fit);
