@@ -44,3 +44,26 @@ TEST(FittingCoreIdentifiability, TheOtherFindingsAreProjectedOut) {
   const fc::Complement none(Eigen::MatrixXd(n, 0));  // no other finding: unchanged
   DOUBLES_EQUAL(0.0, (none.of(x) - x).norm(), 1e-12);
 }
+
+TEST(FittingCoreIdentifiability, ThePairsToJudgeAreThoseThatLookAlike) {
+  const Eigen::Index n = 400;
+  std::vector<Eigen::VectorXd> columns(4, Eigen::VectorXd(n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    columns[0][i] = fitting_core_test::normal(rng);                                // a finding
+    columns[1][i] = fitting_core_test::normal(rng);                                // another finding
+    columns[2][i] = -2.0 * columns[0][i] + 0.05 * fitting_core_test::normal(rng);  // looks like 0
+    columns[3][i] = columns[1][i] + fitting_core_test::normal(rng);                // like 1 in part only
+  }
+  const auto signature = [&](int e) { return columns[static_cast<std::size_t>(e)]; };
+  const std::vector<fc::ScreenedPair> pairs = fc::screen_pairs({0, 1}, {0, 1, 2, 3}, signature, 0.75);
+  LONGS_EQUAL(1, pairs.size());  // 2 against 0; 3 correlates with 1 only ~0.7; chosen ones never
+  LONGS_EQUAL(0, pairs[0].finding);
+  LONGS_EQUAL(2, pairs[0].alternative);
+  CHECK(pairs[0].correlation > 0.99);
+  // A signature: the residuals' change per unit step, a sample that cannot be predicted changes nothing.
+  const std::vector<double> base{1.0, 2.0, 3.0}, stepped{1.5, 2.0, std::nan("")};
+  const Eigen::VectorXd s = fc::signature_column(stepped, base, 0.5);
+  DOUBLES_EQUAL(1.0, s[0], 1e-12);
+  DOUBLES_EQUAL(0.0, s[1], 1e-12);
+  DOUBLES_EQUAL(0.0, s[2], 1e-12);
+}

@@ -94,3 +94,32 @@ TEST(FittingCoreIntervals, StudentIntervals) {
   DOUBLES_EQUAL(3.0, m.value, 1e-12);
   DOUBLES_EQUAL(3.0 - 2.7764 * std::sqrt(0.5), m.low, 1e-3);
 }
+
+TEST(FittingCoreIntervals, TheGlideRuleIsTheWiderOfLag1AndClusters) {
+  std::vector<double> y;
+  std::vector<long> cluster;
+  for (int g = 0; g < 6; ++g) {
+    const double shared = fitting_core_test::normal(rng);
+    for (int i = 0; i < 40; ++i) {
+      y.push_back(shared + 0.3 * fitting_core_test::normal(rng));
+      cluster.push_back(g);
+    }
+  }
+  const MeanFit f = fit_mean(y);
+  const double lag1 = std::sqrt(fc::noise_covariance(f.jac, f.r)(0, 0));
+  double t_over_normal = 0.0;
+  const double clustered = std::sqrt(fc::cluster_covariance(f.jac, f.r, cluster, t_over_normal)(0, 0));
+  const fc::ParameterUncertainty by_lag1(f.jac, f.r, cluster, fc::IntervalRule::kLag1);
+  const fc::ParameterUncertainty by_glides(f.jac, f.r, cluster, fc::IntervalRule::kGlides);
+  DOUBLES_EQUAL(lag1, by_lag1.sigma(0), 1e-12);
+  DOUBLES_EQUAL(std::max(lag1, t_over_normal * clustered), by_glides.sigma(0), 1e-12);
+  CHECK(by_glides.sigma(0) > by_lag1.sigma(0));  // errors shared by a glide: the clusters see them
+  // The same rule for a mean: the glides' interval, wider than lag-1's.
+  const fc::Estimate m1 = fc::mean_with_rule(y, cluster, fc::IntervalRule::kLag1);
+  const fc::Estimate mg = fc::mean_with_rule(y, cluster, fc::IntervalRule::kGlides);
+  DOUBLES_EQUAL(f.mean, mg.value, 1e-12);
+  DOUBLES_EQUAL(fc::kZ95 * by_glides.sigma(0), 0.5 * (mg.high - mg.low), 1e-9);
+  CHECK(mg.high - mg.low > m1.high - m1.low);
+  CHECK(fc::cluster_of(fc::IntervalRule::kGlides, 3, 2) != fc::cluster_of(fc::IntervalRule::kGlides, 3, 4));
+  CHECK(fc::cluster_of(fc::IntervalRule::kYos, 3, 2) == fc::cluster_of(fc::IntervalRule::kYos, 3, 4));
+}

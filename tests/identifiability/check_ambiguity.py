@@ -21,21 +21,33 @@ import subprocess
 import sys
 
 
-def main(truth, diagnose, vehicle, workdir):
-    seed = int(os.environ.get("GLIDER_TEST_SEED") or random.SystemRandom().randrange(1, 2**31))
-    rng = random.Random(seed)
-    grams = rng.choice([-1, 1]) * rng.uniform(30.0, 80.0)
-    print(f"seed {seed} (replay: GLIDER_TEST_SEED={seed}): hidden buoyancy_offset {grams:+.1f} g")
+def fresh_seed():
+    """A fresh seed (GLIDER_TEST_SEED replays one)."""
+    return int(os.environ.get("GLIDER_TEST_SEED") or random.SystemRandom().randrange(1, 2**31))
+
+
+def fly_and_diagnose(truth, diagnose, vehicle, workdir, seed, effect, value, plane):
+    """A shallow truth log with one hidden effect, diagnosed in one plane: its JSON, or None (printed)."""
     os.makedirs(workdir, exist_ok=True)
-    log = os.path.join(workdir, f"offset_{seed}.csv")
-    subprocess.run([truth, "--variant", "shallow", "--effect", f"buoyancy_offset={grams}", "--seed", str(seed),
+    log = os.path.join(workdir, f"{effect}_{seed}.csv")
+    subprocess.run([truth, "--variant", "shallow", "--effect", f"{effect}={value}", "--seed", str(seed),
                     "--out", log], check=True, capture_output=True, timeout=120)
-    run = subprocess.run([diagnose, log, "--vehicle", vehicle, "--plane", "vertical", "--json"],
+    run = subprocess.run([diagnose, log, "--vehicle", vehicle, "--plane", plane, "--json"],
                          capture_output=True, text=True, timeout=300)
     if run.returncode != 0:
         print(f"FAIL: glider-diagnose exit {run.returncode}: {run.stdout[-400:]} {run.stderr[-400:]}")
+        return None
+    return json.loads(run.stdout)
+
+
+def main(truth, diagnose, vehicle, workdir):
+    seed = fresh_seed()
+    rng = random.Random(seed)
+    grams = rng.choice([-1, 1]) * rng.uniform(30.0, 80.0)
+    print(f"seed {seed} (replay: GLIDER_TEST_SEED={seed}): hidden buoyancy_offset {grams:+.1f} g")
+    d = fly_and_diagnose(truth, diagnose, vehicle, workdir, seed, "buoyancy_offset", grams, "vertical")
+    if d is None:
         return 1
-    d = json.loads(run.stdout)
     named = {f["effect"]: f for f in d["findings"]}
     print("findings:", {k: round(v["value"], 5) for k, v in named.items()})
     print("ambiguous:", [(a["effect"], a["alternative"], round(a["alternative_value"], 5),

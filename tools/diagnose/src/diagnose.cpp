@@ -174,24 +174,18 @@ struct FitFunctor : LeastSquaresFunctor {
   }
 };
 
-// Covariance of the fitted (scaled) parameters. Glider residuals are not
-// independent noise: a glide's samples share one model error. kGlides/kYos:
-// the cluster-robust sandwich (J'J)^-1 [sum_g (J_g' r_g)(J_g' r_g)'] (J'J)^-1
-// with the small-sample factor G/(G-1) (n-1)/(n-k), and a Student-t quantile
-// on G-1 degrees of freedom (returned as a factor on 1.96). kLag1: the noise
-// variance over the effective sample count of an AR(1) fit to the residuals.
-Eigen::MatrixXd parameter_covariance(const SampleSet& set, std::span<const std::size_t> train,
-                                     const Eigen::MatrixXd& jac, const std::vector<double>& r,
-                                     DiagnoseOptions::Intervals intervals, double& t_over_normal) {
-  t_over_normal = 1.0;
-  if (intervals == DiagnoseOptions::Intervals::kLag1) return noise_covariance(jac, r);
+// The uncertainty of the fitted (scaled) parameters by the interval rule
+// (fitting_core/intervals.hpp): glider residuals are not independent noise,
+// a glide's samples share one model error.
+ParameterUncertainty parameter_uncertainty(const SampleSet& set, std::span<const std::size_t> train,
+                                           const Eigen::MatrixXd& jac, const std::vector<double>& r,
+                                           DiagnoseOptions::Intervals intervals) {
   std::vector<long> cluster;  // a glide (a dive, a climb or a turn of one yo) or a yo
   cluster.reserve(train.size());
   for (std::size_t sample : train) {
-    const long glide = intervals == DiagnoseOptions::Intervals::kYos ? 0 : static_cast<long>(set.phase[sample]);
-    cluster.push_back(8L * set.yo[sample] + glide);
+    cluster.push_back(cluster_of(intervals, set.yo[sample], static_cast<int>(set.phase[sample])));
   }
-  return cluster_covariance(jac, r, cluster, t_over_normal);
+  return {jac, r, cluster, intervals};
 }
 
 struct FitResult {
@@ -317,24 +311,18 @@ void add_intervals(const SampleSet& set, const Candidate& candidate, std::span<c
   Eigen::MatrixXd jac(static_cast<Eigen::Index>(train.size()), static_cast<Eigen::Index>(k));
   functor.remember(f.p, Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())));
   functor.df(f.p, jac);
-  double t_over_normal = 1.0;  // Student-t quantile / 1.96, folded into sigma
-  const Eigen::MatrixXd cov = parameter_covariance(set, train, jac, r, intervals, t_over_normal);
+  const ParameterUncertainty uncertainty = parameter_uncertainty(set, train, jac, r, intervals);
   for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
     const Effect e = candidate.fitted[j];
     const auto o = static_cast<Eigen::Index>(layout.offset[j]);
-    double var_value = 0.0;
-    if (e == Effect::kVerticalWaterVelocity) {  // variance of the weighted mean of the bins
-      const auto bins = static_cast<Eigen::Index>(layout.bin_weight.size());
-      for (Eigen::Index a = 0; a < bins; ++a) {
-        for (Eigen::Index b = 0; b < bins; ++b) {
-          var_value += layout.bin_weight[static_cast<std::size_t>(a)] * layout.bin_weight[static_cast<std::size_t>(b)] *
-                       cov(o + a, o + b);
-        }
-      }
+    Eigen::VectorXd w = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(k));
+    if (e == Effect::kVerticalWaterVelocity) {  // the weighted mean of the bins
+      for (std::size_t b = 0; b < layout.bin_weight.size(); ++b)
+        w[o + static_cast<Eigen::Index>(b)] = layout.bin_weight[b];
     } else {
-      var_value = cov(o, o);
+      w[o] = 1.0;
     }
-    double sigma = std::sqrt(std::max(var_value, 0.0)) * info(e).scale * t_over_normal;
+    double sigma = uncertainty.sigma(w) * info(e).scale;
     if (is_lag(e) && jacobian_failed(kZ95 * sigma, info(e).scale)) {
       sigma = lag_profile_sigma(set, candidate, train, f, j, k);
     }
@@ -376,25 +364,25 @@ Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx)
 void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std::span<const std::size_t> train,
                          std::span<const std::size_t> heldout, const DiagnoseOptions& options, Diagnosis& d) {
   if (!obs.has_battpos) return;
-  auto differences = [&](std::span<const std::size_t> samples) {
+  std::vector<long> glide;  // of each training difference (the interval's clusters)
+  auto differences = [&](std::span<const std::size_t> samples, std::vector<long>* cluster) {
     std::vector<double> out;
     for (std::size_t i : samples) {
       const double required = model.required_battpos_in(i, d.extended);
-      if (std::isfinite(required) && std::isfinite(obs.battpos_in[i])) out.push_back(obs.battpos_in[i] - required);
+      if (!std::isfinite(required) || !std::isfinite(obs.battpos_in[i])) continue;
+      out.push_back(obs.battpos_in[i] - required);
+      if (cluster) cluster->push_back(cluster_of(options.intervals, obs.yo[i], obs.diving[i] ? 0 : 1));
     }
     return out;
   };
-  const std::vector<double> fit_part = differences(train);
-  const std::vector<double> held = differences(heldout);
+  const std::vector<double> fit_part = differences(train, &glide);
+  const std::vector<double> held = differences(heldout, nullptr);
   if (fit_part.size() < 10 || held.empty()) return;
-  double mean = 0.0;
-  for (double x : fit_part) mean += x;
-  mean /= static_cast<double>(fit_part.size());
-  double var = 0.0;
-  for (double x : fit_part) var += (x - mean) * (x - mean);
-  const double n = static_cast<double>(fit_part.size());
-  const double n_eff = std::max(2.0, effective_sample_count(fit_part, mean));
-  const double sigma = std::sqrt(var / (n - 1.0) / n_eff);
+  // The battery's offset: the mean difference, its interval by the one rule
+  // of every fit (a bang-bang battery holds one position a glide: glides
+  // are the independent samples).
+  const Estimate offset = mean_with_rule(fit_part, glide, options.intervals);
+  const double mean = offset.value;
   std::vector<double> after(held);
   for (double& x : after) x -= mean;
   const double before_rms = rms_of(held);
@@ -404,12 +392,13 @@ void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std:
   d.baseline.rms_battpos_in = rms_of(all_differences);
   const double value = -mean;  // nose-heavy = the servo holds the battery aft of the model's
   // As for the depth rate: relative and absolute (0.01 in: the slide's resolution) improvements.
-  if (std::abs(value) > kZ95 * sigma && improves_heldout(after_rms, before_rms, {options.margins.relative, 0.01})) {
+  const double half = 0.5 * (offset.high - offset.low);
+  if (std::abs(value) > half && improves_heldout(after_rms, before_rms, {options.margins.relative, 0.01})) {
     Finding f;
     f.effect = Effect::kPitchTrimOffset;
     f.value = value;
-    f.ci95_low = value - kZ95 * sigma;
-    f.ci95_high = value + kZ95 * sigma;
+    f.ci95_low = value - half;
+    f.ci95_high = value + half;
     f.heldout_rms_m_s = d.findings.empty() ? d.baseline.heldout_rms_m_s : d.findings.back().heldout_rms_m_s;
     f.gain = d.findings.empty() ? 0.0 : d.findings.back().gain;
     f.heldout_rms_battpos_in = after_rms;
@@ -888,10 +877,10 @@ void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseO
   if (current.fitted.empty()) return;
   std::vector<double> base;
   residuals(set, current_fit.parameters, current.ctd_density, s.train, base);
-  const auto n = static_cast<Eigen::Index>(base.size());
   // The signature of `e`: residual change for a step of a tenth of its scale from the fit
   // (a profile steps every bin: a uniform vertical velocity).
-  auto signature = [&](Effect e) {
+  auto signature = [&](int id) {
+    const auto e = static_cast<Effect>(id);
     Parameters stepped = current_fit.parameters;
     const double step = 0.1 * info(e).scale;
     stepped.values[static_cast<std::size_t>(e)] += step;
@@ -900,54 +889,43 @@ void state_identifiability(const SampleSet& set, const Split& s, const DiagnoseO
     }
     std::vector<double> r;
     residuals(set, stepped, current.ctd_density, s.train, r);
-    Eigen::VectorXd column(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double v = (r[static_cast<std::size_t>(i)] - base[static_cast<std::size_t>(i)]) / step;
-      column[i] = std::isfinite(v) ? v : 0.0;
-    }
-    return column;
+    return signature_column(r, base, step);
   };
-  std::vector<Eigen::VectorXd> chosen;
-  for (Effect e : current.fitted) chosen.push_back(signature(e));
-  for (std::size_t j = 0; j < current.fitted.size(); ++j) {
+  EffectSet chosen;
+  for (Effect e : current.fitted) chosen.push_back(static_cast<int>(e));
+  std::vector<int> alternatives;
+  for (Effect e : pool) {
+    if (e != Effect::kWaterDensity) alternatives.push_back(static_cast<int>(e));  // the CTD's, not a fitted number
+  }
+  for (const ScreenedPair& pair : screen_pairs(chosen, alternatives, signature, options.ambiguity_screen_correlation)) {
+    const std::size_t j = pair.finding;
     const Effect effect = current.fitted[j];
-    // The other findings' signatures, orthonormalised, projected out of both.
-    Eigen::MatrixXd others(n, static_cast<Eigen::Index>(chosen.size()) - 1);
-    for (std::size_t k = 0, c = 0; k < chosen.size(); ++k) {
-      if (k != j) others.col(static_cast<Eigen::Index>(c++)) = chosen[k];
+    const auto alternative = static_cast<Effect>(pair.alternative);
+    const double correlation = pair.correlation;
+    Candidate swapped = current;
+    swapped.fitted[j] = alternative;
+    FitResult f = fit_reported(set, swapped, s.train, s.heldout, options);
+    const double value = f.parameters.values[static_cast<std::size_t>(alternative)];
+    Ambiguity amb;
+    amb.chosen = effect;
+    amb.alternative = alternative;
+    amb.correlation = correlation;
+    amb.alternative_value = is_lag(alternative) ? std::abs(value) : value;
+    amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
+    amb.alternative_heldout_rms_m_s = f.heldout_rms;
+    // Within the selection's own margins the held-out yos cannot tell them apart.
+    amb.ambiguous = indistinguishable(f.heldout_rms, current_fit.heldout_rms, options.margins);
+    // An implausible alternative is still stated: what rules it out is then
+    // the prior (flight_model.cpp's plausible ranges), not this log.
+    amb.ruled_out_by_prior = !plausible(alternative, value);
+    if (amb.ambiguous) {  // the second reading, with its interval (a Jacobian: only where reported)
+      add_intervals(set, swapped, s.train, options.intervals, f);
+      amb.alternative_ci95_low = amb.alternative_value - kZ95 * f.sigma[j];
+      amb.alternative_ci95_high = amb.alternative_value + kZ95 * f.sigma[j];
+      if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
+      amb.separate = what_separates(effect, alternative);
     }
-    const Complement complement(others);
-    const Eigen::VectorXd a = complement.of(chosen[j]);
-    for (Effect alternative : pool) {
-      if (alternative == Effect::kWaterDensity) continue;  // the CTD's, not a fitted number
-      if (std::find(current.fitted.begin(), current.fitted.end(), alternative) != current.fitted.end()) continue;
-      const double correlation = absolute_correlation(a, complement.of(signature(alternative)));
-      if (!(correlation >= options.ambiguity_screen_correlation)) continue;
-      Candidate swapped = current;
-      swapped.fitted[j] = alternative;
-      FitResult f = fit_reported(set, swapped, s.train, s.heldout, options);
-      const double value = f.parameters.values[static_cast<std::size_t>(alternative)];
-      Ambiguity amb;
-      amb.chosen = effect;
-      amb.alternative = alternative;
-      amb.correlation = correlation;
-      amb.alternative_value = is_lag(alternative) ? std::abs(value) : value;
-      amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
-      amb.alternative_heldout_rms_m_s = f.heldout_rms;
-      // Within the selection's own margins the held-out yos cannot tell them apart.
-      amb.ambiguous = indistinguishable(f.heldout_rms, current_fit.heldout_rms, options.margins);
-      // An implausible alternative is still stated: what rules it out is then
-      // the prior (flight_model.cpp's plausible ranges), not this log.
-      amb.ruled_out_by_prior = !plausible(alternative, value);
-      if (amb.ambiguous) {  // the second reading, with its interval (a Jacobian: only where reported)
-        add_intervals(set, swapped, s.train, options.intervals, f);
-        amb.alternative_ci95_low = amb.alternative_value - kZ95 * f.sigma[j];
-        amb.alternative_ci95_high = amb.alternative_value + kZ95 * f.sigma[j];
-        if (is_lag(alternative)) amb.alternative_ci95_low = std::max(0.0, amb.alternative_ci95_low);
-        amb.separate = what_separates(effect, alternative);
-      }
-      d.ambiguities.push_back(std::move(amb));
-    }
+    d.ambiguities.push_back(std::move(amb));
   }
 }
 

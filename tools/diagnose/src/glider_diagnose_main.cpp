@@ -230,7 +230,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> renames;
   std::string flight_model = "dynamic";
   std::string plane = "both";
-  std::string intervals = "lag1";
+  std::string intervals = "glides";
   std::vector<std::string> fit_only;
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
@@ -260,9 +260,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"vertical", "heading", "both"}))
       ->capture_default_str();
   app.add_option("--intervals", intervals,
-                 "how the vertical plane's 95 % intervals count the serially correlated samples: lag1 (the noise over "
-                 "an AR(1)'s effective sample count), glides or yos (cluster-robust, each glide or yo a cluster; "
-                 "fitting_core/intervals.hpp)")
+                 "how the 95 % intervals (both planes) count the serially correlated samples: glides or yos "
+                 "(cluster-robust, each glide or yo a cluster) or lag1 (the noise over an AR(1)'s effective sample "
+                 "count, the rule before issue 26's fitting core; fitting_core/intervals.hpp)")
       ->check(CLI::IsMember({"lag1", "glides", "yos"}))
       ->capture_default_str();
   app.add_option("--fit", fit_only,
@@ -285,6 +285,7 @@ int main(int argc, char** argv) {
                         : intervals == "glides" ? glider::diagnose::DiagnoseOptions::Intervals::kGlides
                                                 : glider::diagnose::DiagnoseOptions::Intervals::kLag1;
     glider::diagnose::HeadingDiagnoseOptions heading_options;
+    heading_options.intervals = options.intervals;
     std::vector<std::string> depth_rate_ids;
     for (const std::string& id : fit_only) {
       bool heading_id = false;

@@ -43,10 +43,16 @@ LinkSamples split(const std::vector<std::size_t>& all, const std::vector<int>& y
                   std::size_t max_samples) {
   LinkSamples s;
   s.all = all;
+  std::size_t size = 0;
+  for (std::size_t i : all) size = std::max(size, i + 1);
+  s.yo.assign(size, 0);
+  s.phase.assign(size, 0);
   for (std::size_t k = 0; k < all.size(); ++k) {
     const std::size_t i = all[k];
     (yo[i] % 2 == 0 ? s.train : s.heldout).push_back(i);
     (diving[k] ? s.dives : s.climbs).push_back(i);
+    s.yo[i] = yo[i];
+    s.phase[i] = diving[k] ? 0 : 1;
   }
   thin(s.train, max_samples);
   thin(s.heldout, max_samples);
@@ -82,6 +88,7 @@ LinkFit run_link(HeadingLink link, const HeadingValues& nominal, const HeadingRe
                  const LinkSamples& samples, const HeadingDiagnoseOptions& options) {
   HeadingSelectOptions select;
   select.margins.absolute = min_absolute_improvement(link);
+  select.intervals = options.intervals;
   const std::vector<HeadingEffect> candidates = effects_of(link, all_effects());
   if (!options.fit_only.empty()) {
     select.fit_only = effects_of(link, options.fit_only);

@@ -14,6 +14,7 @@
 
 #include "glider/fitting_core/delay_search.hpp"
 #include "glider/fitting_core/effective_samples.hpp"
+#include "glider/fitting_core/identifiability.hpp"
 #include "glider/fitting_core/intervals.hpp"
 #include "glider/fitting_core/stepwise.hpp"
 
@@ -53,8 +54,9 @@ struct Trial {
 
 class Problem {
  public:
-  Problem(const HeadingValues& nominal, const HeadingResiduals& residuals, const LinkSamples& samples)
-      : nominal_(nominal), residuals_(residuals), samples_(samples) {}
+  Problem(const HeadingValues& nominal, const HeadingResiduals& residuals, const LinkSamples& samples,
+          IntervalRule intervals)
+      : nominal_(nominal), residuals_(residuals), samples_(samples), intervals_(intervals) {}
 
   HeadingValues unpack(const std::vector<HeadingEffect>& fitted, const Eigen::VectorXd& p) const {
     HeadingValues v = nominal_;
@@ -113,12 +115,23 @@ class Problem {
     return p;
   }
   const LinkSamples& samples() const { return samples_; }
+  // The parameters' uncertainty from the Jacobian at the training samples,
+  // by the interval rule (fitting_core/intervals.hpp).
+  ParameterUncertainty uncertainty(const Eigen::MatrixXd& jac, const std::vector<double>& r) const {
+    const IntervalRule rule = samples_.yo.empty() ? IntervalRule::kLag1 : intervals_;
+    std::vector<long> cluster;
+    for (std::size_t i : samples_.train) {
+      cluster.push_back(rule == IntervalRule::kLag1 ? 0 : cluster_of(rule, samples_.yo[i], samples_.phase[i]));
+    }
+    return {jac, r, cluster, rule};
+  }
   const HeadingValues& nominal() const { return nominal_; }
 
  private:
   HeadingValues nominal_;
   const HeadingResiduals& residuals_;
   const LinkSamples& samples_;
+  IntervalRule intervals_;
   double penalty_scale_ = 1.0;
   std::shared_ptr<std::map<HeadingEffect, double>> delay_start_ = std::make_shared<std::map<HeadingEffect, double>>();
 };
@@ -230,10 +243,10 @@ Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitte
     Eigen::NumericalDiff<Functor> numeric(functor);
     Eigen::MatrixXd jac(static_cast<Eigen::Index>(r.size()), k);
     numeric.df(p, jac);
-    const Eigen::MatrixXd cov = noise_covariance(jac, r);
+    const ParameterUncertainty uncertainty = problem.uncertainty(jac, r);
     for (Eigen::Index j = 0; j < k; ++j) {
       const HeadingEffect e = fitted[static_cast<std::size_t>(j)];
-      const double half = kZ95 * std::sqrt(std::max(cov(j, j), 0.0)) * info(e).scale;
+      const double half = kZ95 * uncertainty.sigma(j) * info(e).scale;
       const double value = at(trial.values, e);
       trial.ci_low.push_back(info(e).magnitude ? std::max(0.0, value - half) : value - half);
       trial.ci_high.push_back(value + half);
@@ -324,6 +337,50 @@ class HeadingSelection : public SelectionProblem {
   std::map<EffectSet, Trial> trials_;
 };
 
+// Identifiability, stated as in the vertical plane (diagnose.cpp's
+// state_identifiability, the core's screen and verdict): each finding's
+// signature (the change of the training residuals for a tenth of a scale)
+// against every unused candidate's, the other findings' projected out;
+// where they correlate, the candidate is fitted in the finding's place.
+std::vector<HeadingAmbiguity> judge_pairs(const Problem& problem, HeadingSelection& selection, const EffectSet& chosen,
+                                          const std::vector<HeadingEffect>& candidates,
+                                          const HeadingSelectOptions& options) {
+  std::vector<HeadingAmbiguity> out;
+  if (chosen.empty()) return out;
+  const Trial final_fit = selection.trial(chosen);
+  std::vector<double> base;
+  problem.residuals(final_fit.values, problem.samples().train, base);
+  auto signature = [&](int id) {
+    const auto e = static_cast<HeadingEffect>(id);
+    HeadingValues stepped = final_fit.values;
+    const double step = 0.1 * info(e).scale;
+    at(stepped, e) += step;
+    std::vector<double> r;
+    problem.residuals(stepped, problem.samples().train, r);
+    return signature_column(r, base, step);
+  };
+  std::vector<int> alternatives;
+  for (HeadingEffect e : candidates) alternatives.push_back(static_cast<int>(e));
+  for (const ScreenedPair& pair : screen_pairs(chosen, alternatives, signature, options.ambiguity_screen_correlation)) {
+    const std::size_t j = pair.finding;
+    const auto alternative = static_cast<HeadingEffect>(pair.alternative);
+    const double correlation = pair.correlation;
+    EffectSet swapped = chosen;
+    swapped[j] = static_cast<int>(alternative);
+    const Trial t = selection.trial(swapped);
+    HeadingAmbiguity amb;
+    amb.chosen = static_cast<HeadingEffect>(chosen[j]);
+    amb.alternative = alternative;
+    amb.correlation = correlation;
+    amb.alternative_value = at(t.values, alternative);
+    amb.chosen_heldout_rms = final_fit.heldout_rms;
+    amb.alternative_heldout_rms = t.heldout_rms;
+    amb.ambiguous = indistinguishable(t.heldout_rms, final_fit.heldout_rms, options.margins);
+    out.push_back(amb);
+  }
+  return out;
+}
+
 double rms_of(const Problem& problem, const HeadingValues& v, const std::vector<std::size_t>& which) {
   return which.empty() ? kNaN : problem.rms(v, which);
 }
@@ -341,7 +398,7 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
   out.heldout_samples = samples.heldout.size();
   out.values = nominal;
   if (samples.train.empty() || samples.heldout.empty()) return out;
-  Problem problem(nominal, residuals, samples);
+  Problem problem(nominal, residuals, samples, options.intervals);
   problem.set_penalty_scale(std::max(1e-6, problem.rms(nominal, samples.all)));
   out.baseline_rms = rms_of(problem, nominal, samples.all);
   out.baseline_rms_dive = rms_of(problem, nominal, samples.dives);
@@ -358,6 +415,7 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
     std::vector<int> ids;
     for (HeadingEffect e : candidates) ids.push_back(static_cast<int>(e));
     chosen = backward_eliminate(selection, forward_select(selection, {}, ids, rules), rules, worth);
+    out.identifiability = judge_pairs(problem, selection, chosen, candidates, options);
   }
   Trial final_fit = selection.trial(chosen);
   profile_failed_delays(problem, final_fit);

@@ -47,6 +47,17 @@ ordered_json link_json(const LinkFit& f) {
                         {"gain", x.gain}});
   }
   j["findings"] = findings;
+  ordered_json pairs = ordered_json::array();
+  for (const HeadingAmbiguity& a : f.identifiability) {
+    pairs.push_back({{"chosen", info(a.chosen).id},
+                     {"alternative", info(a.alternative).id},
+                     {"correlation", a.correlation},
+                     {"alternative_value", a.alternative_value},
+                     {"chosen_heldout_rms", a.chosen_heldout_rms},
+                     {"alternative_heldout_rms", a.alternative_heldout_rms},
+                     {"verdict", a.ambiguous ? "ambiguous" : "told apart by the held-out yos"}});
+  }
+  j["identifiability"] = pairs;
   j["extended"] = {{"rms", number_or_null(f.extended_rms)}, {"heldout_rms", number_or_null(f.extended_heldout_rms)}};
   j["gain"] = number_or_null(f.gain);
   ordered_json candidates = ordered_json::array();

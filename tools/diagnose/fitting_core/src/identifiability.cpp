@@ -2,6 +2,7 @@
 #include "glider/fitting_core/identifiability.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -13,6 +14,38 @@ Complement::Complement(const Eigen::MatrixXd& columns)
                             : Eigen::MatrixXd(columns.rows(), 0)) {}
 
 Eigen::VectorXd Complement::of(const Eigen::VectorXd& v) const { return v - q_ * (q_.transpose() * v); }
+
+Eigen::VectorXd signature_column(const std::vector<double>& stepped, const std::vector<double>& base, double step) {
+  const auto n = static_cast<Eigen::Index>(base.size());
+  Eigen::VectorXd column(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double v = (stepped[static_cast<std::size_t>(i)] - base[static_cast<std::size_t>(i)]) / step;
+    column[i] = std::isfinite(v) ? v : 0.0;
+  }
+  return column;
+}
+
+std::vector<ScreenedPair> screen_pairs(const EffectSet& chosen, const std::vector<int>& alternatives,
+                                       const std::function<Eigen::VectorXd(int)>& signature, double screen) {
+  std::vector<ScreenedPair> out;
+  std::vector<Eigen::VectorXd> signatures;
+  for (int e : chosen) signatures.push_back(signature(e));
+  for (std::size_t j = 0; j < chosen.size(); ++j) {
+    const Eigen::Index n = signatures[j].size();
+    Eigen::MatrixXd others(n, static_cast<Eigen::Index>(chosen.size()) - 1);
+    for (std::size_t k = 0, c = 0; k < chosen.size(); ++k) {
+      if (k != j) others.col(static_cast<Eigen::Index>(c++)) = signatures[k];
+    }
+    const Complement complement(others);
+    const Eigen::VectorXd a = complement.of(signatures[j]);
+    for (int alternative : alternatives) {
+      if (std::find(chosen.begin(), chosen.end(), alternative) != chosen.end()) continue;
+      const double correlation = absolute_correlation(a, complement.of(signature(alternative)));
+      if (correlation >= screen) out.push_back({j, alternative, correlation});
+    }
+  }
+  return out;
+}
 
 double absolute_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const double norms = a.norm() * b.norm();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <vector>
 
 #include "glider/fitting_core/effective_samples.hpp"
 
@@ -39,6 +40,58 @@ Eigen::MatrixXd cluster_covariance(const Eigen::MatrixXd& jac, std::span<const d
   const double small_sample = g / (g - 1.0) * (n - 1.0) / std::max(1.0, n - k);
   t_over_normal = t_quantile_975(g - 1.0) / kZ95;
   return bread * meat * bread * small_sample;
+}
+
+ParameterUncertainty::ParameterUncertainty(const Eigen::MatrixXd& jac, std::span<const double> r,
+                                           std::span<const long> cluster, IntervalRule rule)
+    : lag1_(noise_covariance(jac, r)) {
+  if (rule == IntervalRule::kLag1) return;
+  clustered_ = cluster_covariance(jac, r, cluster, t_over_normal_);
+  has_clustered_ = true;
+}
+
+double ParameterUncertainty::sigma(const Eigen::VectorXd& w) const {
+  const double lag1 = std::sqrt(std::max(w.dot(lag1_ * w), 0.0));
+  if (!has_clustered_) return lag1;
+  return std::max(lag1, t_over_normal_ * std::sqrt(std::max(w.dot(clustered_ * w), 0.0)));
+}
+
+double ParameterUncertainty::sigma(Eigen::Index j) const {
+  return sigma(Eigen::VectorXd(Eigen::VectorXd::Unit(lag1_.rows(), j)));
+}
+
+long cluster_of(IntervalRule rule, int yo, int phase) {
+  switch (rule) {
+    case IntervalRule::kLag1:
+      return 0;
+    case IntervalRule::kGlides:
+      return 8L * yo + phase;
+    case IntervalRule::kYos:
+      return yo;
+  }
+  return 0;
+}
+
+Estimate mean_with_rule(std::span<const double> x, std::span<const long> cluster, IntervalRule rule) {
+  const auto n = static_cast<double>(x.size());
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= n;
+  double var = 0.0;
+  for (double v : x) var += (v - mean) * (v - mean);
+  const double var_of_mean_lag1 = var / (n - 1.0) / std::max(2.0, effective_sample_count(x, mean));
+  if (rule == IntervalRule::kLag1) {
+    const double half = kZ95 * std::sqrt(var_of_mean_lag1);
+    return {mean, mean - half, mean + half};
+  }
+  const Eigen::MatrixXd ones = Eigen::MatrixXd::Ones(static_cast<Eigen::Index>(x.size()), 1);
+  std::vector<double> r(x.begin(), x.end());
+  for (double& v : r) v = mean - v;  // the residual of the fitted mean
+  const double lag1_half = kZ95 * std::sqrt(var_of_mean_lag1);
+  double t_over_normal = 1.0;
+  const double variance = cluster_covariance(ones, r, cluster, t_over_normal)(0, 0);
+  const double half = std::max(lag1_half, kZ95 * t_over_normal * std::sqrt(variance));  // the wider (IntervalRule)
+  return {mean, mean - half, mean + half};
 }
 
 double t_quantile_975(double degrees_of_freedom) {

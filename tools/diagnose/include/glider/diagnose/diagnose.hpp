@@ -13,6 +13,7 @@
 
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/diagnose/observations.hpp"
+#include "glider/fitting_core/intervals.hpp"
 #include "glider/fitting_core/selection.hpp"
 
 namespace glider::diagnose {
@@ -139,21 +140,15 @@ struct DiagnoseOptions {
   FlightModelKind model = FlightModelKind::kDynamic;
   double max_step_s = 1.0;  // the dynamic model's integration step (RK4), at most
   // How the 95 % intervals respect the serial correlation of glider
-  // residuals (a glide's samples share one model error, not independent
-  // noise). kLag1 (default): the Jacobian covariance with the noise counted
-  // over the effective sample count of an AR(1) fitted to the residuals.
-  // kGlides / kYos: cluster-robust (sandwich) covariance with each glide (a
-  // dive, a climb or a turn of one yo) or each yo as a cluster and a
-  // Student-t quantile on clusters - 1 degrees of freedom: the analytic form
-  // of a block bootstrap over glides or yos. bench_diagnose_coverage
-  // compares them; its measured coverage is in docs/diagnose/README.md, not
-  // copied here (a copy drifts). With the pump rebuilt between a thinned
-  // log's samples (pump_ramp.hpp) kLag1 meets the 90 % goal for every effect;
-  // lift_change is the lowest, its interval spanning the glides' stall onsets
-  // (a saw-toothed misfit near 0.8 of WE01's lift slope that no interval from
-  // one solution's residuals alone can see).
-  enum class Intervals { kLag1, kGlides, kYos };
-  Intervals intervals = Intervals::kLag1;
+  // residuals (fitting_core/intervals.hpp, the rule of every plane). kGlides
+  // (default since issue 26 item 5): cluster-robust, each glide a cluster -
+  // on the independent truth (docs/science.md, changelog) lag-1 intervals
+  // held the truth in a third of the buoyancy and drag draws, too narrow
+  // for errors a whole glide shares. kLag1, the rule before, stays for
+  // comparison (bench_diagnose_coverage, the SIL's own inverse-crime
+  // benchmark, where it met the 90 % goal); kYos, each yo a cluster.
+  using Intervals = fitting_core::IntervalRule;
+  Intervals intervals = Intervals::kGlides;
   // Fit exactly these effects (no selection, no significance test), e.g. to
   // compare with another tool's fit of the same parameters. Empty: select.
   std::vector<Effect> fit_only;

@@ -60,6 +60,7 @@ struct HeadingDiagnoseOptions {
   HeadingTrackOptions track;
   std::size_t max_fit_samples = 4000;   // per half, even stride (the fits' cost)
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
+  fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
 };
 
 struct UnexplainedYaw {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glider/diagnose/heading_effects.hpp"
+#include "glider/fitting_core/intervals.hpp"
 #include "glider/fitting_core/selection.hpp"
 
 namespace glider::diagnose {
@@ -28,14 +29,27 @@ struct HeadingFinding {
   double gain = 0.0;         // fraction of the baseline held-out error removed so far
 };
 
+// A finding against an unused candidate of its link whose signature
+// resembles it (fitting_core/identifiability.hpp, the vertical plane's rule):
+// the candidate fitted in its place; ambiguous when it predicts the held-out
+// yos within the selection's margins.
+struct HeadingAmbiguity {
+  HeadingEffect chosen = HeadingEffect::kFinDelay, alternative = HeadingEffect::kFinDelay;
+  double correlation = 0.0;  // |correlation| of the signatures, the other findings' projected out
+  double alternative_value = 0.0;
+  double chosen_heldout_rms = 0.0, alternative_heldout_rms = 0.0;
+  bool ambiguous = false;
+};
+
 struct LinkFit {
   HeadingLink link = HeadingLink::kVehicle;
   std::vector<HeadingEffect> candidates;
   std::size_t samples = 0, train_samples = 0, heldout_samples = 0;
   double baseline_rms = 0.0, baseline_rms_dive = 0.0, baseline_rms_climb = 0.0;  // all samples
   double baseline_heldout_rms = 0.0;
-  std::vector<HeadingFinding> findings;  // strongest first
-  HeadingValues values{};                // nominal with the findings
+  std::vector<HeadingFinding> findings;           // strongest first
+  std::vector<HeadingAmbiguity> identifiability;  // every pair judged (selected links only)
+  HeadingValues values{};                         // nominal with the findings
   double extended_rms = 0.0, extended_heldout_rms = 0.0;
   double gain = 0.0;
 };
@@ -43,11 +57,21 @@ struct LinkFit {
 struct HeadingSelectOptions {
   fitting_core::Margins margins;        // fitting_core/selection.hpp; the absolute one in the link's unit (rad, rad/s)
   std::vector<HeadingEffect> fit_only;  // fit exactly these (no selection)
-  bool select = true;                   // false (and no fit_only): the baseline alone
+  // How the 95 % intervals count correlated samples (fitting_core/intervals.hpp;
+  // LinkSamples::yo and phase name each sample's glide and yo).
+  fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;
+  bool select = true;  // false (and no fit_only): the baseline alone
+  // Identifiability: an unused candidate whose signature correlates with a
+  // finding's at least this much is fitted in its place (the vertical plane's
+  // DiagnoseOptions::ambiguity_screen_correlation).
+  double ambiguity_screen_correlation = 0.75;
 };
 
 struct LinkSamples {
   std::vector<std::size_t> all, train, heldout, dives, climbs;
+  // By sample index: the sample's yo and phase (0 dive, 1 climb), for the
+  // intervals' clusters; empty: every interval by the lag-1 rule.
+  std::vector<int> yo, phase;
 };
 
 LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect>& candidates,

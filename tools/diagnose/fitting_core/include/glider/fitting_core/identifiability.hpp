@@ -7,6 +7,10 @@
 // data alike here; the held-out yos then decide (selection.hpp's
 // indistinguishable): told apart, or ambiguous with both readings stated.
 #include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+#include "glider/fitting_core/stepwise.hpp"
 
 namespace glider::fitting_core {
 
@@ -23,5 +27,24 @@ class Complement {
 
 // |a . b| / (|a| |b|); NaN when either is zero.
 double absolute_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b);
+
+// An effect's signature: the change of the residuals `stepped` from `base`
+// per unit of `step` (a sample a model cannot predict changes nothing).
+Eigen::VectorXd signature_column(const std::vector<double>& stepped, const std::vector<double>& base, double step);
+
+// A finding (`chosen[finding]`) and an alternative to judge it against.
+struct ScreenedPair {
+  std::size_t finding = 0;
+  int alternative = 0;
+  double correlation = 0.0;
+};
+
+// Every finding of `chosen` against every effect of `alternatives` not
+// chosen whose signatures (`signature(effect)`) correlate at least `screen`
+// once the other findings' signatures are projected out of both: the pairs
+// the data may not separate, for the plane to fit the alternative in the
+// finding's place and judge (selection.hpp's indistinguishable).
+std::vector<ScreenedPair> screen_pairs(const EffectSet& chosen, const std::vector<int>& alternatives,
+                                       const std::function<Eigen::VectorXd(int)>& signature, double screen);
 
 }  // namespace glider::fitting_core

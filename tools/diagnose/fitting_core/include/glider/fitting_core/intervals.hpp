@@ -17,6 +17,21 @@ struct Interval {
   double low = 0.0, high = 0.0;
 };
 
+// How an interval counts serially correlated samples. kLag1: the noise over
+// the effective sample count of an AR(1) fitted to the residuals (neighbours
+// share an error). kGlides / kYos: also cluster-robust, each glide (a dive, a
+// climb or a turn of one yo) or each yo a cluster, Student-t on clusters - 1
+// degrees of freedom (the analytic form of a block bootstrap over glides or
+// yos), which sees an error shared by a whole glide (a model-form error that
+// differs between dives and climbs) that lag-1 does not; the wider of the
+// two is the interval: each misses what the other sees (a parameter only a
+// few turns inform has few clusters whose scores can cancel).
+enum class IntervalRule { kLag1, kGlides, kYos };
+
+// The cluster of a sample under `rule`: its glide (its yo and its phase, a
+// number 0-7 for a dive, a climb or a turn) or its yo; kLag1 has none (0).
+long cluster_of(IntervalRule rule, int yo, int phase);
+
 // An estimate with its 95 % interval.
 struct Estimate {
   double value = 0.0, low = 0.0, high = 0.0;
@@ -34,6 +49,29 @@ Eigen::MatrixXd noise_covariance(const Eigen::MatrixXd& jac, std::span<const dou
 // G - 1 degrees of freedom over 1.96. One cluster: infinite.
 Eigen::MatrixXd cluster_covariance(const Eigen::MatrixXd& jac, std::span<const double> r, std::span<const long> cluster,
                                    double& t_over_normal);
+
+// A mean of `x` and its 95 % interval: kLag1, the standard error over the
+// effective sample count with the normal quantile; kGlides / kYos, the
+// cluster-robust one (`cluster[i]`: x[i]'s glide or yo) with Student's t.
+Estimate mean_with_rule(std::span<const double> x, std::span<const long> cluster, IntervalRule rule);
+
+// The uncertainty of a least-squares fit's parameters by `rule`, from the
+// Jacobian `jac` of the residuals `r` (`cluster[i]`: row i's glide or yo,
+// cluster_of; unused for kLag1).
+class ParameterUncertainty {
+ public:
+  ParameterUncertainty(const Eigen::MatrixXd& jac, std::span<const double> r, std::span<const long> cluster,
+                       IntervalRule rule);
+  // sigma of the combination w' p of the parameters, with kZ95 sigma its 95 %
+  // half-width (a Student-t quantile folded in); sigma(j) of parameter j.
+  double sigma(const Eigen::VectorXd& w) const;
+  double sigma(Eigen::Index j) const;
+
+ private:
+  Eigen::MatrixXd lag1_, clustered_;
+  double t_over_normal_ = 1.0;
+  bool has_clustered_ = false;
+};
 
 // The two-sided 95 % quantile of Student's t.
 double t_quantile_975(double degrees_of_freedom);
