@@ -2,6 +2,7 @@
 #include "glider/model/prescribed_pitch.hpp"
 
 #include <cmath>
+#include <cstring>
 
 namespace glider::model {
 namespace {
@@ -85,14 +86,9 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
 
 PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p,
                                                                         const PrescribedPitchInputs& in) const {
-  const PrescribedPitchInputs& k = stage_.in;
-  // NaN (a log without temperature) matches NaN: the stage computes the same from either.
-  auto eq = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
-  const bool same = stage_valid_ && eq(in.theta_rad, k.theta_rad) && eq(in.q_rad_s, k.q_rad_s) &&
-                    eq(in.pumped_volume_m3, k.pumped_volume_m3) && eq(in.battery_pos_m, k.battery_pos_m) &&
-                    eq(in.depth_m, k.depth_m) && eq(in.density_kg_m3, k.density_kg_m3) &&
-                    eq(in.temperature_c, k.temperature_c);
-  if (!same) {
+  // Bitwise the same inputs (NaN included): the same stage.
+  static_assert(sizeof(PrescribedPitchInputs) == 7 * sizeof(double), "compared as bytes: no padding");
+  if (!stage_valid_ || std::memcmp(&in, &stage_.in, sizeof in) != 0) {
     stage_ = stage(in);
     stage_valid_ = true;
   }

@@ -178,6 +178,8 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
       z[0] = 0.0;
       if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0).norm();
       std::size_t flown = first;
+      Stage end_stage;  // the last step's end stage (its inputs compared bitwise)
+      bool have_end = false;
       for (std::size_t i = first; i < last; ++i) {
         const double dt = t.time_s[i + 1] - t.time_s[i];
         const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
@@ -208,20 +210,25 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
           const double fa = static_cast<double>(s) / steps;
           const double fb = (s + 0.5) / steps;
           const double fc = static_cast<double>(s + 1) / steps;
+          // The step's stages: its first is usually the last one's end (the same inputs, bitwise).
           const auto a = inputs(i, fa, lagged, fa);
-          const auto b = inputs(i, fb, lagged, fa);
-          const auto c = inputs(i, fc, lagged, fa);
-          const Derivative d1 = dynamics.derivative(p, a);
+          if (!(have_end && std::memcmp(&a, &end_stage.in, sizeof a) == 0)) end_stage = dynamics.stage(a);
+          const Stage sa = end_stage;
+          const Stage sb = dynamics.stage(inputs(i, fb, lagged, fa));
+          end_stage = dynamics.stage(inputs(i, fc, lagged, fa));
+          have_end = true;
+          const Stage& sc = end_stage;
+          const Derivative d1 = dynamics.derivative(p, sa);
           const Impulse p2 = p + 0.5 * h * d1.p_dot;
-          const Derivative d2 = dynamics.derivative(p2, b);
+          const Derivative d2 = dynamics.derivative(p2, sb);
           const Impulse p3 = p + 0.5 * h * d2.p_dot;
-          const Derivative d3 = dynamics.derivative(p3, b);
+          const Derivative d3 = dynamics.derivative(p3, sb);
           const Impulse p4 = p + h * d3.p_dot;
-          const Derivative d4 = dynamics.derivative(p4, c);
+          const Derivative d4 = dynamics.derivative(p4, sc);
           depth +=
               h / 6.0 * (d1.depth_rate_m_s + 2.0 * d2.depth_rate_m_s + 2.0 * d3.depth_rate_m_s + d4.depth_rate_m_s);
           p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
-          lagged = c.pumped_volume_m3;
+          lagged = sc.in.pumped_volume_m3;
         }
         if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
         z[i + 1 - first] = depth;
