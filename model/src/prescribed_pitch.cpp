@@ -55,48 +55,38 @@ double PrescribedPitchDynamics::net_buoyancy_kg(const PrescribedPitchInputs& in)
   return dynamics_.net_buoyancy_kg(in.depth_m, water_of(in), masses_of(in));
 }
 
-PrescribedPitchDynamics::Stage PrescribedPitchDynamics::stage(const PrescribedPitchInputs& in) const {
-  const WaterSample water = water_of(in);
-  const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
-  const TranslationalMass a = translational(dynamics_.vehicle(), m);
-  return {in,
-          a.a11,
-          a.a33,
-          a.a13,
-          a.a23,
-          m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water),
-          std::sin(in.theta_rad),
-          std::cos(in.theta_rad)};
-}
-
-Eigen::Vector2d PrescribedPitchDynamics::velocities(const Impulse& p, const Stage& s) const {
-  return velocities_from({s.a11, s.a33, s.a13, s.a23}, p, s.in.q_rad_s);
-}
-
-PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p, const Stage& s) const {
-  const Eigen::Vector2d v = velocities_from({s.a11, s.a33, s.a13, s.a23}, p, s.in.q_rad_s);
-  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, s.in.density_kg_m3, v[0], v[1],
-                                               std::sqrt(v[0] * v[0] + v[1] * v[1]), false);
-  const double g = dynamics_.environment().gravity_m_s2;
-  const double f1 = -s.net_kg * g * s.sin_theta + flow.f1;
-  const double f3 = s.net_kg * g * s.cos_theta + flow.f3;
-  return {{f1 - s.in.q_rad_s * p[1], f3 + s.in.q_rad_s * p[0]}, -v[0] * s.sin_theta + v[1] * s.cos_theta};
-}
-
 PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p,
                                                                         const PrescribedPitchInputs& in) const {
   const PrescribedPitchInputs& k = stage_.in;
   // NaN (a log without temperature) matches NaN: the stage computes the same from either.
   auto eq = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
-  const bool same = stage_valid_ && eq(in.theta_rad, k.theta_rad) && eq(in.q_rad_s, k.q_rad_s) &&
+  const bool same = stage_.valid && eq(in.theta_rad, k.theta_rad) && eq(in.q_rad_s, k.q_rad_s) &&
                     eq(in.pumped_volume_m3, k.pumped_volume_m3) && eq(in.battery_pos_m, k.battery_pos_m) &&
                     eq(in.depth_m, k.depth_m) && eq(in.density_kg_m3, k.density_kg_m3) &&
                     eq(in.temperature_c, k.temperature_c);
   if (!same) {
-    stage_ = stage(in);
-    stage_valid_ = true;
+    const WaterSample water = water_of(in);
+    const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
+    const TranslationalMass a = translational(dynamics_.vehicle(), m);
+    stage_ = {true,
+              in,
+              a.a11,
+              a.a33,
+              a.a13,
+              a.a23,
+              m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water),
+              std::sin(in.theta_rad),
+              std::cos(in.theta_rad)};
   }
-  return derivative(p, stage_);
+  const Eigen::Vector2d v = velocities_from({stage_.a11, stage_.a33, stage_.a13, stage_.a23}, p, in.q_rad_s);
+  const double net_kg = stage_.net_kg;
+  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, in.density_kg_m3, v[0], v[1],
+                                               std::sqrt(v[0] * v[0] + v[1] * v[1]), false);
+  const double g = dynamics_.environment().gravity_m_s2;
+  const double sin_theta = stage_.sin_theta, cos_theta = stage_.cos_theta;
+  const double f1 = -net_kg * g * sin_theta + flow.f1;
+  const double f3 = net_kg * g * cos_theta + flow.f3;
+  return {{f1 - in.q_rad_s * p[1], f3 + in.q_rad_s * p[0]}, -v[0] * sin_theta + v[1] * cos_theta};
 }
 
 PrescribedPitchDynamics::Impulse PrescribedPitchDynamics::rate(const Impulse& p,

@@ -142,34 +142,6 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     // velocity moves the glider without changing its flight through the
     // water: ground_depth adds it (the start state aside, which the spin-up
     // fits on the depth over ground, a flight does not depend on it).
-    // The stages of the spin-up's intervals (three per RK4 step, and the
-    // interval's end for the speed): they depend on the values and the log,
-    // not on the start state, so the spin-up fit's many flights share them
-    // (computed by the same expressions: the same bits).
-    using Stage = model::PrescribedPitchDynamics::Stage;
-    std::vector<Stage>& plan = plan_;
-    std::vector<std::size_t>& plan_at = plan_at_;  // interval first + k starts at plan[plan_at[k]]
-    plan.clear();
-    plan_at.clear();
-    auto ensure_plan = [&](std::size_t last) {
-      double lagged = in0.pumped_volume_m3;
-      for (std::size_t i = first; i < last; ++i) {
-        plan_at.push_back(plan.size());
-        const double dt = t.time_s[i + 1] - t.time_s[i];
-        const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
-        for (int s = 0; s < steps; ++s) {
-          const double fa = static_cast<double>(s) / steps;
-          const double fb = (s + 0.5) / steps;
-          const double fc = static_cast<double>(s + 1) / steps;
-          const auto c = inputs(i, fc, lagged, fa);
-          plan.push_back(dynamics.stage(inputs(i, fa, lagged, fa)));
-          plan.push_back(dynamics.stage(inputs(i, fb, lagged, fa)));
-          plan.push_back(dynamics.stage(c));
-          lagged = c.pumped_volume_m3;
-        }
-        plan.push_back(dynamics.stage(inputs(i, 1.0, lagged, 1.0)));
-      }
-    };
     auto fly_run = [&](double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u) {
       Impulse p = dynamics.impulse(v1, v3, in0);
       double lagged = in0.pumped_volume_m3;
@@ -183,27 +155,6 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
         const int steps = std::max(1, static_cast<int>(std::ceil(dt / max_step_s_ - 1e-9)));
         const double h = dt / steps;
         double depth = z[i - first];
-        if (i - first < plan_at.size()) {  // the planned stages
-          const Stage* stage = &plan[plan_at[i - first]];
-          for (int s = 0; s < steps; ++s, stage += 3) {
-            const Derivative d1 = dynamics.derivative(p, stage[0]);
-            const Impulse p2 = p + 0.5 * h * d1.p_dot;
-            const Derivative d2 = dynamics.derivative(p2, stage[1]);
-            const Impulse p3 = p + 0.5 * h * d2.p_dot;
-            const Derivative d3 = dynamics.derivative(p3, stage[1]);
-            const Impulse p4 = p + h * d3.p_dot;
-            const Derivative d4 = dynamics.derivative(p4, stage[2]);
-            depth +=
-                h / 6.0 * (d1.depth_rate_m_s + 2.0 * d2.depth_rate_m_s + 2.0 * d3.depth_rate_m_s + d4.depth_rate_m_s);
-            p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
-            lagged = stage[2].in.pumped_volume_m3;
-          }
-          if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
-          z[i + 1 - first] = depth;
-          if (u != nullptr) (*u)[i + 1 - first] = dynamics.velocities(p, *stage).norm();  // the interval's end
-          flown = i + 1;
-          continue;
-        }
         for (int s = 0; s < steps; ++s) {
           const double fa = static_cast<double>(s) / steps;
           const double fb = (s + 0.5) / steps;
@@ -297,7 +248,6 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
       std::size_t fit_last = first;
       while (fit_last + 1 < end && t.time_s[fit_last + 1] - t.time_s[first] <= t.spin_up_s) ++fit_last;
       if (fit_last >= first + 3) {
-        ensure_plan(fit_last);
         const std::size_t n = fit_last - first;
         std::vector<double>& zf = fit_buffer_;
         std::vector<double>& rel = fit_relative_buffer_;

@@ -46,19 +46,6 @@ class PrescribedPitchDynamics {
   };
   Derivative derivative(const Impulse& p, const PrescribedPitchInputs& in) const;
 
-  // What a stage needs of its inputs alone (masses, net weight, the pitch's
-  // sine and cosine): an integrator that meets the same inputs again (a
-  // fit's flights through the same log) computes it once; derivative(p,
-  // stage(in)) is derivative(p, in), bit for bit.
-  struct Stage {
-    PrescribedPitchInputs in;
-    double a11 = 0.0, a33 = 0.0, a13 = 0.0, a23 = 0.0;  // translational mass (A(0,0), A(1,1), A(0,2), A(1,2))
-    double net_kg = 0.0, sin_theta = 0.0, cos_theta = 1.0;
-  };
-  Stage stage(const PrescribedPitchInputs& in) const;
-  Derivative derivative(const Impulse& p, const Stage& stage) const;
-  Eigen::Vector2d velocities(const Impulse& p, const Stage& stage) const;  // velocities(p, stage.in)
-
   // Body-frame velocities relative to the water (v1, v3) from the impulses.
   Eigen::Vector2d velocities(const Impulse& p, const PrescribedPitchInputs& in) const;
   Impulse impulse(double v1, double v3, const PrescribedPitchInputs& in) const;
@@ -73,11 +60,18 @@ class PrescribedPitchDynamics {
 
  private:
   GliderDynamics dynamics_;  // its environment carries only the gravity
-  // The last inputs' stage: RK4's two middle stages share their inputs, and
-  // a step's last stage is usually the next step's first. A cache per object
+  // What a stage needs of its inputs alone (masses, net weight, the pitch's
+  // sine and cosine), kept for the last inputs: RK4's two middle stages share
+  // them, and a step's last stage is usually the next step's first. The same
+  // expressions on the same inputs, so the same bits; a cache per object
   // (one object per flight, never shared between threads).
-  mutable bool stage_valid_ = false;
-  mutable Stage stage_;
+  struct StageInputs {
+    bool valid = false;
+    PrescribedPitchInputs in;
+    double a11 = 0.0, a33 = 0.0, a13 = 0.0, a23 = 0.0;  // translational mass (A(0,0), A(1,1), A(0,2), A(1,2))
+    double net_kg = 0.0, sin_theta = 0.0, cos_theta = 1.0;
+  };
+  mutable StageInputs stage_;
 };
 
 }  // namespace glider::model

@@ -12,7 +12,6 @@
 
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/diagnose/track.hpp"
-#include "glider/model/prescribed_pitch.hpp"
 
 namespace glider::diagnose {
 
@@ -57,9 +56,6 @@ class DynamicFlightModel final : public DepthRateModel {
     std::vector<double> depth, speed;
   };
   mutable std::vector<RelativeFlight> relative_flights_;
-  // A run's spin-up stages for the values being flown (fly's plan), reused across calls.
-  mutable std::vector<model::PrescribedPitchDynamics::Stage> plan_;
-  mutable std::vector<std::size_t> plan_at_;
   // Each run's last start states (the body velocities fitted on its spin-up)
   // by what they depend on: the values but the depth lag, the density
   // source, the water's profile.
