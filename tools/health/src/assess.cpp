@@ -41,16 +41,18 @@ void current_level(EffectAssessment& a, const std::vector<double>& t, const std:
       return;
     }
     case diagnose::TrendShape::kStep: {
+      // step_after_s went through days and back: a second's tolerance.
       std::vector<double> after;
       for (std::size_t i = 0; i < n; ++i) {
-        if (t[i] >= tr.step_after_s) after.push_back(v[i]);
+        if (t[i] >= tr.step_after_s - 1.0) after.push_back(v[i]);
       }
+      if (after.size() < 2) after.assign(v.end() - 2, v.end());  // min_step_side is at least 2
       const diagnose::Interval i = diagnose::mean_with_interval(after);
       a.value = i.value;
       a.low = i.low;
       a.high = i.high;
       for (std::size_t k : a.segments) {
-        if (segments[k].time_s >= tr.step_after_s) {
+        if (segments[k].time_s >= tr.step_after_s - 1.0) {
           a.since_s = segments[k].start_s;
           break;
         }

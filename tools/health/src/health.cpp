@@ -71,9 +71,10 @@ HealthRun update_health(const HealthOptions& options) {
     }
     const double placement = static_cast<double>(mission_index) * options.seconds_apart;
     auto it = stored.find(files.name);
-    if (it != stored.end() && it->second.fingerprint == files.fingerprint && it->second.files == files.files &&
+    if (it != stored.end() && it->second.fingerprint == files.fingerprint &&
         (it->second.time_offset_s == 0.0 || it->second.time_offset_s == placement)) {
       run.segments.push_back(it->second);
+      run.segments.back().files = files.files;  // the same files, maybe by another path
       ++run.reused;
       continue;
     }

@@ -202,7 +202,7 @@ bool write_outputs(const std::filesystem::path& dir, const HealthRun& run, const
                    ") per segment with its 95 % interval, the shape, and the "
                    "alert threshold (a change of this size from the start)",
                "set xlabel 'day of the deployment'\nset ylabel '" + std::string(e.id) + " (" + e.unit +
-                   ")'\nset key outside bottom\nplot '" + name +
+                   ")' noenhanced\nset key outside bottom\nplot '" + name +
                    ".dat' u 1:2:3:4 w yerrorbars pt 7 ps 0.6 t 'segment', '' u 1:5 w l lw 2 t '" +
                    (a.trend.shape == diagnose::TrendShape::kNone ? "none" : diagnose::to_string(a.trend.shape)) +
                    "', '' u 1:6 w l dt 2 lc rgb 'red' t 'alert threshold', '' u 1:7 w l dt 2 lc rgb 'red' notitle");

@@ -80,6 +80,7 @@ std::string state_json(const HealthState& state) {
     alerts.push_back({{"id", a.id}, {"effect", info(a.effect).id}, {"kind", a.kind}});
   }
   const json j = {{"schema", kStateSchema},
+                  {"measurement_version", kMeasurementVersion},
                   {"glider", state.glider},
                   {"vehicle_key", state.vehicle_key},
                   {"seconds_apart", state.seconds_apart},
@@ -97,6 +98,11 @@ std::optional<HealthState> read_state(const std::string& path, std::string& prob
     if (!in) throw std::runtime_error("cannot be opened");
     const json j = json::parse(in);
     if (j.at("schema") != kStateSchema) throw std::runtime_error("schema is not " + std::string(kStateSchema));
+    if (j.at("measurement_version") != kMeasurementVersion) {
+      throw std::runtime_error("measured by another version of health (measurement_version " +
+                               j.at("measurement_version").dump() + ", this one " +
+                               std::to_string(kMeasurementVersion) + ")");
+    }
     HealthState s;
     s.glider = j.at("glider").get<std::string>();
     s.vehicle_key = j.at("vehicle_key").get<std::string>();

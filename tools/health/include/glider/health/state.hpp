@@ -15,6 +15,9 @@
 namespace glider::health {
 
 inline constexpr const char* kStateSchema = "glider-health-state/1";
+// Bumped whenever a segment's measurement changes (another fit, another
+// rule for the data): a state measured otherwise is measured again.
+inline constexpr int kMeasurementVersion = 1;
 
 struct HealthState {
   std::string glider;
