@@ -74,8 +74,11 @@ std::string health_json(const HealthRun& run) {
                         {"lo", number_or_null(v.low)},
                         {"hi", number_or_null(v.high)}});
     }
+    // The contract's names (CONTRACTS.md: constant | line | step).
     json shape = nullptr;
-    if (a.trend.shape != diagnose::TrendShape::kNone) shape = diagnose::to_string(a.trend.shape);
+    if (a.trend.shape == diagnose::TrendShape::kConstant) shape = "constant";
+    if (a.trend.shape == diagnose::TrendShape::kLinear) shape = "line";
+    if (a.trend.shape == diagnose::TrendShape::kStep) shape = "step";
     json entry = {{"name", e.id},
                   {"unit", e.unit},
                   {"what", e.what},
