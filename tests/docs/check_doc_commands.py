@@ -83,6 +83,8 @@ PLACEHOLDERS = {
     ("./glider diagnose", "--cache", "DIR"): "tests/data/real/dbd/comet-2019/cac",
     ("./glider diagnose", "--fit", "IDS"): "drag_change,buoyancy_offset",
     ("./glider diagnose", "--window-m", "A,B"): "10,35",
+    ("./glider health", None, "DIR|FILES"): "tests/data/real/dbd/comet-2016",
+    ("./glider health", "--state", "FILE"): "{tmp}/state.json",
     ("./glider diagnose-deployment", None, "LOG"): "{demo_deployment}",
     ("./glider diagnose-deployment", None, "LOGS"): "{demo_deployment}",
     ("./glider diagnose-deployment", "--join", "N"): "1",

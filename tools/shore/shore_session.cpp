@@ -9,6 +9,7 @@
 #include <set>
 #include <vector>
 
+#include "after_surfacing.hpp"
 #include "console_link.hpp"
 #include "glider_folders.hpp"
 #include "received_files.hpp"
@@ -304,6 +305,7 @@ class Call {
       const std::string name = call_id_ + ".surfacing.json";
       write_file_atomically(folders_.logs / name, surfacing_event_json(record_));
       journal_.write('*', "event written: " + name);
+      for (const std::string& note : after_surfacing(folders_.base)) journal_.write('*', note);
     } catch (const std::exception& error) {
       std::fprintf(stderr, "glider-shore: %s: event not written: %s\n", record_.glider.c_str(), error.what());
     }

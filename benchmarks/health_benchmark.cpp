@@ -1,0 +1,303 @@
+// SPDX-License-Identifier: Apache-2.0
+// Flight health measured (issue 24; docs/health.md): SIL deployments on
+// decimated .sbd files with faults drawn at random each run (fresh seed
+// unless --seed, printed), health updated one surfacing at a time through
+// its state file as the shore runs it. Prints detection (alerted at one of
+// the first 3 surfacings with the fault), size within 20 %, interval
+// coverage, false alarms per 100 glider-days (clean SIL deployments, the
+// fault draws' other effects, the real deployments of tests/data/real) and
+// the cost of one surfacing's update. Not a CTest: run by
+// `./glider benchmark health`.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "glider/cli/tool.hpp"
+#include "glider/health/glider_dir.hpp"
+#include "glider/health/health.hpp"
+#include "sil_deployment.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace glider;
+using health::HealthEffect;
+
+constexpr double kHoursApart = 8.0;
+constexpr double kPerDay = 24.0 / kHoursApart;
+
+enum class Fault { kNone, kDrag, kBuoyancy, kFin, kPump };
+const char* name(Fault f) {
+  switch (f) {
+    case Fault::kNone:
+      return "clean";
+    case Fault::kDrag:
+      return "drag +2-5 %/day from day 2-8";
+    case Fault::kBuoyancy:
+      return "buoyancy step 30-80 g either way";
+    case Fault::kFin:
+      return "fin effectiveness halved";
+    case Fault::kPump:
+      return "pump rate -30 %";
+  }
+  return "";
+}
+HealthEffect effect_of(Fault f) {
+  switch (f) {
+    case Fault::kDrag:
+      return HealthEffect::kDragChange;
+    case Fault::kBuoyancy:
+      return HealthEffect::kBuoyancyOffset;
+    case Fault::kFin:
+      return HealthEffect::kFinEffectiveness;
+    case Fault::kPump:
+      return HealthEffect::kPumpRate;
+    default:
+      return HealthEffect::kCount;
+  }
+}
+
+struct Draw {
+  Fault fault = Fault::kNone;
+  health_sil::FaultPlan plan;
+  int surfacings = 0;
+  int onset = -1;      // first surfacing flown with the fault
+  double truth = 0.0;  // the size the alert should give (drag: rate/day; step: g; fin, pump: fraction)
+  std::uint64_t seed = 0;
+  std::string text;
+};
+
+struct Outcome {
+  int detected = -1;  // surfacing of the first alert of the fault's effect (-1: never)
+  bool sized = false, within_20 = false, covered = false;
+  double size = 0.0, low = 0.0, high = 0.0;
+  std::vector<std::string> false_alarms;  // other alerts (distinct ids), with the surfacing
+  double glider_days = 0.0;
+  std::vector<double> update_s;  // wall time of each surfacing's update
+  std::vector<double> update_cpu_s;
+  std::string error;
+};
+
+Draw draw(Fault fault, std::mt19937_64& rng) {
+  Draw d;
+  d.fault = fault;
+  d.seed = rng();
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  switch (fault) {
+    case Fault::kNone:
+      d.surfacings = 30;
+      d.text = "clean, 10 days";
+      break;
+    case Fault::kDrag: {
+      d.surfacings = 30;
+      d.plan.drag_per_day = 0.02 + 0.03 * u(rng);
+      d.plan.drag_onset_day = 2.0 + 6.0 * u(rng);
+      // Surfacing k flies day k / kPerDay: the first with a larger drag.
+      d.onset = static_cast<int>(std::floor(d.plan.drag_onset_day * kPerDay)) + 1;
+      d.truth = d.plan.drag_per_day;
+      char t[120];
+      std::snprintf(t, sizeof t, "drag +%.2f %%/day from day %.2f (surfacing %d)", 100 * d.truth, d.plan.drag_onset_day,
+                    d.onset);
+      d.text = t;
+      break;
+    }
+    default: {
+      d.surfacings = 12;
+      d.onset = 3 + static_cast<int>(rng() % 6);  // surfacings 3-8: at least 3 before and after
+      char t[120];
+      if (fault == Fault::kBuoyancy) {
+        d.plan.step_g = (30.0 + 50.0 * u(rng)) * (rng() % 2 ? 1.0 : -1.0);
+        d.plan.step_at = d.onset;
+        d.truth = d.plan.step_g;
+        std::snprintf(t, sizeof t, "buoyancy %+.1f g at surfacing %d", d.truth, d.onset);
+      } else if (fault == Fault::kFin) {
+        d.plan.fin_factor = 0.5;
+        d.plan.fin_at = d.onset;
+        d.truth = -0.5;
+        std::snprintf(t, sizeof t, "fin effectiveness x0.5 at surfacing %d", d.onset);
+      } else {
+        d.plan.pump_factor = 0.7;
+        d.plan.pump_at = d.onset;
+        d.truth = -0.3;
+        std::snprintf(t, sizeof t, "pump rate x0.7 at surfacing %d", d.onset);
+      }
+      d.text = t;
+    }
+  }
+  return d;
+}
+
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+Outcome run(const Draw& d, const std::string& dir) {
+  Outcome o;
+  fs::remove_all(dir);
+  const health::HealthOptions options = health_sil::health_options(dir, kHoursApart);
+  const HealthEffect target = effect_of(d.fault);
+  std::set<std::string> other_ids;
+  health::HealthRun last;
+  for (int k = 0; k < d.surfacings; ++k) {
+    o.error = health_sil::fly_surfacing(dir + "/sbd", d.plan, k, kHoursApart, d.seed + static_cast<std::uint64_t>(k));
+    if (!o.error.empty()) return o;
+    const double cpu0 = cpu_seconds();
+    const auto wall0 = std::chrono::steady_clock::now();
+    try {
+      last = health::update_health(options);
+    } catch (const std::exception& e) {
+      o.error = e.what();
+      return o;
+    }
+    o.update_s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count());
+    o.update_cpu_s.push_back(cpu_seconds() - cpu0);
+    for (const health::Alert& a : last.assessment.alerts) {
+      const bool is_target = a.effect == target && d.onset >= 0 && k >= d.onset;
+      if (is_target) {
+        if (o.detected < 0) o.detected = k;
+      } else if (other_ids.insert(std::string(health::info(a.effect).id) + "/" + a.kind).second) {
+        o.false_alarms.push_back("surfacing " + std::to_string(k) + ": " + a.message);
+      }
+    }
+  }
+  o.glider_days = d.surfacings / kPerDay;
+  // The size at the last surfacing: the drag's rate from its line alert,
+  // the others' step.
+  for (const health::Alert& a : last.assessment.alerts) {
+    if (a.effect != target) continue;
+    if (d.fault == Fault::kDrag && a.kind != "line") continue;
+    if (d.fault != Fault::kDrag && a.kind != "step") continue;
+    o.sized = true;
+    o.size = a.size;
+    o.low = a.low;
+    o.high = a.high;
+  }
+  if (o.sized) {
+    o.within_20 = std::abs(o.size - d.truth) <= 0.2 * std::abs(d.truth);
+    o.covered = o.low <= d.truth && d.truth <= o.high;
+  }
+  return o;
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(std::min<double>(v.size() - 1, std::floor(p * static_cast<double>(v.size()))))];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  cli::Tool tool("bench_health", "Flight health on SIL deployments with drawn faults (fresh seeds)");
+  CLI::App& app = tool.app();
+  std::size_t draws = 4, clean = 0;
+  std::uint64_t seed = 0;
+  std::string out = "build/release/benchmark/health";
+  tool.add_integer("--draws", draws, 1, 1000, "", "deployments per fault kind");
+  tool.add_integer("--clean", clean, 0, 1000, "", "clean 10-day deployments (default: as --draws)");
+  tool.add_integer("--seed", seed, 0, cli::kMaxSeed, "", "replay a run (default: a fresh seed, printed)");
+  app.add_option("--out", out, "scratch folder for the deployments' files");
+  return tool.run(argc, argv, [&]() -> int {
+    if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;
+    if (clean == 0) clean = draws;
+    std::printf(
+        "bench_health --seed %llu --draws %zu --clean %zu  (surfacings %g h apart, decimated .sbd: "
+        "tests/health/sbdlist.dat)\n",
+        static_cast<unsigned long long>(seed), draws, clean, kHoursApart);
+    std::mt19937_64 rng(seed);
+    std::vector<double> update_s, update_cpu_s;
+    std::map<Fault, std::vector<std::pair<Draw, Outcome>>> results;
+    std::vector<Fault> plan;
+    for (std::size_t i = 0; i < draws; ++i) {
+      for (Fault f : {Fault::kDrag, Fault::kBuoyancy, Fault::kFin, Fault::kPump}) plan.push_back(f);
+    }
+    for (std::size_t i = 0; i < clean; ++i) plan.push_back(Fault::kNone);
+    std::size_t n = 0;
+    for (Fault f : plan) {
+      const Draw d = draw(f, rng);
+      const Outcome o = run(d, out + "/draw" + std::to_string(n++));
+      std::printf("  %-48s ", d.text.c_str());
+      if (!o.error.empty()) {
+        std::printf("ERROR: %s\n", o.error.c_str());
+      } else {
+        if (f != Fault::kNone) {
+          std::printf("alerted at %d (onset %d)", o.detected, d.onset);
+          if (o.sized) std::printf(", size %.4g [%.4g, %.4g] (truth %.4g)", o.size, o.low, o.high, d.truth);
+        }
+        std::printf("; other alerts %zu\n", o.false_alarms.size());
+        for (const std::string& fa : o.false_alarms) std::printf("      other: %s\n", fa.c_str());
+        update_s.insert(update_s.end(), o.update_s.begin(), o.update_s.end());
+        update_cpu_s.insert(update_cpu_s.end(), o.update_cpu_s.begin(), o.update_cpu_s.end());
+      }
+      std::fflush(stdout);
+      results[f].push_back({d, o});
+    }
+
+    std::printf(
+        "\n| fault | draws | alerted within 3 surfacings | size within 20 %% | interval covers truth | "
+        "other alerts |\n|---|---|---|---|---|---|\n");
+    double clean_days = 0.0, fault_days = 0.0;
+    std::size_t clean_alarms = 0, fault_alarms = 0;
+    for (auto& [f, list] : results) {
+      std::size_t ok = 0, detected3 = 0, within = 0, covered = 0, others = 0;
+      double days = 0.0;
+      for (const auto& [d, o] : list) {
+        if (!o.error.empty()) continue;
+        ++ok;
+        days += o.glider_days;
+        others += o.false_alarms.size();
+        if (f == Fault::kNone) continue;
+        if (o.detected >= d.onset && o.detected <= d.onset + 2) ++detected3;
+        within += o.within_20 ? 1 : 0;
+        covered += o.covered ? 1 : 0;
+      }
+      if (f == Fault::kNone) {
+        clean_days += days;
+        clean_alarms += others;
+        std::printf("| %s | %zu | - | - | - | %zu in %.1f glider-days |\n", name(f), ok, others, days);
+      } else {
+        fault_days += days;
+        fault_alarms += others;
+        std::printf("| %s | %zu | %zu | %zu | %zu | %zu in %.1f glider-days |\n", name(f), ok, detected3, within,
+                    covered, others, days);
+      }
+    }
+    std::printf(
+        "\nfalse alarms per 100 glider-days: clean SIL %.1f (%zu in %.1f days); other effects in the fault "
+        "draws %.1f (%zu in %.1f days)\n",
+        clean_days > 0 ? 100.0 * clean_alarms / clean_days : 0.0, clean_alarms, clean_days,
+        fault_days > 0 ? 100.0 * fault_alarms / fault_days : 0.0, fault_alarms, fault_days);
+
+    // The real deployments: every binary deployment in tests/data/real/dbd.
+    std::printf("\nreal deployments (tests/data/real/dbd, full-resolution .dbd/.ebd):\n");
+    for (const char* deployment : {"comet-2016", "comet-2019"}) {
+      health::HealthOptions o;
+      o.inputs = {std::string(GLIDER_SOURCE_DIR) + "/tests/data/real/dbd/" + deployment};
+      const health::NominalChoice nominal = health::nominal_for({}, {}, "comet", cli::boards_dir());
+      o.vehicle = nominal.vehicle;
+      o.vehicle_source = nominal.source;
+      const health::HealthRun r = health::update_health(o);
+      double days = 0.0;
+      for (const auto& s : r.segments) days += (s.end_s - s.start_s) / 86400.0;
+      std::size_t judged = 0;
+      for (const auto& s : r.segments) judged += s.judged ? 1 : 0;
+      std::printf("  %s: %zu segments (%zu judged), %.3f glider-days: state %s, %zu alert(s)\n", deployment,
+                  r.segments.size(), judged, days, r.assessment.state.c_str(), r.assessment.alerts.size());
+      for (const auto& a : r.assessment.alerts) std::printf("      %s\n", a.message.c_str());
+    }
+
+    std::printf(
+        "\ncost of one surfacing's update (measure the new segments, assess, write the state), %zu updates: "
+        "wall median %.2f s, 90th %.2f s, max %.2f s; CPU median %.2f s, max %.2f s\n",
+        update_s.size(), percentile(update_s, 0.5), percentile(update_s, 0.9), percentile(update_s, 1.0),
+        percentile(update_cpu_s, 0.5), percentile(update_cpu_s, 1.0));
+    return 0;
+  });
+}

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// One segment measured: every health effect's value in that segment alone,
+// so a new surfacing costs one segment's fits, never the deployment's.
+// The drag and buoyancy offset (and the pump lag where the data allow the
+// dynamic model) come from the diagnosis core (glider::diagnose::diagnose,
+// fit_only); the fin effectiveness and roll from its heading plane; the pump
+// rate and the charge per km are read off the logged values.
+#include <string>
+#include <vector>
+
+#include "glider/health/effects.hpp"
+#include "glider/health/segments.hpp"
+#include "glider/model/vehicle.hpp"
+
+namespace glider::health {
+
+struct SegmentMeasurement {
+  std::string name;
+  std::vector<std::string> files;
+  std::string fingerprint;
+  std::string glider;                 // the name its files carry (empty: none)
+  double time_offset_s = 0.0;         // added to the log's clock (SIL logs placed in the deployment)
+  double start_s = 0.0, end_s = 0.0;  // deployment time (the log's clock + the offset)
+  double time_s = 0.0;                // the middle: where its values sit on the time axis
+  bool judged = false;                // the vertical plane could be fitted
+  std::string why;                    // not judged: why (names the file)
+  EffectValues effects;
+  double cost_s = 0.0;  // wall time of the measurement
+};
+
+// Never throws for the data (a segment with no dives, too thin, a vehicle
+// that cannot fly it: judged = false and `why`).
+SegmentMeasurement measure_segment(const model::VehicleParams& nominal, const LoadedSegment& segment,
+                                   double time_offset_s);
+
+// The pump's rate while it runs (cc/s): the mean over the intervals between
+// stored m_ballast_pumped values where the pump ran the whole interval (it
+// also moved in the intervals before and after), with its Student-t
+// interval; NaN and why when there are fewer than 3 such intervals.
+EffectValue pump_rate(const flightlog::FlightLog& raw);
+
+// Charge per km through the water: the coulomb counter's rise over the
+// distance flown in the glides (depth change / tan |pitch|).
+EffectValue battery_per_km(const flightlog::FlightLog& log);
+
+}  // namespace glider::health

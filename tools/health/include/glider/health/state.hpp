@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Health's incremental state (ROOT/GLIDER/health/state.json): each segment's
+// measurement, keyed by its files' fingerprint, and the alerts raised at the
+// last update. Written atomically (a temporary beside it, then rename(2));
+// read back only when every check passes: a damaged or inconsistent file is
+// never trusted, the data are measured again instead.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glider/health/assess.hpp"
+#include "glider/health/measure.hpp"
+
+namespace glider::health {
+
+inline constexpr const char* kStateSchema = "glider-health-state/1";
+// Bumped whenever a segment's measurement changes (another fit, another
+// rule for the data): a state measured otherwise is measured again.
+inline constexpr int kMeasurementVersion = 1;
+
+struct HealthState {
+  std::string glider;
+  std::string vehicle_key;  // the nominal vehicle's file text hash: another vehicle invalidates every value
+  double seconds_apart = 0.0;
+  std::vector<SegmentMeasurement> segments;
+  std::vector<Alert> alerts;
+};
+
+std::string state_json(const HealthState& state);
+
+// The state in `path`, or none with `problem` set (no file: problem empty).
+// Checks: JSON, schema, every field's type and range (finite times, intervals
+// around their values), unique segment names, times in order.
+std::optional<HealthState> read_state(const std::string& path, std::string& problem);
+
+// Writes `text` to `path` by a temporary in the same folder, fsync, rename.
+void write_atomically(const std::string& path, const std::string& text);
+
+}  // namespace glider::health

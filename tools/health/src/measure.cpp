@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/health/measure.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "glider/diagnose/diagnose.hpp"
+#include "glider/diagnose/heading_diagnose.hpp"
+#include "glider/diagnose/observations.hpp"
+#include "glider/diagnose/trend.hpp"
+
+namespace glider::health {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+EffectValue not_judged(std::string why) {
+  EffectValue v;
+  v.why = std::move(why);
+  return v;
+}
+
+EffectValue& at(EffectValues& values, HealthEffect e) { return values[static_cast<std::size_t>(e)]; }
+
+// The vertical plane: drag and offset fitted jointly (+ the pump lag where
+// the dynamic model can run: it needs the turns sampled densely).
+// Returns the vehicle as this segment flew it (the nominal with the
+// segment's vertical findings): the heading plane's speeds come from it.
+model::VehicleParams measure_vertical(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
+                                      SegmentMeasurement& m) {
+  const diagnose::Observations obs = diagnose::prepare_observations(log);
+  diagnose::DiagnoseOptions options;
+  options.fit_only = {diagnose::Effect::kBuoyancyOffset, diagnose::Effect::kDragChange};
+  const bool dynamic = !obs.track.scored.empty();
+  if (dynamic) options.fit_only.push_back(diagnose::Effect::kPumpLag);
+  const diagnose::Diagnosis d = diagnose::diagnose(nominal, obs, options);
+  for (const diagnose::Finding& f : d.findings) {
+    HealthEffect e{};
+    if (f.effect == diagnose::Effect::kBuoyancyOffset) {
+      e = HealthEffect::kBuoyancyOffset;
+    } else if (f.effect == diagnose::Effect::kDragChange) {
+      e = HealthEffect::kDragChange;
+    } else if (f.effect == diagnose::Effect::kPumpLag) {
+      e = HealthEffect::kPumpLag;
+    } else {
+      continue;
+    }
+    at(m.effects, e) = {f.value, f.ci95_low, f.ci95_high, {}};
+  }
+  if (!dynamic) {
+    at(m.effects, HealthEffect::kPumpLag) = not_judged(
+        "needs the dynamic model (turns sampled every few seconds at least); these data are too sparse in "
+        "the inflections: steady glides only");
+  }
+  m.judged = at(m.effects, HealthEffect::kDragChange).judged();
+  return diagnose::apply(diagnose::diagnosed_nominal(nominal, d), d.extended, d.thermal_reference_c);
+}
+
+void measure_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& log, SegmentMeasurement& m) {
+  try {
+    diagnose::HeadingDiagnoseOptions options;
+    options.fit_only = {diagnose::HeadingEffect::kFinEffectiveness, diagnose::HeadingEffect::kRollOffset};
+    const diagnose::HeadingDiagnosis d = diagnose::diagnose_heading(nominal, log, options);
+    const double logged_roll = d.roll_logged ? d.logged_roll_rad : 0.0;
+    for (const diagnose::HeadingFinding& f : d.yaw.findings) {
+      if (f.effect == diagnose::HeadingEffect::kFinEffectiveness) {
+        at(m.effects, HealthEffect::kFinEffectiveness) = {f.value, f.ci95_low, f.ci95_high, {}};
+      } else if (f.effect == diagnose::HeadingEffect::kRollOffset) {
+        at(m.effects, HealthEffect::kRollOffset) = {
+            (logged_roll + f.value) * kDeg, (logged_roll + f.ci95_low) * kDeg, (logged_roll + f.ci95_high) * kDeg, {}};
+      }
+    }
+    for (HealthEffect e : {HealthEffect::kFinEffectiveness, HealthEffect::kRollOffset}) {
+      if (!at(m.effects, e).judged()) at(m.effects, e) = not_judged("the heading fit gave no value");
+    }
+  } catch (const std::exception& error) {
+    for (HealthEffect e : {HealthEffect::kFinEffectiveness, HealthEffect::kRollOffset}) {
+      at(m.effects, e) = not_judged(error.what());
+    }
+  }
+}
+
+}  // namespace
+
+EffectValue pump_rate(const flightlog::FlightLog& raw) {
+  const flightlog::Column* pumped = raw.find("m_ballast_pumped");
+  if (pumped == nullptr) return not_judged("the data have no m_ballast_pumped");
+  const flightlog::Column& time = raw.time();
+  std::vector<double> t, v;
+  for (std::size_t i = 0; i < pumped->size(); ++i) {
+    if (std::isfinite((*pumped)[i])) {
+      t.push_back(time[i]);
+      v.push_back((*pumped)[i]);
+    }
+  }
+  // An interval is "running" when the reading moved by more than a reading's
+  // resolution in it; a rate counts when its neighbours ran too (the pump
+  // started before it and stopped after it) and all three are short (a long
+  // one hides a stop).
+  constexpr double kMovedCc = 2.0, kMaxIntervalS = 15.0;
+  auto running = [&](std::size_t k) {  // interval k: samples k, k+1
+    const double dt = t[k + 1] - t[k];
+    return dt > 0.0 && dt <= kMaxIntervalS && std::abs(v[k + 1] - v[k]) > kMovedCc;
+  };
+  std::vector<double> rates;
+  for (std::size_t k = 1; k + 2 < t.size(); ++k) {
+    if (!running(k - 1) || !running(k) || !running(k + 1)) continue;
+    if ((v[k + 1] - v[k]) * (v[k] - v[k - 1]) <= 0.0) continue;  // same direction
+    rates.push_back(std::abs(v[k + 1] - v[k]) / (t[k + 1] - t[k]));
+  }
+  if (rates.size() < 3) {
+    return not_judged("only " + std::to_string(rates.size()) +
+                      " interval(s) with the pump running throughout (3 needed): the pump's travel is too short "
+                      "against the sampling of m_ballast_pumped");
+  }
+  const diagnose::Interval i = diagnose::mean_with_interval(rates);
+  return {i.value, i.low, i.high, {}};
+}
+
+EffectValue battery_per_km(const flightlog::FlightLog& log) {
+  const flightlog::Column* charge = log.find("m_coulomb_amphr_total");
+  if (charge == nullptr) return not_judged("the data have no m_coulomb_amphr_total (coulomb counter)");
+  const flightlog::Column* depth = log.find("m_depth");
+  const flightlog::Column* pitch = log.find("m_pitch");
+  if (depth == nullptr || pitch == nullptr) return not_judged("the data have no m_depth or m_pitch");
+  const flightlog::Column& time = log.time();
+  double first = std::nan(""), last = std::nan("");
+  for (double c : *charge) {
+    if (!std::isfinite(c)) continue;
+    if (!std::isfinite(first)) first = c;
+    last = c;
+  }
+  double distance_m = 0.0, last_t = std::nan(""), last_z = std::nan("");
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    const double z = (*depth)[i], p = (*pitch)[i];
+    if (!std::isfinite(z)) continue;
+    if (std::isfinite(last_z) && std::isfinite(p) && time[i] - last_t <= 30.0 && z > 2.0 && std::abs(p) > 0.1745) {
+      distance_m += std::abs(z - last_z) / std::tan(std::abs(p));
+    }
+    last_z = z;
+    last_t = time[i];
+  }
+  if (!std::isfinite(first) || last <= first) return not_judged("the coulomb counter did not advance");
+  if (distance_m < 500.0) return not_judged("less than 0.5 km flown in glides");
+  const double value = (last - first) / (distance_m / 1000.0);
+  return {value, std::nan(""), std::nan(""), {}};
+}
+
+SegmentMeasurement measure_segment(const model::VehicleParams& nominal, const LoadedSegment& segment,
+                                   double time_offset_s) {
+  const auto start = std::chrono::steady_clock::now();
+  SegmentMeasurement m;
+  m.name = segment.files.name;
+  m.files = segment.files.files;
+  m.fingerprint = segment.files.fingerprint;
+  if (const auto g = glider_of_file(m.files.front())) m.glider = *g;
+  m.time_offset_s = time_offset_s;
+  m.start_s = segment.start_s + time_offset_s;
+  m.end_s = segment.end_s + time_offset_s;
+  m.time_s = 0.5 * (m.start_s + m.end_s);
+  const std::string file = m.files.front();
+  if (!segment.log) {
+    m.why = file + ": cannot be read: " + segment.problem;
+    for (EffectValue& v : m.effects) v = not_judged(m.why);
+  } else {
+    const flightlog::FlightLog& log = *segment.log;
+    model::VehicleParams flown = nominal;
+    try {
+      flown = measure_vertical(nominal, log, m);
+    } catch (const std::exception& error) {
+      const std::string what = error.what();
+      m.why = what.find(file) == std::string::npos ? file + ": " + what : what;
+      for (HealthEffect e : {HealthEffect::kDragChange, HealthEffect::kBuoyancyOffset, HealthEffect::kPumpLag}) {
+        at(m.effects, e) = not_judged(m.why);
+      }
+    }
+    measure_heading(flown, log, m);
+    at(m.effects, HealthEffect::kPumpRate) = pump_rate(*segment.raw);
+    at(m.effects, HealthEffect::kBatteryPerKm) = battery_per_km(log);
+  }
+  m.cost_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return m;
+}
+
+}  // namespace glider::health
