@@ -59,13 +59,17 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
   const double east_now = s.current.east_m_s, north_now = s.current.north_m_s;
   opt.before_launch = [east_now, north_now](fw::FlightSoftware& flight) { flight.seed_current({east_now, north_now}); };
   RunOutcome out;
-  auto record = [&out](double t, const model::Truth& truth) {
+  // Times count from the dive (the forecast's origin is the call's end, when
+  // the glider dived); a run that never dives counts from its start.
+  double dive_s = -1.0;
+  auto record = [&out, &dive_s](double t, const model::Truth& truth) {
     out.surfaced = true;
-    out.time_s = t;
+    out.time_s = t - std::max(0.0, dive_s);
     out.east_m = truth.east_m;
     out.north_m = truth.north_m;
   };
   opt.stop_when = [&](double t, const fw::FlightSoftware& flight, const model::Truth& truth) {
+    if (dive_s < 0.0 && !flight.navigator().at_surface()) dive_s = t;
     if (flight.phase() == fw::Phase::kAbort) {
       if (!out.aborted) {
         out.aborted = true;
