@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   std::string glider_dir;
   bool json = false;
   auto common = [&](CLI::App* command) {
-    command->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER)")->required();
+    command->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER); required");
     command->add_option("--mission", options.mission,
                         "the glider's .mi (default: GLIDER/mission/missions/NAME.mi, its .ma in mission/mafiles/)");
     command->add_option("--vehicle", options.vehicle,
@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   common(rehearse);
   app.require_subcommand(0, 1);
   return tool.run(argc, argv, [&]() -> int {
+    if (glider_dir.empty()) throw glider::cli::ToolError(glider::cli::kUsage, "--glider-dir is required");
     if (*rehearse) {
       const glider::forecast::Rehearsal r = glider::forecast::rehearse(glider_dir, file, options);
       if (json) {

@@ -187,7 +187,11 @@ MissionNow mission_now(const fs::path& glider_dir, const fs::path& mission_file,
     trial.push_back(file);
     const fw::app::PreparedMission p = staged(mission_file, trial, setup, stage);
     if (!p.config) {
+      // The loader may name the .mi line that reads the file: say which file it is.
       now.refusal = first_message(p, stage, file);
+      if (now.refusal.find(file.filename().string()) == std::string::npos) {
+        now.refusal = file.filename().string() + ": refused by the glider's mission loader: " + now.refusal;
+      }
       fs::remove_all(stage);
       return now;
     }
@@ -198,24 +202,34 @@ MissionNow mission_now(const fs::path& glider_dir, const fs::path& mission_file,
   }
   fs::remove_all(stage);
 
-  // Which waypoint: replay the fixes since the last change.
+  // Which waypoint: replay the glider's own tests since the last change.
+  // Under water it counts a waypoint when its dead-reckoned track (from the
+  // fix it dived from to the DR position it surfaced at, taken straight)
+  // comes within the radius; at the surface, when the fix is within it.
   const fw::MissionPlan& plan = now.config.plan;
   if (plan.waypoint_count > 0) {
     std::optional<fw::LatLon> previous;
     const fw::LocalFrame frame(plan.waypoints[0]);
-    for (std::size_t i = replay_from; i < history.size(); ++i) {
-      if (!history[i].has_fix()) continue;
-      const fw::LatLon here{*history[i].lat_deg, *history[i].lon_deg};
+    auto count_along = [&](fw::EastNorth a, fw::EastNorth b) {
       // Several waypoints may fall on one track; count each in order.
       for (std::size_t guard = 0; guard < fw::kMaxWaypoints && !list_done(plan, now.waypoints_reached); ++guard) {
         const fw::EastNorth w = frame.to_local(plan.waypoints[static_cast<std::size_t>(now.active_waypoint)]);
-        const fw::EastNorth b = frame.to_local(here);
-        const fw::EastNorth a = previous ? frame.to_local(*previous) : b;
         if (!passes_within(a, b, w, plan.waypoint_radius_m)) break;
         ++now.waypoints_reached;
         now.active_waypoint = (now.active_waypoint + 1) % plan.waypoint_count;
       }
-      previous = here;
+    };
+    for (std::size_t i = replay_from; i < history.size(); ++i) {
+      const Surfacing& s = history[i];
+      if (previous && s.dr_lat_deg && s.dr_lon_deg) {
+        count_along(frame.to_local(*previous), frame.to_local({*s.dr_lat_deg, *s.dr_lon_deg}));
+      } else if (previous && s.has_fix()) {
+        count_along(frame.to_local(*previous), frame.to_local({*s.lat_deg, *s.lon_deg}));
+      }
+      if (!s.has_fix()) continue;
+      const fw::EastNorth here = frame.to_local({*s.lat_deg, *s.lon_deg});
+      count_along(here, here);
+      previous = fw::LatLon{*s.lat_deg, *s.lon_deg};
     }
   }
   return now;
