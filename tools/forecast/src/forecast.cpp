@@ -73,6 +73,11 @@ fs::path vehicle_file(const fs::path& glider_dir, const std::string& glider, con
 // Each surfacing's estimate of the current over the segment before it.
 std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history) {
   std::vector<CurrentSample> out;
+  // The first event's estimate is of a segment before the history (its
+  // length unknown: taken as half an hour before the call).
+  if (!history.empty() && history[0].water_vx_m_s && history[0].water_vy_m_s) {
+    out.push_back({history[0].call_start_utc_s - 1800.0, *history[0].water_vx_m_s, *history[0].water_vy_m_s});
+  }
   for (std::size_t i = 1; i < history.size(); ++i) {
     const Surfacing& s = history[i];
     if (!s.water_vx_m_s || !s.water_vy_m_s) continue;
@@ -153,6 +158,58 @@ void summarise(const std::vector<RunOutcome>& runs, const fw::LatLon& fix, Forec
   f.ellipse.orientation_deg = bearing;
 }
 
+bool list_done(const fw::MissionPlan& plan, std::int32_t reached) {
+  if (plan.waypoint_count == 0 || plan.legs_to_run == fw::kLegsLoopForever) return false;
+  const std::int32_t legs = plan.legs_to_run == fw::kLegsOnce ? plan.waypoint_count : plan.legs_to_run;
+  return reached >= legs;
+}
+
+void advance(MissionNow& now, std::int32_t count) {
+  for (std::int32_t i = 0; i < count && !list_done(now.config.plan, now.waypoints_reached); ++i) {
+    ++now.waypoints_reached;
+    now.active_waypoint = (now.active_waypoint + 1) % now.config.plan.waypoint_count;
+  }
+}
+
+// Which waypoint the glider flies to now: its own arrivals, replayed. Under
+// water the firmware counts a waypoint when its dead reckoning comes within
+// the radius, which no fix shows: each segment since the last plan change is
+// flown once in SIL (nominal vehicle, the current the glider measured over
+// that segment, its navigator's belief from the dive) and the waypoints the
+// firmware counted are counted; at each fix, its surface test (the fix
+// within the radius) too.
+void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, const FlightSetup& base,
+                      const ForecastOptions& options) {
+  const fw::MissionPlan& plan = now.config.plan;
+  if (plan.waypoint_count == 0) return;
+  const Surfacing* previous = nullptr;
+  for (std::size_t i = now.replay_from; i < history.size(); ++i) {
+    const Surfacing& s = history[i];
+    if (previous != nullptr && !list_done(plan, now.waypoints_reached)) {
+      FlightSetup segment = base;
+      segment.config.plan = remaining_plan(now);
+      segment.fix = {*previous->lat_deg, *previous->lon_deg};
+      const bool measured = s.water_vx_m_s && s.water_vy_m_s;
+      segment.current.east_m_s = measured ? *s.water_vx_m_s : previous->water_vx_m_s.value_or(0.0);
+      segment.current.north_m_s = measured ? *s.water_vy_m_s : previous->water_vy_m_s.value_or(0.0);
+      segment.firmware_current.reset();
+      if (previous->water_vx_m_s && previous->water_vy_m_s) {
+        segment.firmware_current = fw::EastNorth{*previous->water_vx_m_s, *previous->water_vy_m_s};
+      }
+      ForecastOptions one = options;
+      one.threads = 1;
+      one.max_dive_s = std::max(600.0, s.call_start_utc_s - previous->call_end_utc_s + 300.0);
+      advance(now, fly_runs(segment, one, 1, false).at(0).waypoints_reached);
+    }
+    previous = nullptr;
+    if (!s.has_fix()) continue;
+    previous = &s;
+    const fw::LocalFrame frame({*s.lat_deg, *s.lon_deg});
+    const fw::EastNorth w = frame.to_local(plan.waypoints[static_cast<std::size_t>(now.active_waypoint)]);
+    if (std::hypot(w.east_m, w.north_m) <= plan.waypoint_radius_m) advance(now, 1);
+  }
+}
+
 }  // namespace
 
 Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& options) {
@@ -193,7 +250,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
       sil::vehicle_setup(setup.vehicle, fitted, options.max_working_depth_m, false, setup.vehicle.trim_density_kg_m3);
   vsetup.source = vfile.string();
   const fs::path mission = find_mission(glider_dir, options.mission, last->mission_name);
-  const MissionNow now = mission_now(glider_dir, mission, vsetup, history, options.rehearse, options.include_queue);
+  MissionNow now = mission_now(glider_dir, mission, vsetup, history, options.rehearse, options.include_queue);
   f.mission = mission.filename().string();
   f.queued_applied = now.applied;
   for (const std::string& note : now.notes) f.notes.push_back(note);
@@ -203,8 +260,21 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     return f;
   }
   setup.config = now.config;
-  setup.config.plan = remaining_plan(now);
   setup.fix = {f.fix_lat_deg, f.fix_lon_deg};
+  if (history.back().water_vx_m_s && history.back().water_vy_m_s) {
+    setup.firmware_current = fw::EastNorth{*history.back().water_vx_m_s, *history.back().water_vy_m_s};
+  }
+  if (options.waypoint >= 0 && now.applied.empty()) {
+    if (options.waypoint >= now.config.plan.waypoint_count) {
+      throw std::runtime_error("--waypoint " + std::to_string(options.waypoint) + ": the mission has " +
+                               std::to_string(now.config.plan.waypoint_count) + " waypoints");
+    }
+    now.active_waypoint = options.waypoint;
+    f.notes.push_back("active waypoint given (--waypoint), not replayed");
+  } else {
+    replay_waypoints(now, history, setup, options);
+  }
+  setup.config.plan = remaining_plan(now);
   if (history.back().mission_time_s >= 0.0 && std::isfinite(now.config.mission.max_duration_s)) {
     const double mt_at_dive = history.back().mission_time_s + (f.dive_utc_s - history.back().call_start_utc_s);
     setup.overtime_left_s = now.config.mission.max_duration_s - mt_at_dive;

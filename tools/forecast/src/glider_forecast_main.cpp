@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     tool.add_integer(command, "--seed", options.seed, 0, glider::cli::kMaxSeed, "", "first run's seed")
         ->capture_default_str();
+    tool.add_integer(command, "--waypoint", options.waypoint, -1, 31, "index",
+                     "the waypoint the glider flies to now (default -1: replayed from the surfacings)")
+        ->capture_default_str();
     tool.add_number(command, "--max-working-depth-m", options.max_working_depth_m, {1.0, 11000.0, "m"},
                     "the glider's rating the mission is checked against")
         ->capture_default_str();

@@ -78,21 +78,6 @@ std::optional<fs::path> sent_copy(const fs::path& glider_dir, const std::string&
   return best;
 }
 
-// Does the straight track from a to b pass within r of w?
-bool passes_within(fw::EastNorth a, fw::EastNorth b, fw::EastNorth w, double r) {
-  const double dx = b.east_m - a.east_m, dy = b.north_m - a.north_m;
-  const double len2 = dx * dx + dy * dy;
-  double t = len2 > 0.0 ? ((w.east_m - a.east_m) * dx + (w.north_m - a.north_m) * dy) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(a.east_m + t * dx - w.east_m, a.north_m + t * dy - w.north_m) <= r;
-}
-
-bool list_done(const fw::MissionPlan& plan, std::int32_t reached) {
-  if (plan.waypoint_count == 0 || plan.legs_to_run == fw::kLegsLoopForever) return false;
-  const std::int32_t legs = plan.legs_to_run == fw::kLegsOnce ? plan.waypoint_count : plan.legs_to_run;
-  return reached >= legs;
-}
-
 }  // namespace
 
 fs::path find_mission(const fs::path& glider_dir, const std::string& explicit_mission, const std::string& named) {
@@ -202,36 +187,7 @@ MissionNow mission_now(const fs::path& glider_dir, const fs::path& mission_file,
   }
   fs::remove_all(stage);
 
-  // Which waypoint: replay the glider's own tests since the last change.
-  // Under water it counts a waypoint when its dead-reckoned track (from the
-  // fix it dived from to the DR position it surfaced at, taken straight)
-  // comes within the radius; at the surface, when the fix is within it.
-  const fw::MissionPlan& plan = now.config.plan;
-  if (plan.waypoint_count > 0) {
-    std::optional<fw::LatLon> previous;
-    const fw::LocalFrame frame(plan.waypoints[0]);
-    auto count_along = [&](fw::EastNorth a, fw::EastNorth b) {
-      // Several waypoints may fall on one track; count each in order.
-      for (std::size_t guard = 0; guard < fw::kMaxWaypoints && !list_done(plan, now.waypoints_reached); ++guard) {
-        const fw::EastNorth w = frame.to_local(plan.waypoints[static_cast<std::size_t>(now.active_waypoint)]);
-        if (!passes_within(a, b, w, plan.waypoint_radius_m)) break;
-        ++now.waypoints_reached;
-        now.active_waypoint = (now.active_waypoint + 1) % plan.waypoint_count;
-      }
-    };
-    for (std::size_t i = replay_from; i < history.size(); ++i) {
-      const Surfacing& s = history[i];
-      if (previous && s.dr_lat_deg && s.dr_lon_deg) {
-        count_along(frame.to_local(*previous), frame.to_local({*s.dr_lat_deg, *s.dr_lon_deg}));
-      } else if (previous && s.has_fix()) {
-        count_along(frame.to_local(*previous), frame.to_local({*s.lat_deg, *s.lon_deg}));
-      }
-      if (!s.has_fix()) continue;
-      const fw::EastNorth here = frame.to_local({*s.lat_deg, *s.lon_deg});
-      count_along(here, here);
-      previous = fw::LatLon{*s.lat_deg, *s.lon_deg};
-    }
-  }
+  now.replay_from = replay_from;
   return now;
 }
 

@@ -69,6 +69,7 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
     out.north_m = truth.north_m;
   };
   opt.stop_when = [&](double t, const fw::FlightSoftware& flight, const model::Truth& truth) {
+    out.waypoints_reached = flight.navigator().waypoints_reached();
     if (dive_s < 0.0 && !flight.navigator().at_surface()) dive_s = t;
     if (flight.phase() == fw::Phase::kAbort) {
       if (!out.aborted) {

@@ -28,9 +28,10 @@ struct ForecastOptions {
   int threads = 2;
   std::uint64_t seed = 1;
   double max_working_depth_m = 100.0;
-  double drag_sigma = 0.05;                     // 1 sigma of the drag coefficient's relative error
-  double buoyancy_sigma_kg = 0.010;             // 1 sigma of the vehicle's net buoyancy trim
-  double max_dive_s = 12.0 * 3600.0;            // a run with no surfacing by then counts as "no_surfacing"
+  double drag_sigma = 0.05;           // 1 sigma of the drag coefficient's relative error
+  double buoyancy_sigma_kg = 0.010;   // 1 sigma of the vehicle's net buoyancy trim
+  double max_dive_s = 12.0 * 3600.0;  // a run with no surfacing by then counts as "no_surfacing"
+  int waypoint = -1;  // --waypoint: the active waypoint now (-1: replayed from the events since the plan began)
   std::vector<std::filesystem::path> rehearse;  // files applied after the queue (rehearsal)
   bool include_queue = true;
   bool write = true;  // write forecast/forecast.json
@@ -42,6 +43,7 @@ struct RunOutcome {
   std::string cause;                   // abort cause id, or "no_surfacing"
   double time_s = 0.0;                 // from the dive start (the last call's end)
   double east_m = 0.0, north_m = 0.0;  // from the last fix
+  std::int32_t waypoints_reached = 0;  // counted by the firmware in this run
 };
 
 struct Ellipse {
@@ -86,7 +88,10 @@ struct FlightSetup {
   model::VehicleParams vehicle;
   fw::FlightSoftwareConfig config;  // the plan already the remaining one
   fw::LatLon fix{};
-  CurrentEstimate current;
+  CurrentEstimate current;  // the water's (drawn from in the Monte-Carlo)
+  // What the glider's navigator believes (its m_water_vx/vy at the dive): it
+  // steers and dead-reckons with this; none: it has no estimate yet.
+  std::optional<fw::EastNorth> firmware_current;
   double overtime_left_s = 0.0;  // the mission's overtime limit minus the mission time at the fix (0: none)
 };
 std::vector<RunOutcome> fly_runs(const FlightSetup& setup, const ForecastOptions& options, int n, bool vary);

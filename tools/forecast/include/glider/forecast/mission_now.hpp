@@ -24,7 +24,8 @@ struct MissionNow {
   std::vector<std::string> applied;  // files applied on top of the launch mission, in order
   std::int32_t active_waypoint = 0;  // index into config.plan.waypoints
   std::int32_t waypoints_reached = 0;
-  std::string refusal;  // non-empty: the firmware refuses the file named in it
+  std::size_t replay_from = 0;  // the first event flown under the current plan
+  std::string refusal;          // non-empty: the firmware refuses the file named in it
   std::vector<std::string> notes;
 };
 
