@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace glider::forecast {
 namespace {
@@ -73,13 +74,18 @@ CurrentEstimate last_current(const std::vector<CurrentSample>& samples) {
   return e;
 }
 
-CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s) {
+namespace {
+
+// The fitted rules alone: `tidal` (mean + M2) or else the trend; nullopt
+// when the history is too short for the rule asked.
+std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
+                                              bool tidal) {
   // Only the last day counts: older water is other water.
   std::vector<CurrentSample> samples;
   for (const CurrentSample& s : all) {
     if (s.utc_s > from_utc_s - 86400.0 && s.utc_s <= from_utc_s) samples.push_back(s);
   }
-  if (samples.empty()) return last_current(all);
+  if (samples.empty()) return std::nullopt;
   const double span = samples.back().utc_s - samples.front().utc_s;
   const auto n = static_cast<Eigen::Index>(samples.size());
   const double t_ref = from_utc_s;
@@ -105,7 +111,8 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
     return true;
   };
 
-  if (n >= 8 && span >= 12.0 * 3600.0) {
+  if (tidal) {
+    if (!(n >= 8 && span >= 12.0 * 3600.0)) return std::nullopt;
     // Mean + M2, averaged over the window (the integral of the harmonics).
     const double w2 = 2.0 * std::numbers::pi / kM2PeriodS;
     Eigen::MatrixXd x(n, 3);
@@ -117,10 +124,9 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
     Eigen::RowVectorXd x_eval(3);
     x_eval << 1.0, (std::sin(w2 * b) - std::sin(w2 * a)) / (w2 * (b - a)),
         (std::cos(w2 * a) - std::cos(w2 * b)) / (w2 * (b - a));
-    if (solve(samples, x, Eigen::VectorXd::Ones(n), x_eval)) {
-      e.method = "tidal fit";
-      return e;
-    }
+    if (!solve(samples, x, Eigen::VectorXd::Ones(n), x_eval)) return std::nullopt;
+    e.method = "tidal fit";
+    return e;
   }
   // A trend over the last 6 h, the recent weighted more (3 h e-folding).
   std::vector<CurrentSample> recent;
@@ -144,7 +150,62 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
       return e;
     }
   }
-  return last_current(all);
+  return std::nullopt;
+}
+
+}  // namespace
+
+CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s) {
+  // Each rule predicts every past estimate of the last day from the ones
+  // before it (over a window as long as the coming one); the rule with the
+  // smallest error wins, and its error is the estimate's uncertainty (the
+  // hindcast says how well the rule does in this water, its formula does not).
+  const double half = 0.5 * (to_utc_s - from_utc_s);
+  enum Rule { kLast, kTrend, kTidal };
+  // Squared errors of each rule, and of persistence on the same cases.
+  double sum2[3] = {0.0, 0.0, 0.0}, last_on[3] = {0.0, 0.0, 0.0};
+  int count[3] = {0, 0, 0};
+  for (std::size_t j = 1; j < all.size(); ++j) {
+    if (all[j].utc_s > from_utc_s || all[j].utc_s <= from_utc_s - 86400.0) continue;
+    const std::vector<CurrentSample> before(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(j));
+    const double from = all[j].utc_s - half, to = all[j].utc_s + half;
+    auto error2 = [&](const CurrentEstimate& p) {
+      return std::pow(p.east_m_s - all[j].east_m_s, 2) + std::pow(p.north_m_s - all[j].north_m_s, 2);
+    };
+    const double last2 = error2(last_current(before));
+    for (int rule = kLast; rule <= kTidal; ++rule) {
+      const std::optional<CurrentEstimate> p = rule == kLast ? std::optional<CurrentEstimate>(last_current(before))
+                                                             : predict_fitted(before, from, to, rule == kTidal);
+      if (!p) continue;
+      sum2[rule] += error2(*p);
+      last_on[rule] += last2;
+      ++count[rule];
+    }
+  }
+  int best = kLast;
+  double best_rms = count[kLast] > 0 ? std::sqrt(sum2[kLast] / count[kLast]) : -1.0;
+  double best_gain = 1.0;
+  for (int rule = kTrend; rule <= kTidal; ++rule) {
+    if (count[rule] < 3) continue;
+    const double gain = sum2[rule] / std::max(last_on[rule], 1e-12);  // < 1: better than persistence
+    if (gain < best_gain) {
+      best = rule;
+      best_gain = gain;
+      best_rms = std::sqrt(sum2[rule] / count[rule]);
+    }
+  }
+  CurrentEstimate e = last_current(all);
+  if (best != kLast) {
+    if (const std::optional<CurrentEstimate> p = predict_fitted(all, from_utc_s, to_utc_s, best == kTidal)) e = *p;
+  }
+  if (best_rms >= 0.0 && count[best] >= 3) {
+    // Per component: the hindcast's error split evenly.
+    const double per_axis = best_rms / std::sqrt(2.0);
+    e.sigma_east_m_s = std::max(e.sigma_east_m_s, per_axis);
+    e.sigma_north_m_s = std::max(e.sigma_north_m_s, per_axis);
+  }
+  e.samples = static_cast<int>(all.size());
+  return e;
 }
 
 }  // namespace glider::forecast

@@ -70,8 +70,14 @@ fs::path vehicle_file(const fs::path& glider_dir, const std::string& glider, con
                            "' is not listed and there is no health/vehicle.toml: give --vehicle FILE");
 }
 
-// Each surfacing's estimate of the current over the segment before it.
-std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history) {
+// Each surfacing's estimate of the current over the segment before it. The
+// glider's estimate is the fix's offset from its dead reckoning over the
+// time under water: it also holds the DR's own speed error, which the model
+// flies without. With `ratio` (true over DR speed through the water, from the
+// model) that part is taken out: the DR's through-water track of the segment
+// (its position on surfacing less the fix it dived from and the current it
+// already carried) times (ratio - 1), over the time.
+std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio) {
   std::vector<CurrentSample> out;
   // The first event's estimate is of a segment before the history (its
   // length unknown: taken as half an hour before the call).
@@ -80,13 +86,22 @@ std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history
   }
   for (std::size_t i = 1; i < history.size(); ++i) {
     const Surfacing& s = history[i];
+    const Surfacing& before = history[i - 1];
     if (!s.water_vx_m_s || !s.water_vy_m_s) continue;
     // Only a surfacing whose estimate was updated at this call is news (the
     // firmware skips segments under 10 min and those without a fix).
     if (!s.has_fix()) continue;
-    const double under_s = s.call_start_utc_s - history[i - 1].call_end_utc_s;
+    const double under_s = s.call_start_utc_s - before.call_end_utc_s;
     if (!(under_s >= 600.0)) continue;
-    out.push_back({0.5 * (s.call_start_utc_s + history[i - 1].call_end_utc_s), *s.water_vx_m_s, *s.water_vy_m_s});
+    CurrentSample sample{0.5 * (s.call_start_utc_s + before.call_end_utc_s), *s.water_vx_m_s, *s.water_vy_m_s};
+    if (ratio != 1.0 && before.has_fix() && s.dr_lat_deg && s.dr_lon_deg) {
+      const fw::LocalFrame frame({*before.lat_deg, *before.lon_deg});
+      const fw::EastNorth dr = frame.to_local({*s.dr_lat_deg, *s.dr_lon_deg});
+      const double carried_e = before.water_vx_m_s.value_or(0.0), carried_n = before.water_vy_m_s.value_or(0.0);
+      sample.east_m_s -= (ratio - 1.0) * (dr.east_m - carried_e * under_s) / under_s;
+      sample.north_m_s -= (ratio - 1.0) * (dr.north_m - carried_n * under_s) / under_s;
+    }
+    out.push_back(sample);
   }
   return out;
 }
@@ -288,14 +303,24 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
 
   // The current: the estimate over the coming dive (its length from the
   // last segment, or the surfacing interval), and the persistence baseline.
-  const std::vector<CurrentSample> samples = current_samples(history);
+  // The model's own check of the firmware's dead reckoning: one still-water
+  // flight of the coming dive, true against dead-reckoned distance.
+  {
+    FlightSetup still = setup;
+    still.current = CurrentEstimate{};
+    still.firmware_current.reset();
+    const RunOutcome r = fly_runs(still, options, 1, false).at(0);
+    const double dr = std::hypot(r.dr_east_m, r.dr_north_m), truth = std::hypot(r.east_m, r.north_m);
+    if (r.surfaced && !r.aborted && dr > 100.0 && truth / dr > 0.5 && truth / dr < 2.0) f.dr_speed_ratio = truth / dr;
+  }
+  const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio);
   double expected_s = now.config.plan.surface_interval_s > 0.0 ? now.config.plan.surface_interval_s : 3600.0;
   if (history.size() >= 2) {
     const double last_dive = history.back().call_start_utc_s - history[history.size() - 2].call_end_utc_s;
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);
   }
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s);
-  f.baseline_current = last_current(samples);
+  f.baseline_current = last_current(current_samples(history, 1.0));
   if (samples.empty()) {
     f.notes.push_back("no depth-averaged current from the surfacings yet (m_water_vx/vy): still water +- " +
                       std::to_string(f.current.sigma_east_m_s).substr(0, 4) + " m/s assumed");
@@ -351,7 +376,8 @@ nlohmann::json forecast_json(const Forecast& f) {
                     {"sigma_east_m_s", f.current.sigma_east_m_s},
                     {"sigma_north_m_s", f.current.sigma_north_m_s},
                     {"method", f.current.method},
-                    {"samples", f.current.samples}};
+                    {"samples", f.current.samples},
+                    {"dr_speed_ratio", f.dr_speed_ratio}};
   if (f.baseline_ok) {
     out["baseline"] = {{"lat_deg", f.baseline_lat_deg},
                        {"lon_deg", f.baseline_lon_deg},

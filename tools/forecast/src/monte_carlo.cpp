@@ -62,7 +62,11 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
   // Times count from the dive (the forecast's origin is the call's end, when
   // the glider dived); a run that never dives counts from its start.
   double dive_s = -1.0;
-  auto record = [&out, &dive_s](double t, const model::Truth& truth) {
+  const fw::LocalFrame frame(s.fix);
+  auto record = [&out, &dive_s, &frame](double t, const model::Truth& truth, const fw::FlightSoftware& flight) {
+    const fw::EastNorth dr = frame.to_local(flight.navigator().dr_position());
+    out.dr_east_m = dr.east_m;
+    out.dr_north_m = dr.north_m;
     out.surfaced = true;
     out.time_s = t - std::max(0.0, dive_s);
     out.east_m = truth.east_m;
@@ -77,13 +81,13 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
         out.cause = fw::cause_id(flight.abort_cause());
       }
       if (truth.depth_m < kAntennaOutDepthM) {
-        record(t, truth);
+        record(t, truth, flight);
         return true;
       }
       return false;
     }
     if ((flight.navigator().segments() >= 1 && flight.navigator().at_surface()) || flight.complete()) {
-      record(t, truth);
+      record(t, truth, flight);
       return true;
     }
     return false;

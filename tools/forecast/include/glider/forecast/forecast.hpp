@@ -40,10 +40,11 @@ struct ForecastOptions {
 struct RunOutcome {
   bool surfaced = false;
   bool aborted = false;
-  std::string cause;                   // abort cause id, or "no_surfacing"
-  double time_s = 0.0;                 // from the dive start (the last call's end)
-  double east_m = 0.0, north_m = 0.0;  // from the last fix
-  std::int32_t waypoints_reached = 0;  // counted by the firmware in this run
+  std::string cause;                         // abort cause id, or "no_surfacing"
+  double time_s = 0.0;                       // from the dive start (the last call's end)
+  double east_m = 0.0, north_m = 0.0;        // from the last fix
+  std::int32_t waypoints_reached = 0;        // counted by the firmware in this run
+  double dr_east_m = 0.0, dr_north_m = 0.0;  // the firmware's dead-reckoned position on surfacing
 };
 
 struct Ellipse {
@@ -67,6 +68,7 @@ struct Forecast {
   double baseline_lat_deg = 0.0, baseline_lon_deg = 0.0, baseline_time_utc_s = 0.0;
   double baseline_east_m = 0.0, baseline_north_m = 0.0;
   CurrentEstimate current, baseline_current;
+  double dr_speed_ratio = 1.0;  // true over dead-reckoned speed through the water (the model's calibration)
   int runs = 0;
   double wall_s = 0.0;
   std::string mission;
