@@ -112,7 +112,7 @@ std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& 
   };
 
   if (tidal) {
-    if (!(n >= 8 && span >= 12.0 * 3600.0)) return std::nullopt;
+    if (!(n >= 5 && span >= 9.0 * 3600.0)) return std::nullopt;
     // Mean + M2, averaged over the window (the integral of the harmonics).
     const double w2 = 2.0 * std::numbers::pi / kM2PeriodS;
     Eigen::MatrixXd x(n, 3);
@@ -186,7 +186,8 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   double best_rms = count[kLast] > 0 ? std::sqrt(sum2[kLast] / count[kLast]) : -1.0;
   double best_gain = 1.0;
   for (int rule = kTrend; rule <= kTidal; ++rule) {
-    if (count[rule] < 3) continue;
+    // Two hindcasts at least: a tide shows itself in a few 3 h dives.
+    if (count[rule] < 2) continue;
     const double gain = sum2[rule] / std::max(last_on[rule], 1e-12);  // < 1: better than persistence
     if (gain < best_gain) {
       best = rule;

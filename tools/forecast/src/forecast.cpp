@@ -506,13 +506,26 @@ std::string forecast_after_surfacing(const fs::path& glider_dir) {
   try {
     ForecastOptions options;
     const Forecast f = make_forecast(glider_dir, options);
-    return forecast_text(f);
+    char text[400];
+    if (!f.refusal.empty()) return "forecast: the mission is refused: " + f.refusal;
+    if (!f.have_surfacing) {
+      std::snprintf(text, sizeof text, "forecast: no run surfaces normally; abort risk %.0f %% (%.1f s)",
+                    100.0 * f.abort_risk, f.wall_s);
+    } else {
+      std::snprintf(text, sizeof text,
+                    "forecast: next surfacing %.5f N %.5f E at %s (95 %% ellipse %.0f x %.0f m), abort risk %.0f %% "
+                    "(%d runs, %.1f s)",
+                    f.lat_deg, f.lon_deg, format_utc(f.time_utc_s).c_str(), f.ellipse.semi_major_m,
+                    f.ellipse.semi_minor_m, 100.0 * f.abort_risk, f.runs, f.wall_s);
+    }
+    return text;
   } catch (const std::exception& e) {
-    const std::string message = std::string("forecast: ") + e.what();
+    const std::string message = std::string("forecast: failed: ") + e.what();
     try {
       nlohmann::json out{{"schema", "glider-forecast/1"}, {"error", message}, {"notes", {message}}};
       write_atomically(glider_dir / "forecast" / "forecast.json", out.dump(2) + "\n");
     } catch (const std::exception&) {
+      // The folder cannot be written: the returned note still says what happened.
     }
     return message;
   }

@@ -3,12 +3,15 @@
 // The depth-averaged current over the next dive, from the glider's own
 // per-segment estimates (m_water_vx/vy after each surfacing: Slocum's, and
 // this firmware's, update from the dead-reckoning error), with an
-// uncertainty. Three rules by how much history there is:
-//   >= 8 estimates over >= 12 h: mean + M2 tide (12.42 h) fitted by least
-//     squares, evaluated over the coming window;
-//   >= 3 estimates over >= 1.5 h in the last 6 h: a straight line in time
-//     (weighted to the recent), extrapolated to the window's middle;
-//   otherwise: the last estimate.
+// uncertainty. Three rules, each used only where the history allows it:
+//   mean + M2 tide (12.42 h) fitted by least squares (>= 5 estimates over
+//     >= 9 h of the last day), averaged over the coming window;
+//   a straight line in time (>= 3 estimates over >= 1.5 h of the last 6 h,
+//     the recent weighted more), at the window's middle;
+//   persistence: the last estimate.
+// Each predicts the last day's estimates from the ones before them; a fitted
+// rule replaces persistence only if it did better on the same cases (two at
+// least), and the winner's hindcast error is the uncertainty.
 // The baseline ("the last depth-averaged current persists") is the last one.
 #include <string>
 #include <vector>

@@ -116,8 +116,9 @@ nlohmann::json rehearsal_json(const Rehearsal& r, const std::string& glider);
 int rehearsal_exit_code(const Rehearsal& r);
 
 // The shore's call after each surfacing event (tools/shore/after_surfacing):
-// writes forecast/forecast.json; never throws (a problem goes into the
-// returned text and the file's notes).
+// writes forecast/forecast.json and returns one line for the call's journal
+// ("forecast: next surfacing ..." or "forecast: failed: ..."); never throws
+// (a problem also goes into the file's `error`).
 std::string forecast_after_surfacing(const std::filesystem::path& glider_dir);
 
 // Writes `text` to `path` by a temporary in the same folder and rename(2).
