@@ -82,8 +82,6 @@ Truth fly_truth(const TruthOptions& o) {
   bool under = false;
   TruthSurfacing pending;
   pending.surfaced_utc_s = o.utc_launch_s;
-  const model::Truth start{};
-  (void)start;
   pending.lat_deg = o.launch.lat_deg;
   pending.lon_deg = o.launch.lon_deg;
   opt.stop_when = [&](double t, const fw::FlightSoftware& flight, const model::Truth& now) {
