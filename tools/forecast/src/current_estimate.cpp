@@ -116,14 +116,25 @@ std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& 
     // Mean + M2, averaged over the window (the integral of the harmonics).
     const double w2 = 2.0 * std::numbers::pi / kM2PeriodS;
     Eigen::MatrixXd x(n, 3);
+    // Each estimate is the mean over its segment, and so is the prediction:
+    // the harmonics averaged over [a, b] (a 3 h mean keeps 0.91 of an M2).
+    auto averaged = [w2](double a, double b) {
+      Eigen::RowVectorXd row(3);
+      if (b - a < 1.0) {
+        row << 1.0, std::cos(w2 * a), std::sin(w2 * a);
+      } else {
+        row << 1.0, (std::sin(w2 * b) - std::sin(w2 * a)) / (w2 * (b - a)),
+            (std::cos(w2 * a) - std::cos(w2 * b)) / (w2 * (b - a));
+      }
+      return row;
+    };
     for (Eigen::Index i = 0; i < n; ++i) {
-      const double t = samples[static_cast<std::size_t>(i)].utc_s - t_ref;
-      x.row(i) << 1.0, std::cos(w2 * t), std::sin(w2 * t);
+      const CurrentSample& c = samples[static_cast<std::size_t>(i)];
+      const double t = c.utc_s - t_ref;
+      x.row(i) = averaged(t - 0.5 * c.span_s, t + 0.5 * c.span_s);
     }
     const double a = from_utc_s - t_ref, b = std::max(to_utc_s - t_ref, a + 1.0);
-    Eigen::RowVectorXd x_eval(3);
-    x_eval << 1.0, (std::sin(w2 * b) - std::sin(w2 * a)) / (w2 * (b - a)),
-        (std::cos(w2 * a) - std::cos(w2 * b)) / (w2 * (b - a));
+    const Eigen::RowVectorXd x_eval = averaged(a, b);
     if (!solve(samples, x, Eigen::VectorXd::Ones(n), x_eval)) return std::nullopt;
     e.method = "tidal fit";
     return e;

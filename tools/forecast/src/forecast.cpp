@@ -93,7 +93,7 @@ std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history
     if (!s.has_fix()) continue;
     const double under_s = s.call_start_utc_s - before.call_end_utc_s;
     if (!(under_s >= 600.0)) continue;
-    CurrentSample sample{0.5 * (s.call_start_utc_s + before.call_end_utc_s), *s.water_vx_m_s, *s.water_vy_m_s};
+    CurrentSample sample{0.5 * (s.call_start_utc_s + before.call_end_utc_s), *s.water_vx_m_s, *s.water_vy_m_s, under_s};
     if (ratio != 1.0 && before.has_fix() && s.dr_lat_deg && s.dr_lon_deg) {
       const fw::LocalFrame frame({*before.lat_deg, *before.lon_deg});
       const fw::EastNorth dr = frame.to_local({*s.dr_lat_deg, *s.dr_lon_deg});

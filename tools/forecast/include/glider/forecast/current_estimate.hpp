@@ -22,6 +22,7 @@ struct CurrentSample {
   double utc_s = 0.0;  // middle of the segment it was measured over
   double east_m_s = 0.0;
   double north_m_s = 0.0;
+  double span_s = 0.0;  // the segment it is the mean over (0: a point in time)
 };
 
 struct CurrentEstimate {
