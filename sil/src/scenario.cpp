@@ -184,6 +184,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     app.attach_comms(*comms);
   }
   double call_cycle_sum_us = 0.0;
+  if (options.before_launch) options.before_launch(app.flight());
 
   const double period_s = hal::to_seconds(options.period_us);
   YawDisturbance yaw_disturbance(vehicle.heading, derived_seed(options.seed, kYawDisturbanceStream));
@@ -215,6 +216,7 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
     }
     const bool calling = comms && !comms->idle() && comms->state() != fw::comms::CommsState::kDone;
     const model::Truth truth = sim.truth();
+    if (options.stop_when && options.stop_when(sim.time_s(), flight, truth)) break;
     if (flight.navigator().waypoints_reached() > static_cast<std::int32_t>(result.waypoints.size())) {
       result.waypoints.push_back({flight.navigator().waypoints_reached(), sim.time_s(), truth.east_m, truth.north_m});
     }

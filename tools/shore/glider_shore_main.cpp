@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "glider/cli/tool.hpp"
+#include "glider/forecast/forecast.hpp"
 #include "glider_folders.hpp"
 #include "received_files.hpp"
 #include "shore_server.hpp"
@@ -34,8 +36,35 @@ std::string default_root() {
   return "glider-shore";
 }
 
+// A .ma/.mi is rehearsed before it is queued (docs/forecast.md): one the
+// glider's loader refuses, or whose forecast aborts, is not queued unless
+// `force`, and a forced one is journaled in logs/queue.journal.
+void rehearse_before_queue(const fs::path& glider_dir, const fs::path& file, bool force) {
+  const std::string ext = file.extension().string();
+  if (ext != ".ma" && ext != ".mi") return;
+  glider::forecast::Rehearsal r;
+  try {
+    r = glider::forecast::rehearse(glider_dir, file, {});
+  } catch (const std::exception& e) {
+    std::printf("not rehearsed: %s\n", e.what());
+    return;
+  }
+  std::printf("rehearsal of %s: %s: %s\n", r.file.c_str(), r.verdict.c_str(), r.message.c_str());
+  if (r.verdict == "ok") return;
+  if (!force) {
+    throw std::runtime_error(file.string() + ": not queued: " + r.verdict + ": " + r.message +
+                             " (--force queues it anyway)");
+  }
+  const std::string line = glider::forecast::format_utc(static_cast<double>(std::time(nullptr))) + " * queued " +
+                           r.file + " with --force: " + r.verdict + ": " + r.message + "\n";
+  fs::create_directories(glider_dir / "logs");
+  std::ofstream journal(glider_dir / "logs" / "queue.journal", std::ios::app);
+  journal << line;
+  if (!journal) throw std::runtime_error((glider_dir / "logs" / "queue.journal").string() + ": cannot write");
+}
+
 int queue_work(const fs::path& root, const std::string& glider, const std::vector<std::string>& files,
-               const std::vector<std::string>& commands) {
+               const std::vector<std::string>& commands, bool force) {
   if (files.empty() && commands.empty()) {
     throw glider::cli::ToolError(glider::cli::kUsage, "queue: give a FILE or --command");
   }
@@ -45,6 +74,7 @@ int queue_work(const fs::path& root, const std::string& glider, const std::vecto
     if (!fs::is_regular_file(source)) throw std::runtime_error(file + ": not a readable file");
     const std::string name = source.filename().string();
     if (name.empty() || name[0] == '.') throw std::runtime_error(file + ": a hidden file name cannot be sent");
+    rehearse_before_queue(folders.base, source, force);
     shore::copy_file_atomically(source, folders.to_glider / name);
     std::printf("queued file %s for %s\n", name.c_str(), glider.c_str());
   }
@@ -196,6 +226,9 @@ int main(int argc, char** argv) {
   queue->add_option("GLIDER", glider, "the glider's name (Vehicle Name)")->required();
   queue->add_option("FILE", files, "files to send (.ma, .mi, ...)");
   queue->add_option("--command", commands, "a console command, e.g. \"put u_x 3\" (repeatable, sent in order)");
+  bool force = false;
+  queue->add_flag("--force", force,
+                  "queue a .ma/.mi even if its rehearsal aborts or the loader refuses it (journaled)");
 
   bool json = false;
   CLI::App* status = app.add_subcommand("status", "the gliders: last surfacing, queued work");
@@ -221,7 +254,7 @@ int main(int argc, char** argv) {
       if (console_server) console_server->stop();
       return glider::cli::kOk;
     }
-    if (*queue) return queue_work(root, glider, files, commands);
+    if (*queue) return queue_work(root, glider, files, commands, force);
     if (*status) return show_status(root, json);
     if (*console.user) return shore::web::run_user_add(console, root);
     return parse_dialog_file(dialog_file);

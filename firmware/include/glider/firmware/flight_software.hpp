@@ -95,6 +95,8 @@ class FlightSoftware final : public PeriodicTask {
     navigator_.replace_plan(plan);
   }
   const MissionPlan& plan() const { return config_.plan; }
+  // Before the first run(): the current estimate the mission resumes with.
+  void seed_current(EastNorth current) { navigator_.seed_current(current); }
   // Commands clamped to the vehicle's range (or non-finite) before they were sent.
   const GuardCounts& actuator_guard_counts() const { return guard_.counts(); }
 

@@ -68,6 +68,12 @@ class Navigator {
   hal::Micros dive_us() const { return dive_us_; }
   // A re-read mission (Control-F, validated): fly its waypoints from the first.
   void replace_plan(const MissionPlan& plan);
+  // The depth-averaged current estimate carried over from before a start
+  // (a forecast resumes a mission mid-flight with the glider's m_water_vx/vy).
+  void seed_current(EastNorth current) {
+    current_ = current;
+    have_current_ = true;
+  }
 
  private:
   enum class State { kSurface, kUnderWater, kDone };

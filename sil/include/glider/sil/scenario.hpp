@@ -77,6 +77,12 @@ struct ScenarioOptions {
     std::function<void(double sim_time_s, const fw::comms::CommsTask& comms)> after_cycle;
   };
   std::optional<Comms> comms;
+  // Called once before the first cycle (a forecast seeds the navigator's
+  // current estimate through it).
+  std::function<void(fw::FlightSoftware& flight)> before_launch;
+  // Checked after every cycle: true ends the run there (a forecast stops at
+  // the next surfacing).
+  std::function<bool(double sim_time_s, const fw::FlightSoftware& flight, const model::Truth& truth)> stop_when;
 };
 
 // Where the vehicle truly was when the firmware counted a waypoint reached.

@@ -1,0 +1,45 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# Bad input to glider-forecast, each named by its file, exit 1: an event that
+# is not JSON, an event of another glider, a folder with no event, a missing
+# mission. Usage: check_bad_input.sh BUILD_DIR SOURCE_DIR OUT_DIR
+set -u
+build=$1 source=$2 out=$3
+bench=$build/tools/forecast/glider-forecast-bench
+forecast=$build/tools/forecast/glider-forecast
+fail() { echo "FAIL bad_input: $*"; exit 1; }
+rm -rf "$out" && mkdir -p "$out" || fail "cannot make $out"
+"$bench" --out "$out/bench" --seed 6 --truths 1 --surfacings 2 --from 1 --runs 2 >"$out/bench.txt" 2>&1 ||
+  fail "bench: $(cat "$out/bench.txt")"
+good=$out/bench/seed6/from1
+v=$source/boards/vehicles/slocum_shallow.toml
+expect() {  # NAME DIR PATTERN
+  "$forecast" --glider-dir "$2" --vehicle "$v" --runs 2 >"$out/$1.txt" 2>&1
+  code=$?
+  [ $code -eq 1 ] || fail "$1: exit $code, want 1: $(cat "$out/$1.txt")"
+  grep -q "$3" "$out/$1.txt" || fail "$1: message does not match '$3': $(cat "$out/$1.txt")"
+  echo "ok $1: $(head -1 "$out/$1.txt")"
+}
+"$forecast" --glider-dir "$good" --vehicle "$v" --runs 2 >"$out/good.txt" 2>&1 || fail "good folder: $(cat "$out/good.txt")"
+
+cp -r "$good" "$out/not_json" && printf '{"schema": "glider-shore-surfacing/1", "glider": ' >"$out/not_json/logs/9999_0001.surfacing.json"
+expect not_json "$out/not_json" "not_json/logs/9999_0001.surfacing.json: not JSON"
+
+cp -r "$good" "$out/two_gliders"
+sed 's/"simglider"/"otherglider"/' "$good/logs/$(ls "$good/logs" | tail -1)" >"$out/two_gliders/logs/9999_0002.surfacing.json"
+expect two_gliders "$out/two_gliders" "9999_0002.surfacing.json: glider 'otherglider'.*two gliders"
+
+cp -r "$good" "$out/bad_time"
+sed 's/"call_end_utc": "[^"]*"/"call_end_utc": "yesterday"/' "$good/logs/$(ls "$good/logs" | tail -1)" >"$out/bad_time/logs/9999_0003.surfacing.json"
+expect bad_time "$out/bad_time" "9999_0003.surfacing.json: call_end_utc: 'yesterday' is not a UTC time"
+
+mkdir -p "$out/no_events/logs"
+expect no_events "$out/no_events" "no_events/logs: no surfacing event with a GPS fix"
+
+cp -r "$good" "$out/no_mission" && rm -r "$out/no_mission/mission"
+expect no_mission "$out/no_mission" "no_mission/mission: no mission"
+
+cp -r "$good" "$out/bad_mission"
+sed 's/b_arg: overdepth(m)                 60/b_arg: overdepth(m)                 abc/' "$good/mission/missions/box.mi" >"$out/bad_mission/mission/missions/box.mi"
+expect bad_mission "$out/bad_mission" "box.mi:[0-9]*"
+echo "PASS bad_input"

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// A SIL truth for the forecast's tests and benchmark: a mission flown in SIL
+// in water whose current is known (a mean and an M2 tide, drawn from a seed)
+// by a vehicle whose drag and trim differ from the nominal file by drawn
+// amounts; each surfacing becomes a shore event (glider-shore-surfacing/1:
+// fix, dead-reckoned position, m_water_vx/vy, times) in a glider folder, as
+// the shore would have written it, and the true position and time of every
+// surfacing are kept to score forecasts against.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "glider/firmware/geo.hpp"
+
+namespace glider::forecast {
+
+struct TruthOptions {
+  std::filesystem::path mission;  // .mi (its mafiles/ beside or above)
+  std::filesystem::path vehicle;  // nominal vehicle file
+  std::uint64_t seed = 1;
+  int surfacings = 8;                  // fly until this many surfacings after the launch
+  double utc_launch_s = 1798761600.0;  // 2027-01-01T00:00:00Z
+  fw::LatLon launch{54.3161, 7.4098};
+  double mean_current_max_m_s = 0.15;    // |mean| drawn up to this
+  double tide_amplitude_max_m_s = 0.25;  // M2 amplitude drawn up to this
+  double drag_sigma = 0.05;              // the true vehicle's drag against the file's
+  double buoyancy_sigma_kg = 0.010;
+  double max_working_depth_m = 100.0;
+};
+
+struct TruthSurfacing {
+  double surfaced_utc_s = 0.0;          // the vehicle is up
+  double dive_utc_s = 0.0;              // it dives again (the call's end)
+  double lat_deg = 0.0, lon_deg = 0.0;  // truth where it surfaced
+  double fix_lat_deg = 0.0, fix_lon_deg = 0.0;
+  double dr_lat_deg = 0.0, dr_lon_deg = 0.0;
+  bool have_dr = false;
+  bool have_current = false;
+  double water_vx = 0.0, water_vy = 0.0;
+  double mission_time_s = 0.0;
+};
+
+struct Truth {
+  std::vector<TruthSurfacing> surfacings;  // [0] is the launch
+  std::string description;                 // the drawn current and vehicle
+};
+
+Truth fly_truth(const TruthOptions& options);
+
+// Writes a glider folder: mission/ (the .mi and its .ma files), logs/ with
+// the events of surfacings [0, upto], named `glider`.
+void write_glider_folder(const Truth& truth, const TruthOptions& options, const std::string& glider, std::size_t upto,
+                         const std::filesystem::path& glider_dir);
+
+}  // namespace glider::forecast

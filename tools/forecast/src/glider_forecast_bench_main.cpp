@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: Apache-2.0
+// glider-forecast-bench: the forecast scored on SIL truths (fresh seeds,
+// printed) against the baseline "the last depth-averaged current persists"
+// (docs/forecast.md, Benchmark). `./glider benchmark forecast` runs it.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "glider/cli/tool.hpp"
+#include "glider/firmware/geo.hpp"
+#include "glider/forecast/forecast.hpp"
+#include "glider/forecast/sil_truth.hpp"
+
+namespace fs = std::filesystem;
+namespace fc = glider::forecast;
+
+namespace {
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const double at = p * static_cast<double>(v.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(at));
+  const std::size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (at - static_cast<double>(lo)) * (v[hi] - v[lo]);
+}
+
+struct Score {
+  std::vector<double> position_m, time_s, baseline_position_m, baseline_time_s, wall_s;
+  int inside_ellipse = 0, cases = 0, aborted = 0;
+};
+
+double distance_m(double lat1, double lon1, double lat2, double lon2) {
+  const glider::fw::LocalFrame frame({lat1, lon1});
+  const glider::fw::EastNorth d = frame.to_local({lat2, lon2});
+  return std::hypot(d.east_m, d.north_m);
+}
+
+// Is the truth inside the forecast's 95 % ellipse?
+bool inside(const fc::Forecast& f, double lat, double lon) {
+  const glider::fw::LocalFrame frame({f.lat_deg, f.lon_deg});
+  const glider::fw::EastNorth d = frame.to_local({lat, lon});
+  const double a = f.ellipse.orientation_deg * M_PI / 180.0;
+  const double along = d.east_m * std::sin(a) + d.north_m * std::cos(a);
+  const double across = d.east_m * std::cos(a) - d.north_m * std::sin(a);
+  const double ma = std::max(f.ellipse.semi_major_m, 1.0), mi = std::max(f.ellipse.semi_minor_m, 1.0);
+  return (along * along) / (ma * ma) + (across * across) / (mi * mi) <= 1.0;
+}
+
+void score_case(const fc::Forecast& f, const fc::TruthSurfacing& next, Score& s, bool print) {
+  ++s.cases;
+  if (!f.have_surfacing || !f.baseline_ok) {
+    ++s.aborted;
+    return;
+  }
+  const double e = distance_m(f.lat_deg, f.lon_deg, next.lat_deg, next.lon_deg);
+  const double b = distance_m(f.baseline_lat_deg, f.baseline_lon_deg, next.lat_deg, next.lon_deg);
+  s.position_m.push_back(e);
+  s.baseline_position_m.push_back(b);
+  s.time_s.push_back(std::fabs(f.time_utc_s - next.surfaced_utc_s));
+  s.baseline_time_s.push_back(std::fabs(f.baseline_time_utc_s - next.surfaced_utc_s));
+  s.wall_s.push_back(f.wall_s);
+  if (inside(f, next.lat_deg, next.lon_deg)) ++s.inside_ellipse;
+  if (print) {
+    std::printf("    forecast %6.0f m, %5.0f s off (baseline %6.0f m, %5.0f s); current %s; %.2f s\n", e,
+                std::fabs(f.time_utc_s - next.surfaced_utc_s), b,
+                std::fabs(f.baseline_time_utc_s - next.surfaced_utc_s), f.current.method.c_str(), f.wall_s);
+  }
+}
+
+void print_table(const char* what, const Score& s) {
+  std::printf("\n%s: %d forecasts (%d without a surfacing)\n", what, s.cases, s.aborted);
+  std::printf("| | position median | position p90 | time median |\n|---|---|---|---|\n");
+  std::printf("| forecast | %.2f km | %.2f km | %.1f min |\n", percentile(s.position_m, 0.5) / 1000.0,
+              percentile(s.position_m, 0.9) / 1000.0, percentile(s.time_s, 0.5) / 60.0);
+  std::printf("| baseline (last current persists) | %.2f km | %.2f km | %.1f min |\n",
+              percentile(s.baseline_position_m, 0.5) / 1000.0, percentile(s.baseline_position_m, 0.9) / 1000.0,
+              percentile(s.baseline_time_s, 0.5) / 60.0);
+  const double gain = 1.0 - percentile(s.position_m, 0.5) / percentile(s.baseline_position_m, 0.5);
+  std::printf(
+      "median position error %.0f %% better than the baseline; truth inside the 95 %% ellipse in %d of %zu; "
+      "wall per forecast median %.2f s, max %.2f s\n",
+      100.0 * gain, s.inside_ellipse, s.position_m.size(), percentile(s.wall_s, 0.5),
+      s.wall_s.empty() ? std::nan("") : *std::max_element(s.wall_s.begin(), s.wall_s.end()));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  glider::cli::Tool tool("glider-forecast-bench", "the forecast against SIL truths, beside the baseline");
+  CLI::App& app = tool.app();
+  fc::TruthOptions truth_options;
+  const fs::path boards = glider::cli::boards_dir();
+  std::string mission = (boards / "missions/box_current/missions/box.mi").string();
+  std::string vehicle = (boards / "vehicles/slocum_shallow.toml").string();
+  std::string out = "forecast-bench";
+  std::int64_t seed = -1;
+  int truths = 4;
+  int from = 2;
+  fc::ForecastOptions options;
+  options.runs = 200;
+  app.add_option("--mission", mission, "the truth's .mi")->capture_default_str();
+  app.add_option("--vehicle", vehicle, "nominal vehicle file")->capture_default_str();
+  app.add_option("--out", out, "folder for the glider folders")->capture_default_str();
+  tool.add_integer("--seed", seed, -1, glider::cli::kMaxSeed, "", "first truth's seed (-1: fresh, printed)");
+  tool.add_integer("--truths", truths, 1, 1000, "truths", "SIL truths (one seed each)")->capture_default_str();
+  tool.add_integer("--surfacings", truth_options.surfacings, 2, 200, "surfacings", "surfacings per truth")
+      ->capture_default_str();
+  tool.add_integer("--from", from, 1, 200, "surfacing", "first surfacing forecast from")->capture_default_str();
+  tool.add_integer("--runs", options.runs, 1, 100000, "runs", "Monte-Carlo runs per forecast")->capture_default_str();
+  tool.add_integer("--threads", options.threads, 1, 64, "threads", "threads per forecast")->capture_default_str();
+  double check_km = 0.0;
+  tool.add_number("--check-km", check_km, {0.0, 100.0, "km"},
+                  "test mode: exit 1 unless every forecast is within this of the truth and the truth of the first "
+                  "is inside its ellipse (0: off)");
+  return tool.run(argc, argv, [&]() -> int {
+    if (seed < 0) {
+      seed = static_cast<std::int64_t>(std::random_device{}() % 1000000);
+    }
+    truth_options.mission = mission;
+    truth_options.vehicle = vehicle;
+    options.vehicle = vehicle;
+    Score score;
+    bool ok = true;
+    for (int k = 0; k < truths; ++k) {
+      truth_options.seed = static_cast<std::uint64_t>(seed) + static_cast<std::uint64_t>(k);
+      const fc::Truth truth = fc::fly_truth(truth_options);
+      std::printf("truth %s: %zu surfacings\n", truth.description.c_str(), truth.surfacings.size());
+      for (std::size_t i = static_cast<std::size_t>(from); i + 1 < truth.surfacings.size(); ++i) {
+        const fs::path dir =
+            fs::path(out) / ("seed" + std::to_string(truth_options.seed)) / ("from" + std::to_string(i));
+        fs::remove_all(dir);
+        fc::write_glider_folder(truth, truth_options, "simglider", i, dir);
+        options.seed = truth_options.seed * 1000 + i;
+        const fc::Forecast f = fc::make_forecast(dir, options);
+        std::printf("  from surfacing %zu:", i);
+        score_case(f, truth.surfacings[i + 1], score, true);
+        if (check_km > 0.0 && (!f.have_surfacing || score.position_m.back() > 1000.0 * check_km)) ok = false;
+      }
+    }
+    print_table("SIL truths", score);
+    if (check_km > 0.0 && score.inside_ellipse == 0) ok = false;
+    return ok ? 0 : 1;
+  });
+}

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: Apache-2.0
+// glider-forecast: where a glider surfaces next, from the shore's glider
+// folder, and the rehearsal of a .ma/.mi before it is sent (docs/forecast.md).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <string>
+
+#include "glider/cli/tool.hpp"
+#include "glider/forecast/forecast.hpp"
+
+int main(int argc, char** argv) {
+  glider::cli::Tool tool("glider-forecast",
+                         "next surfacing forecast (SIL Monte-Carlo from the last fix) and rehearsal of a .ma/.mi");
+  CLI::App& app = tool.app();
+  glider::forecast::ForecastOptions options;
+  std::string glider_dir;
+  bool json = false;
+  auto common = [&](CLI::App* command) {
+    command->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER); required");
+    command->add_option("--mission", options.mission,
+                        "the glider's .mi (default: GLIDER/mission/missions/NAME.mi, its .ma in mission/mafiles/)");
+    command->add_option("--vehicle", options.vehicle,
+                        "vehicle file (default: GLIDER/health/vehicle.toml, else boards/gliders.toml's)");
+    tool.add_integer(command, "--runs", options.runs, 1, 100000, "runs", "Monte-Carlo runs")->capture_default_str();
+    tool.add_integer(command, "--threads", options.threads, 1, 64, "threads", "threads (the runs are split)")
+        ->capture_default_str();
+    tool.add_integer(command, "--seed", options.seed, 0, glider::cli::kMaxSeed, "", "first run's seed")
+        ->capture_default_str();
+    tool.add_integer(command, "--waypoint", options.waypoint, -1, 31, "index",
+                     "the waypoint the glider flies to now (default -1: replayed from the surfacings)")
+        ->capture_default_str();
+    tool.add_number(command, "--max-working-depth-m", options.max_working_depth_m, {1.0, 11000.0, "m"},
+                    "the glider's rating the mission is checked against")
+        ->capture_default_str();
+  };
+  common(&app);
+  tool.add_json_flag(json);
+  CLI::App* rehearse = app.add_subcommand("rehearse", "fly a .ma/.mi as if sent: exit 0 ok, 1 refused, 4 aborts");
+  std::string file;
+  rehearse->add_option("FILE", file, "the .ma or .mi to rehearse")->required();
+  rehearse->add_flag("--json", json, "JSON instead of text");
+  common(rehearse);
+  app.require_subcommand(0, 1);
+  return tool.run(argc, argv, [&]() -> int {
+    if (glider_dir.empty()) throw glider::cli::ToolError(glider::cli::kUsage, "--glider-dir is required");
+    if (*rehearse) {
+      const glider::forecast::Rehearsal r = glider::forecast::rehearse(glider_dir, file, options);
+      if (json) {
+        std::printf("%s\n", glider::forecast::rehearsal_json(r, r.forecast.glider).dump(2).c_str());
+      } else {
+        std::printf("rehearsal of %s: %s: %s\n%s", r.file.c_str(), r.verdict.c_str(), r.message.c_str(),
+                    glider::forecast::forecast_text(r.forecast).c_str());
+      }
+      return glider::forecast::rehearsal_exit_code(r);
+    }
+    const glider::forecast::Forecast f = glider::forecast::make_forecast(glider_dir, options);
+    if (json) {
+      std::printf("%s\n", glider::forecast::forecast_json(f).dump(2).c_str());
+    } else {
+      std::printf("%s", glider::forecast::forecast_text(f).c_str());
+    }
+    return f.refusal.empty() ? 0 : 1;
+  });
+}
