@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "glider/cli/tool.hpp"
+#include "glider/forecast/forecast.hpp"
 #include "glider/health/glider_dir.hpp"
 
 namespace glider::shore {
@@ -33,6 +34,9 @@ std::vector<std::string> after_surfacing(const std::filesystem::path& glider_dir
     } catch (...) {
       notes.push_back("health: failed: unknown error");
     }
+    // After health: the forecast flies the vehicle file health just wrote
+    // (health/vehicle.toml). It catches its own errors and says them.
+    notes.push_back(forecast::forecast_after_surfacing(glider_dir));
   } catch (...) {
     // Building a note failed (out of memory): nothing more can be said.
   }
