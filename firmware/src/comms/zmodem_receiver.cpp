@@ -39,6 +39,23 @@ void Receiver::send(const Header& header) {
   if (encoder_.room() < Encoder::kHeaderCost) return;
   encoder_.hex_header(header);
   if ((header.type == Frame::rpos || header.type == Frame::rinit) && asked_us_ < 0) asked_us_ = now_;
+  if (header.type == Frame::rpos && resync_at_us_ < 0) {
+    resync_interval_us_ = std::min(options_.timeout_us, std::max(kMinResyncUs, 4 * round_trip_us_));
+    resync_at_us_ = now_ + resync_interval_us_;
+  }
+}
+
+void Receiver::resync(hal::Micros now) {
+  // Our ZRPOS went unobeyed for 4 round trips: lost or garbled. Again, XON
+  // first (a garbled byte may have been an XOFF to the peer's tty).
+  error();
+  static constexpr std::array<std::uint8_t, 1> kXonByte = {kXon};
+  encoder_.raw(kXonByte);
+  resync_interval_us_ = std::min(options_.timeout_us, 2 * resync_interval_us_);
+  resync_at_us_ = now + resync_interval_us_;
+  if (encoder_.room() >= Encoder::kHeaderCost) {
+    encoder_.hex_header(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+  }
 }
 
 void Receiver::start(hal::Micros now) {
@@ -48,6 +65,7 @@ void Receiver::start(hal::Micros now) {
   now_ = now;
   asked_us_ = -1;
   round_trip_us_ = 0;
+  resync_at_us_ = -1;
   result_count_ = 0;
   parser_.reset();
   progress(now);
@@ -60,6 +78,8 @@ Status Receiver::step(hal::Micros now, std::size_t budget) {
   now_ = now;
   read_input(budget, [&](Parser::Event event, std::uint8_t byte) { on_event(event, byte, now); });
   if (status_ == Status::running && expired(now)) on_timeout(now);
+  if (status_ == Status::running && (state_ != State::receiving || accepting_)) resync_at_us_ = -1;
+  if (status_ == Status::running && resync_at_us_ >= 0 && now >= resync_at_us_) resync(now);
   if (status_ == Status::running && state_ != State::finishing) stalled(now);
   flush(budget);
   if (status_ == Status::failed) close_partial();
@@ -143,6 +163,7 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
     case Frame::data:
       if (state_ != State::receiving) return;
       accepting_ = header.position() == static_cast<std::uint32_t>(offset_);
+      if (accepting_) resync_at_us_ = -1;  // obeyed
       if (!accepting_) {
         error();
         send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));

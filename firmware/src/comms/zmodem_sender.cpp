@@ -95,7 +95,10 @@ void Sender::arm_answer(hal::Micros now) {
   // trips (at least kMinWait), doubled for each repeat in a row, never
   // beyond the timeout: a lost answer costs about a round trip, not 10 s.
   hal::Micros wait = options_.timeout_us;
-  if (smoothed_rtt_us_ > 0) {
+  // ZFIN is repeated only after the whole timeout: lrzsz's rz answers a
+  // second ZFIN by purging its input, the "OO" with it, and then waits 10 s
+  // for an "OO" that never comes (and the call may end meanwhile).
+  if (smoothed_rtt_us_ > 0 && state_ != State::wait_fin) {
     wait = std::max<hal::Micros>(4 * smoothed_rtt_us_, kMinWait);
     for (int i = 0; i < retries_ && wait < options_.timeout_us; ++i) wait *= 2;
     wait = std::min(wait, options_.timeout_us);
@@ -126,10 +129,13 @@ void Sender::on_header(const Header& header, hal::Micros now) {
         next_file(now);
       } else if (state_ == State::wait_eof_ack) {
         end_file(Outcome::sent, now);
-      } else if (state_ == State::wait_file_pos) {
-        send_file_header();  // the receiver missed our ZFILE
-        arm_answer(now);
       }
+      // In wait_file_pos a ZRINIT is not an answer to our ZFILE: lrzsz's rz
+      // sends one at start and another for our ZRQINIT, and a ZFILE sent
+      // again for it made rz start the file twice (every byte crossed the
+      // link twice, 11425 bytes for a 4296-byte file). A ZFILE really lost
+      // is sent again by the answer timer (repeat_last), as sz waits for
+      // quiet before it does.
       return;
     case Frame::rpos:
       if (state_ == State::wait_file_pos || state_ == State::sending || state_ == State::wait_eof_ack)

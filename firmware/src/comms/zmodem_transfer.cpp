@@ -2,7 +2,9 @@
 #include "glider/firmware/comms/zmodem_transfer.hpp"
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -22,22 +24,29 @@ ZmodemTransfer::ZmodemTransfer(const char* data_dir, FileAccess& outgoing, const
 }
 
 void ZmodemTransfer::list_files() {
+  // Heap-free (it runs in the control cycle a send arrives): the folder is
+  // read with getdents64 into a fixed buffer, not opendir (which mallocs).
   listed_ = 0;
-  DIR* dir = opendir(data_dir_.data());
-  if (dir == nullptr) return;
-  std::array<char, kMaxPath + kMaxFileName> path{};
-  while (const dirent* entry = readdir(dir)) {
-    if (listed_ == kMaxListed) break;
-    const char* name = entry->d_name;
-    // Plain names only (what Zmodem may carry): no hidden or temporary files, no folders.
-    if (name[0] == '.' || std::strlen(name) >= kMaxFileName || !zmodem::is_safe_name(name)) continue;
-    std::snprintf(path.data(), path.size(), "%s/%s", data_dir_.data(), name);
-    struct stat st {};
-    if (stat(path.data(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
-    if (open_files_ != nullptr && open_files_->is_open(name)) continue;
-    std::snprintf(names_[listed_++].text, kMaxFileName, "%s", name);
+  const int dir = ::open(data_dir_.data(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir < 0) return;
+  alignas(8) std::array<char, 4096> buffer{};
+  while (listed_ < kMaxListed) {
+    const ssize_t got = ::getdents64(dir, buffer.data(), buffer.size());
+    if (got <= 0) break;
+    for (ssize_t at = 0; at < got;) {
+      const auto* entry = reinterpret_cast<const dirent64*>(buffer.data() + at);
+      at += entry->d_reclen;
+      const char* name = entry->d_name;
+      if (listed_ == kMaxListed) break;
+      // Plain names only (what Zmodem may carry): no hidden or temporary files, no folders.
+      if (name[0] == '.' || std::strlen(name) >= kMaxFileName || !zmodem::is_safe_name(name)) continue;
+      struct stat st {};
+      if (::fstatat(dir, name, &st, 0) != 0 || !S_ISREG(st.st_mode)) continue;
+      if (open_files_ != nullptr && open_files_->is_open(name)) continue;
+      std::snprintf(names_[listed_++].text, kMaxFileName, "%s", name);
+    }
   }
-  closedir(dir);
+  ::close(dir);
   // Oldest first: Slocum segment names (<vehicle>-<yyyy>-<ddd>-<mission>-<segment>,
   // zero-padded) and 8.3 numbers sort in the order they were written.
   std::sort(names_.begin(), names_.begin() + static_cast<std::ptrdiff_t>(listed_),

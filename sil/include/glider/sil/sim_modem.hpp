@@ -156,7 +156,7 @@ class FakeShore final : public FarEnd {
 // (docs/comms.md, End to end).
 class TcpShore final : public FarEnd {
  public:
-  static constexpr int kDefaultAnswerWaitMs = 3000;
+  static constexpr int kDefaultAnswerWaitMs = 10000;
   TcpShore(std::string host, int port, int answer_wait_ms = kDefaultAnswerWaitMs);
   ~TcpShore() override;
   TcpShore(const TcpShore&) = delete;

@@ -64,6 +64,14 @@ class Receiver : public Session {
   hal::Micros now_ = 0;
   hal::Micros asked_us_ = -1;  // a ZRPOS/ZRINIT waiting for its answer since (-1: none)
   hal::Micros round_trip_us_ = 0;
+  // A ZRPOS not yet obeyed (no ZDATA at offset_ since): said again at
+  // resync_at_us_ (-1: none), after 4 round trips (at least kMinResyncUs),
+  // doubling, never beyond the timeout. A garbled ZRPOS would otherwise cost
+  // the whole timeout while the sender streams on or waits (lrzsz's sz).
+  static constexpr hal::Micros kMinResyncUs = 500'000;
+  hal::Micros resync_at_us_ = -1;
+  hal::Micros resync_interval_us_ = 0;
+  void resync(hal::Micros now);
   FileInfo info_;
   std::array<char, kMaxName + 56> temp_name_{};
   std::int64_t offset_ = 0;

@@ -5,9 +5,8 @@
 // the vehicle's data directory (the shore's `rz` receives), `zr` runs a
 // zmodem::Receiver into the from-shore directory (the shore's `sz` sends).
 // The sender and receiver live in fixed storage (std::optional, emplaced
-// per transfer): no heap. Listing the data directory (opendir) allocates in
-// libc; it runs only in the cycle a pilot's send command arrives, like
-// Control-F (docs/comms.md, End to end).
+// per transfer): no heap. Listing the data directory reads it with
+// getdents64 into a fixed buffer: no heap either (opendir would malloc).
 #include <array>
 #include <optional>
 
