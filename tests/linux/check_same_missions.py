@@ -30,6 +30,10 @@ def run(command, vehicle_data):
         line = re.sub(r": mission accepted for (vehicle|board) .*$", ": mission accepted", line)
         # Where the vehicle's data came from (vehicle file / board file) is named as such.
         line = line.replace(vehicle_data, "<vehicle data>")
+        # The firmware also says whether its board fits a drop weight (from the board's
+        # [gpio]; linux.board_drop_weight checks that line): not a mission message.
+        if line.startswith("drop weight: "):
+            continue
         lines.append(line)
     return proc.returncode, lines
 

@@ -24,7 +24,12 @@ std::uint64_t get_u64(const char* in) {
   return value;
 }
 
-std::uint32_t get_u32(const char* in) { return static_cast<std::uint32_t>(get_u64(in) & 0xFFFFFFFFu); }
+// Reads exactly 4 bytes (a check record's last field ends the file).
+std::uint32_t get_u32(const char* in) {
+  std::uint32_t value = 0;
+  for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(in[i]);
+  return value;
+}
 
 std::uint32_t crc32_of(std::string_view bytes) {
   return fw::comms::crc32({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});

@@ -49,6 +49,11 @@
   function forecastBox(g) {
     const f = g.forecast, box = document.getElementById('forecast');
     if (!f) { box.replaceChildren(E('h3', {}, 'Forecast'), E('p', {class: 'muted', id: 'no-forecast'}, 'no forecast yet')); return; }
+    // The shore's forecast after a surfacing failed (no mission copy, no fix...): its file says why.
+    if (!f.next_surfacing) {
+      box.replaceChildren(E('h3', {}, 'Forecast'), E('p', {class: 'muted', id: 'no-forecast'}, 'no forecast: ' + (f.error ? f.error.replace(/^forecast: failed: /, '') : 'no surfacing in the runs')));
+      return;
+    }
     const n = f.next_surfacing || {};
     const causes = Object.entries(f.abort_causes || {}).map(([k, v]) => k + ' ' + Math.round(100 * v) + ' %').join(', ');
     box.replaceChildren(E('h3', {}, 'Forecast'),
