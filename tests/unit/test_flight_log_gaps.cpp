@@ -61,6 +61,26 @@ TEST(FlightLogGaps, InterpolationFillsOnlyShortGapsAndNeverExtrapolates) {
   CHECK_THROWS(std::invalid_argument, interpolate_linear(t, std::vector<double>{}, 1.0));
 }
 
+// A heading gap across north is filled near north (a straight line from 6.2
+// to 0.1 rad would pass through south, pi); other gaps as the straight line;
+// long gaps and the edges stay empty, as interpolate_linear.
+TEST(FlightLogGaps, AnglesAreFilledOnTheShorterArc) {
+  const double e = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> time{0, 1, 2, 3, 4, 5, 6, 100, 101};
+  const std::vector<double> heading{e, 6.2, e, e, 0.1, e, 1.1, e, 2.0};
+  const Column out = interpolate_angle_rad(time, heading, 10.0);
+  const double turn = 0.1 + 2.0 * M_PI - 6.2;  // 0.183 rad through north
+  CHECK(std::isnan(out[0]));
+  DOUBLES_EQUAL(std::fmod(6.2 + turn / 3.0, 2.0 * M_PI), out[2], 1e-12);
+  DOUBLES_EQUAL(std::fmod(6.2 + 2.0 * turn / 3.0, 2.0 * M_PI), out[3], 1e-12);
+  DOUBLES_EQUAL(0.6, out[5], 1e-12);  // an ordinary gap: the straight line
+  CHECK(std::isnan(out[7]));          // 95 s apart: left empty
+  for (double v : out) CHECK(std::isnan(v) || (v >= 0.0 && v < 2.0 * M_PI));
+  // The straight-line fill is what this replaces: it passes near south.
+  const Column linear = interpolate_linear(time, heading, 10.0);
+  CHECK(std::abs(linear[2] - M_PI) < 1.2);
+}
+
 TEST(FlightLogGaps, DepthRateIsCentredOneSidedAtEdgesAndEmptyAcrossGaps) {
   const std::vector<double> t{0, 1, 2, 3, 4, 100, 200};
   const std::vector<double> z{0, 0.1, 0.3, E, 0.7, 5, 6};

@@ -122,7 +122,9 @@ HeadingTrack prepare_heading_track(const flightlog::FlightLog& log, const model:
   t.roll_logged = roll_column != nullptr && log.fill_fraction("m_roll") > 0.0;
   const flightlog::Column roll =
       t.roll_logged ? flightlog::interpolate_linear(time, *roll_column, gap) : flightlog::Column(time.size(), kNaN);
-  const flightlog::Column heading_filled = flightlog::interpolate_linear(time, heading, gap);
+  // On the shorter arc: a linear fill across north swung through south (issue 24's
+  // health found fin effectiveness -17 on decimated .sbd from it).
+  const flightlog::Column heading_filled = flightlog::interpolate_angle_rad(time, heading, gap);
   const flightlog::Column depth_rate = depth_rate_estimate(time, c.depth_m, options.rate_half_window_s, gap);
   const model::PitchGlideSolver solver(vehicle.hydro);
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -55,6 +56,25 @@ Column interpolate_linear(std::span<const double> time, std::span<const double> 
     if (b == a + 1 || span_s > max_gap_s) continue;
     for (std::size_t i = a + 1; i < b; ++i) {
       out[i] = std::lerp(values[a], values[b], (time[i] - time[a]) / span_s);
+    }
+  }
+  return out;
+}
+
+Column interpolate_angle_rad(std::span<const double> time, std::span<const double> values, double max_gap_s) {
+  check_lengths(time, values, "interpolate_angle_rad");
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  Column out(values.begin(), values.end());
+  const std::vector<std::size_t> valid = valid_indices(values);
+  for (std::size_t k = 0; k + 1 < valid.size(); ++k) {
+    const std::size_t a = valid[k];
+    const std::size_t b = valid[k + 1];
+    const double span_s = time[b] - time[a];
+    if (b == a + 1 || span_s > max_gap_s) continue;
+    const double turn = std::remainder(values[b] - values[a], kTwoPi);  // the shorter arc, [-pi, pi]
+    for (std::size_t i = a + 1; i < b; ++i) {
+      const double angle = std::fmod(values[a] + turn * (time[i] - time[a]) / span_s, kTwoPi);
+      out[i] = angle < 0.0 ? angle + kTwoPi : angle;
     }
   }
   return out;

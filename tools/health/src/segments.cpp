@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/health/segments.hpp"
+#include "glider/flightlog/gaps.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -52,26 +53,6 @@ struct SlocumGroup {
   std::string flight, science;
   int flight_rank = 99, science_rank = 99;
 };
-
-// A heading stored every few seconds, with rows of other sensors between:
-// the rows between two stored headings get the heading on the shorter arc
-// (a linear fill across north, 359 deg to 1 deg, would swing through 180).
-void fill_heading_on_the_circle(const flightlog::Column& time, flightlog::Column& heading, double max_gap_s) {
-  constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
-  std::size_t last = heading.size();
-  for (std::size_t i = 0; i < heading.size(); ++i) {
-    if (!std::isfinite(heading[i])) continue;
-    if (last < heading.size() && i > last + 1 && time[i] - time[last] <= max_gap_s) {
-      const double turn = std::remainder(heading[i] - heading[last], kTwoPi);
-      for (std::size_t k = last + 1; k < i; ++k) {
-        const double w = (time[k] - time[last]) / (time[i] - time[last]);
-        double h = std::fmod(heading[last] + w * turn, kTwoPi);
-        heading[k] = h < 0.0 ? h + kTwoPi : h;
-      }
-    }
-    last = i;
-  }
-}
 
 }  // namespace
 
@@ -178,7 +159,8 @@ flightlog::FlightLog hold_slow_columns(const flightlog::FlightLog& log, double m
         }
       }
     }
-    if (names[c] == "m_heading") fill_heading_on_the_circle(time, column, 30.0);
+    // A heading stored every few seconds: the rows between get it on the shorter arc.
+    if (names[c] == "m_heading") column = flightlog::interpolate_angle_rad(time, column, 30.0);
     columns.push_back(std::move(column));
   }
   return flightlog::FlightLog(log.source(), log.metadata(), names, std::move(columns), time_index);

@@ -26,6 +26,11 @@ Column forward_fill(std::span<const double> time, std::span<const double> values
 // the last valid sample.
 Column interpolate_linear(std::span<const double> time, std::span<const double> values, double max_gap_s);
 
+// Angles in radians (m_heading, [0, 2 pi)): as interpolate_linear, but along
+// the shorter arc and wrapped to [0, 2 pi), so a gap across north (6.2 to 0.1
+// rad) is filled near north, not swung through south.
+Column interpolate_angle_rad(std::span<const double> time, std::span<const double> values, double max_gap_s);
+
 // d(depth)/dt [m/s, + descending] where the log has no m_depth_rate: centred
 // difference over the neighbouring valid depth samples, one-sided where only
 // one neighbour is within max_gap_s, empty where the depth is empty or no
