@@ -45,8 +45,14 @@ Column forward_fill(std::span<const double> time, std::span<const double> values
   return out;
 }
 
-Column interpolate_linear(std::span<const double> time, std::span<const double> values, double max_gap_s) {
-  check_lengths(time, values, "interpolate_linear");
+namespace {
+
+// Fills each short gap between two valid samples a and b with
+// between(value_a, value_b, fraction of the way in time); one rule for both fills.
+template <typename Between>
+Column fill_short_gaps(std::span<const double> time, std::span<const double> values, double max_gap_s, const char* what,
+                       Between between) {
+  check_lengths(time, values, what);
   Column out(values.begin(), values.end());
   const std::vector<std::size_t> valid = valid_indices(values);
   for (std::size_t k = 0; k + 1 < valid.size(); ++k) {
@@ -54,30 +60,25 @@ Column interpolate_linear(std::span<const double> time, std::span<const double> 
     const std::size_t b = valid[k + 1];
     const double span_s = time[b] - time[a];
     if (b == a + 1 || span_s > max_gap_s) continue;
-    for (std::size_t i = a + 1; i < b; ++i) {
-      out[i] = std::lerp(values[a], values[b], (time[i] - time[a]) / span_s);
-    }
+    for (std::size_t i = a + 1; i < b; ++i) out[i] = between(values[a], values[b], (time[i] - time[a]) / span_s);
   }
   return out;
 }
 
+}  // namespace
+
+Column interpolate_linear(std::span<const double> time, std::span<const double> values, double max_gap_s) {
+  return fill_short_gaps(time, values, max_gap_s, "interpolate_linear",
+                         [](double a, double b, double w) { return std::lerp(a, b, w); });
+}
+
 Column interpolate_angle_rad(std::span<const double> time, std::span<const double> values, double max_gap_s) {
-  check_lengths(time, values, "interpolate_angle_rad");
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  Column out(values.begin(), values.end());
-  const std::vector<std::size_t> valid = valid_indices(values);
-  for (std::size_t k = 0; k + 1 < valid.size(); ++k) {
-    const std::size_t a = valid[k];
-    const std::size_t b = valid[k + 1];
-    const double span_s = time[b] - time[a];
-    if (b == a + 1 || span_s > max_gap_s) continue;
-    const double turn = std::remainder(values[b] - values[a], kTwoPi);  // the shorter arc, [-pi, pi]
-    for (std::size_t i = a + 1; i < b; ++i) {
-      const double angle = std::fmod(values[a] + turn * (time[i] - time[a]) / span_s, kTwoPi);
-      out[i] = angle < 0.0 ? angle + kTwoPi : angle;
-    }
-  }
-  return out;
+  return fill_short_gaps(time, values, max_gap_s, "interpolate_angle_rad", [](double a, double b, double w) {
+    const double turn = std::remainder(b - a, kTwoPi);  // the shorter arc, [-pi, pi]
+    const double angle = std::fmod(a + turn * w, kTwoPi);
+    return angle < 0.0 ? angle + kTwoPi : angle;
+  });
 }
 
 Column derive_depth_rate(std::span<const double> time, std::span<const double> depth, double max_gap_s) {
