@@ -195,10 +195,27 @@ def scenario_call(exe, work):
     check(any(" > put u_x 3" in l for l in lines) and any(" < GPS Location:" in l for l in lines) and
           any(" * received comet-2019-222-02-155.dbd" in l for l in lines), "journal has both directions and notes")
     # A second call: the same files again are duplicates, not re-published.
+    # The restarted shore counts its calls from 1 again: journals of earlier
+    # calls named for the coming seconds (as a call in the same second leaves
+    # them) must be neither appended to nor overwritten.
+    now = time.time()
+    earlier = {}
+    for k in range(-1, 30):
+        stamp = time.strftime("%Y%m%dT%H%M%S", time.gmtime(now + k))
+        path = os.path.join(folders, "logs", stamp + "_0001.journal")
+        if not os.path.exists(path):
+            with open(path, "w") as f:
+                f.write("earlier call %s\n" % stamp)
+            earlier[path] = "earlier call %s\n" % stamp
     shore = Shore(exe, root)
-    run_glider(shore.port, "unit_345", card, work)
+    rc2, _ = run_glider(shore.port, "unit_345", card, work)
     ev2 = wait_for_events(root, "unit_345", 2)[1]
     shore.stop()
+    check(rc2 == 0, "second call: the glider's side ended cleanly (exit %d)" % rc2)
+    check(all(open(p).read() == text for p, text in earlier.items()) and ev2["journal"].endswith("_0002.journal"),
+          "a restarted shore claims a free journal name (%s), earlier calls' journals untouched" % ev2["journal"])
+    for path in earlier:
+        os.remove(path)
     check(all(f["status"] == "duplicate" for f in ev2["files_received"]) and ev2["commands_sent"] == [],
           "second call: same files are duplicates, nothing queued is sent twice")
     text = subprocess.check_output([exe, "--root", root, "status"]).decode()

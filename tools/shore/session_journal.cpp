@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "session_journal.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <ctime>
 #include <stdexcept>
@@ -59,6 +64,21 @@ void SessionJournal::open(const std::filesystem::path& path) {
   for (const std::string& line : held_) out_ << line << '\n';
   held_.clear();
   out_.flush();
+}
+
+std::string SessionJournal::open_new(const std::filesystem::path& dir, const std::string& stamp, unsigned first) {
+  for (unsigned n = first; n < first + 10000; ++n) {
+    char id[64];
+    std::snprintf(id, sizeof id, "%s_%04u", stamp.c_str(), n % 10000);
+    const std::filesystem::path path = dir / (std::string(id) + ".journal");
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0 && errno == EEXIST) continue;
+    if (fd < 0) throw std::runtime_error(path.string() + ": cannot create the journal: " + std::strerror(errno));
+    ::close(fd);
+    open(path);
+    return id;
+  }
+  throw std::runtime_error(dir.string() + ": 10000 journals named " + stamp + "_NNNN already: none free");
 }
 
 }  // namespace glider::shore

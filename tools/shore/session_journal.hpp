@@ -24,6 +24,12 @@ class SessionJournal {
   void write(char direction, const std::string& text);
   // From now on lines go to `path` (the held lines first).
   void open(const std::filesystem::path& path);
+  // Claims `dir`/ID.journal for a new call and opens it: ID is `stamp`_NNNN
+  // with the first NNNN from `first` whose journal does not exist yet,
+  // created exclusively, so a restarted shore (its call counter back at 1)
+  // or a second shore on the same root never appends to, or overwrites the
+  // event of, an earlier call made in the same second. Returns ID.
+  std::string open_new(const std::filesystem::path& dir, const std::string& stamp, unsigned first);
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
  private:

@@ -62,8 +62,13 @@ class CallClaim {
 
 class Call {
  public:
-  Call(int fd, std::string peer, std::string call_id, const ShoreConfig& config, const std::atomic<bool>& stop)
-      : config_(config), stop_(stop), call_id_(std::move(call_id)), link_(fd, journal_, config.max_line) {
+  Call(int fd, std::string peer, std::string call_stamp, unsigned call_number, const ShoreConfig& config,
+       const std::atomic<bool>& stop)
+      : config_(config),
+        stop_(stop),
+        call_stamp_(std::move(call_stamp)),
+        call_number_(call_number),
+        link_(fd, journal_, config.max_line) {
     record_.peer = std::move(peer);
     record_.start_unix = now_unix();
   }
@@ -175,9 +180,10 @@ class Call {
     if (record_.report.vehicle_name.empty()) return false;
     record_.glider = record_.report.vehicle_name;
     folders_ = glider_folders(config_.root, record_.glider, true);
-    record_.journal = call_id_ + ".journal";
+    if (!call_id_.empty()) return true;  // already adopted and its journal claimed
     journal_.write('*', "identified: " + record_.glider);
-    journal_.open(folders_.logs / record_.journal);
+    call_id_ = journal_.open_new(folders_.logs, call_stamp_, call_number_);
+    record_.journal = call_id_ + ".journal";
     return true;
   }
 
@@ -315,7 +321,7 @@ class Call {
     try {
       const fs::path dir = config_.root / "unidentified";
       fs::create_directories(dir);
-      journal_.open(dir / (call_id_ + ".journal"));
+      call_id_ = journal_.open_new(dir, call_stamp_, call_number_);
     } catch (const std::exception& error) {
       std::fprintf(stderr, "glider-shore: unidentified call journal: %s\n", error.what());
     }
@@ -323,7 +329,9 @@ class Call {
 
   const ShoreConfig& config_;
   const std::atomic<bool>& stop_;
-  std::string call_id_;
+  std::string call_stamp_;  // UTC second the call came in
+  unsigned call_number_;    // this process's count: the first NNNN tried
+  std::string call_id_;     // STAMP_NNNN, claimed with the journal
   SessionJournal journal_;
   ConsoleLink link_;
   GliderFolders folders_;
@@ -333,12 +341,11 @@ class Call {
 }  // namespace
 
 void serve_call(int fd, const std::string& peer, const ShoreConfig& config, const std::atomic<bool>& stop) {
-  // Calls are numbered so two in the same second get different journals.
+  // Calls are numbered so two in the same second get different journals;
+  // the number is only where the search for a free name starts (open_new).
   static std::atomic<unsigned> counter{0};
-  char id[64];
-  std::snprintf(id, sizeof id, "%s_%04u", utc_stamp(now_unix()).c_str(), ++counter % 10000);
   try {
-    Call call(fd, peer, id, config, stop);
+    Call call(fd, peer, utc_stamp(now_unix()), ++counter, config, stop);
     call.run();
   } catch (const std::exception& error) {
     std::fprintf(stderr, "glider-shore: call from %s: %s\n", peer.c_str(), error.what());
