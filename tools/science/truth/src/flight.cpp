@@ -19,7 +19,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPi = std::numbers::pi;
-constexpr double kCometMeasuredSpeedMS = 0.35;  // m/s, through the water (see draw())
+constexpr double kCometMeasuredSpeedMS = 0.35;  // m/s, through the water (see draw(): about 0.36 measured)
 constexpr double kWe01MeasuredSpeedMS = 0.46;   // m/s, hypot(0.20, 0.42): Graver et al. 2003 Fig. 13
 double uniform(std::mt19937_64& rng, double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
 double wrap(double a) { return std::remainder(a, 2.0 * kPi); }
@@ -54,8 +54,10 @@ Draws draw(const FlightRequest& r, const Vehicle& v) {
   u.cl_q = uniform(rng, 0.0, 2.0);
   u.drag_reynolds_exponent = uniform(rng, 0.05, 0.2);
   // The speed at which the vehicle file's published C_D0 was measured: the
-  // skin friction's Reynolds-number term is 1 there. comet (shallow): the
-  // DVL of gliderflight-adcp reads 0.27-0.35 m/s; WE01 (deep): Graver et al.
+  // skin friction's Reynolds-number term is 1 there. comet (shallow):
+  // glidertrim's C_D0 is from its 2019 trim dives, which glided at about
+  // 0.36 m/s (comet-2019-222-02-154/156: depth rate over sin(m_pitch - 3 deg),
+  // median 0.364 / 0.370 m/s); WE01 (deep): Graver et al.
   // 2003 Fig. 13 glides 0.20 m/s down and 0.42 m/s across, 0.46 m/s along
   // the path. (Both variants used 0.35 before: WE01's own drag, flown at its
   // own speed, then read 3-7 % low against its own file.)
