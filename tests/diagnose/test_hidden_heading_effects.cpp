@@ -238,8 +238,8 @@ TEST(DiagnoseHiddenHeadingEffects, ClosedLoopReproducesTheFlight) {
                 "%.2f rad/h (score %.2f), identified %.2f deg %.2f rad/h (score %.2f); log scatter %.2f deg %.2f rad/h",
                 flown_law.gain, flown_law.heading_deadband_rad, c.heldout_glides,
                 rad_to_deg(c.configured.error_rms_rad), 3600.0 * c.configured.travel_rms_rad_s, c.configured.score,
-                rad_to_deg(c.open_loop_set.error_rms_rad), 3600.0 * c.open_loop_set.travel_rms_rad_s, c.open_loop_set.score,
-                rad_to_deg(c.error_scatter_rad), 3600.0 * c.travel_scatter_rad_s);
+                rad_to_deg(c.open_loop_set.error_rms_rad), 3600.0 * c.open_loop_set.travel_rms_rad_s,
+                c.open_loop_set.score, rad_to_deg(c.error_scatter_rad), 3600.0 * c.travel_scatter_rad_s);
   UT_PRINT(text);
   CHECK(c.heldout_glides >= 4);
   CHECK(c.open_loop_set.score < 0.5 * c.configured.score);
