@@ -87,7 +87,8 @@ Parsed checked(const Civil& c, double fraction, const Rules& rules) {
   if (c.second > 59) return failed("second outside [0, 59]");
   Parsed p;
   p.ok = true;
-  p.whole_s = days_from_civil(c.year, c.month, c.day) * kSecondsPerDay + c.hour * 3600 + c.minute * 60 + c.second;
+  p.whole_s = days_from_civil(c.year, c.month, c.day) * kSecondsPerDay + std::int64_t{c.hour} * 3600 +
+              std::int64_t{c.minute} * 60 + c.second;
   p.fraction_s = fraction;
   return p;
 }
