@@ -67,9 +67,10 @@ for g in ("healthy", "fouling", "aborting"):
                                        "b_arg: end_action(enum)          1\n    b_arg: keystroke_wait_time(s)  300")
     open(surfac, "w").write(text)
     missions[g] = os.path.join(m, "missions/box.mi")
-    # What a pilot puts in the glider's shore folder before launch (docs/console.md, "Feeding it"): a copy of
-    # the mission it flies, as the forecast reads it (GLIDER/mission/{missions,mafiles}/), and its vehicle file,
-    # health's nominal vehicle (GLIDER/vehicle.toml; the fouling glider's too: nobody knows it will foul).
+    # What a pilot puts in the glider's shore folder before launch (docs/console.md, "feeding the console"):
+    # a copy of the mission it flies, as the forecast reads it (GLIDER/mission/{missions,mafiles}/), and its
+    # vehicle file, health's nominal vehicle (GLIDER/vehicle.toml; the fouling glider's too: nobody knows it
+    # will foul).
     shutil.copytree(m, os.path.join(root, g, "mission"))
     shutil.copy(we01, os.path.join(root, g, "vehicle.toml"))
 fouled = os.path.join(work, "fouled.toml")
@@ -153,7 +154,8 @@ try:
             "SIL 'aborting' aborted and called with the abort prompt")
     drag = [a for a in health("fouling")["alerts"] if a["effect"] == "drag_change"]
     h.check(health("fouling")["state"] == "alert" and len(drag) == 1 and drag[0]["size"] > 0.2,
-            "health (the shore's, on fouling's .sbd) alerts on the drag's step: %s" % (drag[0]["message"] if drag else "-"))
+            "health (the shore's, on fouling's .sbd) alerts on the drag's step: %s"
+            % (drag[0]["message"] if drag else "-"))
     h.check(health("healthy")["state"] == "ok" and not health("healthy")["alerts"], "health: healthy is ok, no alert")
     forecasts = {g: json.load(open(os.path.join(root, g, "forecast", "forecast.json"))) for g in ("fouling", "healthy")}
     h.check(all(f.get("next_surfacing") for f in forecasts.values()), "the shore's forecast of fouling and healthy")
