@@ -228,6 +228,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "scratch folder for the deployments' files");
   std::vector<std::string> kinds{"drag", "buoyancy", "fin", "pump"};
   app.add_option("--faults", kinds, "fault kinds drawn (default: all; a bounded run measures one)")
+      ->delimiter(',')
       ->check(CLI::IsMember({"drag", "buoyancy", "fin", "pump"}));
   return tool.run(argc, argv, [&]() -> int {
     if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;

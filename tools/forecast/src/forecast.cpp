@@ -386,7 +386,11 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   }
 
   setup.current = f.current;
-  std::vector<RunOutcome> runs = fly_runs(setup, options, options.runs, true);
+  // The replayed dives' miss already holds the true vehicle's error (they
+  // flew the nominal one): with it, the vehicle is not drawn as well.
+  ForecastOptions drawn = options;
+  if (f.model_miss_dives > 0) drawn.drag_sigma = drawn.buoyancy_sigma_kg = 0.0;
+  std::vector<RunOutcome> runs = fly_runs(setup, drawn, options.runs, true);
   add_model_miss(f, options, runs);
   summarise(runs, setup.fix, f);
 
