@@ -244,7 +244,14 @@ try:
     h.check(driver.execute_script("return window.pwned") is None and not driver.find_elements(By.CSS_SELECTOR, "img[src=x]")
             and evil in text("#queued"), "a command and a file name holding HTML are shown as text (no script ran)")
     click("#cancel-command-0")
-    wait.until(lambda d: evil not in text("#queued"))
+    try:
+        wait.until(lambda d: evil not in text("#queued"))
+    except Exception:
+        h.check(False, "the cancelled command is gone from the page within 20 s; the page said %r; actions.journal: %r" %
+                (text("#queue-result"),
+                open(os.path.join(root, "fouling", "actions.journal")).read()[-600:]
+                 if os.path.exists(os.path.join(root, "fouling", "actions.journal")) else None))
+        raise
     os.remove(os.path.join(root, "fouling", "mission", "mafiles", evil.replace("/", "") + ".ma"))
     shot("glider_fouling.png", 3000)
 

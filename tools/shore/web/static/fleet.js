@@ -29,8 +29,13 @@
              next, health, alerts, aborts);
   }
 
+  // Overlapping refreshes (event stream, polling): an older answer is dropped.
+  let asked = 0, shown = 0;
   async function refresh() {
+    const mine = ++asked;
     const fleet = await Console.json('/api/fleet');
+    if (mine < shown) return;
+    shown = mine;
     const body = document.querySelector('#fleet tbody');
     body.replaceChildren(...fleet.gliders.map(row));
     document.getElementById('empty').hidden = fleet.gliders.length > 0;

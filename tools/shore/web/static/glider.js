@@ -112,11 +112,18 @@
     }));
   }
 
+  // Refreshes overlap (an action's own, the event stream's): an answer older
+  // than the one on the page is dropped, or a cancelled item could come back
+  // and stay until the next event.
+  let asked = 0, shown = 0;
   async function refresh() {
+    const mine = ++asked;
     const r = await fetch('/api/gliders/' + encodeURIComponent(name), {credentials: 'same-origin', cache: 'no-store'});
     if (r.status === 401) { location.href = '/login'; return; }
     if (!r.ok) { document.getElementById('attention').textContent = 'no glider ' + name + ' has called this shore'; return; }
     const g = await r.json();
+    if (mine < shown) return;
+    shown = mine;
     current = g;
     document.getElementById('name').textContent = g.name;
     document.title = g.name + ' - glider console';
