@@ -20,7 +20,7 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../comms"))
 import shore_run  # noqa: E402
 
 glider_sil, shore_bin, source = sys.argv[1:4]
