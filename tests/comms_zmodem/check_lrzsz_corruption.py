@@ -19,7 +19,7 @@ import tempfile
 import time
 
 tool = sys.argv[1]
-MIN_SEEDS, MAX_SEEDS, BUDGET_S, LIMIT_S = 2, 6, 20.0, 15
+MIN_SEEDS, MAX_SEEDS, BUDGET_S, LIMIT_S = 2, 6, 15.0, 20
 if shutil.which("sz") is None:
     print("SKIPPED: lrzsz (sz) is not installed (Debian package lrzsz)")
     sys.exit(77)
