@@ -22,12 +22,12 @@
 
 #include "diagnose_sampling.hpp"
 #include "glider/cli/tool.hpp"
-#include "glider/config/toml_document.hpp"
 #include "glider/diagnose/diagnose.hpp"
-#include "glider/firmware/config/flight_config_file.hpp"
+#include "glider/firmware/app/mission_setup.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/environment.hpp"
 #include "glider/model/vehicle_file.hpp"
+#include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
 #include "glider/units.hpp"
 #include "hidden_truth.hpp"
@@ -73,14 +73,24 @@ struct Setup {
 };
 
 std::string flight_log(const Setup& s, const Draw& d, const std::string& name, std::uint64_t seed) {
-  glider::fw::FlightSoftwareConfig config = glider::fw::read_flight_config(
-      glider::config::TomlDocument::load(s.source_dir + "/boards/missions/demo_yo.toml"));
-  config.mission.yos = 6;
-  config.mission.dive_to_m = d.dive_to_m;
-  config.mission.max_depth_m = d.dive_to_m + 15.0;
+  // The mission as glider-sil prepares it (the flight application's one mission entry; its
+  // default working depth), the firmware knowing the nominal vehicle; then the case's yos
+  // and depth, checked again.
   glider::sil::ScenarioOptions options;
   options.seed = seed;
   options.environment = d.water;
+  const glider::fw::app::PreparedMission prepared = glider::fw::app::prepare_mission(
+      s.source_dir + "/boards/missions/demo_yo.toml",
+      glider::sil::vehicle_setup(s.nominal, options.fitted, 100.0, false, d.water.water.at(0.0, 0.0).density_kg_m3),
+      {});
+  if (!prepared.config) throw std::runtime_error(name + ": " + prepared.refusal);
+  glider::fw::FlightSoftwareConfig config = *prepared.config;
+  config.mission.yos = 6;
+  config.mission.dive_to_m = d.dive_to_m;
+  config.mission.max_depth_m = d.dive_to_m + 15.0;
+  if (const std::string problem = glider::fw::validate(config); !problem.empty()) {
+    throw std::runtime_error(name + ": " + problem);
+  }
   options.logged_vehicle = s.nominal;
   // Rows 2-5 s apart, sci_* gaps, surface gaps: like a real Slocum log.
   options.log_gaps.enabled = s.sampling == glider::hidden::Sampling::kSlocum;

@@ -87,6 +87,14 @@ def nominal(effect):
     return STATED.get(effect, 0.0)
 
 
+def cases_of_plane(plane):
+    """The default cases: every case, or one plane's (clean logs, its singles, the pairs inside it)."""
+    if plane == 'both':
+        return ['none'] + VERTICAL + HEADING + PAIRS
+    own = VERTICAL if plane == 'vertical' else HEADING
+    return ['none'] + own + [c for c in PAIRS if all(e in own for e in c.split('+'))]
+
+
 def draw_seed(base, case, i):
     digest = hashlib.sha256(('%d/%s/%d' % (base, case, i)).encode()).digest()
     return int.from_bytes(digest[:8], 'little') >> 1
@@ -133,8 +141,9 @@ def run_draw(args, case, seed):
     result['flight'] = truth['flight']
     start = time.monotonic()
     try:
-        diagnosed = subprocess.run([args.diagnose, log, '--vehicle', vehicle, '--json'], capture_output=True,
-                                   text=True, timeout=args.timeout)
+        plane = [] if args.plane == 'both' else ['--plane', args.plane]
+        diagnosed = subprocess.run([args.diagnose, log, '--vehicle', vehicle, '--json'] + plane,
+                                   capture_output=True, text=True, timeout=args.timeout)
     except subprocess.TimeoutExpired:
         result['error'] = 'glider-diagnose: timed out after %d s' % args.timeout
         return result
@@ -253,6 +262,9 @@ def main():
     p.add_argument('--draw-seed', type=int, help='replay exactly this draw (with --cases CASE --draws 1)')
     p.add_argument('--cases', help='comma list: effect ids, a+b pairs, none (default: none, every single, the pairs)')
     p.add_argument('--yos', type=int, default=6, help='yos per truth log')
+    p.add_argument('--plane', choices=('both', 'vertical', 'heading'), default='both',
+                   help='diagnose this plane only (and by default its cases only: the clean logs, its singles '
+                   'and the pairs inside it)')
     p.add_argument('--build', default=os.environ.get('GLIDER_BUILD_DIR', 'build/release'))
     p.add_argument('--truth', help='glider-truth (default: BUILD/tools/science/truth/glider-truth)')
     p.add_argument('--diagnose', help='glider-diagnose (default: BUILD/tools/diagnose/glider-diagnose)')
@@ -275,7 +287,7 @@ def main():
         if not os.access(program, os.X_OK):
             print('diagnose_truth_coverage: %s is not built' % program, file=sys.stderr)
             return 1
-    cases = args.cases.split(',') if args.cases else ['none'] + VERTICAL + HEADING + PAIRS
+    cases = args.cases.split(',') if args.cases else cases_of_plane(args.plane)
     for case in cases:
         for e in case.split('+'):
             if e != 'none' and e not in SIZES:

@@ -51,6 +51,21 @@ const char* name(Fault f) {
   }
   return "";
 }
+// The --faults name of a kind.
+std::string kind_name(Fault f) {
+  switch (f) {
+    case Fault::kDrag:
+      return "drag";
+    case Fault::kBuoyancy:
+      return "buoyancy";
+    case Fault::kFin:
+      return "fin";
+    case Fault::kPump:
+      return "pump";
+    default:
+      return "clean";
+  }
+}
 HealthEffect effect_of(Fault f) {
   switch (f) {
     case Fault::kDrag:
@@ -136,6 +151,12 @@ Draw draw(Fault fault, std::mt19937_64& rng) {
   return d;
 }
 
+std::string joined(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& w : words) text += (text.empty() ? "" : ",") + w;
+  return text;
+}
+
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 Outcome run(const Draw& d, const std::string& dir) {
@@ -197,26 +218,33 @@ double percentile(std::vector<double> v, double p) {
 int main(int argc, char** argv) {
   cli::Tool tool("bench_health", "Flight health on SIL deployments with drawn faults (fresh seeds)");
   CLI::App& app = tool.app();
-  std::size_t draws = 4, clean = 0;
+  constexpr std::size_t kAsDraws = 1001;  // --clean not given
+  std::size_t draws = 4, clean = kAsDraws;
   std::uint64_t seed = 0;
   std::string out = "build/release/benchmark/health";
   tool.add_integer("--draws", draws, 1, 1000, "", "deployments per fault kind");
-  tool.add_integer("--clean", clean, 0, 1000, "", "clean 10-day deployments (default: as --draws)");
+  tool.add_integer("--clean", clean, 0, 1000, "", "clean 10-day deployments (default: as --draws; 0: none)");
   tool.add_integer("--seed", seed, 0, cli::kMaxSeed, "", "replay a run (default: a fresh seed, printed)");
   app.add_option("--out", out, "scratch folder for the deployments' files");
+  std::vector<std::string> kinds{"drag", "buoyancy", "fin", "pump"};
+  app.add_option("--faults", kinds, "fault kinds drawn (default: all; a bounded run measures one)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"drag", "buoyancy", "fin", "pump"}));
   return tool.run(argc, argv, [&]() -> int {
     if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;
-    if (clean == 0) clean = draws;
+    if (clean == kAsDraws) clean = draws;
     std::printf(
-        "bench_health --seed %llu --draws %zu --clean %zu  (surfacings %g h apart, decimated .sbd: "
+        "bench_health --seed %llu --draws %zu --clean %zu --faults %s  (surfacings %g h apart, decimated .sbd: "
         "tests/health/sbdlist.dat)\n",
-        static_cast<unsigned long long>(seed), draws, clean, kHoursApart);
+        static_cast<unsigned long long>(seed), draws, clean, joined(kinds).c_str(), kHoursApart);
     std::mt19937_64 rng(seed);
     std::vector<double> update_s, update_cpu_s;
     std::map<Fault, std::vector<std::pair<Draw, Outcome>>> results;
     std::vector<Fault> plan;
     for (std::size_t i = 0; i < draws; ++i) {
-      for (Fault f : {Fault::kDrag, Fault::kBuoyancy, Fault::kFin, Fault::kPump}) plan.push_back(f);
+      for (Fault f : {Fault::kDrag, Fault::kBuoyancy, Fault::kFin, Fault::kPump}) {
+        if (std::find(kinds.begin(), kinds.end(), kind_name(f)) != kinds.end()) plan.push_back(f);
+      }
     }
     for (std::size_t i = 0; i < clean; ++i) plan.push_back(Fault::kNone);
     std::size_t n = 0;

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "glider/firmware/log/log_text.hpp"
+#include "glider/hal/sim_log_columns.hpp"
 #include "glider/units.hpp"
 
 namespace glider::sil {
@@ -17,16 +18,47 @@ namespace {
 
 constexpr std::size_t kFlushBytes = 64 * 1024;  // whole rows, at most this much held in memory
 
-const char* kSimColumns =
-    "sci_water_temp,sci_water_cond,sci_water_pressure,"
-    "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
-    "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
-    "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_yaw_rate_rad_s,sim_density_kg_m3,sim_u_water_m_s,"
-    "sim_v_water_m_s,sim_w_water_m_s,sim_temperature_c,sim_practical_salinity";
+// The SIL's appended columns (hal::kSimLogColumns) of the vehicle's truth and
+// the simulated CTD's reading.
+hal::SimLogRow sim_log_row(const model::Truth& t, const CtdReading& ctd) {
+  hal::SimLogRow row;
+  row.sci_water_temp = ctd.temperature_c;
+  row.sci_water_cond = ctd.conductivity_s_m;
+  row.sci_water_pressure = ctd.pressure_bar;
+  row.sim_east_m = t.east_m;
+  row.sim_north_m = t.north_m;
+  row.sim_depth_m = t.depth_m;
+  row.sim_heading_rad = t.heading_rad;
+  row.sim_pitch_rad = t.pitch_rad;
+  row.sim_speed_m_s = t.speed_m_s;
+  row.sim_alpha_rad = t.alpha_rad;
+  row.sim_glide_path_rad = t.glide_path_rad;
+  row.sim_horizontal_speed_m_s = t.horizontal_speed_m_s;
+  row.sim_depth_rate_m_s = t.depth_rate_m_s;
+  row.sim_net_buoyancy_kg = t.net_buoyancy_kg;
+  row.sim_ballast_pumped_cc = m3_to_cc(t.pumped_volume_m3);
+  row.sim_battpos_in = m_to_in(t.battery_pos_m);
+  row.sim_fin_rad = t.fin_rad;
+  row.sim_yaw_rate_rad_s = t.yaw_rate_rad_s;
+  row.sim_density_kg_m3 = t.water.density_kg_m3;
+  row.sim_u_water_m_s = t.water.current_east_m_s;
+  row.sim_v_water_m_s = t.water.current_north_m_s;
+  row.sim_w_water_m_s = t.water.vertical_velocity_m_s;
+  row.sim_temperature_c = t.water.temperature_c;
+  row.sim_practical_salinity = t.water.practical_salinity;
+  return row;
+}
 
 }  // namespace
 
-std::string CsvFlightLog::header() { return fw::log_header() + "," + kSimColumns; }
+std::string CsvFlightLog::header() {
+  std::string header = fw::log_header();
+  for (const hal::SimLogColumn& column : hal::kSimLogColumns) {
+    header += ',';
+    header += column.name;
+  }
+  return header;
+}
 
 CsvFlightLog::CsvFlightLog(const std::string& path, const Metadata& metadata, const model::GliderSimulator& sim,
                            const SimCtd& ctd, const LogGaps& gaps, std::uint64_t gap_seed, LogEncoding encoding)
@@ -102,33 +134,12 @@ bool CsvFlightLog::write(const hal::FlightLogRecord& r) {
   // The science bay is off at the surface (m_depth_state 0), as in real logs.
   const bool science_missed = gaps_.enabled && gap_random_.uniform() < gaps_.sci_blank_fraction;
   const CtdReading ctd = science_missed ? CtdReading{} : ctd_.sample(t, r.m_depth_state != 0);
-  const std::array sim_values{ctd.temperature_c,
-                              ctd.conductivity_s_m,
-                              ctd.pressure_bar,
-                              t.east_m,
-                              t.north_m,
-                              t.depth_m,
-                              t.heading_rad,
-                              t.pitch_rad,
-                              t.speed_m_s,
-                              t.alpha_rad,
-                              t.glide_path_rad,
-                              t.horizontal_speed_m_s,
-                              t.depth_rate_m_s,
-                              t.net_buoyancy_kg,
-                              m3_to_cc(t.pumped_volume_m3),
-                              m_to_in(t.battery_pos_m),
-                              t.fin_rad,
-                              t.yaw_rate_rad_s,
-                              t.water.density_kg_m3,
-                              t.water.current_east_m_s,
-                              t.water.current_north_m_s,
-                              t.water.vertical_velocity_m_s,
-                              t.water.temperature_c,
-                              t.water.practical_salinity};
+  const hal::SimLogRow sim_row = sim_log_row(t, ctd);
+  std::array<double, hal::kSimLogColumns.size()> sim_values{};
+  for (std::size_t i = 0; i < sim_values.size(); ++i) sim_values[i] = hal::kSimLogColumns[i].value(sim_row);
   if (encoding_ == LogEncoding::kBinary) {
     constexpr std::size_t kFirmware = hal::kLogColumns.size();
-    std::array<double, kFirmware + sim_values.size()> values{};
+    std::array<double, kFirmware + hal::kSimLogColumns.size()> values{};
     for (std::size_t i = 1; i < kFirmware; ++i) values[i] = hal::kLogColumns[i].value(r);
     std::copy(sim_values.begin(), sim_values.end(), values.begin() + kFirmware);
     char record[fw::kMaxBinaryRecordBytes];

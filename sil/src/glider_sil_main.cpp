@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
   std::string launch_utc;
   app.add_option("--launch-utc", launch_utc,
                  "the simulated UTC at launch, YYYY-MM-DDTHH:MM:SSZ (2000..2099; default: now): the Slocum files' "
-                 "names and fileopen_time, the dialog's Curr Time");
+                 "clock (m_present_time, names, fileopen_time), the dialog's Curr Time");
   double time_scale = 0.0;
   tool.add_number("--time-scale", time_scale, {0.0, 1e6, ""},
                   "at most this many simulated seconds per wall second (0: as fast as it goes); with --shore, "
@@ -248,7 +248,8 @@ int main(int argc, char** argv) {
       }
     }
     if (!slocum_dir.empty()) {
-      // Names and fileopen_time from the simulated launch UTC (m_present_time is mission seconds).
+      // The Slocum files' clock is the simulated UTC (a Slocum's m_present_time is Unix seconds);
+      // the CSV log keeps the seconds since launch.
       const glider::fw::SlocumMissionNumbers numbers =
           glider::fw::next_slocum_mission(slocum_dir, vehicle.name, launch_utc_s * 1'000'000);
       options.slocum.utc_at_zero_us = launch_utc_s * 1'000'000;

@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """The console's alerts to people (docs/console.md, "Alerts"), on a shore root
-written by fixtures: an abort, a missed call (forecast p90 passed by the
-margin), too long at the surface (a call in progress past the limit) and a
+of fake calls (fake_events.py) and real health and forecast reports
+(tests/console/data): an abort, a missed call (the forecast's p90 passed by
+the margin), too long at the surface (a call in progress past the limit) and a
 health alert each raise one alert, notified through the --notify command
 (GLIDER_ALERT_* in its environment), repeated and escalated while nobody
 acknowledges; an acknowledgement (pilot, CSRF token) stops the repeats, is
 journaled with the user, and survives a restart. The fleet is ordered by
 them. Usage: check_console_alerts.py GLIDER_SHORE WORK_DIR. Exit 0 = pass."""
+import calendar
 import json
 import os
 import shutil
@@ -17,7 +19,6 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import console_harness as h  # noqa: E402
 import fake_events  # noqa: E402
-import fixture_reports  # noqa: E402
 
 shore_bin, work = sys.argv[1:3]
 h.fresh_dir(work)
@@ -27,17 +28,19 @@ root = os.path.join(work, "root")
 # Calls of one glider an hour apart (more than the 2400 s that make one stay at the surface), but g_surface's.
 fake_events.write_call(root, "g_abort", 3630, 1)
 abort_id = fake_events.write_call(root, "g_abort", 20, 2, prompt="GliderDos A 6 >", aborts=1, cause="MS_ABORT_LEAK")
+# g_missed: two calls an hour apart, the last when its forecast was made (27 Nov 2026, 12:07 UTC: a real one,
+# tests/console/data), which expected the next call by 12:39 UTC that day, long past.
+h.install_report(os.path.join(root, "g_missed"), "healthy_forecast.json")
+made = json.load(open(os.path.join(root, "g_missed", "forecast", "forecast.json")))["made_utc"]
+made_ago = time.time() - calendar.timegm(time.strptime(made, "%Y-%m-%dT%H:%M:%SZ"))
 for n in (1, 2):
-    fake_events.write_call(root, "g_missed", 7200 / n, n)
-fixture_reports.write_forecast(os.path.join(root, "g_missed"), "g_missed", (54.3, 7.4), 54.31, 7.41, in_s=-960)
+    fake_events.write_call(root, "g_missed", made_ago + 3600 * (2 - n), n)
 fake_events.write_call(root, "g_surface", 60, 1)
 fake_events.write_call(root, "g_surface", 12, 2, event=False)  # the call in progress, 12 s long
 fake_events.write_call(root, "g_health", 30, 1)
-fixture_reports.write_health(os.path.join(root, "g_health"), "g_health", "alert", drag_ratio=1.12)
-fixture_reports.write_forecast(os.path.join(root, "g_health"), "g_health", (54.3, 7.4), 54.31, 7.41)
+h.install_report(os.path.join(root, "g_health"), "fouling_health.json")  # health's drag alert
 fake_events.write_call(root, "g_fine", 30, 1)
-fixture_reports.write_health(os.path.join(root, "g_fine"), "g_fine", "ok")
-fixture_reports.write_forecast(os.path.join(root, "g_fine"), "g_fine", (54.3, 7.4), 54.31, 7.41)
+h.install_report(os.path.join(root, "g_fine"), "healthy_health.json")  # ok; one call, no forecast: none expected
 
 notify_log = os.path.join(work, "notify.log")
 notify = ("printf '%s|%s|%s|%s\\n' \"$GLIDER_ALERT_LEVEL\" \"$GLIDER_ALERT_ID\" \"$GLIDER_ALERT_KIND\" "

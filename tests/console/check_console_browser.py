@@ -2,19 +2,21 @@
 # SPDX-License-Identifier: Apache-2.0
 """The console in a real browser (headless Chromium driven by Selenium)
 against a glider-shore fed by three SIL gliders over loopback RUDICS:
-"healthy" (the box mission), "fouling" (the same with a fouled hull: drag
-+40 %) and "aborting" (a leak at 2500 s: the firmware aborts, surfaces and
-calls). Health and forecast reports come from tests/console/fixture_reports.py
-(a clearly named fixture writer standing in for glider-health/glider-forecast:
-the test decides what they say). Steps:
+"healthy" (the box mission), "fouling" (the same; its hull fouls between two
+runs: cd0 0.214 -> 0.300, drag +40 %) and "aborting" (a leak at 2500 s: the
+firmware aborts, surfaces and calls). Their health and forecast are the
+shore's own: after every call glider-shore runs health and the forecast
+(tools/shore/after_surfacing.cpp) on the .sbd files the glider sent, with what
+a pilot puts in each glider's folder: its vehicle file (GLIDER/vehicle.toml)
+and a copy of the mission it flies (GLIDER/mission/). Steps:
  1. fleet page: three rows in attention order - aborting (abort), fouling
-    (health alert), healthy - with "no forecast yet" where there is none;
+    (health's drag alert), healthy (health ok, a forecast);
  2. fouling's page: the map's fixes, dead-reckoned track, waypoints and the
-    forecast ellipse; the health alert; the drag plot with its thresholds;
- 3. aborting's page: the abort alert, "no forecast yet", acknowledged by a click;
- 4. healthy's page: a goto .ma chosen in the file input and queued (rehearsal
-    result shown); without a reload the page then shows the next calls, the
-    file sent, and the journal shows it accepted by the SIL vehicle.
+    forecast ellipse; health's drag alert; the drag plot;
+ 3. aborting's page: the abort alert, the forecast box, acknowledged by a click;
+ 4. healthy's page: a goto .ma chosen in the file input and queued (the
+    forecast's rehearsal shown); without a reload the page then shows the next
+    calls, the file sent, and the journal shows it accepted by the SIL vehicle.
 Screenshots of every page go to WORK_DIR/screenshots (and to --docs DIR).
 Usage: check_console_browser.py GLIDER_SIL GLIDER_SHORE SOURCE_DIR WORK_DIR [--docs DIR].
 Exit 0 pass, 1 fail, 77 skipped (no chromium, chromedriver or python3-selenium)."""
@@ -30,7 +32,6 @@ import time
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
 import console_harness as h  # noqa: E402
-import fixture_reports  # noqa: E402
 
 glider_sil, shore_bin, source, work = sys.argv[1:5]
 docs = sys.argv[sys.argv.index("--docs") + 1] if "--docs" in sys.argv else None
@@ -57,6 +58,7 @@ os.makedirs(shots)
 # shore's work fits in each call.
 root = os.path.join(work, "root")
 missions = {}
+we01 = os.path.join(source, "boards/vehicles/slocum_we01.toml")
 for g in ("healthy", "fouling", "aborting"):
     m = os.path.join(work, "mission_" + g)
     shutil.copytree(os.path.join(source, "boards/missions/box_current"), m)
@@ -64,19 +66,20 @@ for g in ("healthy", "fouling", "aborting"):
     text = open(surfac).read().replace("b_arg: end_action(enum)          2   # resume",
                                        "b_arg: end_action(enum)          1\n    b_arg: keystroke_wait_time(s)  300")
     open(surfac, "w").write(text)
-    # The pilot's copy of the mission as the forecast reads it: ROOT/GLIDER/mission/{missions,mafiles}/.
-    shutil.copytree(m, os.path.join(root, g, "mission"))
     missions[g] = os.path.join(m, "missions/box.mi")
-we01 = os.path.join(source, "boards/vehicles/slocum_we01.toml")
+    # What a pilot puts in the glider's shore folder before launch (docs/console.md, "feeding the console"):
+    # a copy of the mission it flies, as the forecast reads it (GLIDER/mission/{missions,mafiles}/), and its
+    # vehicle file, health's nominal vehicle (GLIDER/vehicle.toml; the fouling glider's too: nobody knows it
+    # will foul).
+    shutil.copytree(m, os.path.join(root, g, "mission"))
+    shutil.copy(we01, os.path.join(root, g, "vehicle.toml"))
 fouled = os.path.join(work, "fouled.toml")
-text = open(we01).read()
-text, n = re.subn(r"(?m)^cd0 = 0\.214", "cd0 = 0.300", text)  # +40 % parasitic drag: a fouled hull
+text, n = re.subn(r"(?m)^cd0 = 0\.214", "cd0 = 0.300", open(we01).read())  # +40 % parasitic drag: a fouled hull
 assert n == 1
 open(fouled, "w").write(text)
-second = os.path.join(work, "we01_run2.toml")
-text, n = re.subn(r'(?m)^name = "slocum_we01"', 'name = "slocum_we01_run2"', open(we01).read())
-assert n == 1
-open(second, "w").write(text)
+# The .sbd's list: health's (tests/health/sbdlist.dat, 24 sensors, every 4 s at most). With the built-in
+# list (depth every 10 s, pump 30 s) health's drag interval is wider than its 5 % rule: "cannot judge".
+sbdlist = os.path.join(source, "tests/health/sbdlist.dat")
 goto = os.path.join(work, "goto_l10.ma")
 open(goto, "w").write("behavior_name=goto_list\n<start:b_arg>\n    b_arg: start_when(enum)          0\n"
                       "    b_arg: list_stop_when(enum)      7\n    b_arg: list_when_wpt_dist(m)   150\n"
@@ -89,12 +92,30 @@ shore = h.Shore(shore_bin, work, ["--resume", "--linger", "20", "--identify-time
                                   "--transfer-idle-timeout", "20", "--http-tick", "0.2",
                                   "--notify", "echo \"$GLIDER_ALERT_LEVEL $GLIDER_ALERT_ID\" >> " + notify_log])
 sils = {}
+# Simulated time flown by each run (s). A glider's clock (its Slocum files' m_present_time, its dialog's
+# Curr Time) runs on from run to run and ends about now: run 1 of a glider starts its total flight ago.
+FLIGHT = {("aborting", 1): 3600, ("fouling", 1): 4400, ("fouling", 2): 4800, ("healthy", 1): 6500,
+          ("healthy", 2): 4500}
+now = int(time.time())
 
 
-def fly(g, vehicle, sim_s, extra=(), run=1):
+def launch_utc(g, run):
+    ago = sum(s for (name, _), s in FLIGHT.items() if name == g)
+    t = now - ago + sum(FLIGHT[(g, r)] for r in range(1, run))
+    return time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime(t))
+
+
+def fly(g, vehicle, run=1, extra=()):
+    """Run `run` of glider g. A later run flies on from the last fix, into the same Slocum folder (its
+    files continue the glider's: the next mission number, the same name) and on the same clock."""
     log = open(os.path.join(work, "sil_%s_%d.log" % (g, run)), "w")
-    sils[g] = subprocess.Popen([glider_sil, missions[g], "--vehicle", vehicle, "--max-sim-time-s", str(sim_s),
-                                "--vehicle-name", g, "--shore", "127.0.0.1:%d" % shore.rudics_port, *extra],
+    if run > 1:
+        fix = events(g)[-1]["gps"]
+        extra = ("--launch-lat", str(fix["lat_deg"]), "--launch-lon", str(fix["lon_deg"]), *extra)
+    sils[g] = subprocess.Popen([glider_sil, missions[g], "--vehicle", vehicle, "--max-sim-time-s",
+                                str(FLIGHT[(g, run)]), "--launch-utc", launch_utc(g, run),
+                                "--vehicle-name", g, "--shore", "127.0.0.1:%d" % shore.rudics_port,
+                                "--slocum-dir", os.path.join(work, "slocum_" + g), "--sbdlist", sbdlist, *extra],
                                stdout=log, stderr=subprocess.STDOUT)
 
 
@@ -102,26 +123,42 @@ def events(g):
     return [json.load(open(p)) for p in sorted(glob.glob(os.path.join(root, g, "logs", "*.surfacing.json")))]
 
 
+def after_surfacing_done(g):
+    """The shore's health and forecast have run after every call of g: each call's journal ends with both
+    notes (the shore runs them one glider at a time, after the call's event is written)."""
+    calls = glob.glob(os.path.join(root, g, "logs", "*.surfacing.json"))
+    journals = [open(p[:-len(".surfacing.json")] + ".journal").read() for p in calls]
+    return len(calls) > 0 and all("* health: " in j and "* forecast: " in j for j in journals)
+
+
+def health(g):
+    return json.load(open(os.path.join(root, g, "health", "health.json")))
+
+
 driver = None
 try:
-    # Run 1 of each glider, with its Slocum files (the shore fetches the .sbd: the DR track).
-    fly("aborting", we01, 9000, ["--fault", "leak@2500", "--slocum-dir", os.path.join(work, "slocum_aborting")])
-    fly("fouling", fouled, 6000, ["--slocum-dir", os.path.join(work, "slocum_fouling")])
-    fly("healthy", we01, 6000, ["--slocum-dir", os.path.join(work, "slocum_healthy")])
+    fly("aborting", we01, extra=["--fault", "leak@2500"])
+    fly("fouling", we01)
+    fly("healthy", we01)
     for g in ("aborting", "fouling", "healthy"):
         sils[g].wait(timeout=40)
-    fix = events("healthy")[-1]["gps"]
-    fixture_reports.write_health(os.path.join(root, "healthy"), "healthy", "ok", drag_ratio=1.0, vehicle=we01)
-    fixture_reports.write_forecast(os.path.join(root, "healthy"), "healthy", (fix["lat_deg"], fix["lon_deg"]),
-                                   fix["lat_deg"] + 0.006, fix["lon_deg"] + 0.004, abort_risk=0.01)
+    fly("fouling", fouled, run=2)  # the same glider from its last fix, its hull fouled since
+    sils["fouling"].wait(timeout=40)
+    for g in ("aborting", "fouling", "healthy"):
+        h.wait_for(lambda: after_surfacing_done(g), 40, "the shore's health and forecast after %s's calls" % g)
+        report = health(g)
+        print("        %s: %d calls; health %s, %d segments (%d judged), alerts %s" % (
+            g, len(events(g)), report["state"], len(report["segments"]),
+            sum(1 for s in report["segments"] if s["judged"]), [a["id"] for a in report["alerts"]]))
     h.check(sils["aborting"].returncode == 3 and any(e["prompt"].startswith("GliderDos A") for e in events("aborting")),
-          "SIL 'aborting' aborted and called with the abort prompt")
-    h.check(len(events("fouling")) >= 3, "SIL 'fouling' called %d times" % len(events("fouling")))
-    fixture_reports.write_health(os.path.join(root, "aborting"), "aborting", "cannot judge")
-    fix = events("fouling")[-1]["gps"]
-    fixture_reports.write_health(os.path.join(root, "fouling"), "fouling", "alert", drag_ratio=1.12)
-    fixture_reports.write_forecast(os.path.join(root, "fouling"), "fouling", (fix["lat_deg"], fix["lon_deg"]),
-                                   fix["lat_deg"] + 0.005, fix["lon_deg"] - 0.003, abort_risk=0.05)
+            "SIL 'aborting' aborted and called with the abort prompt")
+    drag = [a for a in health("fouling")["alerts"] if a["effect"] == "drag_change"]
+    h.check(health("fouling")["state"] == "alert" and len(drag) == 1 and drag[0]["size"] > 0.2,
+            "health (the shore's, on fouling's .sbd) alerts on the drag's step: %s"
+            % (drag[0]["message"] if drag else "-"))
+    h.check(health("healthy")["state"] == "ok" and not health("healthy")["alerts"], "health: healthy is ok, no alert")
+    forecasts = {g: json.load(open(os.path.join(root, g, "forecast", "forecast.json"))) for g in ("fouling", "healthy")}
+    h.check(all(f.get("next_surfacing") for f in forecasts.values()), "the shore's forecast of fouling and healthy")
 
     options = webdriver.ChromeOptions()
     options.binary_location = CHROMIUM
@@ -151,6 +188,8 @@ try:
         if height:
             driver.set_window_size(1400, height)
         path = os.path.join(shots, name)
+        driver.execute_script("window.scrollTo(0, 0)")  # a click may have scrolled the page: shoot it from the top
+        time.sleep(0.2)
         driver.save_screenshot(path)
         print("        screenshot", path)
 
@@ -169,7 +208,7 @@ try:
     h.check(order == ["aborting", "fouling", "healthy"], "fleet ordered by attention: %s" % order)
     row = {g: text("#row-" + g) for g in order}
     h.check("aborted" in row.get("aborting", "") and "no forecast yet" in row.get("aborting", ""),
-          "aborting's row: aborted, no forecast yet")
+          "aborting's row: aborted, no forecast yet (the shore's forecast, made as if it dived on, set aside)")
     h.check("health alert" in row.get("fouling", ""), "fouling's row: health alert")
     h.check(re.search(r"\d+ s ago|\d+ min ago", row.get("healthy", "")) is not None, "time since the last call shown")
     shot("fleet.png", 700)
@@ -188,9 +227,12 @@ try:
     h.check(counts["fix"] == len(events("fouling")) and counts["dr-track"] == 1 and counts["forecast-ellipse"] == 1 and
           counts["waypoints"] >= 1, "map: one marker a fix, the DR track, waypoints, the forecast ellipse")
     alerts = driver.find_elements(By.CSS_SELECTOR, "#alerts .alert[data-kind=health]")
-    h.check(len(alerts) == 1 and "drag up 12 %" in alerts[0].text, "the health alert is on the page")
-    h.check(len(driver.find_elements(By.CSS_SELECTOR, "svg.effect-plot line.threshold")) == 2,
-          "the drag plot with its two threshold lines")
+    h.check(len(alerts) == 1 and "drag_change changed by" in alerts[0].text, "health's drag alert is on the page")
+    # The drag plot: health's own (gnuplot, thresholds drawn by health), else the page's SVG with its thresholds.
+    png = driver.execute_script("const i = document.querySelector('img.effect-png[alt=drag_change]');"
+                                "return i ? i.complete && i.naturalWidth : null")
+    h.check(png or len(driver.find_elements(By.CSS_SELECTOR, "svg.effect-plot line.threshold")) >= 2,
+            "the drag plot (%s)" % ("health's PNG, %d px wide" % png if png else "SVG with its threshold lines"))
     h.check(len(driver.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing")) == len(events("fouling")),
           "one table row a surfacing")
     dr = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing td:nth-child(4)")]
@@ -204,7 +246,7 @@ try:
     click("#cancel-command-0")
     wait.until(lambda d: evil not in text("#queued"))
     os.remove(os.path.join(root, "fouling", "mission", "mafiles", evil.replace("/", "") + ".ma"))
-    shot("glider_fouling.png", 2300)
+    shot("glider_fouling.png", 3000)
 
     # 3. Aborting: abort alert, no forecast, acknowledge.
     driver.set_window_size(1400, 1000)
@@ -212,12 +254,13 @@ try:
     wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "#alerts .alert[data-kind=abort] button.ack"))
     h.check("MS_ABORT_LEAK" in text("#alerts .alert[data-kind=abort]"),
           "the abort alert names MS_ABORT_LEAK")
-    # The shore's own forecast after aborting's call failed (its folder has no mission copy): the page says why.
-    h.check(text("#no-forecast").startswith("no forecast"), "'no forecast' shown: " + text("#no-forecast"))
+    # The shore's forecast flies the dive cycle on from the abort call's fix; the glider waits at the surface
+    # for the pilot instead: the page sets it aside and says why.
+    h.check(text("#no-forecast").startswith("no forecast: set aside"), "'no forecast' shown: " + text("#no-forecast"))
     click("#alerts .alert[data-kind=abort] button.ack")
     wait.until(lambda d: "acked by" in text("#alerts .alert[data-kind=abort]"))
     h.check(True, "acknowledged from the page (the alert shows who)")
-    shot("glider_aborting.png", 2000)
+    shot("glider_aborting.png", 2600)
 
     # 4. Healthy: queue a goto .ma through the page; it reaches the vehicle at its next call: a second SIL
     # run of the glider from its last fix (a SIL run cannot be paused while a browser works).
@@ -237,13 +280,9 @@ try:
     verdict = text("#rehearsal-verdict")
     h.check(text("#action-result") == "queued" and verdict.startswith("rehearsal: "),
           "queued from the page, rehearsal shown: '%s'" % verdict)
-    shot("glider_healthy_queued.png", 2300)
+    shot("glider_healthy_queued.png", 3000)
     driver.set_window_size(1400, 1000)
-    fix = events("healthy")[-1]["gps"]
-    # Its files under another vehicle name: Slocum names restart with a new run (name-YYYY-DDD-MM-SSS), and the
-    # shore would replace run 1's files with run 2's of the same name.
-    fly("healthy", second, 4500, ["--launch-lat", str(fix["lat_deg"]), "--launch-lon", str(fix["lon_deg"]),
-                                  "--slocum-dir", os.path.join(work, "slocum_healthy_2")], run=2)
+    fly("healthy", we01, run=2)
     sent_seen = False
     try:
         WebDriverWait(driver, 30, poll_frequency=0.2, ignored_exceptions=[StaleElementReferenceException]).until(
@@ -265,7 +304,7 @@ try:
     wait.until(lambda d: "goto_l10.ma accepted" in text("#transcript") or
                any("goto_l10.ma accepted" in e.text for e in d.find_elements(By.CSS_SELECTOR, "#surfacings pre")))
     h.check(True, "the acceptance is in the page's dialog excerpt or transcript")
-    shot("glider_healthy_sent.png", 2300)
+    shot("glider_healthy_sent.png", 3000)
     notes = open(notify_log).read() if os.path.exists(notify_log) else ""
     h.check("notify abort@" in notes, "the abort was notified through --notify")
 except Exception as error:  # a timeout or a missing element: a failure with its reason, not a crash

@@ -114,6 +114,19 @@ def finish():
     sys.exit(1 if failures else 0)
 
 
+def install_report(glider_dir, name):
+    """Puts a real health or forecast report of tests/console/data (README.md there: glider-health's and
+    glider-forecast's output in a console.browser run) into glider_dir, as those programs write it
+    (CONTRACTS.md: a temporary in the same folder, then rename): NAME_health.json -> health/health.json,
+    NAME_forecast.json -> forecast/forecast.json."""
+    kind = name.rsplit("_", 1)[1].split(".")[0]
+    folder = os.path.join(glider_dir, kind)
+    os.makedirs(folder, exist_ok=True)
+    tmp = os.path.join(folder, "." + kind + ".json.tmp")
+    shutil.copy(os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", name), tmp)
+    os.rename(tmp, os.path.join(folder, kind + ".json"))
+
+
 def fresh_dir(path):
     shutil.rmtree(path, ignore_errors=True)
     os.makedirs(path)

@@ -21,7 +21,6 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
 import console_harness as h  # noqa: E402
 import fake_events  # noqa: E402
-import fixture_reports  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("build")
@@ -37,8 +36,8 @@ gliders = ["g%02d" % i for i in range(12)]
 for i, g in enumerate(gliders):
     for n in range(40):
         fake_events.write_call(root, g, 3600 * 4 * (40 - n), n + 1, lat=54.3 + 0.01 * n, lon=7.4 + 0.01 * i)
-    fixture_reports.write_health(os.path.join(root, g), g, "alert" if i % 4 == 0 else "ok", drag_ratio=1.0 + 0.01 * i)
-    fixture_reports.write_forecast(os.path.join(root, g), g, (54.7, 7.4), 54.71, 7.41)
+    h.install_report(os.path.join(root, g), "fouling_health.json" if i % 4 == 0 else "healthy_health.json")
+    h.install_report(os.path.join(root, g), "healthy_forecast.json")
 csv = os.path.join(root, "g00", "from-glider", "g00-2026-330-0-0.sbd.csv")
 os.makedirs(os.path.dirname(csv))
 with open(csv, "w") as f:  # 3000 DR rows then a fix: a long segment's track

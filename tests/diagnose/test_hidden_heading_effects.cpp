@@ -219,3 +219,29 @@ TEST(DiagnoseHiddenHeadingEffects, RandomYawIsLeftUnexplained) {
   CHECK(o.diagnosis.unexplained_yaw_rate_rad_s > 3.0 * clean.diagnosis.unexplained_yaw_rate_rad_s);
   CHECK(o.diagnosis.unexplained_yaw_rate_rad_s < flown.heading.yaw_disturbance_rad_s);  // the estimator smooths it
 }
+
+// The loop closed on the log (heading_closed_loop.hpp) with the diagnosis's
+// values, on a SIL flight whose plant is the model's: the glides' mean
+// heading error and fin travel must come out as the log's, far closer than
+// the configured law's. A lower gain, no integral and a heading deadband,
+// as the comet logs fly.
+TEST(DiagnoseHiddenHeadingEffects, ClosedLoopReproducesTheFlight) {
+  fw::HeadingControlConfig flown_law = configured_slocum_law();
+  flown_law.gain = uniform(rng, 0.4, 0.9);
+  flown_law.igain = 0.0;
+  flown_law.heading_deadband_rad = uniform(rng, 0.05, 0.12);
+  const HeadingOutcome o = fly_heading_and_diagnose(comet(), flown_law, "closed_loop");
+  const diagnose::ClosedLoopCheck& c = o.diagnosis.closed_loop;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "gain %.3f, deadband %.3f rad: closed loop over %zu held-out glides, model - log: configured %.2f deg "
+                "%.2f rad/h (score %.2f), identified %.2f deg %.2f rad/h (score %.2f); log scatter %.2f deg %.2f rad/h",
+                flown_law.gain, flown_law.heading_deadband_rad, c.heldout_glides,
+                rad_to_deg(c.configured.error_rms_rad), 3600.0 * c.configured.travel_rms_rad_s, c.configured.score,
+                rad_to_deg(c.open_loop_set.error_rms_rad), 3600.0 * c.open_loop_set.travel_rms_rad_s,
+                c.open_loop_set.score, rad_to_deg(c.error_scatter_rad), 3600.0 * c.travel_scatter_rad_s);
+  UT_PRINT(text);
+  CHECK(c.heldout_glides >= 4);
+  CHECK(c.open_loop_set.score < 0.5 * c.configured.score);
+  CHECK(c.open_loop_set.error_rms_rad < deg_to_rad(1.0));
+}

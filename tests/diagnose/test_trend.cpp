@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The shapes of an effect over a deployment (constant, linear, step) on
+// The shapes of an effect over a deployment (constant, linear, step, hinge) on
 // seeded synthetic series: each found where it is, and spurious shapes in
 // pure noise no more often than the significance level allows.
 #include <CppUTest/TestHarness.h>
@@ -57,8 +57,30 @@ TEST(DiagnoseTrend, OneStepIsAStepBetweenTheRightSegments) {
   CHECK(trend.step_change.low < -43.0 && -43.0 < trend.step_change.high);
 }
 
+TEST(DiagnoseTrend, FoulingFromSomeDayOnIsAHingeWithItsOnsetAndRate) {
+  // A surfacing every 8 h, constant for 4 days, then +3 % a day for 2 days:
+  // the constant stretch pins the level, the line after it is the rate.
+  std::vector<double> t, y;
+  for (std::size_t i = 0; i < 18; ++i) {
+    t.push_back(1.7e9 + static_cast<double>(i) * kDay / 3.0);
+    const double days_fouled = std::max(0.0, (t.back() - t.front()) / kDay - 4.0);
+    y.push_back(1.0 + 0.03 * days_fouled + 0.004 * normal(rng));
+  }
+  const Trend trend = fit_trend(t, y);
+  STRCMP_EQUAL("hinge", to_string(trend.shape));
+  CHECK(trend.p_hinge < 0.05 / 3.0);
+  CHECK(trend.bic_hinge < trend.bic_linear && trend.bic_hinge < trend.bic_step);
+  DOUBLES_EQUAL(t.front() + 4.0 * kDay, trend.hinge_s, kDay / 3.0 + 1.0);
+  CHECK(trend.hinge_slope_per_day.low < 0.03 && 0.03 < trend.hinge_slope_per_day.high);
+  const double now = 1.0 + 0.03 * (17.0 / 3.0 - 4.0);
+  CHECK(trend.hinge_end.low < now && now < trend.hinge_end.high);
+  DOUBLES_EQUAL(trend.hinge_level.value, trend.at(t.front()), 1e-12);
+  DOUBLES_EQUAL(trend.hinge_end.value, trend.at(t.back()), 1e-12);
+}
+
 TEST(DiagnoseTrend, NoiseIsConstantAtTheSignificanceLevel) {
-  // 400 series of pure noise: a spurious line or step in about 5 % of them.
+  // 400 series of pure noise: a spurious line, step or hinge in at most about
+  // 5 % of them (each shape tested at a third of the level).
   int spurious = 0;
   for (int series = 0; series < 400; ++series) {
     const std::vector<double> t = days(10);

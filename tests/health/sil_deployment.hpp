@@ -34,6 +34,8 @@ struct FaultPlan {
   int fin_at = -1;
   double pump_factor = 1.0;  // pump rate multiplied ...
   int pump_at = -1;
+  double pump_lag_s = 0.0;  // the displaced volume lags the pump by this ...
+  int pump_lag_at = -1;     // ... from this surfacing on
 };
 
 inline model::VehicleParams nominal_vehicle() {
@@ -48,6 +50,7 @@ inline model::VehicleParams flown_vehicle(const FaultPlan& plan, int k, double h
   if (plan.step_at >= 0 && k >= plan.step_at) v.buoyancy_offset_kg += plan.step_g * 1e-3;
   if (plan.fin_at >= 0 && k >= plan.fin_at) v.heading.fin_yaw_gain_per_m *= plan.fin_factor;
   if (plan.pump_at >= 0 && k >= plan.pump_at) v.ballast.rate_m3_s *= plan.pump_factor;
+  if (plan.pump_lag_at >= 0 && k >= plan.pump_lag_at) v.ballast.lag_s = plan.pump_lag_s;
   return v;
 }
 

@@ -83,9 +83,23 @@ TEST(SilHeadingReplay, Comet2016Swing) {
 // RMS 0.07712 with and without it: no held-out gain) and autopilot_delay
 // (0.95 s [0, 2.46]: its interval reaches 0). The closed loop without the
 // deadband climbs at -6.3 deg against the real -11.8 (was -9.6 with it): 5.5
-// deg, beyond the 4 deg tolerance. The open-loop selection cannot see what the
-// deadband does to the closed loop's steady error; judging heading candidates
-// on the closed-loop replay is the open work. Run it with -t to see it fail.
+// deg, beyond the 4 deg tolerance. Judged on the closed loop flown on the log
+// itself (glider-diagnose's closed-loop check, docs/diagnose/heading.md) the
+// deadband does not earn its place either: with it the held-out glides' mean
+// heading error and fin travel are matched no better (score 2.13 against 2.17,
+// in units of the log's glide-to-glide scatter); there the identified loop
+// climbs at about +17 deg (model) against the log's +12 (error = command -
+// heading), outside a 0.19 rad band, while the SIL replay settles at 6.3 deg,
+// inside it: the two plants disagree on the climb by ~11 deg with the same
+// autopilot, and the band pinned the SIL's climb near its edge. Forcing the
+// sets into the replay (SIL seed 1): with the band 0.2 -9.2 deg (passes), with
+// autopilot_delay 8.97 s (the closed loop's best, 0.96) -7.8 deg (fails by a
+// hair), both -9.6. The replay's own spread is as large: SIL seeds 2 and 3
+// climb at -4.2 and -4.9, in still water -7.8, without the random yaw -6.6,
+// with neither -9.2 (glider-heading-study --replay-only --real LOG [--seed N]
+// [--no-shear] [--no-disturbance]; the log's and the replay's median pitch
+// agree, -25.6/+25.3 against -25.0/+25.0 deg). The miss is the replay's plant
+// on the climbs, not the selection. Run it with -ri to see it fail.
 IGNORE_TEST(SilHeadingReplay, Comet2019_154ClimbSteadyErrorWithTheCoreSelection) {
   const auto r = replay("comet-2019-222-02-154.csv");
   CHECK(std::abs(r.sil_identified.climb_error_deg - r.real.climb_error_deg) < kSteadyToleranceDeg);

@@ -3,8 +3,10 @@
 """glider-sil's Slocum files end to end (docs/slocum-binary.md, "Writing").
 
 1. A refused sbdlist.dat: exit 1, the message names file:line and the sensor.
-2. The box mission with --out and --slocum-dir: glider-convert reads the
-   .dbd folder back with one row per CSV row and the same times.
+2. The box mission with --out, --slocum-dir and --launch-utc: glider-convert
+   reads the .dbd folder back with one row per CSV row; its m_present_time is
+   the CSV's time (seconds since launch) plus the launch UTC (Unix seconds, as
+   a Slocum's clock).
 3. kill -9 of glider-sil mid-flight (a power cut): every segment closed before
    it ends with the end marker and converts; nothing else is needed to read them.
 
@@ -55,7 +57,7 @@ def main():
     slocum = os.path.join(work, "box")
     flight_csv = os.path.join(work, "box.csv")
     run = subprocess.run([sil, "--vehicle", vehicle, "--mission", os.path.join(source, "boards/missions/box_current/missions/box.mi"),
-                          "--out", flight_csv, "--slocum-dir", slocum],
+                          "--out", flight_csv, "--slocum-dir", slocum, "--launch-utc", "2026-07-02T11:27:05Z"],
                          capture_output=True, text=True, timeout=30)
     if run.returncode != 0:
         fail("glider-sil: exit %d: %s" % (run.returncode, run.stderr))
@@ -74,9 +76,10 @@ def main():
     dbd_header, dbd_rows = csv_rows(converted)
     if len(rows) != len(dbd_rows):
         fail("%d CSV rows, %d converted .dbd rows" % (len(rows), len(dbd_rows)))
+    launch = 1782991625.0  # 2026-07-02T11:27:05Z
     for a, b in zip(rows, dbd_rows):
-        if float(a[0]) != float(b[0]):
-            fail("times differ: %s vs %s" % (a[0], b[0]))
+        if abs(float(a[0]) + launch - float(b[0])) > 1e-5:
+            fail("times differ: CSV %s + launch %.0f vs .dbd %s" % (a[0], launch, b[0]))
     missing = [n for n in header if not n.startswith(("sim_", "sci_")) and n not in dbd_header]
     print("glider-convert: %d rows, %d columns; firmware columns never set (not in the .dbd read): %s"
           % (len(dbd_rows), len(dbd_header), missing))

@@ -148,5 +148,6 @@ TEST(FlightLogGaps, DepthFromPressureMatchesMDepth) {
   }
   CHECK_FALSE(depth_series(parse_flight_log("t,x\n1,2\n", "none.csv", {"t", {}, {}, {}})).has_value());
   STRCMP_EQUAL("bar", std::string(unit_of("sci_water_pressure")).c_str());
-  STRCMP_EQUAL("", std::string(unit_of("sim_speed_m_s")).c_str());
+  STRCMP_EQUAL("m/s", std::string(unit_of("sim_speed_m_s")).c_str());  // the SIL's part of the schema
+  STRCMP_EQUAL("", std::string(unit_of("no_such_column")).c_str());
 }

@@ -16,6 +16,8 @@
 #include "glider/firmware/log/log_text.hpp"
 #include "glider/flightlog/columns.hpp"
 #include "glider/hal/log_record.hpp"
+#include "glider/hal/sim_log_columns.hpp"
+#include "glider/sil/csv_flight_log.hpp"
 
 using namespace glider;
 
@@ -27,13 +29,13 @@ std::string trim(const std::string& text) {
   return first == std::string::npos ? "" : text.substr(first, last - first + 1);
 }
 
-// (column, unit) of the first table after "The firmware's columns" in the doc.
-std::vector<std::pair<std::string, std::string>> documented_columns() {
+// (column, unit) of the first table after `section` in the doc.
+std::vector<std::pair<std::string, std::string>> documented_columns(const char* section = "The firmware's columns") {
   std::ifstream in(GLIDER_SOURCE_DIR "/docs/flight-log.md");
   std::vector<std::pair<std::string, std::string>> rows;
   bool in_section = false, in_table = false;
   for (std::string line; std::getline(in, line);) {
-    if (line.find("The firmware's columns") != std::string::npos) in_section = true;
+    if (line.find(section) != std::string::npos) in_section = true;
     if (!in_section) continue;
     if (line.rfind("|", 0) != 0) {
       if (in_table) break;
@@ -77,8 +79,34 @@ TEST(LogSchema, DocsTableIsTheSchema) {
   }
 }
 
+TEST(LogSchema, DocsTableIsTheSilSchema) {
+  const auto documented = documented_columns("The SIL's columns");
+  CHECK_EQUAL(hal::kSimLogColumns.size(), documented.size());
+  for (std::size_t i = 0; i < documented.size(); ++i) {
+    STRCMP_EQUAL(std::string(hal::kSimLogColumns[i].name).c_str(), documented[i].first.c_str());
+    STRCMP_EQUAL(std::string(hal::kSimLogColumns[i].unit).c_str(), documented[i].second.c_str());
+    CHECK(hal::kSimLogColumns[i].kind == hal::LogColumnKind::kNumber);
+  }
+}
+
+TEST(LogSchema, SilHeaderIsUnchanged) {
+  // The SIL's columns were a string before they were a table: the header a SIL log
+  // has always had, so logs written before and after read the same.
+  STRCMP_EQUAL((fw::log_header() +
+                ",sci_water_temp,sci_water_cond,sci_water_pressure,"
+                "sim_east_m,sim_north_m,sim_depth_m,sim_heading_rad,sim_pitch_rad,sim_speed_m_s,sim_alpha_rad,"
+                "sim_glide_path_rad,sim_horizontal_speed_m_s,sim_depth_rate_m_s,sim_net_buoyancy_kg,"
+                "sim_ballast_pumped_cc,sim_battpos_in,sim_fin_rad,sim_yaw_rate_rad_s,sim_density_kg_m3,"
+                "sim_u_water_m_s,sim_v_water_m_s,sim_w_water_m_s,sim_temperature_c,sim_practical_salinity")
+                   .c_str(),
+               sil::CsvFlightLog::header().c_str());
+}
+
 TEST(LogSchema, ReaderUnitsComeFromTheSchema) {
   for (const hal::LogColumn& column : hal::kLogColumns) {
+    STRCMP_EQUAL(std::string(column.unit).c_str(), std::string(flightlog::unit_of(column.name)).c_str());
+  }
+  for (const hal::SimLogColumn& column : hal::kSimLogColumns) {
     STRCMP_EQUAL(std::string(column.unit).c_str(), std::string(flightlog::unit_of(column.name)).c_str());
   }
 }

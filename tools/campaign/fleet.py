@@ -91,7 +91,7 @@ def diagnose_one(manifest, log):
 
 def diagnose_error(proc):
     """glider-diagnose's own message: with --json every program of the project
-    (tools/cli) writes {"error": ..., "exit_code": N} on stdout; else its last
+    (hal/core/cli) writes {"error": ..., "exit_code": N} on stdout; else its last
     stderr line (a usage error from the command line parser)."""
     try:
         message = json.loads(proc.stdout.strip().splitlines()[-1]).get("error")

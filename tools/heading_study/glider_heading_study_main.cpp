@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "glider/cli/tool.hpp"
-#include "glider/firmware/mission_file/mission_loader.hpp"
+#include "glider/firmware/app/mission_setup.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/mission_setup.hpp"
@@ -46,22 +46,28 @@ const char* law_name(glider::fw::HeadingLaw law) {
 
 // Flies the heading-hold mission; nullopt-like empty name on failure.
 bool fly(const std::string& source, const std::string& out_dir, const Case& c, HeadingMetrics& metrics) {
-  glider::model::VehicleParams vehicle =
-      glider::model::load_vehicle_file(source + "/boards/vehicles/slocum_comet.toml");
+  const std::string vehicle_path = source + "/boards/vehicles/slocum_comet.toml";
+  glider::model::VehicleParams vehicle = glider::model::load_vehicle_file(vehicle_path);
   vehicle.heading.roll_offset_rad = glider::deg_to_rad(c.roll_deg);
-  vehicle.heading.fin_delay_s = c.delay_s;
-  glider::fw::FlightSoftwareConfig base;
-  base.heading.law = c.law;
-  base.heading.delay_s = c.delay_s;  // the compensated law is told the fin's dead time (bench-measured)
-  const auto loaded = glider::fw::mission_file::load_mission_file(source + "/boards/missions/heading_hold.mi",
-                                                                  glider::sil::mission_vehicle(vehicle, 102.0), base);
-  if (!loaded.config) {
-    for (const auto& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.text().c_str());
+  vehicle.heading.fin_delay_s = c.delay_s;  // the compensated law is told the fin's dead time (bench-measured)
+  // The mission as glider-sil prepares it: the vehicle setup from the model, then the
+  // flight application's one mission entry (fw::app::prepare_mission).
+  glider::sil::ScenarioOptions options;
+  options.fitted = glider::sil::load_fitted_devices(vehicle_path);
+  const glider::fw::app::VehicleSetup setup = glider::sil::vehicle_setup(
+      vehicle, options.fitted, 102.0, false, options.environment.water.at(0.0, 0.0).density_kg_m3);
+  glider::fw::app::MissionOptions mission_options;
+  mission_options.heading_law = c.law;
+  const glider::fw::app::PreparedMission prepared =
+      glider::fw::app::prepare_mission(source + "/boards/missions/heading_hold.mi", setup, mission_options);
+  if (!prepared.config) {
+    for (const std::string& line : glider::fw::app::mission_messages(prepared, true)) {
+      std::fprintf(stderr, "%s\n", line.c_str());
+    }
     return false;
   }
-  glider::sil::ScenarioOptions options;
   options.log_path = out_dir + "/" + c.name + ".csv";
-  const glider::sil::ScenarioResult r = glider::sil::run_scenario(vehicle, *loaded.config, options);
+  const glider::sil::ScenarioResult r = glider::sil::run_scenario(vehicle, *prepared.config, options);
   if (!r.error.empty() || !r.completed) {
     std::fprintf(stderr, "glider-heading-study: %s: %s\n", c.name.c_str(),
                  r.error.empty() ? "mission did not complete" : r.error.c_str());

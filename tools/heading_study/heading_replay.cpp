@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "glider/firmware/mission_file/mission_loader.hpp"
+#include "glider/firmware/app/mission_setup.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
@@ -25,11 +25,17 @@ constexpr double kSilSkipS = 900.0;
 flightlog::FlightLog fly(const std::string& source, const model::VehicleParams& vehicle,
                          const model::Environment& water, const fw::HeadingControlConfig& law, double heading_noise_rad,
                          const std::string& log_path, const ReplayOptions& run) {
-  fw::FlightSoftwareConfig base;
-  base.heading = law;
-  const auto loaded = fw::mission_file::load_mission_file(source + "/boards/missions/heading_hold.mi",
-                                                          sil::mission_vehicle(vehicle, 102.0), base);
-  if (!loaded.config) throw std::runtime_error("heading_hold.mi: " + loaded.diagnostics.front().text());
+  // The mission as glider-sil prepares it (the flight application's one mission entry), its
+  // heading autopilot starting from the loop identified on the real log, the replay's subject.
+  const fw::app::VehicleSetup setup =
+      sil::vehicle_setup(vehicle, {}, 102.0, false, water.water.at(0.0, 0.0).density_kg_m3);
+  fw::app::MissionOptions mission_options;
+  mission_options.heading = law;
+  const fw::app::PreparedMission prepared =
+      fw::app::prepare_mission(source + "/boards/missions/heading_hold.mi", setup, mission_options);
+  if (!prepared.config) {
+    throw std::runtime_error("heading_hold.mi: " + fw::app::mission_messages(prepared, true).front());
+  }
   sil::ScenarioOptions options;
   options.period_us = kSlocumCycleUs;
   options.environment = water;
@@ -37,7 +43,7 @@ flightlog::FlightLog fly(const std::string& source, const model::VehicleParams& 
   options.integration_step_s = run.integration_step_s;
   options.noise.heading_rad = heading_noise_rad;
   options.log_path = log_path;
-  const sil::ScenarioResult r = sil::run_scenario(vehicle, *loaded.config, options);
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, *prepared.config, options);
   if (!r.error.empty() || !r.completed) {
     throw std::runtime_error(log_path + ": " + (r.error.empty() ? "mission did not complete" : r.error));
   }

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "glider/utc_time.hpp"
 #include "surface_dialog.hpp"
 
 namespace glider::shore {
@@ -135,19 +136,8 @@ std::vector<fs::path> queued_files(const GliderFolders& folders) {
 
 double now_unix() { return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count(); }
 
-namespace {
-std::string format_utc(double unix_seconds, const char* format) {
-  const std::time_t t = static_cast<std::time_t>(std::floor(unix_seconds));
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char text[40];
-  std::strftime(text, sizeof text, format, &tm);
-  return text;
-}
-}  // namespace
-
-std::string utc_iso(double unix_seconds) { return format_utc(unix_seconds, "%Y-%m-%dT%H:%M:%SZ"); }
-std::string utc_stamp(double unix_seconds) { return format_utc(unix_seconds, "%Y%m%dT%H%M%S"); }
+std::string utc_iso(double unix_seconds) { return utc::format_iso(unix_seconds); }
+std::string utc_stamp(double unix_seconds) { return utc::format_compact(unix_seconds); }
 
 }  // namespace glider::shore
 

@@ -6,25 +6,19 @@
 
 #include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <stdexcept>
+
+#include "glider/utc_time.hpp"
 
 namespace glider::shore {
 namespace {
 
 std::string timestamp_now() {
-  const auto now = std::chrono::system_clock::now();
-  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
-  const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
-  std::tm tm{};
-  gmtime_r(&seconds, &tm);
-  char text[40];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &tm);
-  char full[48];
-  std::snprintf(full, sizeof full, "%s.%03lldZ", text, ms);
-  return full;
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return utc::format_iso(std::chrono::duration<double>(now).count(), 3);
 }
 
 }  // namespace

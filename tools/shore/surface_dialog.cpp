@@ -6,6 +6,8 @@
 #include <ctime>
 #include <regex>
 
+#include "glider/utc_time.hpp"
+
 namespace glider::shore {
 namespace {
 
@@ -57,10 +59,9 @@ bool parse_fix(const std::smatch& m, SurfaceReport& report) {
 
 bool parse_curr_time(const std::smatch& m, SurfaceReport& report) {
   report.curr_time_text = m[1].str();
-  std::tm tm{};
-  const char* end = strptime(report.curr_time_text.c_str(), "%a %b %d %H:%M:%S %Y", &tm);
-  if (end != nullptr && *end == '\0') {
-    report.curr_time_unix = static_cast<long long>(timegm(&tm));
+  const utc::Parsed parsed = utc::parse_ctime(report.curr_time_text);
+  if (parsed.ok) {
+    report.curr_time_unix = static_cast<long long>(parsed.whole_s);
   } else {
     report.curr_time_unix.reset();
   }

@@ -37,6 +37,7 @@
 #include "glider/target/linux_hal.hpp"
 #include "glider/target/realtime_loop.hpp"
 #include "glider/target/target_board.hpp"
+#include "glider/utc_time.hpp"
 
 namespace {
 
@@ -107,10 +108,9 @@ fw::comms::CommsConfig comms_config(const target::ModemBoardConfig& modem, const
 }
 
 std::string default_log_name(const std::filesystem::path& directory) {
-  const std::time_t now = std::time(nullptr);
-  char name[64];
-  std::strftime(name, sizeof name, "flight-%Y%m%dT%H%M%SZ.csv", std::gmtime(&now));
-  return (directory / name).string();
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return (directory / ("flight-" + glider::utc::format_compact(std::chrono::duration<double>(now).count()) + "Z.csv"))
+      .string();
 }
 
 }  // namespace

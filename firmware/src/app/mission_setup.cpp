@@ -13,11 +13,15 @@ namespace {
 // and the vehicle's fin, and the dead reckoning.
 bool base_config(const VehicleSetup& setup, const MissionOptions& options, FlightSoftwareConfig& base,
                  std::string& refusal) {
-  base.heading.law = options.heading_law;
-  base.heading.delay_s = setup.fin_delay_s;
-  base.heading.fin_max_rad = setup.vehicle.fin_max_rad;
-  base.heading.fin_rate_rad_s = setup.vehicle.fin_rate_rad_s;
-  base.heading.yaw_gain_per_m = setup.vehicle.yaw_gain_per_m;
+  if (options.heading) {
+    base.heading = *options.heading;
+  } else {
+    base.heading.law = options.heading_law;
+    base.heading.delay_s = setup.fin_delay_s;
+    base.heading.fin_max_rad = setup.vehicle.fin_max_rad;
+    base.heading.fin_rate_rad_s = setup.vehicle.fin_rate_rad_s;
+    base.heading.yaw_gain_per_m = setup.vehicle.yaw_gain_per_m;
+  }
   if (options.flight_model_dr) {
     if (!setup.flight_model_dr) {
       refusal = setup.source + ": flight-model dead reckoning asked for, but no angle-of-attack table is given";

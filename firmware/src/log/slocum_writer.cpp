@@ -281,7 +281,7 @@ bool SlocumLogger::start() {
 std::size_t SlocumLogger::format_header(const SlocumFileEncoder& file, hal::Micros time_us, bool factored, char* out,
                                         std::size_t capacity) const {
   char open_time[32];
-  format_fileopen_time(utc_date(time_us + options_.utc_at_zero_us), open_time);
+  format_fileopen_time(utc_date(time_us), open_time);
   const std::size_t stored = file.selection().count();
   const int n = std::snprintf(out, capacity,
                               "dbd_label:    DBD(dinkum_binary_data)file\n"
@@ -310,7 +310,7 @@ void SlocumLogger::start_segment(hal::Micros time_us, const double* values) {
     dbd_.close(sink_);
     sbd_.close(sink_);
   } else {
-    mission_date_ = utc_date(time_us + options_.utc_at_zero_us);
+    mission_date_ = utc_date(time_us);
   }
   ++segment_;
   std::snprintf(full_name_.data(), full_name_.size(), "%s-%04d-%03d-%d-%d", options_.vehicle.c_str(),
@@ -333,8 +333,10 @@ void SlocumLogger::start_segment(hal::Micros time_us, const double* values) {
   }
 }
 
-bool SlocumLogger::write(const hal::FlightLogRecord& record, hal::Micros time_us) {
+bool SlocumLogger::write(const hal::FlightLogRecord& record, hal::Micros row_time_us) {
   if (!started_) return false;
+  // The row's time as a clock's (UTC): m_present_time, the names and fileopen_time.
+  const hal::Micros time_us = row_time_us + options_.utc_at_zero_us;
   std::array<double, kSlocumFlightSensorCount> values{};
   slocum_flight_values(record, time_us, values.data());
   const bool surfaced = record.m_depth_state == 0 && last_depth_state_ != 0;

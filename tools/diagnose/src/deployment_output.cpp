@@ -54,8 +54,14 @@ nlohmann::ordered_json trend_json(const Trend& t, const DeploymentDiagnosis& d) 
       j["level_after"] = t.level_after;
       j["p"] = t.p_step;
       break;
+    case TrendShape::kHinge:
+      j["level"] = interval_json(t.hinge_level);
+      j["from_day"] = day_of(d, t.hinge_s);
+      j["per_day"] = interval_json(t.hinge_slope_per_day);
+      j["p"] = t.p_hinge;
+      break;
   }
-  j["bic"] = {{"constant", t.bic_constant}, {"linear", t.bic_linear}, {"step", t.bic_step}};
+  j["bic"] = {{"constant", t.bic_constant}, {"linear", t.bic_linear}, {"step", t.bic_step}, {"hinge", t.bic_hinge}};
   return j;
 }
 

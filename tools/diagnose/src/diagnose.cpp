@@ -368,7 +368,7 @@ void diagnose_pitch_trim(const FlightModel& model, const Observations& obs, std:
   auto differences = [&](std::span<const std::size_t> samples, std::vector<long>* cluster) {
     std::vector<double> out;
     for (std::size_t i : samples) {
-      const double required = model.required_battpos_in(i, d.extended);
+      const double required = model.required_battpos_in(i, d.extended, d.extended_uses_ctd_density);
       if (!std::isfinite(required) || !std::isfinite(obs.battpos_in[i])) continue;
       out.push_back(obs.battpos_in[i] - required);
       if (cluster) cluster->push_back(cluster_of(options.intervals, obs.yo[i], obs.diving[i] ? 0 : 1));

@@ -137,13 +137,14 @@ double FlightModel::equilibrium_pitch_rad(std::size_t i, const EffectValues& val
   return eq.glide ? eq.glide->pitch_rad : kNaN;
 }
 
-double FlightModel::required_battpos_in(std::size_t i, const EffectValues& values) const {
+double FlightModel::required_battpos_in(std::size_t i, const EffectValues& values, bool use_ctd_density) const {
   const model::VehicleParams v = apply(nominal_, values, obs_.track.median_temperature_c);
   const model::GliderDynamics dynamics(v, model::still_water(v.trim_density_kg_m3));
   model::MassInputs masses;
   masses.pumped_volume_m3 = cc_to_m3(obs_.ballast_cc[i]);
   model::WaterSample water;
-  water.density_kg_m3 = v.trim_density_kg_m3 + values[5];
+  water.density_kg_m3 = use_ctd_density && std::isfinite(obs_.density_kg_m3[i]) ? obs_.density_kg_m3[i]
+                                                                                : v.trim_density_kg_m3 + values[5];
   water.temperature_c = std::isfinite(obs_.temperature_c[i]) ? obs_.temperature_c[i] : v.hull_reference_temperature_c;
   const double m0 = dynamics.net_buoyancy_kg(obs_.depth_m[i], water, masses);
   const auto glide = model::steady_glide_for_pitch(v.hydro, water.density_kg_m3, obs_.pitch_rad[i], m0);

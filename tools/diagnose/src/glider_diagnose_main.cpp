@@ -16,6 +16,7 @@
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/diagnosis_json.hpp"
 #include "glider/diagnose/heading_report.hpp"
+#include "glider/diagnose/pitch_calibration.hpp"
 #include "glider/diagnose/tool_inputs.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -235,6 +236,7 @@ int main(int argc, char** argv) {
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
+  glider::diagnose::PitchCalibration pitch_calibration;
   glider::slocum::LogSource log_source;
   app.add_option("LOG", log_source.inputs,
                  "flight log: a CSV (docs/flight-log.md), or a glider's binary files (.dbd/.ebd..., LZ4 .dcd/.ecd...: "
@@ -276,6 +278,13 @@ int main(int argc, char** argv) {
                   "the measured depth rate is the slope of the depth over +-this many seconds (0: centred difference)");
   tool.add_number("--pitch-window", pitch_window_s, {0.0, 60.0, "s"},
                   "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)");
+  using Calibration = glider::diagnose::PitchCalibration;
+  tool.add_number("--pitch-scale", pitch_calibration.scale, {Calibration::kMinScale, Calibration::kMaxScale, ""},
+                  "pitch sensor calibration, off by default: the pitch diagnosed is SCALE m_pitch + OFFSET "
+                  "(comet: 0.86, gliderflight's tilt correction; docs/science.md)");
+  tool.add_number("--pitch-offset", pitch_calibration.offset_rad,
+                  {-Calibration::kMaxAbsOffsetRad, Calibration::kMaxAbsOffsetRad, "rad"},
+                  "pitch sensor calibration's offset (comet: -0.004 rad), with --pitch-scale");
   return tool.run(argc, argv, [&]() -> int {
     log_path = log_source.inputs.front();
     glider::diagnose::DiagnoseOptions options;
@@ -317,7 +326,9 @@ int main(int argc, char** argv) {
       glider::flightlog::ReadOptions read_options;
       read_options.rename = glider::diagnose::column_renames(renames);
       std::vector<glider::slocum::Warning> warnings;
-      const glider::flightlog::FlightLog log = glider::slocum::load_flight_log(log_source, read_options, &warnings);
+      // The pitch calibration, when asked for, is applied to the log itself: both planes see the same pitch.
+      const glider::flightlog::FlightLog log = glider::diagnose::calibrate_pitch(
+          glider::slocum::load_flight_log(log_source, read_options, &warnings), pitch_calibration);
       for (const auto& w : warnings) std::fprintf(stderr, "glider-diagnose: warning: %s\n", w.text().c_str());
       // A log that did not end cleanly is still diagnosed, but the user is told.
       if (log.end().unfinished() || log.end().state == glider::flightlog::LogEnd::State::kAborted) {
@@ -363,12 +374,18 @@ int main(int argc, char** argv) {
       auto document = [&] {
         ordered_json j = vertical ? to_json(*vertical, vehicle_source, wall_s)
                                   : ordered_json{{"vehicle", vehicle.name}, {"vehicle_source", vehicle_source}};
+        if (pitch_calibration.active()) {
+          j["pitch_calibration"] = {{"scale", pitch_calibration.scale},
+                                    {"offset_rad", pitch_calibration.offset_rad},
+                                    {"pitch", pitch_calibration.describe()}};
+        }
         if (heading_plane) j["heading"] = heading_object;
         return j;
       };
       if (json) {
         std::printf("%s\n", document().dump().c_str());
       } else {
+        if (pitch_calibration.active()) std::printf("pitch calibrated: %s\n", pitch_calibration.describe().c_str());
         if (vertical) print_text(*vertical, log_path, vehicle_source, wall_s);
         if (heading) std::printf("%s", glider::diagnose::heading_text(*heading).c_str());
       }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -111,6 +112,31 @@ double heading_jitter_rad(const HeadingTrack& t) {
     }
   }
   return n > 0 ? std::sqrt(sum / static_cast<double>(n) / 1.5) : 0.0;
+}
+
+// The closed-loop check's absolute margin, in units of the log's
+// glide-to-glide scatter (heading_closed_loop.hpp): a twentieth of it.
+constexpr double kClosedLoopMargin = 0.05;
+
+// The autopilot link flown closed-loop (heading_closed_loop.hpp): the servo
+// and vehicle findings and the shear are the plant.
+ClosedLoopCheck check_closed_loop(const HeadingTrack& track, const model::VehicleParams& nominal,
+                                  const HeadingValues& base, const HeadingDiagnosis& d,
+                                  const std::function<LinkFit(const std::vector<HeadingEffect>&)>& fit_autopilot) {
+  HeadingValues plant = base;
+  for (const LinkFit* link : {&d.servo, &d.yaw}) {
+    for (const HeadingFinding& f : link->findings) at(plant, f.effect) = f.value;
+  }
+  ClosedLoopOptions fly_options;
+  fly_options.heading_noise_rad = d.heading_noise_rad;
+  const std::function<std::vector<ClosedLoopGlide>(const HeadingValues&)> fly = [&](const HeadingValues& v) {
+    return fly_closed_loop(track, nominal, d.configured, v, &d.current_shear, fly_options);
+  };
+  std::vector<HeadingEffect> open_loop;
+  for (const HeadingFinding& f : d.autopilot.findings) open_loop.push_back(f.effect);
+  fitting_core::Margins margins;
+  margins.absolute = kClosedLoopMargin;
+  return check_autopilot_closed_loop(open_loop, d.autopilot.candidates, plant, fit_autopilot, fly, margins);
 }
 
 }  // namespace
@@ -242,11 +268,22 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                              track.row_fin_rad),
                      servo_samples, options);
   const LinkSamples autopilot_samples = row_split(autopilot_rows(track));
-  d.autopilot = run_link(HeadingLink::kAutopilot, base,
-                         against([&](const HeadingValues& v, std::span<const std::size_t> w,
-                                     std::vector<double>& o) { predict_autopilot_fin(track, d.configured, v, w, o); },
-                                 track.row_fin_command_rad),
-                         autopilot_samples, options);
+  const HeadingResiduals autopilot_residuals =
+      against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                  std::vector<double>& o) { predict_autopilot_fin(track, d.configured, v, w, o); },
+              track.row_fin_command_rad);
+  d.autopilot = run_link(HeadingLink::kAutopilot, base, autopilot_residuals, autopilot_samples, options);
+  // The autopilot link's open-loop fit of exactly these effects.
+  const std::function<LinkFit(const std::vector<HeadingEffect>&)> fit_autopilot =
+      [&](const std::vector<HeadingEffect>& effects) {
+        HeadingSelectOptions select;
+        select.margins.absolute = min_absolute_improvement(HeadingLink::kAutopilot);
+        select.intervals = options.intervals;
+        select.fit_only = effects;
+        select.select = false;
+        return select_heading_effects(HeadingLink::kAutopilot, effects_of(HeadingLink::kAutopilot, all_effects()), base,
+                                      autopilot_residuals, autopilot_samples, select);
+      };
   std::vector<bool> diving;
   for (std::size_t i : track.scored) diving.push_back(track.phase[i] == flightlog::Phase::kDive);
   const LinkSamples yaw_samples = split(track.scored, track.yo, diving, options.max_fit_samples);
@@ -272,6 +309,9 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
       residual[samples[k]] = track.yaw_rate_rad_s[samples[k]] - predicted[k];
     }
     d.current_shear = fit_current_shear(track, residual, samples);
+  }
+  if (options.closed_loop && options.fit_only.empty()) {
+    d.closed_loop = check_closed_loop(track, nominal, base, d, fit_autopilot);
   }
   const UnexplainedYaw left = unexplained_yaw(track, nominal, d.yaw.values, &d.current_shear);
   d.unexplained_yaw_rate_rad_s = left.rms_rad_s;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "glider/units.hpp"
 
@@ -111,6 +112,31 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
                   {"after_fin", d.delay_after_fin_s},
                   {"total", d.delay_autopilot_s + d.delay_servo_s + d.delay_after_fin_s}};
   j["links"] = {{"servo", link_json(d.servo)}, {"vehicle", link_json(d.yaw)}, {"autopilot", link_json(d.autopilot)}};
+  {
+    const ClosedLoopCheck& c = d.closed_loop;
+    auto score = [](const ClosedLoopScore& x) {
+      return ordered_json{
+          {"score", x.score}, {"error_rms_rad", x.error_rms_rad}, {"fin_travel_rms_rad_s", x.travel_rms_rad_s}};
+    };
+    ordered_json candidates = ordered_json::array();
+    for (const ClosedLoopCandidate& x : c.candidates) {
+      ordered_json one = score(x.score);
+      one["effect"] = info(x.effect).id;
+      one["value"] = x.value;
+      one["beats_open_loop_set"] = x.beats;
+      candidates.push_back(one);
+    }
+    j["closed_loop"] = {{"measured",
+                         "per glide, model against log: mean heading error and fin travel, in units of the log's "
+                         "glide-to-glide scatter"},
+                        {"train_glides", c.train_glides},
+                        {"heldout_glides", c.heldout_glides},
+                        {"error_scatter_rad", c.error_scatter_rad},
+                        {"fin_travel_scatter_rad_s", c.travel_scatter_rad_s},
+                        {"configured", score(c.configured)},
+                        {"open_loop_set", score(c.open_loop_set)},
+                        {"candidates", candidates}};
+  }
   j["cause"] = d.cause;
   ordered_json parameters;
   for (std::size_t i = 0; i < kHeadingEffectCount; ++i)
@@ -153,6 +179,20 @@ std::string heading_text(const HeadingDiagnosis& d) {
       add("            %-20s %+.4g %s (nominal %.4g; 95%% CI %.4g .. %.4g) held-out %.4g, gain %.0f %%\n",
           info(x.effect).id, x.value, info(x.effect).unit, x.nominal, x.ci95_low, x.ci95_high, x.heldout_rms,
           100.0 * x.gain);
+    }
+  }
+  if (d.closed_loop.heldout_glides > 0) {
+    const ClosedLoopCheck& c = d.closed_loop;
+    add("  closed loop, %zu held-out glides, model - log (mean heading error RMS, fin travel RMS; score in the log's "
+        "scatter %.2f deg, %.2f rad/h): configured %.2f deg %.2f rad/h (%.2f), identified %.2f deg %.2f rad/h "
+        "(%.2f)\n",
+        c.heldout_glides, rad_to_deg(c.error_scatter_rad), 3600.0 * c.travel_scatter_rad_s,
+        rad_to_deg(c.configured.error_rms_rad), 3600.0 * c.configured.travel_rms_rad_s, c.configured.score,
+        rad_to_deg(c.open_loop_set.error_rms_rad), 3600.0 * c.open_loop_set.travel_rms_rad_s, c.open_loop_set.score);
+    for (const ClosedLoopCandidate& x : c.candidates) {
+      add("            with %-20s %+.4g: %.2f deg %.2f rad/h (%.2f)%s\n", info(x.effect).id, x.value,
+          rad_to_deg(x.score.error_rms_rad), 3600.0 * x.score.travel_rms_rad_s, x.score.score,
+          x.beats ? ", beats it" : "");
     }
   }
   const ShearProfile& shear = d.current_shear;

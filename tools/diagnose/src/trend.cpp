@@ -113,6 +113,86 @@ void fit_step(const Points& p, const TrendOptions& options, Trend& trend, double
   trend.bic_step = bic(best_rss, n, 3, scale);
 }
 
+// A hinge at `hinge_day`: y = level + slope max(0, t - hinge_day), least
+// squares; `parameters` counted in the residual's degrees of freedom.
+struct HingeFit {
+  double rss = std::numeric_limits<double>::infinity();
+  double level = 0.0, slope = 0.0, se_level = 0.0, se_slope = 0.0, end = 0.0, se_end = 0.0, dof = 0.0;
+};
+
+HingeFit hinge_at(const Points& p, double hinge_day, std::size_t parameters) {
+  const std::size_t n = p.size();
+  std::vector<double> x(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = std::max(0.0, p.t_day[i] - hinge_day);
+  const double x_mean = mean_of(x, 0, n), y_mean = mean_of(p.y, 0, n);
+  double sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxx += (x[i] - x_mean) * (x[i] - x_mean);
+    sxy += (x[i] - x_mean) * (p.y[i] - y_mean);
+  }
+  HingeFit f;
+  if (sxx <= 0.0 || n <= parameters) return f;  // the segments after it at one time
+  f.slope = sxy / sxx;
+  f.level = y_mean - f.slope * x_mean;
+  f.rss = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = p.y[i] - (f.level + f.slope * x[i]);
+    f.rss += r * r;
+  }
+  f.dof = static_cast<double>(n - parameters);
+  const double s2 = f.rss / f.dof, x_end = x[n - 1];
+  f.se_slope = std::sqrt(s2 / sxx);
+  f.se_level = std::sqrt(s2 * (1.0 / static_cast<double>(n) + x_mean * x_mean / sxx));
+  f.end = f.level + f.slope * x_end;
+  f.se_end = std::sqrt(s2 * (1.0 / static_cast<double>(n) + (x_end - x_mean) * (x_end - x_mean) / sxx));
+  return f;
+}
+
+// Constant up to a segment, then a line (fouling from some day on): the
+// hinge searched at each segment that leaves `min_step_side` segments (three
+// at least) on the line after it and at least two before (one before is the
+// line), its slope
+// tested like the line's and corrected for the places searched like the
+// step's. The onset then is refined between the neighbouring segments (it
+// rarely falls on a segment's time, and a hinge put at the wrong segment
+// biases the rate): the estimates and intervals are that fit's, the onset
+// counted as a parameter.
+void fit_hinge(const Points& p, const TrendOptions& options, Trend& trend, double scale) {
+  // A line is judged on three segments at least (two always fit one).
+  const std::size_t n = p.size(), side = std::max<std::size_t>(3, options.min_step_side);
+  trend.bic_hinge = std::numeric_limits<double>::infinity();
+  if (n < side + 3) return;
+  std::size_t places = 0, best_k = 0;
+  HingeFit best;
+  for (std::size_t k = 1; k + side < n; ++k) {
+    ++places;
+    const HingeFit f = hinge_at(p, p.t_day[k], 2);
+    if (f.rss < best.rss) {
+      best = f;
+      best_k = k;
+    }
+  }
+  if (!std::isfinite(best.rss)) return;
+  trend.p_hinge = std::min(1.0, static_cast<double>(places) * two_sided_p(best.slope / best.se_slope, best.dof));
+  trend.bic_hinge = bic(best.rss, n, 3, scale);
+  constexpr int kSteps = 16;  // per interval between segments
+  const double from = p.t_day[best_k - 1], to = p.t_day[best_k + 1];
+  double hinge_day = p.t_day[best_k];
+  HingeFit refined = hinge_at(p, hinge_day, 3);
+  for (int j = 0; j <= 2 * kSteps; ++j) {
+    const double day = from + (to - from) * j / (2.0 * kSteps);
+    const HingeFit f = hinge_at(p, day, 3);
+    if (f.rss < refined.rss) {
+      refined = f;
+      hinge_day = day;
+    }
+  }
+  trend.hinge_s = p.first_time_s + hinge_day * kSecondsPerDay;
+  trend.hinge_slope_per_day = fitting_core::t_interval(refined.slope, refined.se_slope, refined.dof);
+  trend.hinge_level = fitting_core::t_interval(refined.level, refined.se_level, refined.dof);
+  trend.hinge_end = fitting_core::t_interval(refined.end, refined.se_end, refined.dof);
+}
+
 std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", x);
@@ -133,6 +213,8 @@ const char* to_string(TrendShape shape) {
       return "linear";
     case TrendShape::kStep:
       return "step";
+    case TrendShape::kHinge:
+      return "hinge";
   }
   return "none";
 }
@@ -156,16 +238,22 @@ Trend fit_trend(std::span<const double> time_s, std::span<const double> value, c
   fit_constant(p, trend, scale);
   fit_linear(p, trend, scale);
   fit_step(p, options, trend, scale);
-  // Two shapes are tried on every series: each at half the level keeps the
-  // chance of a spurious line or step in constant data at the level.
-  const double level = 0.5 * options.significance;
+  fit_hinge(p, options, trend, scale);
+  // Three shapes are tried on every series: each at a third of the level
+  // keeps the chance of a spurious line, step or hinge in constant data at
+  // the level. Among the significant ones, the lowest BIC.
+  const double level = options.significance / 3.0;
   trend.shape = TrendShape::kConstant;
   double best = trend.bic_constant;
-  if (trend.p_slope < level && trend.bic_linear < best) {
-    trend.shape = TrendShape::kLinear;
-    best = trend.bic_linear;
-  }
-  if (trend.p_step < level && trend.bic_step < best) trend.shape = TrendShape::kStep;
+  const auto consider = [&](TrendShape shape, double p_value, double shape_bic) {
+    if (p_value < level && shape_bic < best) {
+      trend.shape = shape;
+      best = shape_bic;
+    }
+  };
+  consider(TrendShape::kLinear, trend.p_slope, trend.bic_linear);
+  consider(TrendShape::kStep, trend.p_step, trend.bic_step);
+  consider(TrendShape::kHinge, trend.p_hinge, trend.bic_hinge);
   return trend;
 }
 
@@ -179,6 +267,8 @@ double Trend::at(double time_s) const {
       return at_start.value + slope_per_day.value * (time_s - first_time_s) / kSecondsPerDay;
     case TrendShape::kStep:
       return time_s < 0.5 * (step_before_s + step_after_s) ? level_before : level_after;
+    case TrendShape::kHinge:
+      return hinge_level.value + hinge_slope_per_day.value * std::max(0.0, time_s - hinge_s) / kSecondsPerDay;
   }
   return kNaN;
 }
@@ -199,6 +289,11 @@ std::string Trend::describe(const char* unit) const {
       return "step of " + number(step_change.value) + u + " " + bracket(step_change) + " between day " +
              day(step_before_s) + " and day " + day(step_after_s) + " (" + number(level_before) + " -> " +
              number(level_after) + u + ", p = " + number(p_step) + ")";
+    case TrendShape::kHinge:
+      return "constant " + number(hinge_level.value) + u + " " + bracket(hinge_level) + " to day " + day(hinge_s) +
+             ", then " + number(hinge_slope_per_day.value) + u + " per day " + bracket(hinge_slope_per_day) +
+             " (p = " + number(p_hinge) + "), " + number(hinge_end.value) + u + " " + bracket(hinge_end) +
+             " at the last segment";
   }
   return "";
 }

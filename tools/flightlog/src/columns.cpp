@@ -6,19 +6,17 @@
 #include <utility>
 
 #include "glider/hal/log_record.hpp"
+#include "glider/hal/sim_log_columns.hpp"
 #include "glider/units.hpp"
 
 namespace glider::flightlog {
 namespace {
 
-// Columns of real Slocum logs and the SIL's science bay that the firmware
-// does not write; the firmware's own come from the one schema (hal::kLogColumns).
+// Columns of real Slocum logs that neither the firmware nor the SIL writes;
+// theirs come from the one schema (hal::kLogColumns, hal::kSimLogColumns).
 constexpr auto kOtherUnits = std::to_array<std::pair<std::string_view, std::string_view>>({
     {"m_de_oil_vol", "cc"},
     {"m_altitude", "m"},
-    {"sci_water_pressure", "bar"},
-    {"sci_water_temp", "degC"},
-    {"sci_water_cond", "S/m"},
     {"m_vacuum", "inHg"},
     {"m_leakdetect_voltage", "V"},
 });
@@ -27,6 +25,9 @@ constexpr auto kOtherUnits = std::to_array<std::pair<std::string_view, std::stri
 
 std::string_view unit_of(std::string_view column) {
   for (const hal::LogColumn& c : hal::kLogColumns) {
+    if (c.name == column) return c.unit;
+  }
+  for (const hal::SimLogColumn& c : hal::kSimLogColumns) {
     if (c.name == column) return c.unit;
   }
   const auto* const it = std::find_if(kOtherUnits.begin(), kOtherUnits.end(),

@@ -19,6 +19,7 @@
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/flightlog/phases.hpp"
 #include "glider/slocum/log_loader.hpp"
+#include "glider/utc_time.hpp"
 
 namespace fl = glider::flightlog;
 
@@ -29,12 +30,7 @@ constexpr double kLongGapS = 20.0;  // the real logs' surface gaps are 20-230 s
 // "2016-06-23T17:51:11Z" for Unix times; nothing for mission-relative time.
 std::string utc(double unix_time_s) {
   if (unix_time_s < 1.0e8) return "";  // before 1973: not an epoch time
-  const auto seconds = static_cast<std::time_t>(std::floor(unix_time_s));
-  std::tm parts{};
-  gmtime_r(&seconds, &parts);
-  char text[32];
-  std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%SZ", &parts);
-  return text;
+  return glider::utc::format_iso(unix_time_s);
 }
 
 void print_time(const fl::FlightLog& log) {

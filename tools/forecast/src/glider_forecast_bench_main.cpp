@@ -33,6 +33,9 @@ double percentile(std::vector<double> v, double p) {
 struct Score {
   std::vector<double> position_m, time_s, baseline_position_m, baseline_time_s, wall_s;
   int inside_ellipse = 0, cases = 0, aborted = 0;
+  // The current the glider measured over the forecast dive (the next
+  // surfacing's m_water_vx/vy) against the forecast's, in its sigmas.
+  std::vector<double> current_z;
 };
 
 double distance_m(double lat1, double lon1, double lat2, double lon2) {
@@ -41,15 +44,15 @@ double distance_m(double lat1, double lon1, double lat2, double lon2) {
   return std::hypot(d.east_m, d.north_m);
 }
 
-// Is the truth inside the forecast's 95 % ellipse?
-bool inside(const fc::Forecast& f, double lat, double lon) {
+// The truth's place on the forecast's 95 % ellipse: <= 1 inside (1 on it).
+double ellipse_radius(const fc::Forecast& f, double lat, double lon) {
   const glider::fw::LocalFrame frame({f.lat_deg, f.lon_deg});
   const glider::fw::EastNorth d = frame.to_local({lat, lon});
   const double a = f.ellipse.orientation_deg * M_PI / 180.0;
   const double along = d.east_m * std::sin(a) + d.north_m * std::cos(a);
   const double across = d.east_m * std::cos(a) - d.north_m * std::sin(a);
   const double ma = std::max(f.ellipse.semi_major_m, 1.0), mi = std::max(f.ellipse.semi_minor_m, 1.0);
-  return (along * along) / (ma * ma) + (across * across) / (mi * mi) <= 1.0;
+  return std::sqrt((along * along) / (ma * ma) + (across * across) / (mi * mi));
 }
 
 void score_case(const fc::Forecast& f, const fc::TruthSurfacing& next, Score& s, bool print) {
@@ -65,11 +68,31 @@ void score_case(const fc::Forecast& f, const fc::TruthSurfacing& next, Score& s,
   s.time_s.push_back(std::fabs(f.time_utc_s - next.surfaced_utc_s));
   s.baseline_time_s.push_back(std::fabs(f.baseline_time_utc_s - next.surfaced_utc_s));
   s.wall_s.push_back(f.wall_s);
-  if (inside(f, next.lat_deg, next.lon_deg)) ++s.inside_ellipse;
+  const double radius = ellipse_radius(f, next.lat_deg, next.lon_deg);
+  if (radius <= 1.0) ++s.inside_ellipse;
+  double ze = std::nan(""), zn = std::nan("");
+  if (next.have_current) {
+    ze = (next.water_vx - f.current.east_m_s) / f.current.sigma_east_m_s;
+    zn = (next.water_vy - f.current.north_m_s) / f.current.sigma_north_m_s;
+    s.current_z.push_back(ze);
+    s.current_z.push_back(zn);
+  }
   if (print) {
-    std::printf("    forecast %6.0f m, %5.0f s off (baseline %6.0f m, %5.0f s); current %s; %.2f s\n", e,
-                std::fabs(f.time_utc_s - next.surfaced_utc_s), b,
-                std::fabs(f.baseline_time_utc_s - next.surfaced_utc_s), f.current.method.c_str(), f.wall_s);
+    // The miss in the ellipse's axes, and the forecast's travel from the fix.
+    const glider::fw::LocalFrame frame({f.lat_deg, f.lon_deg});
+    const glider::fw::EastNorth d = frame.to_local({next.lat_deg, next.lon_deg});
+    const double a = f.ellipse.orientation_deg * M_PI / 180.0;
+    std::printf(
+        "    travel %.0f m toward %.0f deg; ellipse toward %.0f deg; miss %+.0f m along its major axis, %+.0f across\n",
+        std::hypot(f.east_m, f.north_m), std::fmod(std::atan2(f.east_m, f.north_m) * 180.0 / M_PI + 360.0, 360.0),
+        f.ellipse.orientation_deg, d.east_m * std::sin(a) + d.north_m * std::cos(a),
+        d.east_m * std::cos(a) - d.north_m * std::sin(a));
+    std::printf(
+        "    forecast %6.0f m, %5.0f s off (baseline %6.0f m, %5.0f s); ellipse %4.0f x %4.0f m, truth at %.2f of "
+        "it; current %s +-%.3f/%.3f m/s, measured next %+.1f/%+.1f sigma; %.2f s\n",
+        e, std::fabs(f.time_utc_s - next.surfaced_utc_s), b, std::fabs(f.baseline_time_utc_s - next.surfaced_utc_s),
+        f.ellipse.semi_major_m, f.ellipse.semi_minor_m, radius, f.current.method.c_str(), f.current.sigma_east_m_s,
+        f.current.sigma_north_m_s, ze, zn, f.wall_s);
   }
 }
 
@@ -87,6 +110,17 @@ void print_table(const char* what, const Score& s) {
       "wall per forecast median %.2f s, max %.2f s\n",
       100.0 * gain, s.inside_ellipse, s.position_m.size(), percentile(s.wall_s, 0.5),
       s.wall_s.empty() ? std::nan("") : *std::max_element(s.wall_s.begin(), s.wall_s.end()));
+  double z2 = 0.0;
+  int within2 = 0;
+  for (double z : s.current_z) {
+    z2 += z * z;
+    within2 += std::fabs(z) <= 1.96 ? 1 : 0;
+  }
+  std::printf(
+      "the current measured over the forecast dive against the forecast's: RMS %.2f sigma, within 1.96 sigma in %d "
+      "of %zu components\n",
+      s.current_z.empty() ? std::nan("") : std::sqrt(z2 / static_cast<double>(s.current_z.size())), within2,
+      s.current_z.size());
 }
 
 }  // namespace

@@ -4,42 +4,26 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include "glider/utc_time.hpp"
 
 namespace glider::forecast {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 double parse_utc(const std::string& text, const std::string& where) {
-  std::tm tm{};
-  int year = 0, month = 0, day = 0, hour = 0, minute = 0;
-  double second = 0.0;
-  char zone = 0;
-  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%c", &year, &month, &day, &hour, &minute, &second, &zone) !=
-          7 ||
-      zone != 'Z' || month < 1 || month > 12 || day < 1 || day > 31 || hour > 23 || minute > 59 ||
-      !(second >= 0.0 && second < 61.0)) {
-    throw std::runtime_error(where + ": '" + text + "' is not a UTC time YYYY-MM-DDTHH:MM:SSZ");
+  const utc::Parsed parsed = utc::parse_iso(text);
+  if (!parsed.ok) {
+    throw std::runtime_error(where + ": '" + text + "' is not a UTC time YYYY-MM-DDTHH:MM:SSZ (" + parsed.problem +
+                             ")");
   }
-  tm.tm_year = year - 1900;
-  tm.tm_mon = month - 1;
-  tm.tm_mday = day;
-  tm.tm_hour = hour;
-  tm.tm_min = minute;
-  return static_cast<double>(timegm(&tm)) + second;
+  return parsed.seconds();
 }
 
-std::string format_utc(double utc_s) {
-  const auto whole = static_cast<std::time_t>(std::floor(utc_s + 0.5));
-  std::tm tm{};
-  gmtime_r(&whole, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
-}
+std::string format_utc(double utc_s) { return utc::format_iso(std::round(utc_s)); }
 
 namespace {
 

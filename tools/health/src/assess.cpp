@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <optional>
 
 namespace glider::health {
 namespace {
@@ -15,6 +16,17 @@ std::string number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", value);
   return text;
+}
+
+// The start of the first segment with a value after `time_s` (a step's or a
+// hinge's: the first that carries the change); times went through days and
+// back, hence a second's tolerance.
+std::optional<double> first_start_after(double time_s, const EffectAssessment& a,
+                                        const std::vector<SegmentMeasurement>& segments) {
+  for (std::size_t k : a.segments) {
+    if (segments[k].time_s > time_s + 1.0) return segments[k].start_s;
+  }
+  return std::nullopt;
 }
 
 // The level after the last segment's time and its interval, from the shape.
@@ -51,14 +63,15 @@ void current_level(EffectAssessment& a, const std::vector<double>& t, const std:
       a.value = i.value;
       a.low = i.low;
       a.high = i.high;
-      for (std::size_t k : a.segments) {
-        if (segments[k].time_s >= tr.step_after_s - 1.0) {
-          a.since_s = segments[k].start_s;
-          break;
-        }
-      }
+      a.since_s = first_start_after(tr.step_before_s, a, segments);
       return;
     }
+    case diagnose::TrendShape::kHinge:
+      a.value = tr.hinge_end.value;
+      a.low = tr.hinge_end.low;
+      a.high = tr.hinge_end.high;
+      a.since_s = first_start_after(tr.hinge_s, a, segments);
+      return;
     case diagnose::TrendShape::kNone: {
       const EffectValue& last = segments[a.segments.back()].effects[static_cast<std::size_t>(a.effect)];
       a.value = last.value;
@@ -67,6 +80,47 @@ void current_level(EffectAssessment& a, const std::vector<double>& t, const std:
       return;
     }
   }
+}
+
+// An error every segment shares (the plane's model form: the heading plane
+// reads a fin differently at each level) does not average out over
+// segments: a level is known no better than its segments' own intervals say.
+// The median 95 % half-width of the per-segment intervals on one side of
+// `split_s` (before: at or before it); 0 where the segments give none.
+double segment_half_width(const EffectAssessment& a, const std::vector<SegmentMeasurement>& segments, double split_s,
+                          bool before) {
+  std::vector<double> half;
+  for (std::size_t k : a.segments) {
+    if ((segments[k].time_s <= split_s + 1.0) != before) continue;
+    const EffectValue& v = segments[k].effects[static_cast<std::size_t>(a.effect)];
+    if (std::isfinite(v.low) && std::isfinite(v.high)) half.push_back(0.5 * (v.high - v.low));
+  }
+  if (half.empty()) return 0.0;
+  std::nth_element(half.begin(), half.begin() + static_cast<std::ptrdiff_t>(half.size() / 2), half.end());
+  return half[half.size() / 2];
+}
+
+// A step's 95 % interval: the wider of the segments' scatter about the
+// levels (the trend's) and their own intervals (an error they share), and
+// for a relative rule the change over the level before with the level
+// before's own error (the delta method of a ratio).
+void step_interval(const EffectAssessment& a, const std::vector<SegmentMeasurement>& segments, bool relative,
+                   double& low, double& high) {
+  const diagnose::Trend& tr = a.trend;
+  const double hb = segment_half_width(a, segments, tr.step_before_s, true);
+  const double ha = segment_half_width(a, segments, tr.step_before_s, false);
+  const double change = tr.step_change.value;
+  const double half = std::max(0.5 * (tr.step_change.high - tr.step_change.low), std::hypot(hb, ha));
+  if (!relative) {
+    low = change - half;
+    high = change + half;
+    return;
+  }
+  const double before = std::abs(tr.level_before);
+  const double ratio = change / before;
+  const double relative_half = std::hypot(half / before, ratio * hb / before);
+  low = ratio - relative_half;
+  high = ratio + relative_half;
 }
 
 std::string step_message(const HealthEffectInfo& e, double change, double low, double high, double before,
@@ -147,20 +201,46 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
         // an estimator's scale error (a few %) cancels in the ratio.
         const double per = e.rule.relative ? 1.0 / std::abs(tr.level_before) : 1.0;
         alert.size = size * per;
-        alert.low = tr.step_change.low * per;
-        alert.high = tr.step_change.high * per;
+        step_interval(a, segments, e.rule.relative, alert.low, alert.high);
         alert.relative = e.rule.relative;
         alert.since_s = a.since_s.value_or(tr.step_after_s);
-        alert.message =
-            step_message(e, size, tr.step_change.low, tr.step_change.high, tr.level_before, e.rule.relative) +
-            " (p = " + number(tr.p_step) + ")";
+        alert.message = step_message(e, size, alert.low / per, alert.high / per, tr.level_before, e.rule.relative) +
+                        " (p = " + number(tr.p_step) + ")";
         alert.check = e.check;
         a.alerts.push_back(alert);
       }
     }
-    // A line over the recent days (fouling grows for weeks from some day on:
-    // the deployment's line would average the days before it in).
-    if (e.rule.rate_per_day > 0.0) {
+    // A hinge of the deployment (constant, then a line: fouling from some day
+    // on), its slope pinned by the whole constant stretch before it.
+    // The rate is sized as a fraction of the level before a day (fouling as
+    // a fraction of the clean hull's drag): the estimator's scale error (the
+    // vertical plane reads the file's drag as 0.99 of it) cancels in the
+    // ratio, the level's own error is added (the delta method of a ratio).
+    const double hinge_before = std::abs(tr.hinge_level.value);
+    const double hinge_rate = hinge_before > 0.0 ? tr.hinge_slope_per_day.value / hinge_before : 0.0;
+    const bool hinge_alert = e.rule.rate_per_day > 0.0 && tr.shape == diagnose::TrendShape::kHinge &&
+                             std::abs(hinge_rate) >= e.rule.rate_per_day;
+    if (hinge_alert) {
+      Alert alert;
+      alert.effect = a.effect;
+      alert.kind = "line";
+      alert.size = hinge_rate;
+      const double half = std::hypot(0.5 * (tr.hinge_slope_per_day.high - tr.hinge_slope_per_day.low) / hinge_before,
+                                     hinge_rate * 0.5 * (tr.hinge_level.high - tr.hinge_level.low) / hinge_before);
+      alert.low = hinge_rate - half;
+      alert.high = hinge_rate + half;
+      alert.relative = true;
+      alert.since_s = a.since_s.value_or(tr.hinge_s);
+      alert.message = std::string(e.id) + " is changing by " + number(100.0 * alert.size) + " % of its level a day [" +
+                      number(100.0 * alert.low) + ", " + number(100.0 * alert.high) + "] since " +
+                      utc_iso(alert.since_s) + ", constant at " + number(tr.hinge_level.value) + " " + e.unit +
+                      " before (p = " + number(tr.p_hinge) + "), now " + number(tr.hinge_end.value) + " " + e.unit;
+      alert.check = e.check;
+      a.alerts.push_back(alert);
+    }
+    // Else a line over the recent days (fouling grows for weeks from some day
+    // on: the deployment's line would average the days before it in).
+    if (e.rule.rate_per_day > 0.0 && !hinge_alert) {
       std::vector<double> wt, wv, before;
       for (std::size_t i = 0; i < t.size(); ++i) {
         if (t[i] >= t.back() - options.line_window_days * kDay) {

@@ -42,8 +42,8 @@ json alert_json(const Alert& a) {
           {"effect", info(a.effect).id},
           {"kind", a.kind},
           {"size", a.size},
-          {"unit", a.relative ? std::string("fraction of the level before")
-                              : std::string(info(a.effect).unit) + (a.kind == "line" ? "/day" : "")},
+          {"unit", std::string(a.relative ? "fraction of the level before" : info(a.effect).unit) +
+                       (a.kind == "line" ? "/day" : "")},
           {"ci95", {a.low, a.high}},
           {"since_utc", utc_iso(a.since_s)},
           {"message", a.message},
@@ -79,6 +79,7 @@ std::string health_json(const HealthRun& run) {
     if (a.trend.shape == diagnose::TrendShape::kConstant) shape = "constant";
     if (a.trend.shape == diagnose::TrendShape::kLinear) shape = "line";
     if (a.trend.shape == diagnose::TrendShape::kStep) shape = "step";
+    if (a.trend.shape == diagnose::TrendShape::kHinge) shape = "hinge";
     json entry = {{"name", e.id},
                   {"unit", e.unit},
                   {"what", e.what},

@@ -5,13 +5,13 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "glider/config/toml_document.hpp"
 #include "glider/config/value_limits.hpp"
+#include "glider/utc_time.hpp"
 
 namespace glider::netcdf {
 namespace {
@@ -149,36 +149,11 @@ DeploymentMetadata parse_deployment_metadata(std::string_view text, const std::s
 }
 
 double parse_utc(std::string_view text) {
-  int year = 0, month = 0, day = 0, hour = 0, minute = 0, second = 0;
-  char tail = 0;
-  const std::string s(text);
-  if (std::sscanf(s.c_str(), "%4d-%2d-%2dT%2d:%2d:%2d%c", &year, &month, &day, &hour, &minute, &second, &tail) != 7 ||
-      tail != 'Z' || s.size() != 20 || month < 1 || month > 12 || day < 1 || day > 31 || hour > 23 || minute > 59 ||
-      second > 60) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  std::tm tm{};
-  tm.tm_year = year - 1900;
-  tm.tm_mon = month - 1;
-  tm.tm_mday = day;
-  tm.tm_hour = hour;
-  tm.tm_min = minute;
-  tm.tm_sec = second;
-  return static_cast<double>(timegm(&tm));
+  const utc::Parsed parsed = utc::parse_iso(text, utc::Rules{1970, 9999, 0});
+  return parsed.ok ? parsed.seconds() : std::numeric_limits<double>::quiet_NaN();
 }
 
-namespace {
-std::string format_utc(double seconds, const char* format) {
-  const std::time_t t = static_cast<std::time_t>(std::floor(seconds));
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, format, &tm);
-  return text;
-}
-}  // namespace
-
-std::string format_utc_compact(double seconds) { return format_utc(seconds, "%Y%m%dT%H%M%S"); }
-std::string format_utc_iso(double seconds) { return format_utc(seconds, "%Y-%m-%dT%H:%M:%SZ"); }
+std::string format_utc_compact(double seconds) { return utc::format_compact(seconds); }
+std::string format_utc_iso(double seconds) { return utc::format_iso(seconds); }
 
 }  // namespace glider::netcdf

@@ -22,6 +22,8 @@ void add_console_options(glider::cli::Tool& tool, CLI::App* serve, CLI::App& app
   serve->add_option("--http-port-file", c.port_file, "write the console's port to this file");
   serve->add_option("--users", o.users_file, "console accounts file (default ROOT/console.users)");
   serve->add_flag("--http-auth", c.force_auth, "require a login on loopback too");
+  serve->add_option("--sessions", o.sessions_file,
+                    "logins kept across a restart (default ROOT/console.sessions; cookies stored as SHA-256)");
   serve->add_option("--notify", c.notify_command,
                     "alert command, run by /bin/sh -c with GLIDER_ALERT_ID/GLIDER/KIND/LEVEL/MESSAGE/CHECK set");
   serve->add_option("--escalate", c.escalate_command, "escalation command (default: --notify with LEVEL=escalate)");
@@ -69,6 +71,7 @@ void finish_console_config(ConsoleOptions& o, const std::string& root, const std
   ConsoleConfig& c = o.config;
   c.root = root;
   c.users_file = o.users_file.empty() ? fs::path(root) / "console.users" : fs::path(o.users_file);
+  c.sessions_file = o.sessions_file.empty() ? fs::path(root) / "console.sessions" : fs::path(o.sessions_file);
   const std::size_t colon = o.http.rfind(':');
   if (colon == std::string::npos || colon == 0) {
     throw glider::cli::ToolError(glider::cli::kUsage, "--http " + o.http + ": give ADDR:PORT, e.g. 127.0.0.1:8080");

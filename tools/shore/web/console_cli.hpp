@@ -14,6 +14,7 @@ struct ConsoleOptions {
   std::string http;  // "ADDR:PORT"; empty = no console
   ConsoleConfig config;
   std::string users_file;
+  std::string sessions_file;
   // user add
   CLI::App* user = nullptr;
   std::string user_name, role = "pilot";

@@ -11,14 +11,15 @@ struct ConsoleConfig {
   std::filesystem::path root;  // the shore's root (one folder per glider)
   std::string address = "127.0.0.1";
   unsigned port = 0;
-  std::string port_file;              // the port actually bound, once listening
-  std::filesystem::path users_file;   // accounts; needed off loopback or with force_auth
-  bool force_auth = false;            // --http-auth: log in even on loopback
-  double session_ttl_s = 8 * 3600.0;  // a login lasts this long
-  std::string local_user;             // who acts on loopback without login (journaled)
-  std::filesystem::path web_dir;      // the pages (static/)
-  std::filesystem::path leaflet_dir;  // Debian's libjs-leaflet
-  std::string forecast_program;       // glider-forecast, for rehearsals ("" = not found)
+  std::string port_file;                // the port actually bound, once listening
+  std::filesystem::path users_file;     // accounts; needed off loopback or with force_auth
+  bool force_auth = false;              // --http-auth: log in even on loopback
+  double session_ttl_s = 8 * 3600.0;    // a login lasts this long
+  std::filesystem::path sessions_file;  // logins kept across a restart (empty: in memory only)
+  std::string local_user;               // who acts on loopback without login (journaled)
+  std::filesystem::path web_dir;        // the pages (static/)
+  std::filesystem::path leaflet_dir;    // Debian's libjs-leaflet
+  std::string forecast_program;         // glider-forecast, for rehearsals ("" = not found)
   std::size_t max_upload_bytes = 256 * 1024;
   int threads = 256;      // HTTP worker threads (each event stream holds one)
   int max_streams = 100;  // event streams at once; more get 503

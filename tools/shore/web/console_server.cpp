@@ -151,7 +151,8 @@ struct ConsoleServer::Impl {
   std::mutex lockout_mutex;
   std::map<std::string, std::pair<int, double>> failures;  // user -> failures in a row, locked until
 
-  explicit Impl(ConsoleConfig c) : config(std::move(c)), sessions(config.session_ttl_s), state(config) {}
+  explicit Impl(ConsoleConfig c)
+      : config(std::move(c)), sessions(config.session_ttl_s, config.sessions_file), state(config) {}
 
   // Who is asking: a session (auth on), or the local pilot (loopback, auth off).
   std::optional<Session> identify(const httplib::Request& req) {
@@ -453,6 +454,13 @@ void ConsoleServer::start() {
     if (c.users_file.empty()) throw std::runtime_error("--http off loopback (or --http-auth) needs --users FILE");
     s.accounts = read_accounts(c.users_file);
     if (s.accounts.empty()) throw std::runtime_error(c.users_file.string() + ": no users (glider-shore user add)");
+    const std::string note = s.sessions.load(
+        [&s](const std::string& user, const std::string& role) {
+          const auto account = s.accounts.find(user);
+          return account != s.accounts.end() && account->second.role == role;
+        },
+        now_unix());
+    if (!note.empty()) std::fprintf(stderr, "glider-shore console: %s\n", note.c_str());
   }
   s.assets = load_assets(c.web_dir, c.leaflet_dir);
   s.server.new_task_queue = [threads = c.threads] {

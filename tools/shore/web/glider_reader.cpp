@@ -18,6 +18,7 @@ constexpr double kStaleCallS = 7200.0;  // a journal without an event older than
 constexpr std::size_t kTranscriptBytes = 64 * 1024;
 constexpr std::size_t kMaxTrackPoints = 3000;
 constexpr std::size_t kExcerptLines = 8;
+constexpr double kUnixClockFrom_s = 1e8;  // a time above this (1973) is a clock's, below it seconds since a start
 
 bool ends_with(const std::string& text, const std::string& tail) {
   return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
@@ -159,11 +160,15 @@ void GliderReader::read(double now) {
     const json& gps = event.contains("gps") ? event["gps"] : json(nullptr);
     if (gps.is_object())
       fixes.push_back({gps.value("lat_deg", 0.0), gps.value("lon_deg", 0.0), event.value("call_start_utc", "")});
-    const double mission_time = json_number(event.value("glider_time", json::object()), "mission_time_s");
+    const json glider_time = event.value("glider_time", json::object());
+    const double mission_time = json_number(glider_time, "mission_time_s");
+    const double glider_utc = parse_utc(json_text(glider_time, "utc"));
     double dr_error = kUnknown;
     for (const DrError& e : errors) {  // the fix of this surfacing: within 15 min before the dialog's time
-      if (std::isfinite(mission_time) && e.t <= mission_time + 60.0 && e.t >= mission_time - 900.0)
-        dr_error = e.error_m;
+      // On the files' clock: a Slocum's m_present_time is Unix seconds (the dialog's Curr Time); files
+      // counting from the mission's start (SIL before it wrote UTC) are matched by the mission time.
+      const double t = e.t > kUnixClockFrom_s ? glider_utc : mission_time;
+      if (std::isfinite(t) && e.t <= t + 60.0 && e.t >= t - 900.0) dr_error = e.error_m;
     }
     json files = json::array();
     for (const json& f : event.value("files_received", json::array())) files.push_back(f.value("name", ""));
@@ -209,7 +214,16 @@ void GliderReader::read(double now) {
   }
 
   // Forecast: the next expected call; else the call interval (median of the last five).
-  const json forecast = read_json(base / "forecast" / "forecast.json");
+  json forecast = read_json(base / "forecast" / "forecast.json");
+  if (facts.aborted && forecast.is_object() && forecast.contains("next_surfacing")) {
+    // The forecast flies the dive cycle on from the last fix; an aborted glider waits at the surface in
+    // GliderDos for the pilot instead: its next surfacing is not the forecast's. Shown as set aside.
+    forecast = {{"schema", forecast.value("schema", "")},
+                {"made_utc", forecast.value("made_utc", "")},
+                {"error",
+                 "set aside: the glider aborted at its last call and waits at the surface for the pilot; "
+                 "the forecast flies on as if it dived"}};
+  }
   if (forecast.is_object() && forecast.contains("next_surfacing")) {
     const json& next = forecast["next_surfacing"];
     facts.expected_call = parse_utc(json_text(next, "time_utc"));
@@ -321,7 +335,7 @@ void GliderReader::read(double now) {
   detail_["fixes"] = fixes;
   detail_["dr_track"] = track;
   json dr_list = json::array();
-  for (const DrError& e : errors) dr_list.push_back({{"mission_time_s", e.t}, {"error_m", e.error_m}});
+  for (const DrError& e : errors) dr_list.push_back({{"m_present_time", e.t}, {"error_m", e.error_m}});
   detail_["dr_errors"] = dr_list;
   detail_["waypoints"] = waypoints;
   detail_["forecast"] = forecast;

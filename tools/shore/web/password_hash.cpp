@@ -66,6 +66,16 @@ std::vector<unsigned char> scrypt(const std::string& password, const std::vector
 
 }  // namespace
 
+std::string sha256_hex(const std::string& text) {
+  std::vector<unsigned char> digest(EVP_MAX_MD_SIZE);
+  unsigned int size = 0;
+  if (EVP_Digest(text.data(), text.size(), digest.data(), &size, EVP_sha256(), nullptr) != 1) {
+    throw std::runtime_error("SHA-256 failed (OpenSSL EVP_Digest)");
+  }
+  digest.resize(size);
+  return to_hex(digest);
+}
+
 std::string random_hex(std::size_t bytes) {
   std::vector<unsigned char> buffer(bytes);
   if (RAND_bytes(buffer.data(), static_cast<int>(buffer.size())) != 1) {

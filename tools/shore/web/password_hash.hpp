@@ -13,6 +13,9 @@ std::string hash_password(const std::string& password);
 // Constant-time comparison; false for a malformed stored hash.
 bool verify_password(const std::string& password, const std::string& stored);
 
+// SHA-256 of `text` as 64 lowercase hex digits (OpenSSL).
+std::string sha256_hex(const std::string& text);
+
 // n random bytes as 2n lowercase hex digits (OpenSSL's RAND_bytes; throws if it fails).
 std::string random_hex(std::size_t bytes);
 

@@ -62,6 +62,10 @@ void add_account(const fs::path& file, const std::string& name, const std::strin
   accounts[name] = Account{name, role, hash_password(password)};
   std::string text = "# glider-shore console users: NAME:ROLE:scrypt hash (glider-shore user add)\n";
   for (const auto& [key, account] : accounts) text += account.name + ":" + account.role + ":" + account.hash + "\n";
+  write_private_file(file, text);
+}
+
+void write_private_file(const fs::path& file, const std::string& text) {
   std::string hidden = ".";  // (built in steps: GCC 12 warns falsely on "." + string here, -Wrestrict)
   hidden += file.filename().string();
   hidden += ".tmp";

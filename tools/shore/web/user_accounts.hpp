@@ -18,6 +18,9 @@ bool valid_role(const std::string& role);       // pilot | viewer
 
 // Reads the file; a malformed line is an error naming file:line (throws).
 std::map<std::string, Account> read_accounts(const std::filesystem::path& file);
+// Writes `text` as `file` whole, mode 0600: a hidden temporary in the same folder, fsync, rename(2)
+// (a reader sees the old file or the new one, never a part). Throws naming the file.
+void write_private_file(const std::filesystem::path& file, const std::string& text);
 // Adds or replaces NAME (hashing the password), rewriting the file atomically with mode 0600.
 void add_account(const std::filesystem::path& file, const std::string& name, const std::string& role,
                  const std::string& password);

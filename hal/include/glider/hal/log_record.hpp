@@ -57,12 +57,16 @@ struct FlightLogRecord {
 // as integers; NaN is an empty field.
 enum class LogColumnKind { kTime, kNumber, kInteger };
 
-struct LogColumn {
+// A column of a row type `Row`: the firmware's record here, the SIL's
+// appended columns in sim_log_columns.hpp (the same mechanism, one schema).
+template <typename Row>
+struct LogColumnOf {
   std::string_view name;
   std::string_view unit;
   LogColumnKind kind;
-  double (*value)(const FlightLogRecord&);  // kNumber/kInteger (integers are exact in a double)
+  double (*value)(const Row&);  // kNumber/kInteger (integers are exact in a double)
 };
+using LogColumn = LogColumnOf<FlightLogRecord>;
 
 #define GLIDER_LOG_NUMBER(field, unit)                                                     \
   LogColumn {                                                                              \

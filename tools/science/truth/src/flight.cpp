@@ -19,6 +19,8 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPi = std::numbers::pi;
+constexpr double kCometMeasuredSpeedMS = 0.35;  // m/s, through the water (see draw())
+constexpr double kWe01MeasuredSpeedMS = 0.46;   // m/s, hypot(0.20, 0.42): Graver et al. 2003 Fig. 13
 double uniform(std::mt19937_64& rng, double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
 double wrap(double a) { return std::remainder(a, 2.0 * kPi); }
 double effect_or(const Effects& e, const char* id, double fallback) {
@@ -51,7 +53,13 @@ Draws draw(const FlightRequest& r, const Vehicle& v) {
   u.chord_m = std::sqrt(v.hydro.area_m2 / 7.0);  // mean chord of wings of aspect ratio ~7 on the reference area
   u.cl_q = uniform(rng, 0.0, 2.0);
   u.drag_reynolds_exponent = uniform(rng, 0.05, 0.2);
-  u.drag_reference_speed_m_s = 0.35;
+  // The speed at which the vehicle file's published C_D0 was measured: the
+  // skin friction's Reynolds-number term is 1 there. comet (shallow): the
+  // DVL of gliderflight-adcp reads 0.27-0.35 m/s; WE01 (deep): Graver et al.
+  // 2003 Fig. 13 glides 0.20 m/s down and 0.42 m/s across, 0.46 m/s along
+  // the path. (Both variants used 0.35 before: WE01's own drag, flown at its
+  // own speed, then read 3-7 % low against its own file.)
+  u.drag_reference_speed_m_s = r.deep ? kWe01MeasuredSpeedMS : kCometMeasuredSpeedMS;
   u.yaw_second_pole_s = uniform(rng, 0.2, 1.0);
   u.fin_roll_per_rad = uniform(rng, 0.0, 0.2);
   u.roll_time_constant_s = uniform(rng, 2.0, 5.0);

@@ -71,8 +71,13 @@
     box.replaceChildren(E('h3', {}, 'Health'),
       E('p', {id: 'health-state', class: h.state === 'ok' ? 'ok' : (h.state === 'alert' ? 'bad' : 'muted')}, h.state + ' (updated ' + utc(h.updated_utc) + ')'),
       ...(h.alerts || []).map(a => E('div', {class: 'alert health-alert'}, a.message, a.check ? E('div', {class: 'muted'}, 'check: ' + a.check) : null)),
-      E('ul', {}, ...(h.effects || []).map(e => E('li', {}, e.name + ' ' + e.value + (e.unit ? ' ' + e.unit : '') +
-        (e.ci95 ? ' [' + e.ci95.join(', ') + ']' : '') + (e.since_utc ? ' since ' + utc(e.since_utc) : '')))));
+      E('ul', {}, ...(h.effects || []).map(e => E('li', {}, e.name + ' ' + num(e.value) + (e.unit ? ' ' + e.unit : '') +
+        (e.ci95 ? ' [' + e.ci95.map(num).join(', ') + ']' : '') + (e.since_utc ? ' since ' + utc(e.since_utc) : '')))));
+  }
+
+  // Four significant digits: health writes full doubles; "?" where it gives no number (an interval it cannot give).
+  function num(v) {
+    return typeof v === 'number' && isFinite(v) ? String(Number(v.toPrecision(4))) : '?';
   }
 
   function queueSection(g) {

@@ -21,6 +21,9 @@ struct MissionOptions {
   HeadingLaw heading_law = HeadingLaw::kCompensated;
   bool flight_model_dr = false;  // kFlightModel dead reckoning: needs the setup's alpha table
   std::int32_t legs = 0;         // .mi: override num_legs_to_run (0: the mission's)
+  // The heading autopilot the mission's own settings start from: a study's loop (the replay of
+  // a real log's identified gains). Empty: `heading_law` with the vehicle's fin (the flight's).
+  std::optional<HeadingControlConfig> heading;
 };
 
 struct PreparedMission {

@@ -34,10 +34,11 @@ struct SlocumLogOptions {
   SlocumSelection sbd;                      // the .sbd's sensors (parse_slocum_list)
   bool write_sbd = true;
   std::uint32_t flush_every_cycles = 60;  // at most this many rows wait in a buffer
-  // UTC of row time 0, for the names' <yyyy>-<ddd> and the header's
-  // fileopen_time: the target's rows are UTC already (0); SIL's count from
-  // its launch, at the simulated UTC launch time given here. m_present_time
-  // stays the row's time (SIL: seconds since launch, as its CSV log).
+  // UTC of row time 0, added to every row's time: m_present_time (Unix
+  // seconds, as a Slocum's), the names' <yyyy>-<ddd> and the header's
+  // fileopen_time. The target's rows are UTC already (0); SIL's count from
+  // its launch, at the simulated UTC launch time given here (its CSV log
+  // keeps the seconds since launch).
   hal::Micros utc_at_zero_us = 0;
 };
 
@@ -120,7 +121,7 @@ class SlocumLogger {
 
   // Start-up: writes the sensor-list caches (cac/<crc>.cac). False: error().
   bool start();
-  // One log row, m_present_time = `time_us` (UTC on the target). Opens the
+  // One log row, m_present_time = `time_us` + utc_at_zero_us. Opens the
   // first segment, or a new one when the vehicle has just reached the
   // surface. Returns false if the row cannot reach the .dbd.
   bool write(const hal::FlightLogRecord& record, hal::Micros time_us);

@@ -15,6 +15,10 @@
 
 namespace glider::diagnose {
 
+namespace detail {
+class RunFlight;  // one run's flight (src/run_flight.hpp)
+}
+
 class DynamicFlightModel final : public DepthRateModel {
  public:
   // Integration step: at most max_step_s (RK4); the log's cycles are split
@@ -39,6 +43,17 @@ class DynamicFlightModel final : public DepthRateModel {
   void fly_uncached(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
                     std::vector<double>* depth_rate, std::vector<double>* speed,
                     const VerticalVelocityProfile* profile) const;
+
+  struct RelativeFlight;
+  std::size_t last_needed(std::size_t end, std::size_t last_requested) const;
+  void start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& values, bool use_ctd,
+                   const VerticalVelocityProfile* profile, double& v1, double& v3) const;
+  const RelativeFlight& relative_flight(const detail::RunFlight& run_flight, std::size_t run,
+                                        const EffectValues& values, bool use_ctd, double v1, double v3,
+                                        std::size_t last, bool with_speed) const;
+  std::size_t read_run(const detail::RunFlight& run_flight, const RelativeFlight& flight, std::size_t last,
+                       double depth_lag_s, std::span<const std::size_t> samples, std::size_t next,
+                       std::vector<double>* depth_rate, std::vector<double>* speed) const;
 
   model::VehicleParams nominal_;
   const Track& track_;

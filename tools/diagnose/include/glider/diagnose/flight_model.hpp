@@ -115,7 +115,9 @@ class FlightModel final : public DepthRateModel {
   // The battery position (in) that holds the logged pitch with the logged
   // ballast in a steady glide (moment balance of the model); NaN if none.
   // The vehicle is the nominal one with `values` applied (the effects found).
-  double required_battpos_in(std::size_t sample, const EffectValues& values) const;
+  // With use_ctd_density, the sample's measured density where it has one
+  // (as predict's), else the constant of `values`.
+  double required_battpos_in(std::size_t sample, const EffectValues& values, bool use_ctd_density = false) const;
 
   double ctd_density_anomaly() const override;
 

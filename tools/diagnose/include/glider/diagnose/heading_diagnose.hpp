@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "glider/diagnose/heading_closed_loop.hpp"
 #include "glider/diagnose/heading_fit.hpp"
 #include "glider/diagnose/heading_models.hpp"
 #include "glider/diagnose/heading_shear.hpp"
@@ -48,6 +49,10 @@ struct HeadingDiagnosis {
   ShearProfile current_shear;
   std::vector<HoldBin> holds;  // 0-2, 2-4, ... 10-12 deg, and beyond
   LinkFit servo, yaw, autopilot;
+  // The autopilot link flown closed-loop (heading_closed_loop.hpp): how well
+  // the identified loop reproduces where the log's loop settles and how hard
+  // it works the fin, and what each left-out candidate would change.
+  ClosedLoopCheck closed_loop;
   HeadingValues values{};      // every link's nominal with its findings
   std::string cause = "none";  // the finding with the largest gain of its link
   // The loop's dead time by where it sits (s): heading reading -> c_fin
@@ -61,6 +66,8 @@ struct HeadingDiagnoseOptions {
   std::size_t max_fit_samples = 4000;   // per half, even stride (the fits' cost)
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
+  // Fly the closed-loop check (heading_closed_loop.hpp; not with fit_only).
+  bool closed_loop = true;
 };
 
 struct UnexplainedYaw {

@@ -2,8 +2,9 @@
 #pragma once
 // How one fitted effect changes over a deployment: its per-segment values
 // explained as a constant, a linear trend (fouling: drag grows for weeks) or
-// one step (a lost weight, a pump that starts to leak), whichever the data
-// support. Gliders' per-segment intervals are too narrow (serially
+// one step (a lost weight, a pump that starts to leak) or a hinge (constant,
+// then a line: fouling that starts some day into the deployment), whichever
+// the data support. Gliders' per-segment intervals are too narrow (serially
 // correlated residuals), so the shapes are judged on the segments' scatter
 // about them (least squares with the variance estimated from the residuals),
 // never on the per-segment intervals.
@@ -15,7 +16,7 @@
 
 namespace glider::diagnose {
 
-enum class TrendShape { kNone, kConstant, kLinear, kStep };
+enum class TrendShape { kNone, kConstant, kLinear, kStep, kHinge };
 const char* to_string(TrendShape shape);
 
 // An estimate and its 95 % interval (the fitting core's, as every plane's).
@@ -33,11 +34,16 @@ struct Trend {
   double step_after_s = 0.0, step_before_s = 0.0;
   double level_before = 0.0, level_after = 0.0;
   Interval step_change;
-  // Two-sided p-values of the linear slope and of the best step (the step's
-  // corrected for the number of places it was searched).
-  double p_slope = 1.0, p_step = 1.0;
+  // Hinge: constant at `hinge_level` up to the segment at `hinge_s`, then a
+  // line of `hinge_slope_per_day`; `hinge_end` its value at the last segment.
+  double hinge_s = 0.0;
+  Interval hinge_level, hinge_slope_per_day, hinge_end;
+  // Two-sided p-values of the linear slope, of the best step and of the best
+  // hinge's slope (the step's and the hinge's corrected for the number of
+  // places they were searched).
+  double p_slope = 1.0, p_step = 1.0, p_hinge = 1.0;
   // Bayesian information criterion of each shape (lower is better).
-  double bic_constant = 0.0, bic_linear = 0.0, bic_step = 0.0;
+  double bic_constant = 0.0, bic_linear = 0.0, bic_step = 0.0, bic_hinge = 0.0;
 
   // The model's value at a time (for plots); NaN for kNone.
   double at(double time_s) const;
@@ -48,7 +54,7 @@ using fitting_core::mean_with_interval;
 
 struct TrendOptions {
   double significance = 0.05;     // chance of a spurious line or step in constant data
-  std::size_t min_step_side = 2;  // segments on each side of a step
+  std::size_t min_step_side = 2;  // segments on each side of a step; on the line of a hinge (3 at least)
 };
 
 // time_s: each segment's time (s, increasing); value: its fitted value (NaN

@@ -69,6 +69,12 @@ struct Forecast {
   double baseline_east_m = 0.0, baseline_north_m = 0.0;
   CurrentEstimate current, baseline_current;
   double dr_speed_ratio = 1.0;  // true over dead-reckoned speed through the water (the model's calibration)
+  // The model's own miss on the glider's recent dives, flown again with the
+  // current each one measured (the waypoint replay's flights): RMS east and
+  // north and their correlation, over `model_miss_dives` dives of the last
+  // day (0: none to check, no term added).
+  double model_miss_east_m = 0.0, model_miss_north_m = 0.0, model_miss_correlation = 0.0;
+  int model_miss_dives = 0;
   int runs = 0;
   double wall_s = 0.0;
   std::string mission;

@@ -17,8 +17,8 @@ struct Alert {
   std::string id;  // "<effect>@<since, UTC>": stable while the alert stays raised
   HealthEffect effect = HealthEffect::kDragChange;
   std::string kind;              // "step" or "line"
-  double size = 0.0;             // step: the change (unit, or a fraction of the level before: relative); line: unit/day
-  bool relative = false;         // the step is sized as a fraction of the level before (the effect's rule)
+  double size = 0.0;             // step: the change; line: per day (unit, or a fraction of the level before: relative)
+  bool relative = false;         // sized as a fraction of the level before (a step: the effect's rule; a hinge's line)
   double low = 0.0, high = 0.0;  // its 95 % interval
   double since_s = 0.0;          // when it began (deployment time)
   std::string message;           // one line a pilot reads

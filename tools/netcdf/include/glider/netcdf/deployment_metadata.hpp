@@ -44,7 +44,7 @@ struct Vocabulary {
 const std::vector<Vocabulary>& metadata_vocabularies();
 
 // Seconds since 1970 of "YYYY-MM-DDTHH:MM:SSZ" (or a TOML date-time read
-// back as such); NaN if malformed.
+// back as such; glider/utc_time.hpp); NaN if malformed or not a calendar date.
 double parse_utc(std::string_view text);
 // "YYYYmmddTHHMMSS" (OG1.0) or "YYYY-MM-DDTHH:MM:SSZ" (ISO 8601 extended, IOOS).
 std::string format_utc_compact(double seconds);

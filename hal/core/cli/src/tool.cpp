@@ -177,7 +177,10 @@ CLI::Option* Tool::add_numbers(const std::string& name, std::vector<double>& val
 
 void Tool::set_leading(const CLI::Option* option, std::vector<std::string> leading) {
   for (NumberOption& number : numbers_) {
-    if (number.option == option) number.leading = std::move(leading);
+    if (number.option == option) {
+      number.leading = std::move(leading);  // each option is recorded once
+      return;
+    }
   }
 }
 

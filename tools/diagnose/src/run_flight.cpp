@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "run_flight.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+#include "glider/diagnose/pump_ramp.hpp"
+#include "glider/model/steady_glide.hpp"
+#include "glider/units.hpp"
+
+namespace glider::diagnose::detail {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double lerp(double a, double b, double f) { return a + (b - a) * f; }
+
+using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
+using Derivative = model::PrescribedPitchDynamics::Derivative;
+
+}  // namespace
+
+FlightConditions::FlightConditions(const model::VehicleParams& nominal, const EffectValues& x, bool use_ctd,
+                                   const Track& t, const VerticalVelocityProfile* profile, double max_step)
+    : track(t),
+      vehicle(apply(nominal, x, t.median_temperature_c)),
+      dynamics(vehicle),
+      max_step_s(max_step),
+      use_ctd_(use_ctd),
+      constant_density_(vehicle.trim_density_kg_m3 + x[static_cast<std::size_t>(Effect::kWaterDensity)]),
+      constant_w_(x[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)]),
+      profile_(profile) {}
+
+double FlightConditions::density(std::size_t k) const {
+  return use_ctd_ && std::isfinite(track.density_kg_m3[k]) ? track.density_kg_m3[k] : constant_density_;
+}
+
+double FlightConditions::temperature(std::size_t k) const {
+  return std::isfinite(track.temperature_c[k]) ? track.temperature_c[k] : vehicle.hull_reference_temperature_c;
+}
+
+double FlightConditions::battery(std::size_t k) const {
+  return std::isfinite(track.battpos_in[k]) ? in_to_m(track.battpos_in[k]) : 0.0;
+}
+
+int rk4_steps(double dt, double max_step_s) { return std::max(1, static_cast<int>(std::ceil(dt / max_step_s - 1e-9))); }
+
+RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end)
+    : c_(c), t_(c.track), first_(first), end_(end) {
+  in0_ = inputs(first, 0.0, cc_to_m3(t_.ballast_cc[first]), 0.0);
+}
+
+model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, double f, double lagged0, double f0) const {
+  const Track& t = t_;
+  const std::size_t j = i + 1 < end_ ? i + 1 : i;
+  model::PrescribedPitchInputs in;
+  const double dt = j > i ? t.time_s[j] - t.time_s[i] : 0.0;
+  // Pitch and its rate on the cubic Hermite through the samples.
+  const double f2 = f * f, f3 = f2 * f;
+  in.theta_rad = (2.0 * f3 - 3.0 * f2 + 1.0) * t.pitch_rad[i] + (f3 - 2.0 * f2 + f) * dt * t.pitch_slope_rad_s[i] +
+                 (-2.0 * f3 + 3.0 * f2) * t.pitch_rad[j] + (f3 - f2) * dt * t.pitch_slope_rad_s[j];
+  in.q_rad_s =
+      dt > 0.0 ? ((6.0 * f2 - 6.0 * f) * (t.pitch_rad[i] - t.pitch_rad[j]) / dt +
+                  (3.0 * f2 - 4.0 * f + 1.0) * t.pitch_slope_rad_s[i] + (3.0 * f2 - 2.0 * f) * t.pitch_slope_rad_s[j])
+               : t.pitch_slope_rad_s[i];
+  in.depth_m = lerp(t.depth_m[i], t.depth_m[j], f);
+  in.battery_pos_m = lerp(c_.battery(i), c_.battery(j), f);
+  in.density_kg_m3 = lerp(c_.density(i), c_.density(j), f);
+  in.temperature_c = lerp(c_.temperature(i), c_.temperature(j), f);
+  // The ballast as the pump moved it (pump_ramp.hpp), lagged exactly.
+  in.pumped_volume_m3 = cc_to_m3(lag_over_ramp(m3_to_cc(lagged0), t.ballast_cc[i], t.ballast_cc[j], t.ballast_ramp[i],
+                                               f0, f, dt, c_.vehicle.ballast.lag_s));
+  return in;
+}
+
+std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<double>& z,
+                           std::vector<double>* u) const {
+  const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
+  Impulse p = dynamics.impulse(v1, v3, in0_);
+  double lagged = in0_.pumped_volume_m3;
+  z.assign(last - first_ + 1, kNaN);
+  if (u != nullptr) u->assign(last - first_ + 1, kNaN);
+  z[0] = 0.0;
+  if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0_).norm();
+  std::size_t flown = first_;
+  for (std::size_t i = first_; i < last; ++i) {
+    const double dt = t_.time_s[i + 1] - t_.time_s[i];
+    const int steps = rk4_steps(dt, c_.max_step_s);
+    const double h = dt / steps;
+    double depth = z[i - first_];
+    for (int s = 0; s < steps; ++s) {
+      const double fa = static_cast<double>(s) / steps;
+      const double fb = (s + 0.5) / steps;
+      const double fc = static_cast<double>(s + 1) / steps;
+      const auto a = inputs(i, fa, lagged, fa);
+      const auto b = inputs(i, fb, lagged, fa);
+      const auto c = inputs(i, fc, lagged, fa);
+      const Derivative d1 = dynamics.derivative(p, a);
+      const Impulse p2 = p + 0.5 * h * d1.p_dot;
+      const Derivative d2 = dynamics.derivative(p2, b);
+      const Impulse p3 = p + 0.5 * h * d2.p_dot;
+      const Derivative d3 = dynamics.derivative(p3, b);
+      const Impulse p4 = p + h * d3.p_dot;
+      const Derivative d4 = dynamics.derivative(p4, c);
+      depth += h / 6.0 * (d1.depth_rate_m_s + 2.0 * d2.depth_rate_m_s + 2.0 * d3.depth_rate_m_s + d4.depth_rate_m_s);
+      p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
+      lagged = c.pumped_volume_m3;
+    }
+    if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
+    z[i + 1 - first_] = depth;
+    if (u != nullptr) (*u)[i + 1 - first_] = dynamics.velocities(p, inputs(i, 1.0, lagged, 1.0)).norm();
+    flown = i + 1;
+  }
+  return flown;
+}
+
+void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {
+  const Track& t = t_;
+  z.assign(rel.size(), kNaN);
+  z[0] = t.depth_m[first_] + rel[0];
+  double water = 0.0;
+  for (std::size_t i = first_; i < flown; ++i) {
+    const double dt = t.time_s[i + 1] - t.time_s[i];
+    const int steps = rk4_steps(dt, c_.max_step_s);
+    const double h = dt / steps;
+    for (int s = 0; s < steps; ++s) {
+      const double wa = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s) / steps));
+      const double wb = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], (s + 0.5) / steps));
+      const double wc = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
+      water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
+    }
+    z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
+  }
+}
+
+void RunFlight::guess_start(double& v1, double& v3) const {
+  const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
+  const auto steady = model::steady_glide_for_pitch(c_.vehicle.hydro, in0_.density_kg_m3, in0_.theta_rad,
+                                                    dynamics.net_buoyancy_kg(in0_));
+  if (!steady.glide) return;
+  v1 = steady.glide->speed_m_s * std::cos(steady.glide->alpha_rad);
+  v3 = steady.glide->speed_m_s * std::sin(steady.glide->alpha_rad);
+  const double steady_rate = dynamics.depth_rate_m_s(dynamics.impulse(v1, v3, in0_), in0_);
+  const double measured_rate = t_.depth_rate_m_s[first_] - c_.water_w(in0_.depth_m);
+  if (std::abs(steady_rate) > 1e-3 && std::isfinite(measured_rate)) {
+    const double scale = std::clamp(measured_rate / steady_rate, 0.0, 1.5);
+    v1 *= scale;
+    v3 *= scale;
+  }
+}
+
+void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::vector<double>& rel) const {
+  guess_start(v1, v3);
+  const Track& t = t_;
+  std::size_t fit_last = first_;
+  while (fit_last + 1 < end_ && t.time_s[fit_last + 1] - t.time_s[first_] <= t.spin_up_s) ++fit_last;
+  if (fit_last < first_ + 3) return;
+  const std::size_t n = fit_last - first_;
+  auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
+    if (fly(a, b, fit_last, rel, nullptr) != fit_last) return false;
+    // Not through the depth lag: the start state is a nuisance fitted on
+    // a part never scored, and without the lag it stays the same for
+    // every lag, so a depth_lag fit reuses the flight (only the depth
+    // over ground is read late again).
+    ground_depth(fit_last, rel, zf);
+    r.resize(static_cast<Eigen::Index>(n));
+    for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first_ + k];
+    return true;
+  };
+  // Chord method: the depth over half a minute is nearly linear in the
+  // start velocities, so the Jacobian at the guess serves every step
+  // (each step then costs one flight of the spin-up, not three).
+  Eigen::VectorXd r, r_trial, r_a, r_b;
+  constexpr double kDelta = 1e-4;  // m/s, finite-difference step
+  if (!(misfit(v1, v3, r) && misfit(v1 + kDelta, v3, r_a) && misfit(v1, v3 + kDelta, r_b))) return;
+  Eigen::MatrixXd jac(r.size(), 2);
+  jac.col(0) = (r_a - r) / kDelta;
+  jac.col(1) = (r_b - r) / kDelta;
+  const Eigen::Matrix2d normal = jac.transpose() * jac + 1e-9 * Eigen::Matrix2d::Identity();
+  const auto solver = normal.ldlt();
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    Eigen::Vector2d step = solver.solve(-jac.transpose() * r);
+    if (!step.allFinite()) break;
+    double taken = 0.0;  // length of the step taken (halved until the misfit does not grow)
+    for (int halving = 0; halving < 4 && taken == 0.0; ++halving) {
+      const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
+      if (misfit(a, b, r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+        v1 = a;
+        v3 = b;
+        r.swap(r_trial);
+        taken = step.norm() + 1e-300;
+      }
+      step *= 0.5;
+    }
+    if (taken < 1e-6) break;  // converged, or no step helps
+  }
+}
+
+}  // namespace glider::diagnose::detail

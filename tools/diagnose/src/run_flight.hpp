@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// One flight of the diagnosis's dynamic model through one run of the track
+// (from the surface or a gap to the next): the inputs between the log's
+// samples, the RK4 integration of the prescribed-pitch dynamics, the depth
+// over ground, and the start state fitted on the run's spin-up.
+// dynamic_flight_model.cpp decides which runs to fly and what to remember.
+#include <cstddef>
+#include <vector>
+
+#include "glider/diagnose/flight_model.hpp"
+#include "glider/diagnose/track.hpp"
+#include "glider/model/prescribed_pitch.hpp"
+
+namespace glider::diagnose::detail {
+
+// What every run of one flight shares: the vehicle with the effect values,
+// its dynamics, the water and the integration step.
+class FlightConditions {
+ public:
+  FlightConditions(const model::VehicleParams& nominal, const EffectValues& x, bool use_ctd, const Track& track,
+                   const VerticalVelocityProfile* profile, double max_step_s);
+  FlightConditions(const FlightConditions&) = delete;  // `dynamics` was made from `vehicle`
+  FlightConditions& operator=(const FlightConditions&) = delete;
+
+  // The water's own vertical velocity at a depth (m/s, + down).
+  double water_w(double depth_m) const { return profile_ != nullptr ? profile_->at(depth_m) : constant_w_; }
+  // Sample k's density (the CTD's where asked for and logged), temperature and battery position.
+  double density(std::size_t k) const;
+  double temperature(std::size_t k) const;
+  double battery(std::size_t k) const;
+
+  const Track& track;
+  const model::VehicleParams vehicle;
+  const model::PrescribedPitchDynamics dynamics;
+  const double max_step_s;
+
+ private:
+  const bool use_ctd_;
+  const double constant_density_, constant_w_;
+  const VerticalVelocityProfile* profile_;
+};
+
+// Sub-steps of RK4 between samples i and i + 1: equal, at most max_step_s.
+int rk4_steps(double dt, double max_step_s);
+
+class RunFlight {
+ public:
+  // The run of samples [first, end).
+  RunFlight(const FlightConditions& c, std::size_t first, std::size_t end);
+
+  std::size_t first() const { return first_; }
+  std::size_t end() const { return end_; }
+
+  // Inputs at fraction f of the interval [i, i + 1], with the displaced
+  // volume lagged from `lagged0` at the interval's start fraction f0.
+  model::PrescribedPitchInputs inputs(std::size_t i, double f, double lagged0, double f0) const;
+
+  // Flies the run from its first sample with body velocities (v1, v3) up
+  // to sample `last`: the model's depth change through the water at each
+  // sample into z (0 at the first), its speed into u when asked. Returns
+  // the last sample reached with a finite state. The water's own vertical
+  // velocity moves the glider without changing its flight through the
+  // water: ground_depth adds it.
+  std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u) const;
+
+  // The depth over ground at samples first..flown: the measured first
+  // depth, the flight's relative depth `rel` and the water's vertical
+  // velocity integrated with the same RK4 weights at the same stages.
+  void ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const;
+
+  // The start state (body velocities) that flies the spin-up closest to
+  // the measured depth, from the steady glide at the first pitch scaled to
+  // the measured depth rate. `z` and `rel` are work buffers.
+  void fit_start(double& v1, double& v3, std::vector<double>& z, std::vector<double>& rel) const;
+
+ private:
+  void guess_start(double& v1, double& v3) const;
+
+  const FlightConditions& c_;
+  const Track& t_;
+  std::size_t first_, end_;
+  model::PrescribedPitchInputs in0_;
+};
+
+}  // namespace glider::diagnose::detail
