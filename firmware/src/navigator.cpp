@@ -102,12 +102,17 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
   out.heading_target_rad = kNaN;
   const double dt_s = launched_ ? hal::to_seconds(in.now_us - last_us_) : 0.0;
   last_us_ = in.now_us;
+  if (!launched_) {
+    last_surfacing_us_ = in.now_us;  // launch: the first surfacing, and the start of comms
+    last_comms_us_ = in.now_us;
+  }
   launched_ = true;
 
   // A yo-only mission dives at launch by itself (YoMission start_at_launch).
   if (state_ == State::kSurface && (in.phase == Phase::kDive || in.phase == Phase::kClimb)) {
     state_ = State::kUnderWater;
     dive_us_ = in.now_us;
+    surfaced_by_start_when_ = 0;
     dr_.reset(position_);
     ++segments_;
   }
@@ -116,6 +121,8 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
     if (in.segment_complete || in.phase == Phase::kSurface) {
       state_ = State::kSurface;
       surfaced_us_ = in.now_us;
+      last_surfacing_us_ = in.now_us;
+      if (!comms_reported_) last_comms_us_ = in.now_us;
       fix_this_surfacing_ = false;
       dr_error_pending_ = have_origin_;
     } else {
@@ -130,8 +137,14 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
       } else if (std::isfinite(plan_.heading_rad)) {
         out.heading_target_rad = plan_.heading_rad;
       }
-      if (plan_.surface_interval_s > 0.0 && hal::to_seconds(in.now_us - dive_us_) >= plan_.surface_interval_s) {
+      if (plan_.surface_interval_s > 0.0 &&
+          hal::to_seconds(in.now_us - last_surfacing_us_) >= plan_.surface_interval_s) {
         out.surface_requested = true;
+        surfaced_by_start_when_ = 9;
+      } else if (plan_.no_comms_interval_s > 0.0 &&
+                 hal::to_seconds(in.now_us - last_comms_us_) >= plan_.no_comms_interval_s) {
+        out.surface_requested = true;
+        surfaced_by_start_when_ = 12;
       }
       return out;
     }

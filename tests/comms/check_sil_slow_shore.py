@@ -13,60 +13,33 @@ would hang up after its 20 s keystroke wait before the first of them. In
 lockstep, every answer reaches the glider in the same call, within the
 keystroke wait.
 Usage: check_sil_slow_shore.py GLIDER_SIL SOURCE_DIR. Exit 0 = pass."""
+import os
 import re
-import socket
 import subprocess
 import sys
-import threading
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from shore_run import TcpShore  # noqa: E402
 
 glider_sil, source = sys.argv[1], sys.argv[2]
 THINK_S = 1.5
-server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-server.bind(("127.0.0.1", 0))
-server.listen(4)
-server.settimeout(0.2)
-stop = threading.Event()
-port = server.getsockname()[1]
-transcript = bytearray()
-calls = []
 PROMPT = re.compile(rb"GliderDos [INA] -?\d+ >$")
+SCRIPT = [(0.0, b"!put u_keystroke_wait_time 20\r"), (THINK_S, b"whoru\r"),
+          (THINK_S, b"!get u_keystroke_wait_time\r"), (THINK_S, b"\x12")]
 
 
-def shore():
-    script = [(0.0, b"!put u_keystroke_wait_time 20\r"), (THINK_S, b"whoru\r"),
-              (THINK_S, b"!get u_keystroke_wait_time\r"), (THINK_S, b"\x12")]
-    try:
-        while not stop.is_set():
-            try:
-                conn, _ = server.accept()
-            except socket.timeout:
-                continue
-            calls.append(time.time())
-            conn.settimeout(0.05)
-            step = 0
-            with conn:
-                while True:
-                    try:
-                        data = conn.recv(4096)
-                    except socket.timeout:
-                        if stop.is_set():
-                            break
-                        continue
-                    if not data:
-                        break
-                    transcript.extend(data)
-                    # One line per prompt, after the shore's thinking time.
-                    if step < len(script) and PROMPT.search(bytes(transcript).rstrip(b" ")):
-                        time.sleep(script[step][0])
-                        conn.sendall(script[step][1])
-                        step += 1
-    except (socket.timeout, OSError):
-        pass
+def answer(conn, transcript, state):
+    """One line per prompt, after the shore's thinking time."""
+    step = state.get("step", 0)
+    if step < len(SCRIPT) and PROMPT.search(bytes(transcript).rstrip(b" ")):
+        time.sleep(SCRIPT[step][0])
+        conn.sendall(SCRIPT[step][1])
+        state["step"] = step + 1
 
 
-thread = threading.Thread(target=shore, daemon=True)
-thread.start()
+shore = TcpShore(answer, poll_s=0.05)
+port = shore.port
 started = time.monotonic()
 run = subprocess.run(
     [glider_sil, "--mission", f"{source}/boards/missions/box_current/missions/box.mi",
@@ -74,9 +47,8 @@ run = subprocess.run(
      "--vehicle-name", "unit_345", "--shore", f"127.0.0.1:{port}"],
     capture_output=True, text=True, timeout=50)
 wall_s = time.monotonic() - started
-stop.set()
-thread.join(5)
-server.close()
+shore.stop()
+calls, transcript = shore.calls, shore.transcript
 text = transcript.decode("latin-1")
 print(text[text.find("GliderDos"):][:1500])
 print(run.stdout)

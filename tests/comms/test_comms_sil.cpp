@@ -167,6 +167,94 @@ TEST(CommsSil, LinkDownForThreeSurfacingsKeepsTheMissionAndItsNoCommsLimit) {
   CHECK_TEXT(longest_without_attempt_s <= 1200.0 + 200.0, std::to_string(longest_without_attempt_s).c_str());
 }
 
+namespace {
+
+// Arrivals at the surface (the comms task leaves idle) and call starts, in simulated seconds.
+struct SurfacingTimes {
+  std::vector<double> arrivals, connects, dives;
+};
+
+SurfacingTimes fly_and_time(const model::VehicleParams& vehicle, const fw::FlightSoftwareConfig& config,
+                            sil::ScenarioOptions& options) {
+  SurfacingTimes times;
+  bool was_idle = true;
+  std::uint32_t calls = 0;
+  options.comms->after_cycle = [&](double t, const fw::comms::CommsTask& c) {
+    const bool idle = c.state() == fw::comms::CommsState::kIdle;
+    if (was_idle && !idle) times.arrivals.push_back(t);
+    if (!was_idle && idle) times.dives.push_back(t);
+    if (c.stats().calls_connected > calls) times.connects.push_back(t);
+    calls = c.stats().calls_connected;
+    was_idle = idle;
+  };
+  const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
+  STRCMP_EQUAL("", r.error.c_str());
+  return times;
+}
+
+}  // namespace
+
+// Slocum's surface behaviour, start_when 9 (every when_secs): the clock runs
+// from the previous surfacing, the time at the surface included (a real
+// Slocum with when_secs 10800 and ~18 min at the surface dived 2.7 h: the
+// forecast on comet-2019 was 18 min off while this firmware counted from the
+// dive). Here: 1200 s, about 400 s at the surface (300 s keystroke wait).
+TEST(CommsSil, EveryWhenSecsCountsFromThePreviousSurfacing) {
+  options.max_sim_time_s = 4000.0;
+  sil::FakeShore shore;
+  shore.script = {{15.0, "whoru\r"}};
+  options.comms = comms(&shore);
+  const SurfacingTimes t = fly_and_time(vehicle, mission(), options);
+  CHECK(t.arrivals.size() >= 3);
+  for (std::size_t i = 1; i < t.arrivals.size(); ++i) {
+    const double period = t.arrivals[i] - t.arrivals[i - 1];
+    const double at_surface = t.dives[i - 1] - t.arrivals[i - 1];
+    std::printf("\nsurfacing %zu: %.0f s after the previous one, which stayed up %.0f s", i, period, at_surface);
+    CHECK_TEXT(at_surface >= 300.0, "the test's premise: the time at the surface is long");
+    // when_secs from the previous arrival, plus the climb from 30 m (<= 200 s);
+    // counted from the dive it would be at least when_secs + the time up.
+    CHECK_TEXT(period >= 1200.0 && period <= 1200.0 + 200.0, std::to_string(period).c_str());
+  }
+}
+
+// start_when 12 (no comms for when_secs): the clock runs from the last call
+// connected. With the link up that is each surfacing's call; with the link
+// down after the first call, the vehicle keeps coming up (it has had no
+// comms for when_secs) rather than diving on for another when_secs.
+TEST(CommsSil, NoCommsForWhenSecsCountsFromTheLastCall) {
+  options.max_sim_time_s = 4000.0;
+  fw::FlightSoftwareConfig config = mission();
+  config.plan.surface_interval_s = 0.0;
+  config.plan.no_comms_interval_s = 1200.0;
+  sil::FakeShore shore;
+  shore.script = {{15.0, "whoru\r"}};
+  options.comms = comms(&shore);
+  const SurfacingTimes up = fly_and_time(vehicle, config, options);
+  CHECK(up.arrivals.size() >= 3 && up.connects.size() >= up.arrivals.size() - 1);
+  for (std::size_t i = 1; i < up.arrivals.size() && i - 1 < up.connects.size(); ++i) {
+    const double since_call = up.arrivals[i] - up.connects[i - 1];
+    std::printf("\nlink up: surfacing %zu %.0f s after the previous call connected", i, since_call);
+    CHECK_TEXT(since_call >= 1200.0 && since_call <= 1200.0 + 200.0, std::to_string(since_call).c_str());
+  }
+
+  sil::ScenarioOptions down_options;
+  down_options.max_sim_time_s = 4000.0;
+  sil::FakeShore down_shore;
+  down_options.comms = comms(&down_shore);
+  down_options.comms->link.outage_from_s = 900.0;  // the launch call connects, none after it
+  down_options.comms->link.outage_to_s = 1e9;
+  const SurfacingTimes down = fly_and_time(vehicle, config, down_options);
+  LONGS_EQUAL(1, down.connects.size());
+  CHECK(down.arrivals.size() >= 3);
+  CHECK_TEXT(down.arrivals[1] - down.connects[0] >= 1200.0 && down.arrivals[1] - down.connects[0] <= 1400.0,
+             std::to_string(down.arrivals[1] - down.connects[0]).c_str());
+  for (std::size_t i = 2; i < down.arrivals.size(); ++i) {
+    const double under = down.arrivals[i] - down.dives[i - 1];
+    std::printf("\nlink down: surfacing %zu after %.0f s under water", i, under);
+    CHECK_TEXT(under <= 200.0, std::to_string(under).c_str());  // back up at once: still no comms
+  }
+}
+
 TEST(CommsSil, PrimaryDeadThenSecondaryNumber) {
   options.max_sim_time_s = 900.0;
   sil::FakeShore shore;

@@ -33,6 +33,9 @@ import time
 
 import hil_goto_mission
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../comms"))
+import shore_run  # noqa: E402
+
 build, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 args = sys.argv[3:]
 keep = args[args.index("--keep") + 1] if "--keep" in args else None
@@ -40,14 +43,9 @@ CASE = "goto" if "goto" in args else "transfer"
 SCALE = 100.0 if CASE == "goto" else 20.0
 NEW_WPT = hil_goto_mission.NEW_WPT
 NAME = "unit_345"
-failures = []
+check = shore_run.Checks()
+failures = check.failures
 procs = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 firmware = os.path.join(build, "firmware/linux/glider-firmware")
@@ -62,14 +60,9 @@ work = tempfile.mkdtemp(prefix="hil_e2e_")
 try:
     mission, mi, goto, broken = hil_goto_mission.prepare(source, work, CASE)
     root = os.path.join(work, "shore")
-    port_file = os.path.join(work, "port")
-    shore = subprocess.Popen([shore_bin, "serve", "--root", root, "--port", "0", "--port-file", port_file, "--resume",
-                              "--linger", "10", "--fetch", "*.sbd *.dbd" if CASE == "transfer" else "*.sbd"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    shore, port = shore_run.start_shore(shore_bin, root, work, ("--resume", "--linger", "10", "--fetch",
+                                                                "*.sbd *.dbd" if CASE == "transfer" else "*.sbd"))
     procs.append(shore)
-    deadline = time.time() + 10
-    while not os.path.exists(port_file) and time.time() < deadline:
-        time.sleep(0.02)
-    port = open(port_file).read().strip()
     plant_dir = os.path.join(work, "plant")
     plant = subprocess.Popen([plant_bin, "--dir", plant_dir, "--vehicle",
                               os.path.join(source, "boards/vehicles/slocum_we01.toml"), "--seed", "1",

@@ -25,6 +25,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../comms"))
+import shore_run  # noqa: E402
+
 glider_sil, glider_shore, source = sys.argv[1:4]
 # SIL runs lockstep with the shore's answers during a call; between calls it
 # is paced at this many simulated seconds per wall second, so that the
@@ -34,13 +37,8 @@ TIME_SCALE = 1000
 NAME = "unit_345"
 # The new waypoint: 3.3 km south-west of the launch point, away from the box (north-east of it).
 NEW_WPT = (5417.9000, 722.0000)  # DDMM.MMMM lat, lon
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+check = shore_run.Checks()
+failures = check.failures
 
 
 def ddmm_to_deg(v):
@@ -87,16 +85,8 @@ try:
     open(broken, "w").write(open(goto).read().split("<end:b_arg>")[0])
 
     root = os.path.join(work, "shore")
-    port_file = os.path.join(work, "port")
     slocum = os.path.join(work, "slocum")
-    shore = subprocess.Popen(
-        [glider_shore, "serve", "--root", root, "--port", "0", "--port-file", port_file, "--resume",
-         "--linger", "20", "--identify-timeout", "20", "--prompt-timeout", "20", "--transfer-idle-timeout", "20"],
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    deadline = time.time() + 10
-    while not os.path.exists(port_file) and time.time() < deadline:
-        time.sleep(0.02)
-    port = open(port_file).read().strip()
+    shore, port = shore_run.start_shore(glider_shore, root, work)
     sil = subprocess.Popen(
         [glider_sil, os.path.join(mission, "missions/box.mi"),
          "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),

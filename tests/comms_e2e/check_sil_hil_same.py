@@ -22,7 +22,6 @@ shores received is compared:
   times are printed only (why: at the tolerances).
 Usage: check_sil_hil_same.py BUILD_DIR SOURCE_DIR. Exit 0 pass, 1 fail, 77 skip."""
 import glob
-import json
 import math
 import os
 import re
@@ -33,6 +32,9 @@ import tempfile
 import time
 
 import hil_goto_mission
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../comms"))
+import shore_run  # noqa: E402
 
 build, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 here = os.path.dirname(os.path.abspath(__file__))
@@ -69,25 +71,9 @@ PER_DIVE_TOL_M = 12 * 1.0 * 0.5
 # event) lands before the next call as in HIL: 500-700 s between surfacings
 # = 2-2.8 s of wall time.
 SIL_TIME_SCALE = 250
-failures = []
+check = shore_run.Checks()
+failures = check.failures
 procs = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-
-
-def events_of(root):
-    logs = os.path.join(root, NAME, "logs")
-    return [json.load(open(p)) for p in sorted(glob.glob(os.path.join(logs, "*.surfacing.json")))], \
-        [open(j).read() for j in sorted(glob.glob(os.path.join(logs, "*.journal")))]
-
-
-def segment_of(name):
-    m = re.match(r"^(.+)-(\d{4})-(\d{3})-(\d+)-(\d+)\.sbd$", name)
-    return (int(m.group(4)), int(m.group(5))) if m else None
 
 
 def header_of(path):
@@ -114,7 +100,7 @@ def summary(events, journals):
         calls.append({
             "t": e["glider_time"]["mission_time_s"] - mt0,
             "fix": (e["gps"]["lat_deg"], e["gps"]["lon_deg"]),
-            "sbd": sorted(segment_of(f["name"]) for f in e["files_received"] if f["name"].endswith(".sbd")),
+            "sbd": sorted(shore_run.segment_of(f["name"]) for f in e["files_received"] if f["name"].endswith(".sbd")),
             "accepted": "goto_l10.ma accepted" in j,
             "refused": "goto_l10.ma refused (the old plan is flown)" in j,
         })
@@ -142,17 +128,10 @@ try:
     os.makedirs(sil_work)
     mission, mi, goto, broken = hil_goto_mission.prepare(source, sil_work, "goto")
     root = os.path.join(sil_work, "shore")
-    port_file = os.path.join(sil_work, "port")
     slocum = os.path.join(sil_work, "slocum")
     # The HIL shore's options (check_hil_e2e.py, goto case).
-    shore = subprocess.Popen([shore_bin, "serve", "--root", root, "--port", "0", "--port-file", port_file, "--resume",
-                              "--linger", "10", "--fetch", "*.sbd"], stdout=subprocess.PIPE,
-                             stderr=subprocess.STDOUT, text=True)
+    shore, port = shore_run.start_shore(shore_bin, root, sil_work, ("--resume", "--linger", "10", "--fetch", "*.sbd"))
     procs.append(shore)
-    deadline = time.time() + 10
-    while not os.path.exists(port_file) and time.time() < deadline:
-        time.sleep(0.02)
-    port = open(port_file).read().strip()
     # glider-plant's defaults in the HIL run: seed 1, heading 90, depth rating 100 m, the default launch point.
     sil = subprocess.Popen([glider_sil, mi, "--vehicle", os.path.join(source, "boards/vehicles/slocum_we01.toml"),
                             "--seed", "1", "--heading-deg", "90", "--max-working-depth-m", "100",
@@ -181,8 +160,8 @@ try:
     if sil.returncode != 0:
         print(sil_out[-2000:])
 
-    h_events, h_journals = events_of(os.path.join(hil_keep, "shore"))
-    s_events, s_journals = events_of(root)
+    h_events, h_journals = shore_run.events_of(os.path.join(hil_keep, "shore"), NAME)
+    s_events, s_journals = shore_run.events_of(root, NAME)
     check(len(h_events) >= 5 and len(s_events) >= 1, "calls: HIL %d, SIL %d" % (len(h_events), len(s_events)))
     if failures:
         sys.exit(1)

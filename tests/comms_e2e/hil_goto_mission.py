@@ -2,7 +2,7 @@
 """The HIL mission of the end-to-end tests (tests/hil/waypoint), shared by
 check_hil_e2e.py (HIL) and check_sil_hil_same.py (the same mission in SIL):
 the keystroke wait made 100 s so the shore has time to work; case "goto":
-a surfacing every 500 s, the pilot's goto_l10.ma (a waypoint 620 m north of
+a surfacing every 3 yos, the pilot's goto_l10.ma (a waypoint 620 m north of
 the launch point) and a truncated copy of it to queue."""
 import os
 import shutil
@@ -21,10 +21,14 @@ def prepare(source, work, case):
     open(mi, "w").write(text.replace(old, "b_arg: end_action(enum)          1   # wait for the pilot, then resume\n"
                                           "    b_arg: keystroke_wait_time(s)  100"))
     if case == "goto":
-        text = open(mi).read()
-        old = "b_arg: when_secs(sec)         1800"
+        # A surfacing every 3 yos (about 500 s), not every when_secs: when_secs counts from the previous
+        # surfacing (docs/comms.md), so the time a call holds the vehicle up would shorten the next dive, and a
+        # call's simulated length differs between HIL (wall time x 100) and SIL (lockstep with the shore).
+        yo = os.path.join(mission, "mafiles/yo10.ma")
+        text = open(yo).read()
+        old = "b_arg: num_half_cycles_to_do(nodim) -1   # until the waypoint"
         assert old in text
-        open(mi, "w").write(text.replace(old, "b_arg: when_secs(sec)          500"))
+        open(yo, "w").write(text.replace(old, "b_arg: num_half_cycles_to_do(nodim)  6   # 3 yos, then surface"))
     goto = os.path.join(work, "goto_l10.ma")
     ga = open(os.path.join(mission, "mafiles/goto_l10.ma")).read()
     assert "724.7266 5418.9660" in ga

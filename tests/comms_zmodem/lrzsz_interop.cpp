@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "glider/firmware/comms/file_access_posix.hpp"
+#include "glider/firmware/comms/zmodem_parser.hpp"
 #include "glider/firmware/comms/zmodem_receiver.hpp"
 #include "glider/firmware/comms/zmodem_sender.hpp"
 
@@ -44,6 +45,47 @@ glider::hal::Micros now_us() {
   return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
+
+// ZMODEM_TRACE=FILE: every header and subpacket end each side decodes from what
+// reaches it (after the relay's corruption), with its time: where a stall
+// starts is then readable (which header went unanswered, which was garbled).
+class Trace {
+ public:
+  Trace() {
+    const char* path = std::getenv("ZMODEM_TRACE");
+    if (path != nullptr) out_ = std::fopen(path, "w");
+  }
+  ~Trace() {
+    if (out_ != nullptr) std::fclose(out_);
+  }
+  void bytes(const char* to, Parser& parser, std::span<const std::uint8_t> data) {
+    if (out_ == nullptr) return;
+    for (const std::uint8_t b : data) {
+      const Parser::Event e = parser.feed(b);
+      if (e == Parser::Event::none) continue;
+      const double t = static_cast<double>(now_us() - start_) / 1e6;
+      if (e == Parser::Event::header) {
+        std::fprintf(out_, "%9.3f to %s header %d pos %u\n", t, to, static_cast<int>(parser.header().type),
+                     parser.header().position());
+      } else if (e == Parser::Event::subpacket) {
+        std::fprintf(out_, "%9.3f to %s subpacket %zu end %c\n", t, to, parser.data().size(), parser.end());
+      } else {
+        std::fprintf(out_, "%9.3f to %s %s\n", t, to,
+                     e == Parser::Event::bad_header      ? "BAD HEADER"
+                     : e == Parser::Event::bad_subpacket ? "BAD SUBPACKET"
+                                                         : "CANCEL");
+      }
+    }
+  }
+  void note(const char* what) {
+    if (out_ != nullptr) std::fprintf(out_, "%9.3f %s\n", static_cast<double>(now_us() - start_) / 1e6, what);
+  }
+  Parser to_engine, to_peer;
+
+ private:
+  std::FILE* out_ = nullptr;
+  glider::hal::Micros start_ = now_us();
+};
 
 // The pty master as a ByteStream, with the relay's faults: each byte in
 // either direction is corrupted with probability p (xor with 1..255), and
@@ -59,6 +101,7 @@ class RelayStream : public ByteStream {
     if (carried_ >= cut_after_) return 0;
     carried_ += count;
     for (std::size_t i = 0; i < count; ++i) out[i] = noisy(out[i]);
+    trace_.bytes("engine", trace_.to_engine, out.first(count));
     return count;
   }
   std::size_t write(std::span<const std::uint8_t> data) override {
@@ -70,6 +113,7 @@ class RelayStream : public ByteStream {
     for (auto& b : buf) b = noisy(b);
     const ssize_t n = ::write(fd_, buf.data(), buf.size());
     if (n <= 0) return 0;
+    trace_.bytes("peer", trace_.to_peer, std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)));
     carried_ += static_cast<std::size_t>(n);
     return static_cast<std::size_t>(n);
   }
@@ -90,6 +134,7 @@ class RelayStream : public ByteStream {
   std::uint64_t carried_ = 0;
   std::uint64_t corrupted_ = 0;
   std::vector<std::uint8_t> scratch_;
+  Trace trace_;
 };
 
 // The glider's file store, timed: the longest single call (close() fsyncs)

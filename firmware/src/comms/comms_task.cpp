@@ -241,7 +241,6 @@ void CommsTask::print_dialog_now(hal::Micros now_us) {
   for (std::size_t i = 0; i < sensor_count_; ++i) sensors[i].age_s = hal::to_seconds(now_us - sensor_time_us_[i]);
   DialogSnapshot s;
   s.vehicle_name = config_.vehicle_name;
-  const MissionPlan& plan = flight_.plan();
   if (flight_.phase() == Phase::kAbort) {
     s.because = "Abort";
     s.behavior = "abend";
@@ -249,10 +248,12 @@ void CommsTask::print_dialog_now(hal::Micros now_us) {
   } else if (flight_.complete()) {
     s.because = "Mission done";
     s.start_when = 1.0;
-  } else if (plan.surface_interval_s > 0.0 &&
-             hal::to_seconds(surfaced_us_ - flight_.navigator().dive_us()) >= plan.surface_interval_s - 1.0) {
+  } else if (flight_.navigator().surfaced_by_start_when() == 9) {
     s.because = "Every when secs";
     s.start_when = 9.0;
+  } else if (flight_.navigator().surfaced_by_start_when() == 12) {
+    s.because = "No comms for when secs";  // this project's wording: no public transcript found
+    s.start_when = 12.0;
   } else {
     s.because = "Stack idle";
     s.start_when = 1.0;
@@ -373,10 +374,15 @@ void CommsTask::step_modem(hal::Micros now_us) {
     ++stats_.calls_connected;
     stats_.last_call_us = now_us;
     connected_this_surfacing_ = true;
+    flight_.note_comms(now_us);
     enter(CommsState::kDialog, now_us);
     last_key_us_ = now_us;
+    shore_typed_ = false;
     print_dialog_now(now_us);  // every call shows the dialog at least once
-    if (console_.feed(at_.data_after_connect())) last_key_us_ = now_us;
+    if (console_.feed(at_.data_after_connect())) {
+      last_key_us_ = now_us;
+      shore_typed_ = true;
+    }
     stats_.bytes_received += at_.data_after_connect().size();
     at_.clear_data_after_connect();
     return;
@@ -436,12 +442,19 @@ void CommsTask::step_dialog(hal::Micros now_us) {
     carrier_gone_ = true;
     return;
   }
-  if (n > 0 && console_.feed(std::span<const std::uint8_t>(input.data(), n))) last_key_us_ = now_us;
+  if (n > 0 && console_.feed(std::span<const std::uint8_t>(input.data(), n))) {
+    last_key_us_ = now_us;
+    shore_typed_ = true;
+  }
   const bool running = mission_running();
   // The pilot's Control-C left the vehicle at GliderDOS: it stays up and keeps
   // calling. A mission over by itself (or an abort) makes this one call.
   const bool at_gliderdos = flight_.ended_by_operator();
-  const bool idle_s_over = hal::to_seconds(now_us - last_key_us_) >= config_.keystroke_wait_s;
+  // The keystroke wait counts from the last key; a shore in the middle of its
+  // work (it has typed this call) gets at least the reply window for its next line.
+  const double wait_s =
+      shore_typed_ ? std::max(config_.keystroke_wait_s, config_.reply_window_s) : config_.keystroke_wait_s;
+  const bool idle_s_over = hal::to_seconds(now_us - last_key_us_) >= wait_s;
   // Nothing is hung up on before the last text has left the modem.
   const bool sent = out_.empty() && now_us >= drained_at_us_;
   if (callback_minutes_ > 0.0 || reset_requested_) {

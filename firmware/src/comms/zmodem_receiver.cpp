@@ -38,23 +38,32 @@ Header Receiver::rinit() const {
 void Receiver::send(const Header& header) {
   if (encoder_.room() < Encoder::kHeaderCost) return;
   encoder_.hex_header(header);
-  if ((header.type == Frame::rpos || header.type == Frame::rinit) && asked_us_ < 0) asked_us_ = now_;
-  if (header.type == Frame::rpos && resync_at_us_ < 0) {
+  const bool question = header.type == Frame::rpos || header.type == Frame::rinit || header.type == Frame::nak;
+  if (question && asked_us_ == kNotAsked) asked_us_ = now_;
+  // A ZRPOS, or a ZNAK for the file header, is repeated if it goes unobeyed
+  // (a header whose ZPAD/ZDLE lead-in is garbled vanishes: the peer waits).
+  const bool repeated = header.type == Frame::rpos || (header.type == Frame::nak && between_files());
+  if (repeated && resync_at_us_ < 0) {
     resync_interval_us_ = std::min(options_.timeout_us, std::max(kMinResyncUs, 4 * round_trip_us_));
     resync_at_us_ = now_ + resync_interval_us_;
   }
 }
 
 void Receiver::resync(hal::Micros now) {
-  // Our ZRPOS went unobeyed for 4 round trips: lost or garbled. Again, XON
-  // first (a garbled byte may have been an XOFF to the peer's tty).
+  // Our ZRPOS (or, waiting for a whole ZFILE, our ZNAK) went unobeyed for 4
+  // round trips: lost or garbled. Again, XON first (a garbled byte may have
+  // been an XOFF to the peer's tty). Without this a lost ZNAK cost the whole
+  // 10 s timeout: sz waits for an answer to its ZFILE as long (lrzsz at 1 %
+  // corruption stalled so in its file-header stage, ZNAK after ZNAK).
   error();
+  asked_us_ = kRepeated;
   static constexpr std::array<std::uint8_t, 1> kXonByte = {kXon};
   encoder_.raw(kXonByte);
   resync_interval_us_ = std::min(options_.timeout_us, 2 * resync_interval_us_);
   resync_at_us_ = now + resync_interval_us_;
   if (encoder_.room() >= Encoder::kHeaderCost) {
-    encoder_.hex_header(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+    encoder_.hex_header(between_files() ? Header::flags(Frame::nak, 0)
+                                        : Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
   }
 }
 
@@ -63,11 +72,13 @@ void Receiver::start(hal::Micros now) {
   failure_ = Failure::none;
   state_ = State::wait_file;
   now_ = now;
-  asked_us_ = -1;
+  asked_us_ = kNotAsked;
   round_trip_us_ = 0;
   resync_at_us_ = -1;
   result_count_ = 0;
   parser_.reset();
+  heard_us_ = now;
+  sender_seen_ = false;
   progress(now);
   send(rinit());
   arm(now);
@@ -76,9 +87,25 @@ void Receiver::start(hal::Micros now) {
 Status Receiver::step(hal::Micros now, std::size_t budget) {
   if (status_ != Status::running) return status_;
   now_ = now;
-  read_input(budget, [&](Parser::Event event, std::uint8_t byte) { on_event(event, byte, now); });
+  read_input(budget, [&](Parser::Event event, std::uint8_t byte) {
+    heard_us_ = now;
+    on_event(event, byte, now);
+  });
   if (status_ == Status::running && expired(now)) on_timeout(now);
-  if (status_ == Status::running && (state_ != State::receiving || accepting_)) resync_at_us_ = -1;
+  const bool mid_frame = (state_ == State::receiving && accepting_) || (between_files() && resync_at_us_ < 0);
+  if (status_ == Status::running && mid_frame && now - heard_us_ >= std::max(kMinResyncUs, 4 * round_trip_us_)) {
+    // Silence in the middle of a frame: the end of a subpacket (data, or the
+    // ZFILE's) was garbled and the sender waits for the answer it asked for
+    // (lrzsz's sz: 10 s). Ask again at once, as for an unobeyed ZRPOS.
+    // Between files a ZNAK: sz resends its ZFILE, or, still waiting for our
+    // ZRINIT after its ZEOF, answers ZNAK, which we answer with ZRINIT.
+    error();
+    accepting_ = false;
+    parser_.reset();
+    send(between_files() ? Header::flags(Frame::nak, 0) : Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
+  }
+  const bool waiting = (state_ == State::receiving && !accepting_) || between_files();
+  if (status_ == Status::running && !waiting) resync_at_us_ = -1;
   if (status_ == Status::running && resync_at_us_ >= 0 && now >= resync_at_us_) resync(now);
   if (status_ == Status::running && state_ != State::finishing) stalled(now);
   flush(budget);
@@ -140,14 +167,18 @@ void Receiver::on_event(Parser::Event event, std::uint8_t byte, hal::Micros now)
 
 void Receiver::on_header(const Header& header, hal::Micros now) {
   data_for_ = header.type;
+  // Smoothed (TCP's 1/8 gain), not the largest seen: one slow answer (a busy
+  // peer) made every later repeat wait 4 x that for the rest of the session.
   if (asked_us_ >= 0) {
-    round_trip_us_ = std::max(round_trip_us_, now - asked_us_);
-    asked_us_ = -1;
+    const hal::Micros sample = now - asked_us_;
+    round_trip_us_ = round_trip_us_ == 0 ? sample : (7 * round_trip_us_ + sample) / 8;
   }
+  asked_us_ = kNotAsked;
   switch (header.type) {
     case Frame::rqinit:
       close_partial();
       state_ = State::wait_file;
+      sender_seen_ = true;
       send(rinit());
       arm(now);
       return;
@@ -156,8 +187,19 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
       if (header.f0() & kTEscCtl) encoder_.set_escape_control(true);
       return;
     case Frame::file:
+      // A ZFILE while a file is open may be a late copy of that file's (we
+      // answered an earlier copy with ZRPOS): its subpacket decides
+      // (on_subpacket). Dropping the file here sent lrzsz's sz, already
+      // streaming it, into a ZNAK ping-pong with us.
+      if (state_ == State::receiving) {
+        accepting_ = false;
+        arm(now);
+        return;
+      }
       close_partial();
       state_ = State::file_info;
+      // Its subpacket follows: a repeat pending from before waits a full interval again.
+      if (resync_at_us_ >= 0) resync_at_us_ = now + resync_interval_us_;
       arm(now);
       return;
     case Frame::data:
@@ -227,6 +269,16 @@ void Receiver::on_subpacket(hal::Micros now) {
     send(Header::at(Frame::ack, 1));
     return;
   }
+  if (data_for_ == Frame::file && state_ == State::receiving) {
+    FileInfo again;
+    if (parse_file_info(data, again) && again.name_view() == info_.name_view() && again.length == info_.length &&
+        again.mtime == info_.mtime) {
+      send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));  // the same file: go on from here
+      return;
+    }
+    close_partial();  // another file: the one open stays a partial
+    state_ = State::file_info;
+  }
   if (data_for_ == Frame::file && state_ == State::file_info) {
     open_file(now);
     return;
@@ -242,6 +294,16 @@ void Receiver::on_subpacket(hal::Micros now) {
   arm(now);
   if (parser_.end() == kCrcQ || parser_.end() == kCrcW)
     send(Header::at(Frame::ack, static_cast<std::uint32_t>(offset_)));
+  if (parser_.end() == kCrcW) {
+    // The frame ends here and the sender waits for our ZACK before its next
+    // ZDATA. A garbled ZACK left lrzsz's sz waiting 10 s; now, as for an
+    // unobeyed ZRPOS, a ZRPOS at offset_ follows unless that ZDATA comes.
+    accepting_ = false;
+    if (resync_at_us_ < 0) {
+      resync_interval_us_ = std::min(options_.timeout_us, std::max(kMinResyncUs, 4 * round_trip_us_));
+      resync_at_us_ = now + resync_interval_us_;
+    }
+  }
 }
 
 void Receiver::open_file(hal::Micros now) {
@@ -282,6 +344,7 @@ void Receiver::finish_file(hal::Micros now) {
   record(published);
   progress(now);
   state_ = State::wait_file;
+  sender_seen_ = true;
   send(rinit());
 }
 
@@ -298,6 +361,7 @@ void Receiver::on_timeout(hal::Micros now) {
     return;
   }
   if (!retry(now)) return;
+  asked_us_ = kRepeated;
   parser_.reset();
   // A byte garbled into XOFF stops a peer tty with IXON (lrzsz's): XON first.
   static constexpr std::array<std::uint8_t, 1> kXonByte = {kXon};

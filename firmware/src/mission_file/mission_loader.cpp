@@ -244,14 +244,17 @@ void Loader::read_surface(const MiBehavior& b) {
   switch (start_when) {
     case 1:  // stack idle: when the yos (or the list) are done: a segment's end
       break;
-    case 9:   // every when_secs
-    case 12:  // no communication for when_secs: this firmware surfaces by time anyway
+    case 9:   // every when_secs, counted from the previous surfacing
+    case 12:  // no comms for when_secs, counted from the last call connected
+    {
       if (!(when_secs > 0.0)) {
         fail(b.where, "surface: start_when " + std::to_string(start_when) + " needs when_secs > 0");
         return;
       }
-      p.surface_interval_s = p.surface_interval_s > 0.0 ? std::min(p.surface_interval_s, when_secs) : when_secs;
+      double& interval = start_when == 9 ? p.surface_interval_s : p.no_comms_interval_s;
+      interval = interval > 0.0 ? std::min(interval, when_secs) : when_secs;
       break;
+    }
     default:
       fail(b.where, "surface: start_when " + std::to_string(start_when) +
                         " is not supported (1 stack idle, 9 every when_secs, 12 no comms for when_secs are)");
@@ -456,7 +459,7 @@ void Loader::check_safety(const SourceLocation& mission) {
                      " m)");
   }
   const bool surfaces_by_count = half_cycles_ > 0;
-  const bool surfaces_by_time = config_.plan.surface_interval_s > 0.0;
+  const bool surfaces_by_time = config_.plan.surface_interval_s > 0.0 || config_.plan.no_comms_interval_s > 0.0;
   if (!surfaces_by_count && !surfaces_by_time) {
     fail(yo_at_,
          "the yos never end (num_half_cycles_to_do -1) and no surface behavior brings the glider up "

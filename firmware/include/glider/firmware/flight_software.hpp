@@ -81,6 +81,8 @@ class FlightSoftware final : public PeriodicTask {
     return (last_.segment_complete && navigator_.at_surface()) || (last_.phase == Phase::kAbort && last_.complete);
   }
   void set_surface_hold(bool hold) { surface_hold_ = hold; }
+  // A call connected now: the "no comms for when_secs" clock (start_when 12) restarts.
+  void note_comms(hal::Micros now_us) { navigator_.note_comms(now_us); }
   void request_resume() { resume_requested_ = true; }  // Control-R: dive without the keystroke wait
   void end_mission() {                                 // Control-C: the mission ends at the surface
     mission_over_ = true;

@@ -24,9 +24,12 @@ struct MissionPlan {
   double waypoint_radius_m = 100.0;  // goto_list list_when_wpt_dist
   std::int32_t legs_to_run = kLegsOnce;
   // Segment: dive from the surface, yos, surface. It ends after
-  // `yos_per_segment` yos or when `surface_interval_s` has passed under water
-  // (the surface behaviour's when_secs), whichever first; <= 0 = no limit.
+  // `yos_per_segment` yos, or when `surface_interval_s` has passed since the
+  // previous surfacing (surface start_when 9, every when_secs: Slocum counts
+  // from the surfacing, not the dive), or `no_comms_interval_s` since the last
+  // call connected (start_when 12), whichever first; <= 0 = no limit.
   double surface_interval_s = 0.0;
+  double no_comms_interval_s = 0.0;
   // A fixed heading (set_heading) when there are no waypoints; NaN = none,
   // the fin is held centred.
   double heading_rad = std::numeric_limits<double>::quiet_NaN();

@@ -66,6 +66,16 @@ class Navigator {
   bool at_surface() const { return state_ != State::kUnderWater; }
   hal::Micros surfaced_us() const { return surfaced_us_; }
   hal::Micros dive_us() const { return dive_us_; }
+  // The comms task had a call connected (start_when 12: "no comms for
+  // when_secs" counts from the last such time; before any, from launch).
+  // Without a comms task (no modem: SIL's plain flights) each surfacing stands for comms.
+  void note_comms(hal::Micros now_us) {
+    last_comms_us_ = now_us;
+    comms_reported_ = true;
+  }
+  // Why the last segment ended by time: 9 (every when_secs, from the previous
+  // surfacing), 12 (no comms for when_secs), 0 (not by time).
+  int surfaced_by_start_when() const { return surfaced_by_start_when_; }
   // A re-read mission (Control-F, validated): fly its waypoints from the first.
   void replace_plan(const MissionPlan& plan);
   // The depth-averaged current estimate carried over from before a start
@@ -94,6 +104,13 @@ class Navigator {
   hal::Micros surfaced_us_ = 0;
   hal::Micros dive_us_ = 0;
   hal::Micros last_us_ = 0;
+  // when_secs clocks (Slocum's surface behaviour): start_when 9 counts from the
+  // previous surfacing (the arrival at the surface, launch first), start_when 12
+  // from the last call connected (launch first), not from the dive.
+  hal::Micros last_surfacing_us_ = 0;  // surfaced_us_, but launch is the first (HAL time need not start at 0)
+  hal::Micros last_comms_us_ = 0;
+  bool comms_reported_ = false;  // a comms task has called note_comms
+  int surfaced_by_start_when_ = 0;
   bool fix_this_surfacing_ = false;
   bool dr_error_pending_ = false;
   EastNorth position_{};  // last known (fix or DR)

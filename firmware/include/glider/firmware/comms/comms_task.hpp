@@ -42,6 +42,12 @@ struct CommsConfig {
   double gps_wait_s = 120.0;        // gps_wait_time
   double keystroke_wait_s = 300.0;  // keystroke_wait_time (end_action 1)
   double printout_cycle_s = 60.0;   // printout_cycle_time
+  // Once the shore has typed in this call, the glider waits at least this long
+  // after each answer for its next line, even with a shorter keystroke wait
+  // (end_action 2: 0 s): a shore's script types `whoru`, then `send` on the
+  // next prompt, and a glider gone between the two lines delivers no file.
+  // A shore that never types still sees the glider leave after keystroke_wait_s.
+  double reply_window_s = 30.0;
   // The modem.
   double at_timeout_s = 3.0;    // AT, ATE0, AT+CSQ, ATH
   std::int32_t at_retries = 3;  // per command before the modem counts as dead this surfacing
@@ -191,6 +197,7 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   std::int32_t tries_ = 0;         // of the current AT command
   std::int32_t dials_ = 0;         // this surfacing
   bool connected_this_surfacing_ = false;
+  bool shore_typed_ = false;  // a keystroke arrived in this call: reply_window_s applies
   bool transferring_ = false;
   bool resume_ = false;
   bool reset_requested_ = false;

@@ -59,10 +59,15 @@ class Receiver : public Session {
   bool accepting_ = false;          // data at offset_ is being taken
   bool file_open_ = false;
   int o_count_ = 0;  // 'O's of the sender's "OO" after ZFIN
-  // The link's round trip, measured from a ZRPOS/ZRINIT to the next header:
+  // The link's round trip (smoothed), measured from a ZRPOS/ZRINIT/ZNAK to the next header:
   // how long the sender's "OO" may take to arrive after our ZFIN.
   hal::Micros now_ = 0;
-  hal::Micros asked_us_ = -1;  // a ZRPOS/ZRINIT waiting for its answer since (-1: none)
+  // A ZRPOS/ZRINIT/ZNAK waiting for its answer since; a repeated one is not
+  // timed (Karn's rule: its answer's delay includes the lost first one, and
+  // a round trip grown so made every later repeat wait 4 x 2 s).
+  static constexpr hal::Micros kNotAsked = -1;
+  static constexpr hal::Micros kRepeated = -2;
+  hal::Micros asked_us_ = kNotAsked;
   hal::Micros round_trip_us_ = 0;
   // A ZRPOS not yet obeyed (no ZDATA at offset_ since): said again at
   // resync_at_us_ (-1: none), after 4 round trips (at least kMinResyncUs),
@@ -71,6 +76,11 @@ class Receiver : public Session {
   static constexpr hal::Micros kMinResyncUs = 500'000;
   hal::Micros resync_at_us_ = -1;
   hal::Micros resync_interval_us_ = 0;
+  hal::Micros heard_us_ = 0;  // the last byte from the sender
+  bool sender_seen_ = false;  // a ZRQINIT came, or a file ended: a silence now is a lost header
+  // Waiting for a whole ZFILE: after ours (file_info), or after a file's end
+  // (the sender's next ZFILE or ZFIN, or our ZRINIT, may have been lost).
+  bool between_files() const { return state_ == State::file_info || (state_ == State::wait_file && sender_seen_); }
   void resync(hal::Micros now);
   FileInfo info_;
   std::array<char, kMaxName + 56> temp_name_{};
