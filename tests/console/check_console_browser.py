@@ -94,7 +94,7 @@ shore = h.Shore(shore_bin, work, ["--resume", "--linger", "20", "--identify-time
 sils = {}
 # Simulated time flown by each run (s). A glider's clock (its Slocum files' m_present_time, its dialog's
 # Curr Time) runs on from run to run and ends about now: run 1 of a glider starts its total flight ago.
-FLIGHT = {("aborting", 1): 3600, ("fouling", 1): 4400, ("fouling", 2): 4800, ("healthy", 1): 6500,
+FLIGHT = {("aborting", 1): 3600, ("fouling", 1): 4400, ("fouling", 2): 6800, ("healthy", 1): 6500,
           ("healthy", 2): 4500}
 now = int(time.time())
 
