@@ -103,8 +103,10 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
   const double dt_s = launched_ ? hal::to_seconds(in.now_us - last_us_) : 0.0;
   last_us_ = in.now_us;
   if (!launched_) {
-    last_surfacing_us_ = in.now_us;  // launch: the first surfacing, and the start of comms
-    last_comms_us_ = in.now_us;
+    // Launch: the first surfacing and the start of comms, unless a resumed
+    // flight carried its clocks over (seed_clocks).
+    last_surfacing_us_ = in.now_us - seeded_since_surfacing_us_;
+    last_comms_us_ = in.now_us - seeded_since_comms_us_;
   }
   launched_ = true;
 

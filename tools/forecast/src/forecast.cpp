@@ -237,6 +237,7 @@ void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, co
       FlightSetup segment = base;
       segment.config.plan = remaining_plan(now);
       segment.fix = {*previous->lat_deg, *previous->lon_deg};
+      segment.surface_time_s = std::max(0.0, previous->call_end_utc_s - previous->call_start_utc_s);
       const bool measured = s.water_vx_m_s && s.water_vy_m_s;
       segment.current.east_m_s = measured ? *s.water_vx_m_s : previous->water_vx_m_s.value_or(0.0);
       segment.current.north_m_s = measured ? *s.water_vy_m_s : previous->water_vy_m_s.value_or(0.0);
@@ -349,6 +350,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     }
   }
   setup.config.plan = remaining_plan(now);
+  setup.surface_time_s = std::max(0.0, f.dive_utc_s - history.back().call_start_utc_s);
   if (history.back().mission_time_s >= 0.0 && std::isfinite(now.config.mission.max_duration_s)) {
     const double mt_at_dive = history.back().mission_time_s + (f.dive_utc_s - history.back().call_start_utc_s);
     setup.overtime_left_s = now.config.mission.max_duration_s - mt_at_dive;
@@ -373,7 +375,10 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     if (r.surfaced && !r.aborted && dr > 100.0 && truth / dr > 0.5 && truth / dr < 2.0) f.dr_speed_ratio = truth / dr;
   }
   const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio);
-  double expected_s = now.config.plan.surface_interval_s > 0.0 ? now.config.plan.surface_interval_s : 3600.0;
+  // when_secs counts from the arrival at the surface: the dive is shorter by the time spent up.
+  double expected_s = now.config.plan.surface_interval_s > 0.0
+                          ? std::max(60.0, now.config.plan.surface_interval_s - setup.surface_time_s)
+                          : 3600.0;
   if (history.size() >= 2) {
     const double last_dive = history.back().call_start_utc_s - history[history.size() - 2].call_end_utc_s;
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);

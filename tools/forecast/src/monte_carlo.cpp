@@ -57,7 +57,11 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
     opt.heading_deg = rad_to_deg(config.plan.heading_rad);
   }
   const double east_now = s.current.east_m_s, north_now = s.current.north_m_s;
-  opt.before_launch = [east_now, north_now](fw::FlightSoftware& flight) { flight.seed_current({east_now, north_now}); };
+  const double up_s = s.surface_time_s;
+  opt.before_launch = [east_now, north_now, up_s](fw::FlightSoftware& flight) {
+    flight.seed_current({east_now, north_now});
+    flight.seed_clocks(up_s, up_s);
+  };
   RunOutcome out;
   // Times count from the dive (the forecast's origin is the call's end, when
   // the glider dived); a run that never dives counts from its start.

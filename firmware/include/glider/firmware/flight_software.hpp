@@ -99,6 +99,9 @@ class FlightSoftware final : public PeriodicTask {
   const MissionPlan& plan() const { return config_.plan; }
   // Before the first run(): the current estimate the mission resumes with.
   void seed_current(EastNorth current) { navigator_.seed_current(current); }
+  void seed_clocks(double since_surfacing_s, double since_comms_s) {
+    navigator_.seed_clocks(since_surfacing_s, since_comms_s);
+  }
   // Commands clamped to the vehicle's range (or non-finite) before they were sent.
   const GuardCounts& actuator_guard_counts() const { return guard_.counts(); }
 

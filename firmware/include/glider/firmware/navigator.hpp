@@ -4,6 +4,7 @@
 // under water, the depth-averaged current from each surfacing's DR error,
 // the heading to the active waypoint corrected for that current, waypoints
 // reached, and the end of the list. Pure logic on checked inputs.
+#include <cmath>
 #include <cstdint>
 
 #include "glider/firmware/dead_reckoning.hpp"
@@ -84,10 +85,22 @@ class Navigator {
     current_ = current;
     have_current_ = true;
   }
+  // The when_secs clocks carried over the same way: the glider arrived at the
+  // surface `since_surfacing_s` and its last call connected `since_comms_s`
+  // before this start (a forecast starts at the dive, after the glider's time
+  // at the surface; a Slocum counts when_secs from the arrival). Applied at
+  // launch; negative or non-finite values are ignored (the launch counts).
+  void seed_clocks(double since_surfacing_s, double since_comms_s) {
+    seeded_since_surfacing_us_ = clock_age_us(since_surfacing_s);
+    seeded_since_comms_us_ = clock_age_us(since_comms_s);
+  }
 
  private:
   enum class State { kSurface, kUnderWater, kDone };
 
+  static hal::Micros clock_age_us(double seconds) {
+    return std::isfinite(seconds) && seconds > 0.0 && seconds < 1e9 ? static_cast<hal::Micros>(seconds * 1e6) : 0;
+  }
   bool fix_is_fresh(const hal::GpsFix& fix, hal::Micros since_us) const;
   void on_fix(const hal::GpsFix& fix, NavigatorOutputs& out);
   void advance_waypoint();
@@ -109,6 +122,8 @@ class Navigator {
   // from the last call connected (launch first), not from the dive.
   hal::Micros last_surfacing_us_ = 0;  // surfaced_us_, but launch is the first (HAL time need not start at 0)
   hal::Micros last_comms_us_ = 0;
+  hal::Micros seeded_since_surfacing_us_ = 0;  // seed_clocks: ages at launch
+  hal::Micros seeded_since_comms_us_ = 0;
   bool comms_reported_ = false;  // a comms task has called note_comms
   int surfaced_by_start_when_ = 0;
   bool fix_this_surfacing_ = false;

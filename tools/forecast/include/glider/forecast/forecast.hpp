@@ -101,6 +101,10 @@ struct FlightSetup {
   // steers and dead-reckons with this; none: it has no estimate yet.
   std::optional<fw::EastNorth> firmware_current;
   double overtime_left_s = 0.0;  // the mission's overtime limit minus the mission time at the fix (0: none)
+  // How long the glider had been at the surface when it dived (the call's
+  // start to its end): a Slocum's when_secs counts from the arrival at the
+  // surface and from the call, not from the dive (FlightSoftware::seed_clocks).
+  double surface_time_s = 0.0;
 };
 std::vector<RunOutcome> fly_runs(const FlightSetup& setup, const ForecastOptions& options, int n, bool vary);
 
