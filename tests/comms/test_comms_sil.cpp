@@ -217,6 +217,25 @@ TEST(CommsSil, EveryWhenSecsCountsFromThePreviousSurfacing) {
   }
 }
 
+// A flight resumed mid-mission (the forecast starts at the dive) carries the
+// clocks over: arrived and called 500 s before this start, when_secs 1200 ends
+// the first dive ~700 s after launch (plus the climb), the later ones as usual.
+TEST(CommsSil, SeededClocksCountFromBeforeTheStart) {
+  options.max_sim_time_s = 3000.0;
+  sil::FakeShore shore;
+  shore.script = {{15.0, "whoru\r"}};
+  options.comms = comms(&shore);
+  options.before_launch = [](fw::FlightSoftware& flight) { flight.seed_clocks(500.0, 500.0); };
+  const SurfacingTimes t = fly_and_time(vehicle, mission(), options);
+  CHECK(t.arrivals.size() >= 3);
+  std::printf("\nseeded 500 s: launch at %.0f s, surfacings at %.0f and %.0f s", t.arrivals[0], t.arrivals[1],
+              t.arrivals[2]);
+  CHECK_TEXT(t.arrivals[1] - t.arrivals[0] >= 700.0 && t.arrivals[1] - t.arrivals[0] <= 700.0 + 200.0,
+             std::to_string(t.arrivals[1] - t.arrivals[0]).c_str());
+  const double period = t.arrivals[2] - t.arrivals[1];
+  CHECK_TEXT(period >= 1200.0 && period <= 1200.0 + 200.0, std::to_string(period).c_str());
+}
+
 // start_when 12 (no comms for when_secs): the clock runs from the last call
 // connected. With the link up that is each surfacing's call; with the link
 // down after the first call, the vehicle keeps coming up (it has had no
