@@ -42,4 +42,18 @@ expect no_mission "$out/no_mission" "no_mission/mission: no mission"
 cp -r "$good" "$out/bad_mission"
 sed 's/b_arg: overdepth(m)                 60/b_arg: overdepth(m)                 abc/' "$good/mission/missions/box.mi" >"$out/bad_mission/mission/missions/box.mi"
 expect bad_mission "$out/bad_mission" "box.mi:[0-9]*"
+# The vehicle: without --vehicle and before health has estimates, the glider folder's own vehicle.toml
+# (as health reads it); with neither it nor a gliders.toml entry, a refusal that says where to put one.
+cp -r "$good" "$out/pilot_vehicle" && rm -rf "$out/pilot_vehicle/health" && cp "$v" "$out/pilot_vehicle/vehicle.toml"
+"$forecast" --glider-dir "$out/pilot_vehicle" --runs 2 --json >"$out/pilot_vehicle.json" 2>"$out/pilot_vehicle.txt" ||
+  fail "pilot_vehicle: $(cat "$out/pilot_vehicle.txt")"
+grep -q '"vehicle": "[^"]*pilot_vehicle/vehicle.toml' "$out/pilot_vehicle.json" ||
+  fail "pilot_vehicle: the forecast did not fly GLIDER/vehicle.toml: $(grep '"vehicle"' "$out/pilot_vehicle.json")"
+echo "ok pilot_vehicle: GLIDER/vehicle.toml flown"
+cp -r "$good" "$out/no_vehicle" && rm -rf "$out/no_vehicle/health" "$out/no_vehicle/vehicle.toml"
+"$forecast" --glider-dir "$out/no_vehicle" --runs 2 >"$out/no_vehicle.txt" 2>&1
+code=$?
+[ $code -eq 1 ] && grep -q "nor vehicle.toml in .*no_vehicle: give --vehicle FILE" "$out/no_vehicle.txt" ||
+  fail "no_vehicle: exit $code: $(cat "$out/no_vehicle.txt")"
+echo "ok no_vehicle: $(head -1 "$out/no_vehicle.txt")"
 echo "PASS bad_input"

@@ -56,6 +56,12 @@ fs::path vehicle_file(const fs::path& glider_dir, const std::string& glider, con
     source = (glider_dir / "health" / "vehicle.toml").string() + " (health's current estimates)";
     return glider_dir / "health" / "vehicle.toml";
   }
+  // The pilot's own file for this glider, as health reads it (tools/health glider_dir): before any
+  // health estimate exists (a glider's first calls) the forecast flies it too.
+  if (fs::is_regular_file(glider_dir / "vehicle.toml")) {
+    source = (glider_dir / "vehicle.toml").string() + " (the glider's vehicle file)";
+    return glider_dir / "vehicle.toml";
+  }
   const fs::path boards = o.boards_dir.empty() ? fs::path(cli::boards_dir()) : fs::path(o.boards_dir);
   const fs::path index = boards / "gliders.toml";
   try {
@@ -68,7 +74,8 @@ fs::path vehicle_file(const fs::path& glider_dir, const std::string& glider, con
     throw std::runtime_error(index.string() + ": " + std::string(e.description()));
   }
   throw std::runtime_error(index.string() + ": glider '" + glider +
-                           "' is not listed and there is no health/vehicle.toml: give --vehicle FILE");
+                           "' is not listed and there is no health/vehicle.toml nor vehicle.toml in " +
+                           glider_dir.string() + ": give --vehicle FILE");
 }
 
 // Each surfacing's estimate of the current over the segment before it. The
