@@ -39,26 +39,19 @@ struct History {
   }
 };
 
-// The autopilot's state carried from cycle to cycle (Slocum's law as
-// predict_autopilot_fin replays it, on the model's heading).
+// The autopilot's state carried from cycle to cycle: Slocum's law (the same
+// AutopilotLaw as predict_autopilot_fin's), reading the model's heading.
 struct Autopilot {
-  double kp = 0.0, ki = 0.0, kd = 0.0, hold_below = 0.0, rate_deadband = 0.0, fin_max = 0.0;
-  double integrator = 0.0, output = 0.0, last_read = kNaN, last_time = kNaN;
-  // The fin commanded at `now` from the heading `read` and the command; the
-  // fin held (the output unchanged) inside both deadbands.
+  AutopilotLaw law;
+  double last_read = kNaN, last_time = kNaN;
+  // The fin commanded at `now` from the heading `read` and the command.
   double cycle(double now, double read, double command) {
     const double error = wrap_pi(command - read);
     const double dt = std::isfinite(last_time) ? now - last_time : 0.0;
-    double rate = std::isfinite(last_read) && dt > 0.0 ? wrap_pi(read - last_read) / dt : 0.0;
+    const double rate = std::isfinite(last_read) && dt > 0.0 ? wrap_pi(read - last_read) / dt : 0.0;
     last_read = read;
     last_time = now;
-    if (std::abs(rate) < rate_deadband) {
-      rate = 0.0;
-      if (std::abs(error) < hold_below) return output;
-    }
-    integrator += ki * error * dt;
-    output = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
-    return output;
+    return law.step(error, rate, dt);
   }
 };
 
@@ -76,13 +69,7 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
   const double tau = std::max(0.05, std::abs(at(values, HeadingEffect::kYawTimeConstant)));
   const double fin_rate = hd.fin_rate_rad_s > 0.0 ? hd.fin_rate_rad_s : 1e9;
   const double autopilot_delay = std::abs(at(values, HeadingEffect::kAutopilotDelay));
-  Autopilot law;
-  law.kp = at(values, HeadingEffect::kAutopilotGain);
-  law.ki = at(values, HeadingEffect::kAutopilotIntegral);
-  law.kd = at(values, HeadingEffect::kAutopilotDgain);
-  law.hold_below = std::abs(at(values, HeadingEffect::kAutopilotDeadband));
-  law.rate_deadband = settings.rate_deadband_rad_s;
-  law.fin_max = t.fin_max_rad;
+  Autopilot autopilot{AutopilotLaw::from(values, settings, t.fin_max_rad)};
   std::mt19937 random(options.seed);
   std::normal_distribution<double> noise(0.0, 1.0);
   const std::span<const double> row_time(t.row_time_s);
@@ -104,9 +91,9 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
     // The glide starts from the log's state: its heading, fin and last command.
     double fin = std::isfinite(t.row_fin_filled_rad[r0]) ? t.row_fin_filled_rad[r0] : 0.0;
     double servo_command = fin;
-    law.output = std::isfinite(t.row_fin_command_rad[r0]) ? t.row_fin_command_rad[r0] : fin;
-    law.last_read = kNaN;
-    law.last_time = kNaN;
+    autopilot.law.output = std::isfinite(t.row_fin_command_rad[r0]) ? t.row_fin_command_rad[r0] : fin;
+    autopilot.last_read = kNaN;
+    autopilot.last_time = kNaN;
     std::deque<std::pair<double, double>> pending;  // (when it acts, command)
     History heading, fin_history;
     double psi = t.heading_rad[first];
@@ -140,9 +127,9 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
               (when <= start ? t.heading_rad[first] : heading.at(when)) + options.heading_noise_rad * noise(random);
           const double command = command_at(when);
           if (!std::isfinite(command)) continue;
-          const double previous = law.output;
-          pending.emplace_back(now + fin_delay, law.cycle(now, read, command));
-          if (now >= scored_from) travel += std::abs(law.output - previous);
+          const double previous = autopilot.law.output;
+          pending.emplace_back(now + fin_delay, autopilot.cycle(now, read, command));
+          if (now >= scored_from) travel += std::abs(autopilot.law.output - previous);
         }
         while (!pending.empty() && pending.front().first <= s) {
           if (std::abs(pending.front().second - fin) > fin_deadband) servo_command = pending.front().second;

@@ -146,25 +146,30 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
 // Slocum's law replayed on the logged heading: the error and rate are read
 // a delay before each command; the integrator runs from the log's start and
 // is held while the fin is centred (surface, turns), as the firmware's.
+AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSettings& settings, double fin_max_rad) {
+  AutopilotLaw law;
+  law.kp = value(values, HeadingEffect::kAutopilotGain);
+  law.ki = value(values, HeadingEffect::kAutopilotIntegral);
+  law.kd = value(values, HeadingEffect::kAutopilotDgain);
+  law.hold_below = std::abs(value(values, HeadingEffect::kAutopilotDeadband));
+  law.rate_deadband = settings.rate_deadband_rad_s;
+  law.fin_max = fin_max_rad;
+  return law;
+}
+
 void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& values,
                            std::span<const std::size_t> rows, std::vector<double>& out) {
-  const double kp = value(values, HeadingEffect::kAutopilotGain);
-  const double ki = value(values, HeadingEffect::kAutopilotIntegral);
-  const double kd = value(values, HeadingEffect::kAutopilotDgain);
   const double delay = std::abs(value(values, HeadingEffect::kAutopilotDelay));
-  const double hold_below = std::abs(value(values, HeadingEffect::kAutopilotDeadband));
-  const double fin_max = t.fin_max_rad;
-  double output = 0.0;
+  AutopilotLaw law = AutopilotLaw::from(values, settings, t.fin_max_rad);
   const std::size_t n = t.row_time_s.size();
   std::vector<double> predicted(n, kNaN);
   const std::span<const double> time(t.row_time_s);
-  double integrator = 0.0;
   double last_heading = kNaN;
   std::size_t after = 0;  // first row later than `when`: `when` only grows (rows sorted), so it only advances
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
-      output = 0.0;
+      law.output = 0.0;
       continue;
     }
     const double when = time[i] - delay;
@@ -175,19 +180,9 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
     if (!std::isfinite(heading) || !std::isfinite(command)) continue;
     const double error = wrap_pi(command - heading);
     const double dt = i > 0 ? time[i] - time[i - 1] : 0.0;
-    double rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
+    const double rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
     last_heading = heading;
-    if (std::abs(rate) < settings.rate_deadband_rad_s) {
-      rate = 0.0;
-      // Inside both deadbands the fin stays where it is (and nothing integrates).
-      if (std::abs(error) < hold_below) {
-        predicted[i] = output;
-        continue;
-      }
-    }
-    integrator += ki * error * dt;  // unconditional, as Slocum's: only the output is clamped
-    output = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
-    predicted[i] = output;
+    predicted[i] = law.step(error, rate, dt);
   }
   pick(predicted, rows, out);
 }

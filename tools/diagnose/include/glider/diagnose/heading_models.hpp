@@ -9,6 +9,8 @@
 //   through the same slope estimator as the measured yaw rate;
 // - the autopilot: c_fin from the logged heading and command by Slocum's law
 //   (fin = gain e + integral + dgain r, clamped; firmware/heading_controller).
+#include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -24,6 +26,26 @@ struct AutopilotSettings {
   double rate_deadband_rad_s = 0.0087;
   double heading_deadband_rad = 0.0;  // u_heading_deadband: 0 = the fin is never held
   bool stated = false;                // false: the log's header states none (the defaults stand in)
+};
+
+// Slocum's heading law, one cycle: the fin held (output unchanged, nothing
+// integrated) inside both deadbands, else PID with the integrator unclamped
+// and only the output clamped, as the firmware's. The open-loop replay
+// (predict_autopilot_fin) and the closed loop (fly_closed_loop) both step it.
+struct AutopilotLaw {
+  double kp = 0.0, ki = 0.0, kd = 0.0, hold_below = 0.0, rate_deadband = 0.0, fin_max = 0.0;
+  double integrator = 0.0, output = 0.0;
+  // The law with the values' gains, deadband and this log's fin limit.
+  static AutopilotLaw from(const HeadingValues& values, const AutopilotSettings& settings, double fin_max_rad);
+  double step(double error, double rate, double dt) {
+    if (std::abs(rate) < rate_deadband) {
+      rate = 0.0;
+      if (std::abs(error) < hold_below) return output;
+    }
+    integrator += ki * error * dt;
+    output = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
+    return output;
+  }
 };
 
 // The values that mean "no effect" for this vehicle and configured law.
