@@ -24,6 +24,7 @@
 #include "glider/firmware/app/flight_application.hpp"
 #include "glider/firmware/app/mission_reload.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/app/reload_arena.hpp"
 #include "glider/firmware/comms/comms_task.hpp"
 #include "glider/firmware/comms/file_access_posix.hpp"
 #include "glider/firmware/comms/log_forward.hpp"
@@ -102,6 +103,7 @@ fw::comms::CommsConfig comms_config(const target::ModemBoardConfig& modem, const
   c.gps_wait_s = flight.plan.gps_wait_s;
   c.keystroke_wait_s = flight.plan.surface_dwell_s;
   c.printout_cycle_s = flight.plan.printout_cycle_s;
+  if (modem.reply_window_s) c.reply_window_s = *modem.reply_window_s;
   const double utc_now_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   c.utc_at_zero_s = utc_now_s - hal::to_seconds(clock_now_us);
   return c;
@@ -289,6 +291,10 @@ int main(int argc, char** argv) {
     if (board.modem) {
       modem.emplace(board.modem->line);
       reloader.emplace(mission_path, board.vehicle, mission_options);
+      // Control-F and zr parse mission files in flight: from this arena, not the heap.
+      if (!fw::app::reload_arena::reserve(fw::app::kReloadArenaBytes)) {
+        return tool.fail(cli::kError, "cannot reserve the mission reload arena");
+      }
       comms.emplace(application.flight(), *modem, hal.gps, hal.log,
                     comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()),
                     zmodem ? &*zmodem : nullptr, &*reloader);
