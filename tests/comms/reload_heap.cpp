@@ -10,8 +10,11 @@
 // a month of surfacings cannot exhaust the heap); exit 0 = pass.
 #include <malloc.h>
 
+#include <new>
+
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -140,6 +143,48 @@ void measure(const char* name, int runs, bool no_malloc, Phase phase) {
   g_failures += no_malloc && g_heap.calls != 0 ? 1 : 0;
 }
 
+// The allocator itself: alignment of every new form, the block freed last
+// given back at once, a block still live at the Scope's end keeping the
+// arena from being emptied (never overwritten), and outside a Scope the heap.
+void check_arena_mechanics() {
+  namespace arena = fw::app::reload_arena;
+  expect(arena::reserve(64 * 1024), "a 64 KiB arena is reserved");
+  {
+    const arena::Scope scope;
+    auto* plain = new char[3];
+    auto* aligned = new (std::align_val_t{64}) double[5];
+    expect(arena::detail::owns(plain) && arena::detail::owns(aligned), "a Scope's blocks are the arena's");
+    expect(reinterpret_cast<std::uintptr_t>(plain) % __STDCPP_DEFAULT_NEW_ALIGNMENT__ == 0, "default alignment");
+    expect(reinterpret_cast<std::uintptr_t>(aligned) % 64 == 0, "64-byte alignment");
+    const std::size_t with_both = arena::in_use();
+    operator delete[](aligned, std::align_val_t{64});
+    expect(arena::in_use() < with_both, "the block freed last is given back at once");
+    delete[] plain;
+    expect(arena::in_use() == 0 && arena::live_blocks() == 0, "both freed: nothing in use");
+  }
+  int* kept = nullptr;
+  {
+    const arena::Scope scope;
+    kept = new int(42);
+  }
+  expect(arena::live_blocks() == 1 && arena::in_use() > 0, "a block kept past its Scope keeps the arena");
+  {
+    const arena::Scope scope;
+    int* other = new int(7);
+    expect(other != kept && *kept == 42, "a kept block is not handed out again");
+    delete other;
+  }
+  delete kept;
+  expect(arena::live_blocks() == 0, "the kept block freed");
+  {
+    const arena::Scope scope;  // emptied at its end now that nothing is live
+  }
+  expect(arena::in_use() == 0, "the arena is emptied once nothing is live");
+  auto* heap = new char[16];
+  expect(!arena::detail::owns(heap), "outside a Scope: the heap");
+  delete[] heap;
+}
+
 }  // namespace
 
 int main() {
@@ -235,6 +280,7 @@ int main() {
   expect(flight.plan().waypoints[1].lon_deg != lon_before, "the moved waypoint is flown");
   std::printf("arena high water: re-read %zu bytes, install %zu bytes (of %zu reserved)\n", reread_high_water,
               install_high_water, fw::app::kReloadArenaBytes);
+  check_arena_mechanics();
   std::printf("\n%s\n", g_failures == 0 ? "PASS" : "FAIL");
   return g_failures == 0 ? 0 : 1;
 }
