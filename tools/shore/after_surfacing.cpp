@@ -3,8 +3,6 @@
 
 #include <cstdio>
 #include <exception>
-#include <map>
-#include <mutex>
 
 #include "glider/cli/tool.hpp"
 #include "glider/forecast/forecast.hpp"
@@ -24,24 +22,11 @@ std::string health_step(const std::filesystem::path& glider_dir) {
   return note;
 }
 
-// One glider's steps run one at a time: a glider that redials at once (a
-// dropped call) starts a second session while the first one's health and
-// forecast still run. Both read and write the same health/ and forecast/:
-// overlapping, an older view could be written last. One at a time, each
-// reads the folder when its turn comes, and the last one leaves the newest.
-std::mutex& glider_lock(const std::filesystem::path& glider_dir) {
-  static std::mutex map_lock;
-  static std::map<std::filesystem::path, std::mutex> locks;  // nodes never move: a reference stays valid
-  const std::lock_guard<std::mutex> guard(map_lock);
-  return locks[glider_dir.lexically_normal()];
-}
-
 }  // namespace
 
 std::vector<std::string> after_surfacing(const std::filesystem::path& glider_dir) noexcept {
   std::vector<std::string> notes;
   try {
-    const std::lock_guard<std::mutex> one_at_a_time(glider_lock(glider_dir));
     try {
       notes.push_back(health_step(glider_dir));
     } catch (const std::exception& error) {

@@ -5,7 +5,8 @@
 // came home (ROOT/GLIDER/health/), then (issue 24's forecast) where it will
 // surface next. A failure here must never break a call: each step catches
 // everything and says what happened in one note, which the session writes
-// to the call's journal.
+// to the call's journal. The shore runs it off the call's thread, one glider's
+// runs in turn (after_surfacing_queue.hpp).
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -41,8 +41,16 @@ std::string escape_bytes(const std::string& bytes) {
   return out;
 }
 
+namespace {
+
+std::string journal_line(char direction, const std::string& text) {
+  return timestamp_now() + " " + direction + " " + escape_bytes(text);
+}
+
+}  // namespace
+
 void SessionJournal::write(char direction, const std::string& text) {
-  std::string line = timestamp_now() + " " + direction + " " + escape_bytes(text);
+  std::string line = journal_line(direction, text);
   if (out_.is_open()) {
     out_ << line << '\n';
     out_.flush();  // a journal is read while the call goes on (tail -f)
@@ -58,6 +66,13 @@ void SessionJournal::open(const std::filesystem::path& path) {
   for (const std::string& line : held_) out_ << line << '\n';
   held_.clear();
   out_.flush();
+}
+
+void SessionJournal::append(const std::filesystem::path& path, char direction, const std::string& text) {
+  std::ofstream out(path, std::ios::app);
+  out << journal_line(direction, text) << '\n';
+  out.flush();
+  if (!out) throw std::runtime_error(path.string() + ": cannot append to the journal");
 }
 
 std::string SessionJournal::open_new(const std::filesystem::path& dir, const std::string& stamp, unsigned first) {

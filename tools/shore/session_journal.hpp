@@ -31,6 +31,9 @@ class SessionJournal {
   // event of, an earlier call made in the same second. Returns ID.
   std::string open_new(const std::filesystem::path& dir, const std::string& stamp, unsigned first);
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  // One line appended to an existing journal by someone other than its call
+  // (the after-surfacing work, which may end after the call has).
+  static void append(const std::filesystem::path& path, char direction, const std::string& text);
 
  private:
   std::vector<std::string> held_;

@@ -18,6 +18,8 @@
 #include <system_error>
 #include <thread>
 
+#include "after_surfacing.hpp"
+#include "after_surfacing_queue.hpp"
 #include "glider_folders.hpp"
 #include "shore_session.hpp"
 
@@ -25,6 +27,13 @@ namespace glider::shore {
 namespace {
 
 using boost::asio::ip::tcp;
+
+// Gliders whose health and forecast run side by side (each takes about a
+// second of one core); one glider's runs are always in turn.
+constexpr int kAfterSurfacingWorkers = 2;
+// On SIGTERM: how long queued health and forecasts may still run (systemd's
+// default stop timeout is 90 s; the calls' own end takes up to 30 s).
+constexpr double kAfterSurfacingDrainS = 30.0;
 
 boost::asio::ip::address listen_address(const ShoreConfig& config) {
   boost::system::error_code error;
@@ -35,8 +44,9 @@ boost::asio::ip::address listen_address(const ShoreConfig& config) {
 
 class Server {
  public:
-  Server(const ShoreConfig& config, boost::asio::io_context& io)
+  Server(const ShoreConfig& config, boost::asio::io_context& io, AfterSurfacingQueue& after)
       : config_(config),
+        after_(after),
         acceptor_(io, tcp::endpoint(listen_address(config), static_cast<unsigned short>(config.port))) {}
 
   unsigned short port() const { return acceptor_.local_endpoint().port(); }
@@ -94,7 +104,7 @@ class Server {
     std::fprintf(stderr, "glider-shore: call from %s\n", peer.c_str());
     try {
       std::thread([this, fd, peer] {
-        serve_call(fd, peer, config_, stop_);
+        serve_call(fd, peer, config_, stop_, after_);
         std::fprintf(stderr, "glider-shore: call from %s ended\n", peer.c_str());
         call_ended();
       }).detach();
@@ -112,6 +122,7 @@ class Server {
   }
 
   const ShoreConfig& config_;
+  AfterSurfacingQueue& after_;
   tcp::acceptor acceptor_;
   std::atomic<bool> stop_{false};
   std::mutex mutex_;
@@ -127,7 +138,9 @@ void serve_forever(const ShoreConfig& config, const std::string& port_file) {
   ::signal(SIGPIPE, SIG_IGN);
   std::filesystem::create_directories(config.root);
   boost::asio::io_context io;
-  Server server(config, io);
+  // Declared before the server: the calls it serves queue work on it.
+  AfterSurfacingQueue after(kAfterSurfacingWorkers, after_surfacing);
+  Server server(config, io, after);
   server.close_on_exec();
   boost::asio::signal_set signals(io, SIGINT, SIGTERM);
   signals.async_wait([&](const boost::system::error_code&, int) { server.stop(); });
@@ -137,6 +150,7 @@ void serve_forever(const ShoreConfig& config, const std::string& port_file) {
   if (!port_file.empty()) write_file_atomically(port_file, std::to_string(server.port()) + "\n");
   io.run();
   server.wait_for_calls();
+  after.drain(kAfterSurfacingDrainS);
   std::fprintf(stderr, "glider-shore: stopped\n");
 }
 

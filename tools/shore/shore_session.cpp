@@ -9,7 +9,6 @@
 #include <set>
 #include <vector>
 
-#include "after_surfacing.hpp"
 #include "console_link.hpp"
 #include "glider_folders.hpp"
 #include "received_files.hpp"
@@ -63,9 +62,10 @@ class CallClaim {
 class Call {
  public:
   Call(int fd, std::string peer, std::string call_stamp, unsigned call_number, const ShoreConfig& config,
-       const std::atomic<bool>& stop)
+       const std::atomic<bool>& stop, AfterSurfacingQueue& after)
       : config_(config),
         stop_(stop),
+        after_(after),
         call_stamp_(std::move(call_stamp)),
         call_number_(call_number),
         link_(fd, journal_, config.max_line) {
@@ -311,7 +311,8 @@ class Call {
       const std::string name = call_id_ + ".surfacing.json";
       write_file_atomically(folders_.logs / name, surfacing_event_json(record_));
       journal_.write('*', "event written: " + name);
-      for (const std::string& note : after_surfacing(folders_.base)) journal_.write('*', note);
+      // Health and forecast run off this thread: the call (and its slot) ends now.
+      after_.submit(folders_.base, journal_.path());
     } catch (const std::exception& error) {
       std::fprintf(stderr, "glider-shore: %s: event not written: %s\n", record_.glider.c_str(), error.what());
     }
@@ -329,6 +330,7 @@ class Call {
 
   const ShoreConfig& config_;
   const std::atomic<bool>& stop_;
+  AfterSurfacingQueue& after_;
   std::string call_stamp_;  // UTC second the call came in
   unsigned call_number_;    // this process's count: the first NNNN tried
   std::string call_id_;     // STAMP_NNNN, claimed with the journal
@@ -340,12 +342,13 @@ class Call {
 
 }  // namespace
 
-void serve_call(int fd, const std::string& peer, const ShoreConfig& config, const std::atomic<bool>& stop) {
+void serve_call(int fd, const std::string& peer, const ShoreConfig& config, const std::atomic<bool>& stop,
+                AfterSurfacingQueue& after) {
   // Calls are numbered so two in the same second get different journals;
   // the number is only where the search for a free name starts (open_new).
   static std::atomic<unsigned> counter{0};
   try {
-    Call call(fd, peer, utc_stamp(now_unix()), ++counter, config, stop);
+    Call call(fd, peer, utc_stamp(now_unix()), ++counter, config, stop, after);
     call.run();
   } catch (const std::exception& error) {
     std::fprintf(stderr, "glider-shore: call from %s: %s\n", peer.c_str(), error.what());

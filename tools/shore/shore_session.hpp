@@ -9,12 +9,15 @@
 #include <atomic>
 #include <string>
 
+#include "after_surfacing_queue.hpp"
 #include "shore_config.hpp"
 
 namespace glider::shore {
 
 // Serves the call on the connected socket `fd` (closed at the end). `stop`
-// ends it early (shore shutting down). Never throws.
-void serve_call(int fd, const std::string& peer, const ShoreConfig& config, const std::atomic<bool>& stop);
+// ends it early (shore shutting down). The glider's health and forecast are
+// queued on `after` once the event is written. Never throws.
+void serve_call(int fd, const std::string& peer, const ShoreConfig& config, const std::atomic<bool>& stop,
+                AfterSurfacingQueue& after);
 
 }  // namespace glider::shore
