@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The shore's after-surfacing queue (tools/shore/after_surfacing_queue.hpp):
+// The shore's after-surfacing queue (tools/shore/station/after_surfacing_queue.hpp):
 // a call hands its glider's health and forecast over and ends at once; one
 // glider's jobs run in turn and in order, different gliders side by side;
 // shutting down drops (and says so) what never started. Jobs here are fakes
