@@ -4,8 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <optional>
+
+#include "glider/utc_time.hpp"
 
 namespace glider::health {
 namespace {
@@ -133,14 +134,9 @@ std::string step_message(const HealthEffectInfo& e, double change, double low, d
 
 }  // namespace
 
-std::string utc_iso(double unix_seconds) {
-  const std::time_t t = static_cast<std::time_t>(std::floor(unix_seconds));
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
-}
+// The base library's one UTC writer (whole seconds, truncated toward the
+// earlier time as the floor before gmtime did; empty for a non-finite time).
+std::string utc_iso(double unix_seconds) { return utc::format_iso(std::floor(unix_seconds)); }
 
 Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::vector<Alert>& previous,
                   const AssessOptions& options) {
