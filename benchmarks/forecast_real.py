@@ -16,7 +16,9 @@ Each forecast's position error is split into terms (docs/forecast.md, "Where the
   current = (forecast current - the current the glider measured over the dive) x time under water
   time    = (forecast current - believed current) x (forecast - true time under water)
   rest    = error - the three (the runs' spread and median, the DR's own error)
-Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
+With --check (CTest forecast.real_comet_2019) it exits 1 unless each forecast's current is nearer the one
+the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two estimates).
+Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N] [--check]
 """
 import argparse
 import csv
@@ -159,6 +161,7 @@ def main():
     p.add_argument("--out", default=None)
     p.add_argument("--runs", type=int, default=200)
     p.add_argument("--waypoint", type=int, default=None, help="force this active waypoint for every forecast")
+    p.add_argument("--check", action="store_true", help="test mode: the current checks above, PASS/FAIL line")
     a = p.parse_args()
     out = a.out or os.path.join(a.build, "benchmark", "forecast_real")
     real = os.path.join(a.source, "tests", "data", "real")
@@ -185,6 +188,7 @@ def main():
                                 ["comet-2019-222-02-%d" % n for n in (154, 155, 156)],
                                 mission_waypoints(os.path.join(nsb3, "mafiles", "goto_l10.ma")), [dive0, dive1])
     rows = []
+    failures = []
     for k in range(2):
         d = os.path.join(out, "from%d" % k, "comet")
         shutil.rmtree(os.path.dirname(d), ignore_errors=True)
@@ -238,6 +242,12 @@ def main():
               "forecast %+.3f %+.3f, measured over the dive %+.3f %+.3f m/s) + time %.0f m + rest %.0f m" %
               (wpts[k], math.hypot(*err), math.hypot(*flight), flight[0], flight[1], math.hypot(*current),
                current[0], current[1], cp[0], cp[1], ct[0], ct[1], math.hypot(*timing), math.hypot(*rest)))
+        off = math.hypot(cp[0] - ct[0], cp[1] - ct[1])
+        persistence_off = math.hypot(cb[0] - ct[0], cb[1] - ct[1])
+        if not off < persistence_off:
+            failures.append("from surfacing %d the current is %.3f m/s off, persistence %.3f" % (k, off, persistence_off))
+        if k == 1 and not off < 0.1:
+            failures.append("from surfacing 1 the current is %.3f m/s off (0.1 allowed)" % off)
     med = lambda v: sorted(v)[len(v) // 2] if len(v) % 2 else 0.5 * sum(sorted(v)[len(v) // 2 - 1:len(v) // 2 + 1])
     print("\nreal comet-2019: %d forecasts" % len(rows))
     print("| | position median | position max | time median |\n|---|---|---|---|")
@@ -245,6 +255,9 @@ def main():
                                                          med([r[1] for r in rows]) / 60))
     print("| baseline (last current persists) | %.2f km | %.2f km | %.1f min |" %
           (med([r[2] for r in rows]) / 1000, max(r[2] for r in rows) / 1000, med([r[3] for r in rows]) / 60))
+    if a.check:
+        print("FAIL real_comet_2019: " + "; ".join(failures) if failures else "PASS real_comet_2019")
+        sys.exit(1 if failures else 0)
 
 
 if __name__ == "__main__":

@@ -85,12 +85,14 @@ fs::path vehicle_file(const fs::path& glider_dir, const std::string& glider, con
 // model) that part is taken out: the DR's through-water track of the segment
 // (its position on surfacing less the fix it dived from and the current it
 // already carried) times (ratio - 1), over the time.
-std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio) {
+std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio, double first_span_s) {
   std::vector<CurrentSample> out;
-  // The first event's estimate is of a segment before the history (its
-  // length unknown: taken as half an hour before the call).
+  // The first event's estimate is the mean over the segment that ended at
+  // its call, which began before the history: as long as the segments the
+  // mission flies (`first_span_s`, the coming dive's expected length).
   if (!history.empty() && history[0].water_vx_m_s && history[0].water_vy_m_s) {
-    out.push_back({history[0].call_start_utc_s - 1800.0, *history[0].water_vx_m_s, *history[0].water_vy_m_s});
+    out.push_back({history[0].call_start_utc_s - 0.5 * first_span_s, *history[0].water_vx_m_s, *history[0].water_vy_m_s,
+                   first_span_s});
   }
   for (std::size_t i = 1; i < history.size(); ++i) {
     const Surfacing& s = history[i];
@@ -381,7 +383,6 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double dr = std::hypot(r.dr_east_m, r.dr_north_m), truth = std::hypot(r.east_m, r.north_m);
     if (r.surfaced && !r.aborted && dr > 100.0 && truth / dr > 0.5 && truth / dr < 2.0) f.dr_speed_ratio = truth / dr;
   }
-  const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio);
   // when_secs counts from the arrival at the surface: the dive is shorter by the time spent up.
   double expected_s = now.config.plan.surface_interval_s > 0.0
                           ? std::max(60.0, now.config.plan.surface_interval_s - setup.surface_time_s)
@@ -390,8 +391,9 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double last_dive = history.back().call_start_utc_s - history[history.size() - 2].call_end_utc_s;
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);
   }
+  const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio, expected_s);
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s);
-  f.baseline_current = last_current(current_samples(history, 1.0));
+  f.baseline_current = last_current(current_samples(history, 1.0, expected_s));
   if (samples.empty()) {
     f.notes.push_back("no depth-averaged current from the surfacings yet (m_water_vx/vy): still water +- " +
                       std::to_string(f.current.sigma_east_m_s).substr(0, 4) + " m/s assumed");
