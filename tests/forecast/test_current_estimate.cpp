@@ -175,3 +175,15 @@ TEST(ForecastBelief, TheNavigatorDeadReckonsWithTheGlidersEstimateNotTheForecast
   CHECK_TEXT(miss_none > 0.5 * 0.20 * none.time_s, what.c_str());
   CHECK_TEXT(miss_known < 0.25 * miss_none, what.c_str());
 }
+
+TEST(ForecastCurrent, ASteadyCurrentAfterOneEstimateIsForecastAsATideWouldTurnIt) {
+  // The prior's cost in water without a tide (docs/forecast.md, Known
+  // limits): one 3 h estimate of a steady 0.2 m/s, the next 3 h dive 15 min
+  // later, is forecast as about 0.02 m/s with a sigma of 0.25 (the truth
+  // within it).
+  const std::vector<fc::CurrentSample> one{{5400.0, 0.2, 0.0, 10800.0}};
+  const fc::CurrentEstimate e = fc::estimate_current(one, 11700.0, 22500.0);
+  DOUBLES_EQUAL(0.02, e.east_m_s, 0.01);
+  DOUBLES_EQUAL(0.25, e.sigma_east_m_s, 0.01);
+  CHECK(0.2 - e.east_m_s < 1.96 * e.sigma_east_m_s);
+}
