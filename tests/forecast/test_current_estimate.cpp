@@ -4,7 +4,10 @@
 // Monte-Carlo flights. Seeded synthetic water, no shore folder.
 #include <CppUTest/TestHarness.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
 #include <string>
@@ -13,6 +16,7 @@
 #include "glider/firmware/mission_file/mission_loader.hpp"
 #include "glider/forecast/current_estimate.hpp"
 #include "glider/forecast/forecast.hpp"
+#include "glider/forecast/sil_truth.hpp"
 #include "glider/forecast/tidal_prior.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/mission_setup.hpp"
@@ -186,4 +190,54 @@ TEST(ForecastCurrent, ASteadyCurrentAfterOneEstimateIsForecastAsATideWouldTurnIt
   DOUBLES_EQUAL(0.02, e.east_m_s, 0.01);
   DOUBLES_EQUAL(0.25, e.sigma_east_m_s, 0.01);
   CHECK(0.2 - e.east_m_s < 1.96 * e.sigma_east_m_s);
+}
+
+TEST_GROUP(ForecastGliderAbort){};
+
+TEST(ForecastGliderAbort, AnAbortAtTheLastCallIsSaid) {
+  // A glider that surfaced by an abort waits for the pilot: the forecast says
+  // so (a note, "glider_aborted" with the cause) instead of forecasting a
+  // dive as if nothing happened; without the abort neither appears.
+  namespace fs = std::filesystem;
+  fc::TruthOptions o;
+  o.mission = GLIDER_SOURCE_DIR "/boards/missions/box_current/missions/box.mi";
+  o.vehicle = GLIDER_SOURCE_DIR "/boards/vehicles/slocum_shallow.toml";
+  o.seed = 5;
+  o.surfacings = 2;
+  const fc::Truth truth = fc::fly_truth(o);
+  const fs::path dir = fs::path(GLIDER_TEST_OUTPUT_DIR) / "forecast_glider_abort";
+  fs::remove_all(dir);
+  fc::write_glider_folder(truth, o, "unit", 1, dir);
+  fc::ForecastOptions options;
+  options.vehicle = o.vehicle.string();
+  options.runs = 4;
+  options.threads = 1;
+  options.write = false;
+  auto says_abort = [](const fc::Forecast& f) {
+    return std::any_of(f.notes.begin(), f.notes.end(),
+                       [](const std::string& n) { return n.find("surfaced by an abort") != std::string::npos; });
+  };
+  const fc::Forecast plain = fc::make_forecast(dir, options);
+  CHECK_FALSE(plain.glider_aborted);
+  CHECK_FALSE(says_abort(plain));
+  CHECK_TRUE(fc::forecast_json(plain)["glider_aborted"].is_null());
+
+  std::vector<fs::path> events;
+  for (const auto& e : fs::directory_iterator(dir / "logs")) events.push_back(e.path());
+  std::sort(events.begin(), events.end());
+  nlohmann::json last = nlohmann::json::parse(std::ifstream(events.back()));
+  last["reasons"] = {"Abort [behavior abend start_when = 0.0]"};
+  last["aborts"] = {{"total_since_reset", 1}, {"last_cause", "MS_ABORT_OVERDEPTH"}, {"last_details", "overdepth"}};
+  std::ofstream(events.back()) << last.dump(2) << "\n";
+  const fc::Forecast aborted = fc::make_forecast(dir, options);
+  CHECK_TRUE(aborted.glider_aborted);
+  CHECK_TRUE(says_abort(aborted));
+  STRCMP_EQUAL("MS_ABORT_OVERDEPTH: overdepth", aborted.glider_abort_cause.c_str());
+  STRCMP_EQUAL("MS_ABORT_OVERDEPTH: overdepth",
+               fc::forecast_json(aborted)["glider_aborted"]["cause"].get<std::string>().c_str());
+  // The shore's call after the surfacing says it in the journal line too (the
+  // pilot's vehicle file in the glider folder, as a first call has it).
+  fs::copy_file(o.vehicle, dir / "vehicle.toml", fs::copy_options::overwrite_existing);
+  const std::string line = fc::forecast_after_surfacing(dir);
+  CHECK_TEXT(line.find("surfaced by an abort (MS_ABORT_OVERDEPTH: overdepth)") != std::string::npos, line.c_str());
 }

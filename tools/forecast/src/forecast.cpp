@@ -292,6 +292,16 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     f.notes.push_back("the last call (" + history.back().file.filename().string() +
                       ") had no fix; forecast from the fix of " + last->file.filename().string());
   }
+  // The glider's own abort: after one it stays at the surface until the
+  // pilot resumes or restarts the mission; the runs fly it as resumed.
+  if (history.back().surfaced_by_abort) {
+    f.glider_aborted = true;
+    f.glider_abort_cause = history.back().last_abort_cause;
+    f.notes.push_back("the glider surfaced by an abort at its last call (" + history.back().reasons +
+                      (f.glider_abort_cause.empty() ? "" : "; last abort: " + f.glider_abort_cause) +
+                      "): it does not dive again until the mission is resumed or restarted; the runs fly it as "
+                      "resumed, and abort_risk is theirs");
+  }
   f.glider = last->glider;
   f.fix_lat_deg = *last->lat_deg;
   f.fix_lon_deg = *last->lon_deg;
@@ -447,6 +457,7 @@ nlohmann::json forecast_json(const Forecast& f) {
     out["next_surfacing"] = nullptr;
   }
   out["abort_risk"] = f.abort_risk;
+  out["glider_aborted"] = f.glider_aborted ? json{{"cause", f.glider_abort_cause}} : json(nullptr);
   out["abort_causes"] = json::object();
   for (const auto& [cause, fraction] : f.abort_causes) out["abort_causes"][cause] = fraction;
   out["current"] = {{"east_m_s", f.current.east_m_s},
@@ -590,6 +601,9 @@ std::string forecast_after_surfacing(const fs::path& glider_dir) {
     const Forecast f = make_forecast(glider_dir, options);
     char text[400];
     if (!f.refusal.empty()) return "forecast: the mission is refused: " + f.refusal;
+    const std::string aborted = f.glider_aborted ? "; the glider surfaced by an abort (" + f.glider_abort_cause +
+                                                       "): it waits for the pilot, the runs fly it as resumed"
+                                                 : "";
     if (!f.have_surfacing) {
       std::snprintf(text, sizeof text, "forecast: no run surfaces normally; abort risk %.0f %% (%.1f s)",
                     100.0 * f.abort_risk, f.wall_s);
@@ -600,7 +614,7 @@ std::string forecast_after_surfacing(const fs::path& glider_dir) {
                     f.lat_deg, f.lon_deg, format_utc(f.time_utc_s).c_str(), f.ellipse.semi_major_m,
                     f.ellipse.semi_minor_m, 100.0 * f.abort_risk, f.runs, f.wall_s);
     }
-    return text;
+    return text + aborted;
   } catch (const std::exception& e) {
     const std::string message = std::string("forecast: failed: ") + e.what();
     try {
