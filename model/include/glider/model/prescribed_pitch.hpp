@@ -60,6 +60,7 @@ class PrescribedPitchDynamics {
 
  private:
   GliderDynamics dynamics_;  // its environment carries only the gravity
+  PolarSlopes slopes_;       // of the vehicle's polar, once (hydrodynamics.hpp)
   // What a stage needs of its inputs alone (masses, net weight, the pitch's
   // sine and cosine), kept for the last inputs: RK4's two middle stages share
   // them, and a step's last stage is usually the next step's first. The same
@@ -69,9 +70,18 @@ class PrescribedPitchDynamics {
     bool valid = false;
     PrescribedPitchInputs in;
     double a11 = 0.0, a33 = 0.0, a13 = 0.0, a23 = 0.0;  // translational mass (A(0,0), A(1,1), A(0,2), A(1,2))
-    double net_kg = 0.0, sin_theta = 0.0, cos_theta = 1.0;
+    double net_kg = 0.0;
   };
   mutable StageInputs stage_;
+  // The pitch's sine and cosine, for the last pitch: a step's first stage
+  // has the pitch of the last step's last stage (the same Hermite value) even
+  // where its other inputs differ in the last bit (the lagged ballast's
+  // m3 -> cc -> m3), and a sincos is a tenth of a diagnosis.
+  struct Pitch {
+    bool valid = false;
+    double theta_rad = 0.0, sin_theta = 0.0, cos_theta = 1.0;
+  };
+  mutable Pitch pitch_;
 };
 
 }  // namespace glider::model
