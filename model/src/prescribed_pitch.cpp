@@ -76,9 +76,11 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
               a.a13,
               a.a23,
               m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water)};
-    if (!(pitch_.valid && eq(in.theta_rad, pitch_.theta_rad))) {
-      pitch_ = {true, in.theta_rad, std::sin(in.theta_rad), std::cos(in.theta_rad)};
-    }
+  }
+  if (!std::isnan(in.sin_theta)) {
+    pitch_ = {true, in.theta_rad, in.sin_theta, in.cos_theta};
+  } else if (!(pitch_.valid && eq(in.theta_rad, pitch_.theta_rad))) {
+    pitch_ = {true, in.theta_rad, std::sin(in.theta_rad), std::cos(in.theta_rad)};
   }
   const Eigen::Vector2d v = velocities_from({stage_.a11, stage_.a33, stage_.a13, stage_.a23}, p, in.q_rad_s);
   const double net_kg = stage_.net_kg;

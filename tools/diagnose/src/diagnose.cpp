@@ -958,7 +958,7 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
 // partner was not named (docs/science.md). So where a finding and a
 // candidate not taken alias (the identifiability screen's pairs), both are
 // fitted together; where that joint fit says the candidate is there (its own
-// interval excludes "no effect", its value plausible), the finding's
+// interval excludes "no effect", both values plausible), the finding's
 // interval also holds the finding's interval in the joint fit. Where the
 // joint fit cannot see the candidate, the conditional interval stands.
 void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
@@ -982,6 +982,7 @@ void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseO
                                         [&](const Finding& x) { return x.fitted && x.effect == effect; });
       if (finding == d.findings.end()) continue;
       const double raw = f.parameters.values[static_cast<std::size_t>(effect)];
+      if (!plausible(effect, raw)) continue;  // a reading the prior rules out (flight_model.cpp's ranges)
       const double value = is_lag(effect) ? std::abs(raw) : raw;
       const double half = kZ95 * f.sigma[pair.finding];
       const double low = is_lag(effect) ? std::max(0.0, value - half) : value - half;

@@ -14,6 +14,7 @@
 // replaced by the measurement. The slide's own impulse (b) is neglected: the
 // battery moves at ~1 mm/s.
 #include <Eigen/Core>
+#include <limits>
 
 #include "glider/model/dynamics.hpp"
 
@@ -27,6 +28,10 @@ struct PrescribedPitchInputs {
   double depth_m = 0.0;  // measured depth (hydrostatics)
   double density_kg_m3 = 1025.0;
   double temperature_c = 10.0;
+  // sin and cos of theta_rad where the caller has them (a table of a
+  // track's stages); NaN: derivative() computes them.
+  double sin_theta = std::numeric_limits<double>::quiet_NaN();
+  double cos_theta = std::numeric_limits<double>::quiet_NaN();
 };
 
 class PrescribedPitchDynamics {
