@@ -267,7 +267,7 @@ def main():
                    'and the pairs inside it)')
     p.add_argument('--build', default=os.environ.get('GLIDER_BUILD_DIR', 'build/release'))
     p.add_argument('--truth', help='glider-truth (default: BUILD/tools/science/truth/glider-truth)')
-    p.add_argument('--diagnose', help='glider-diagnose (default: BUILD/tools/diagnose/glider-diagnose)')
+    p.add_argument('--diagnose', help='glider-diagnose (default: BUILD/tools/science/diagnose/glider-diagnose)')
     p.add_argument('--source', default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     p.add_argument('--out', help='directory for the logs (default: a temporary one)')
     p.add_argument('--keep', action='store_true', help='keep the logs and truths')
@@ -282,7 +282,7 @@ def main():
         print(table(results, cases))
         return 0
     args.truth = args.truth or os.path.join(args.build, 'tools', 'science', 'truth', 'glider-truth')
-    args.diagnose = args.diagnose or os.path.join(args.build, 'tools', 'diagnose', 'glider-diagnose')
+    args.diagnose = args.diagnose or os.path.join(args.build, 'tools', 'science', 'diagnose', 'glider-diagnose')
     for program in (args.truth, args.diagnose):
         if not os.access(program, os.X_OK):
             print('diagnose_truth_coverage: %s is not built' % program, file=sys.stderr)

@@ -91,7 +91,7 @@ def main():
     real = os.path.join(a.source, "tests", "data", "real")
     nsb3 = os.path.join(a.source, "boards", "missions", "comet-nsb3")
     vehicle = os.path.join(a.source, "boards", "vehicles", "slocum_comet.toml")
-    forecast = os.path.join(a.build, "tools", "forecast", "glider-forecast")
+    forecast = os.path.join(a.build, "tools", "shore", "forecast", "glider-forecast")
     files = [load(os.path.join(real, n + ".csv")) for n in ("comet-2019-222-02-154", "comet-2019-222-02-156")]
     # Surfacings: [0] before 154's dive, [1] between 154 and 156, [2] after 156.
     fix0, dive0, water0, start0 = dive_start(files[0])

@@ -5,7 +5,7 @@
 #
 # Notebook-style (cells marked `# %%`; runs as a script too):
 #
-#     ./glider build && PYTHONPATH=build/release/tools/python python3 docs/python/comet_2016_diagnosis.py [OUT_DIR]
+#     ./glider build && PYTHONPATH=build/release/tools/files/python python3 docs/python/comet_2016_diagnosis.py [OUT_DIR]
 #
 # Reads the 20 binary files of comet's 2016 Baltic deployment (10 .dbd + 10
 # .ebd, sensor lists in cac/) as one log, flies the nominal vehicle through

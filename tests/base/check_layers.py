@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """The floors of docs/architecture.md hold: an include and a library link only
 ever point down (or stay on the same floor), and the two middle floors (model/
-and firmware/) do not use each other. Reads the sources and CMakeLists.txt as
+and firmware/) do not use each other; tools/ holds only wings, each listing its
+folders in its README.md. Reads the sources and CMakeLists.txt as
 text; exits 1 naming each file:line that points up."""
 import os
 import re
@@ -80,9 +81,37 @@ for rel in cmake_files:
             other = floor_of(libraries[name])
             if other and not allowed(own, other):
                 problems.append(f"{rel}:{number}: {own[1]} links {name} ({other[1]}, {libraries[name]})")
+# The wings of floor 4 (docs/architecture.md): every folder under tools/ is a wing, and every folder in a
+# wing is listed (as `name/`) in the wing's README.md, so new code lands in the wing of its job.
+WINGS = ("files", "science", "hardware", "shore", "fleet")
+
+
+def folders(path):
+    """Sub-folders holding a file (a folder left with only __pycache__ or build/ output does not count)."""
+    found = []
+    for name in sorted(os.listdir(path)):
+        full = os.path.join(path, name)
+        if os.path.isdir(full) and name not in ("build", "__pycache__") and any(
+                files_here for d, _, files_here in os.walk(full) if "__pycache__" not in d.split(os.sep)):
+            found.append(name)
+    return found
+
+
+tools = os.path.join(ROOT, "tools")
+for name in folders(tools):
+    checked += 1
+    if name not in WINGS:
+        problems.append(f"tools/{name}/: not a wing ({', '.join(WINGS)}): new code goes into the wing of its job")
+        continue
+    readme = os.path.join(tools, name, "README.md")
+    listed = open(readme).read() if os.path.exists(readme) else ""
+    for sub in folders(os.path.join(tools, name)):
+        checked += 1
+        if f"`{sub}/`" not in listed:
+            problems.append(f"tools/{name}/README.md: does not list `{sub}/` (one line: what it holds)")
 for p in problems:
     print(p)
 if problems:
-    print(f"FAIL layers: {len(problems)} of {checked} includes and links point up")
+    print(f"FAIL layers: {len(problems)} of {checked} includes, links and tools/ folders out of place")
     sys.exit(1)
-print(f"PASS layers: {checked} includes and links point down or sideways")
+print(f"PASS layers: {checked} includes and links point down or sideways, tools/ folders in their wings")

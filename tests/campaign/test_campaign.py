@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""Tests of tools/campaign with the real glider-sil: the generator against
+"""Tests of tools/fleet/campaign with the real glider-sil: the generator against
 splitmix64's published output and pinned draws, run i independent of the
 sharding, cards that fail and cards that are refused (table, JUnit XML,
 exit status), bad parameters, partial results and the failure ranking.
@@ -19,7 +19,7 @@ import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-TOOL = os.path.join(ROOT, "tools", "campaign", "glider_campaign.py")
+TOOL = os.path.join(ROOT, "tools", "fleet", "campaign", "glider_campaign.py")
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(TOOL))
 import campaign  # noqa: E402

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """Flight test cards refuse bad numbers, with the ranges of glider-sil's options.
 
-The card's numbers (tools/campaign/cards.py NUMBER_KEYS) become glider-sil's
+The card's numbers (tools/fleet/campaign/cards.py NUMBER_KEYS) become glider-sil's
 options: their ranges must be the ones glider-sil --list-numeric-options
 prints (the table cannot drift), and every key, and a [[fault]]'s at_s, is
 given NaN, +-inf, +-1e308 and values just outside its range: each must be a
@@ -26,7 +26,7 @@ def fail(message):
 
 def main():
     source_dir, sil = sys.argv[1], sys.argv[2]
-    sys.path.insert(0, os.path.join(source_dir, "tools", "campaign"))
+    sys.path.insert(0, os.path.join(source_dir, "tools", "fleet", "campaign"))
     import cards  # noqa: E402 (the campaign tool's own loader)
 
     listing = json.loads(subprocess.run([sil, "--list-numeric-options"], capture_output=True, text=True,

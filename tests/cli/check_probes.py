@@ -39,7 +39,7 @@ def main():
     source, build = sys.argv[1], sys.argv[2]
     sil = os.path.join(build, "sil", "glider-sil")
     firmware = os.path.join(build, "firmware", "linux", "glider-firmware")
-    actuator_sim = os.path.join(build, "tools", "actuator_sim", "glider-actuator-sim")
+    actuator_sim = os.path.join(build, "tools", "hardware", "actuator_sim", "glider-actuator-sim")
     board = os.path.join(source, "boards", "target", "cm4_glider.toml")
     with tempfile.TemporaryDirectory() as tmp:
         for name in ("mission.mi", "mission.toml"):

@@ -51,7 +51,7 @@ def main():
     source = sys.argv[1]
     cases = int(sys.argv[2]) if len(sys.argv) > 2 else 3000
     seed = int(sys.argv[3]) if len(sys.argv) > 3 else 20261127
-    sys.path.insert(0, os.path.join(source, "tools", "campaign"))
+    sys.path.insert(0, os.path.join(source, "tools", "fleet", "campaign"))
     import cards  # noqa: E402
     import tomllib  # noqa: E402
 

@@ -49,8 +49,8 @@ procs = []
 
 
 firmware = os.path.join(build, "firmware/linux/glider-firmware")
-plant_bin = os.path.join(build, "tools/plant/glider-plant")
-shore_bin = os.path.join(build, "tools/shore/glider-shore")
+plant_bin = os.path.join(build, "tools/hardware/plant/glider-plant")
+shore_bin = os.path.join(build, "tools/shore/station/glider-shore")
 for b in (firmware, plant_bin, shore_bin):
     if not os.path.exists(b):
         print("SKIP: %s not built" % b)

@@ -108,7 +108,7 @@ def summary(events, journals):
 
 
 glider_sil = os.path.join(build, "sil/glider-sil")
-shore_bin = os.path.join(build, "tools/shore/glider-shore")
+shore_bin = os.path.join(build, "tools/shore/station/glider-shore")
 work = tempfile.mkdtemp(prefix="sil_hil_same_")
 try:
     hil_keep = os.path.join(work, "hil")

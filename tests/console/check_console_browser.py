@@ -6,7 +6,7 @@ against a glider-shore fed by three SIL gliders over loopback RUDICS:
 runs: cd0 0.214 -> 0.300, drag +40 %) and "aborting" (a leak at 2500 s: the
 firmware aborts, surfaces and calls). Their health and forecast are the
 shore's own: after every call glider-shore runs health and the forecast
-(tools/shore/after_surfacing.cpp) on the .sbd files the glider sent, with what
+(tools/shore/station/after_surfacing.cpp) on the .sbd files the glider sent, with what
 a pilot puts in each glider's folder: its vehicle file (GLIDER/vehicle.toml)
 and a copy of the mission it flies (GLIDER/mission/). Steps:
  1. fleet page: three rows in attention order - aborting (abort), fouling

@@ -46,7 +46,7 @@ with open(csv, "w") as f:  # 3000 DR rows then a fix: a long segment's track
         f.write("%d,,,%.4f,%.4f\n" % (k, 5418.0 + k * 0.001, 724.0 + k * 0.0005))
     f.write("3000,5421.0100,725.5000,,\n")
 
-shore = h.Shore(os.path.join(a.build, "tools", "shore", "glider-shore"), work,
+shore = h.Shore(os.path.join(a.build, "tools", "shore", "station", "glider-shore"), work,
                 ["--http-threads", str(max(64, a.clients + a.streams + 16)), "--max-streams", str(a.streams + 10)])
 stop = threading.Event()
 

@@ -5,8 +5,8 @@
 # mission. Usage: check_bad_input.sh BUILD_DIR SOURCE_DIR OUT_DIR
 set -u
 build=$1 source=$2 out=$3
-bench=$build/tools/forecast/glider-forecast-bench
-forecast=$build/tools/forecast/glider-forecast
+bench=$build/tools/shore/forecast/glider-forecast-bench
+forecast=$build/tools/shore/forecast/glider-forecast
 fail() { echo "FAIL bad_input: $*"; exit 1; }
 rm -rf "$out" && mkdir -p "$out" || fail "cannot make $out"
 "$bench" --out "$out/bench" --seed 6 --truths 1 --surfacings 2 --from 1 --runs 2 >"$out/bench.txt" 2>&1 ||

@@ -8,8 +8,8 @@
 # BUILD_DIR SOURCE_DIR OUT_DIR
 set -u
 build=$1 source=$2 out=$3
-bench=$build/tools/forecast/glider-forecast-bench
-forecast=$build/tools/forecast/glider-forecast
+bench=$build/tools/shore/forecast/glider-forecast-bench
+forecast=$build/tools/shore/forecast/glider-forecast
 fail() { echo "FAIL model_miss: $*"; exit 1; }
 rm -rf "$out" && mkdir -p "$out" || fail "cannot make $out"
 "$bench" --out "$out/bench" --seed 11 --truths 1 --surfacings 5 --from 4 --runs 20 --threads 1 \

@@ -9,9 +9,9 @@
 # Usage: check_rehearse.sh BUILD_DIR SOURCE_DIR OUT_DIR
 set -u
 build=$1 source=$2 out=$3
-bench=$build/tools/forecast/glider-forecast-bench
-forecast=$build/tools/forecast/glider-forecast
-shore=$build/tools/shore/glider-shore
+bench=$build/tools/shore/forecast/glider-forecast-bench
+forecast=$build/tools/shore/forecast/glider-forecast
+shore=$build/tools/shore/station/glider-shore
 fail() { echo "FAIL rehearse: $*"; exit 1; }
 rm -rf "$out" && mkdir -p "$out/root" "$out/files" || fail "cannot make $out"
 "$bench" --out "$out/bench" --seed 5 --truths 1 --surfacings 2 --from 1 --runs 5 >"$out/bench.txt" 2>&1 ||

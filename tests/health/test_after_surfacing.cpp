@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The shore's hook after a surfacing event (tools/shore/after_surfacing.cpp):
+// The shore's hook after a surfacing event (tools/shore/station/after_surfacing.cpp):
 // on a glider folder it writes health/ (state, report, vehicle file, plots)
 // and says so in one note, then the forecast its own; on a folder it cannot use it says why in a note
 // and never throws (a call must never break on it).

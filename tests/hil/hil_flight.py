@@ -261,7 +261,7 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     # an abort case only needs its minute after the abort, plus start-up.
     limit_s = stop_s / scale * 1.3 + 10.0 if case["end"] == "complete" else stop_s / scale + 3.0
     plant_dir = os.path.join(tmp, "plant")
-    plant_args = [os.path.join(build, "tools", "plant", "glider-plant"), "--dir", plant_dir, "--vehicle", VEHICLE,
+    plant_args = [os.path.join(build, "tools", "hardware", "plant", "glider-plant"), "--dir", plant_dir, "--vehicle", VEHICLE,
                   "--seed", str(SEED), "--time-scale", str(scale), "--duration-s", str((limit_s + 30.0) * scale)]
     for f in case["plant"]:
         plant_args += ["--fault", f]

@@ -122,7 +122,7 @@ def main():
     soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
     resource.setrlimit(resource.RLIMIT_NOFILE, (min(hard, 4096), hard))
     with tempfile.TemporaryDirectory() as tmp:
-        plant = subprocess.Popen([os.path.join(build, "tools", "plant", "glider-plant"), "--dir", tmp,
+        plant = subprocess.Popen([os.path.join(build, "tools", "hardware", "plant", "glider-plant"), "--dir", tmp,
                                   "--max-clients", str(MAX_CLIENTS), "--request-timeout-ms", "300",
                                   "--idle-timeout-ms", "5000"],
                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)

@@ -71,7 +71,7 @@ def main():
     firmware = os.environ.get("GLIDER_FIRMWARE", os.path.join(build, "firmware", "linux", "glider-firmware"))
     prefix = os.environ.get("GLIDER_FIRMWARE_PREFIX", "").split()
     with tempfile.TemporaryDirectory() as tmp:
-        sim = start([os.path.join(build, "tools", "actuator_sim", "glider-actuator-sim"), "--tcp", "127.0.0.1:0"],
+        sim = start([os.path.join(build, "tools", "hardware", "actuator_sim", "glider-actuator-sim"), "--tcp", "127.0.0.1:0"],
                     stdout=subprocess.PIPE, text=True)
         port = re.search(r"serving tcp 127\.0\.0\.1:(\d+)", sim.stdout.readline())
         if not port:

@@ -6,7 +6,7 @@
 # usage: bench_cli.sh BUILD_DIR
 set -euo pipefail
 build="$1"
-bench="$build/tools/bench/glider-bench"
+bench="$build/tools/hardware/bench/glider-bench"
 tmp="$(mktemp -d /tmp/glider-bench-cli.XXXXXX)"
 sim_pid=""
 cleanup() { [ -n "$sim_pid" ] && { kill "$sim_pid" 2>/dev/null; wait "$sim_pid" 2>/dev/null; }; rm -rf "$tmp"; }
@@ -21,7 +21,7 @@ expect() {  # expect EXIT_CODE PATTERN -- COMMAND...
   grep -Eq -- "$pattern" <<<"$out" || fail "output does not match: $pattern"
 }
 
-"$build/tools/actuator_sim/glider-actuator-sim" --tcp 127.0.0.1:0 --time-scale 20 >"$tmp/sim" & sim_pid=$!
+"$build/tools/hardware/actuator_sim/glider-actuator-sim" --tcp 127.0.0.1:0 --time-scale 20 >"$tmp/sim" & sim_pid=$!
 for _ in $(seq 100); do grep -q serving "$tmp/sim" && break; sleep 0.05; done
 port="$(sed -n 's/.*serving tcp 127.0.0.1:\([0-9]*\).*/\1/p' "$tmp/sim")"
 at=(--tcp "127.0.0.1:$port")

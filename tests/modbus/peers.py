@@ -75,7 +75,7 @@ def run(args, timeout=30):
 
 
 def start_simulator(build, endpoint):
-    sim = start([os.path.join(build, "tools/actuator_sim/glider-actuator-sim"), "--time-scale", "20"] + endpoint,
+    sim = start([os.path.join(build, "tools/hardware/actuator_sim/glider-actuator-sim"), "--time-scale", "20"] + endpoint,
                 stdout=subprocess.PIPE, text=True)
     line = sim.stdout.readline()
     if "serving" not in line:
@@ -143,7 +143,7 @@ def serve_pymodbus(transport, where):
 
 def pymodbus_case(build, transport, where, bench_endpoint):
     start(["/usr/bin/python3", os.path.abspath(__file__), "serve-pymodbus", transport, where])
-    bench = [os.path.join(build, "tools/bench/glider-bench")] + bench_endpoint
+    bench = [os.path.join(build, "tools/hardware/bench/glider-bench")] + bench_endpoint
     deadline = time.monotonic() + 15
     while True:
         result = run(bench + ["status"])

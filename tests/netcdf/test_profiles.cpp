@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Profiles and phases (tools/netcdf/trajectory.hpp) on a real log and on
+// Profiles and phases (tools/files/netcdf/trajectory.hpp) on a real log and on
 // versions of it made worse: thinned (every 4th and every 8th cycle), with
 // holes in the middle of dives, a single dive alone, the surface alone.
 // The full log's profiles are checked against the log's own dive record

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 """`pip install .` (pyproject.toml, the in-tree PEP 517 backend
-tools/python/packaging/glider_build_backend.py) into a fresh venv made with
+tools/files/python/packaging/glider_build_backend.py) into a fresh venv made with
 Debian's python3 --system-site-packages, offline (--no-index,
 --no-build-isolation), then `import glider` from outside the source and build
 trees. CTest python.pip_install (TIMEOUT 300: it configures CMake and builds
@@ -76,7 +76,7 @@ def test_pip_install_into_a_venv_and_import_from_outside_the_tree(work):
 
 def test_the_wheel_metadata_comes_from_the_project_files(tmp_path):
     """Version from CMakeLists.txt, dependencies from pyproject.toml, tag of this interpreter; the sdist."""
-    sys.path.insert(0, str(ROOT / "tools" / "python" / "packaging"))
+    sys.path.insert(0, str(ROOT / "tools" / "files" / "python" / "packaging"))
     try:
         import glider_build_backend as backend
     finally:
@@ -90,7 +90,7 @@ def test_the_wheel_metadata_comes_from_the_project_files(tmp_path):
     name = backend.build_sdist(str(tmp_path))
     with tarfile.open(tmp_path / name) as sdist:
         names = set(sdist.getnames())
-    for needed in ("pyproject.toml", "CMakeLists.txt", "tools/python/packaging/glider_build_backend.py",
-                   "tools/python/glider_module.cpp", "docs/python.md", "LICENSE", "PKG-INFO"):
+    for needed in ("pyproject.toml", "CMakeLists.txt", "tools/files/python/packaging/glider_build_backend.py",
+                   "tools/files/python/glider_module.cpp", "docs/python.md", "LICENSE", "PKG-INFO"):
         assert f"glider-0.1.0/{needed}" in names, needed
     assert not any(n.startswith("glider-0.1.0/build/") for n in names)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The heading replay out of sample (issue 26 item 6): the loop glider-diagnose
 // identifies on one comet log, flown in SIL on the heading-hold mission
-// (tools/heading_study/heading_replay.hpp), predicts ANOTHER comet log's
+// (tools/science/heading_study/heading_replay.hpp), predicts ANOTHER comet log's
 // heading, with the tolerances sil.SilHeadingReplay holds it to on the log it
 // was identified on (tests/sil/test_heading_replay.cpp): the median steady
 // error per glide direction within 4 deg. Everything the replay flies - the

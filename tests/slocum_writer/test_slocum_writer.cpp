@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The firmware's Slocum writer (docs/slocum-binary.md, "Writing") checked
-// with the project's reader (tools/slocum): a SIL flight's .dbd equals its
+// with the project's reader (tools/files/slocum): a SIL flight's .dbd equals its
 // CSV log value for value (8-byte sensors bit for bit, 4-byte ones as the
 // float nearest the logged double, integers exactly); the .sbd holds what
 // its sbdlist asks and nothing else; the caches' CRCs are Slocum's; a power

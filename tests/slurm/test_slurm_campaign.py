@@ -23,7 +23,7 @@ sys.path.insert(0, HERE)
 import single_node_cluster  # noqa: E402
 
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-TOOL = os.path.join(ROOT, "tools", "campaign", "glider_campaign.py")
+TOOL = os.path.join(ROOT, "tools", "fleet", "campaign", "glider_campaign.py")
 VEHICLE = os.path.join(ROOT, "boards", "vehicles", "slocum_we01.toml")
 LOGS = [os.path.join(ROOT, "tests", "data", "real", f"comet-2019-222-02-{n}.csv") for n in (154, 156)]
 CAMPAIGN = os.path.join(HERE, "box_small.toml")

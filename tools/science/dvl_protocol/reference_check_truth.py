@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""The DVL reference check (tools/diagnose speed_reference.hpp) validated on the
+"""The DVL reference check (tools/science/diagnose speed_reference.hpp) validated on the
 independent truth: glider-truth flies a log with a DVL's speed through water
 (the true speed plus white noise), the speed is corrupted in known yos (scaled
 by a factor, as gliderflight-adcp's yo 17 reads 0.65 of its neighbours), and
@@ -69,7 +69,7 @@ def one_log(build, draw_seed, workdir):
             corrupted_means[y].append(float(f[dvl_col]))
             lines[i] = ",".join(f) + "\n"
     open(csv, "w").writelines(lines)
-    run = subprocess.run([os.path.join(build, "tools/diagnose/glider-diagnose"), csv, "--vehicle",
+    run = subprocess.run([os.path.join(build, "tools/science/diagnose/glider-diagnose"), csv, "--vehicle",
                           os.path.join(ROOT, "boards/vehicles/slocum_shallow.toml"), "--plane", "vertical", "--json"],
                          capture_output=True, text=True)
     os.remove(csv)

@@ -50,7 +50,7 @@ struct FlightLogRecord {
 
 // The flight log's one schema: every firmware column in file order, with its
 // unit. The SIL writer, the target writer and the reader
-// (tools/flightlog/src/columns.cpp) all work from this table, and a test
+// (tools/files/flightlog/src/columns.cpp) all work from this table, and a test
 // checks it against the table in docs/flight-log.md. m_present_time is the
 // first column (the writers format it from the row's time); kNumber columns
 // are written as the shortest round-trip text (std::to_chars), kInteger ones

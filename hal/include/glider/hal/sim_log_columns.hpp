@@ -3,7 +3,7 @@
 // The log schema's second part: the columns the SIL appends after the
 // firmware's (hal::kLogColumns), typed as the firmware's are, with their
 // units. The SIL writer (sil/src/csv_flight_log.cpp) writes them from this
-// table, the reader (tools/flightlog/src/columns.cpp) takes their units from
+// table, the reader (tools/files/flightlog/src/columns.cpp) takes their units from
 // it, and a test checks it against the table in docs/flight-log.md. The
 // sci_* columns are the simulated science CTD's readings (NaN: no reading),
 // the sim_* columns the simulator's truths, never needed by an analysis.

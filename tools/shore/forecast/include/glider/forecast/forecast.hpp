@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Where the glider surfaces next (issue 24 part 3; docs/forecast.md): the
+// rest of the dive cycle flown in SIL - the real firmware against the
+// vehicle model, in-process - from the last fix, Monte-Carlo over the
+// current's and the model's uncertainty, with the baseline "the last
+// depth-averaged current persists" beside it. Also the rehearsal of a .ma
+// or .mi before it is sent.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glider/forecast/current_estimate.hpp"
+#include "glider/forecast/mission_now.hpp"
+#include "glider/model/vehicle.hpp"
+
+namespace glider::forecast {
+
+struct ForecastOptions {
+  std::string mission;     // --mission FILE.mi (default: GLIDER/mission/)
+  std::string vehicle;     // --vehicle FILE (default: health/vehicle.toml, else boards/gliders.toml's)
+  std::string boards_dir;  // for gliders.toml (default: glider::cli::boards_dir())
+  int runs = 200;
+  int threads = 2;
+  std::uint64_t seed = 1;
+  double max_working_depth_m = 100.0;
+  double drag_sigma = 0.05;           // 1 sigma of the drag coefficient's relative error
+  double buoyancy_sigma_kg = 0.010;   // 1 sigma of the vehicle's net buoyancy trim
+  double max_dive_s = 12.0 * 3600.0;  // a run with no surfacing by then counts as "no_surfacing"
+  int waypoint = -1;  // --waypoint: the active waypoint now (-1: replayed from the events since the plan began)
+  std::vector<std::filesystem::path> rehearse;  // files applied after the queue (rehearsal)
+  bool include_queue = true;
+  bool write = true;  // write forecast/forecast.json
+};
+
+struct RunOutcome {
+  bool surfaced = false;
+  bool aborted = false;
+  std::string cause;                         // abort cause id, or "no_surfacing"
+  double time_s = 0.0;                       // from the dive start (the last call's end)
+  double east_m = 0.0, north_m = 0.0;        // from the last fix
+  std::int32_t waypoints_reached = 0;        // counted by the firmware in this run
+  double dr_east_m = 0.0, dr_north_m = 0.0;  // the firmware's dead-reckoned position on surfacing
+};
+
+struct Ellipse {
+  double semi_major_m = 0.0, semi_minor_m = 0.0,
+         orientation_deg = 0.0;  // orientation: of the major axis, deg from north, clockwise
+};
+
+struct Forecast {
+  std::string glider;
+  double made_utc_s = 0.0;
+  double fix_lat_deg = 0.0, fix_lon_deg = 0.0, fix_utc_s = 0.0;
+  double dive_utc_s = 0.0;
+  bool have_surfacing = false;  // at least one run surfaced
+  double lat_deg = 0.0, lon_deg = 0.0;
+  double east_m = 0.0, north_m = 0.0;  // median, from the fix
+  double time_utc_s = 0.0, time_p10_utc_s = 0.0, time_p90_utc_s = 0.0;
+  Ellipse ellipse;
+  double abort_risk = 0.0;
+  std::map<std::string, double> abort_causes;
+  bool baseline_ok = false;
+  double baseline_lat_deg = 0.0, baseline_lon_deg = 0.0, baseline_time_utc_s = 0.0;
+  double baseline_east_m = 0.0, baseline_north_m = 0.0;
+  CurrentEstimate current, baseline_current;
+  double dr_speed_ratio = 1.0;  // true over dead-reckoned speed through the water (the model's calibration)
+  // The model's own miss on the glider's recent dives, flown again with the
+  // current each one measured (the waypoint replay's flights): RMS east and
+  // north and their correlation, over `model_miss_dives` dives of the last
+  // day (0: none to check, no term added).
+  double model_miss_east_m = 0.0, model_miss_north_m = 0.0, model_miss_correlation = 0.0;
+  int model_miss_dives = 0;
+  int runs = 0;
+  double wall_s = 0.0;
+  std::string mission;
+  std::string vehicle_source;
+  std::vector<std::string> queued_applied;
+  std::vector<std::string> notes;
+  std::string refusal;  // the firmware refuses the mission or a queued/rehearsed file
+};
+
+// The forecast from the glider folder (shore layout, docs/comms.md). Throws
+// std::runtime_error naming the file for bad input (no fix, a malformed
+// event, no mission, a vehicle that cannot glide).
+Forecast make_forecast(const std::filesystem::path& glider_dir, const ForecastOptions& options);
+
+// The Monte-Carlo flights alone, for the benchmark and tests: `n` runs of
+// the plan from a fix, seeds options.seed + i, deterministic per seed
+// whatever the thread count.
+struct FlightSetup {
+  model::VehicleParams vehicle;
+  fw::FlightSoftwareConfig config;  // the plan already the remaining one
+  fw::LatLon fix{};
+  CurrentEstimate current;  // the water's (drawn from in the Monte-Carlo)
+  // What the glider's navigator believes (its m_water_vx/vy at the dive): it
+  // steers and dead-reckons with this; none: it has no estimate yet.
+  std::optional<fw::EastNorth> firmware_current;
+  double overtime_left_s = 0.0;  // the mission's overtime limit minus the mission time at the fix (0: none)
+  // How long the glider had been at the surface when it dived (the call's
+  // start to its end): a Slocum's when_secs counts from the arrival at the
+  // surface and from the call, not from the dive (FlightSoftware::seed_clocks).
+  double surface_time_s = 0.0;
+};
+std::vector<RunOutcome> fly_runs(const FlightSetup& setup, const ForecastOptions& options, int n, bool vary);
+
+nlohmann::json forecast_json(const Forecast& f);
+std::string forecast_text(const Forecast& f);
+
+// glider-rehearsal/1: verdict ok | aborts | refused.
+struct Rehearsal {
+  std::string file;
+  std::string verdict;
+  std::string message;
+  Forecast forecast;
+};
+// Abort risk at or above this is "aborts".
+inline constexpr double kAbortVerdictRisk = 0.1;
+Rehearsal rehearse(const std::filesystem::path& glider_dir, const std::filesystem::path& file, ForecastOptions options);
+nlohmann::json rehearsal_json(const Rehearsal& r, const std::string& glider);
+// Exit code per docs/forecast.md: 0 ok, 1 refused, 4 aborts.
+int rehearsal_exit_code(const Rehearsal& r);
+
+// The shore's call after each surfacing event (tools/shore/station/after_surfacing):
+// writes forecast/forecast.json and returns one line for the call's journal
+// ("forecast: next surfacing ..." or "forecast: failed: ..."); never throws
+// (a problem also goes into the file's `error`).
+std::string forecast_after_surfacing(const std::filesystem::path& glider_dir);
+
+// Writes `text` to `path` by a temporary in the same folder and rename(2).
+void write_atomically(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace glider::forecast
