@@ -254,8 +254,10 @@ double heldout_block_rms(const SampleSet& set, std::span<const std::size_t> held
   return block_rms(time, glide, h, block_s);
 }
 
+// `from`, where given: a fit of some of the candidate's effects (the rest start
+// as below), its values the start.
 FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
-              std::span<const std::size_t> heldout, double score_block_s) {
+              std::span<const std::size_t> heldout, double score_block_s, const FitResult* from = nullptr) {
   FitResult result;
   const Layout layout = make_layout(candidate, set, train);
   const std::size_t k = layout.size;
@@ -270,6 +272,22 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
     if (!is_lag(e)) continue;
     const double start = lag_grid_start(set, e, train);
     p[static_cast<Eigen::Index>(layout.offset[j])] = start > 0.0 ? (start - info(e).nominal) / info(e).scale : 0.2;
+  }
+  if (from != nullptr) {
+    for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
+      const Effect e = candidate.fitted[j];
+      const auto o = static_cast<Eigen::Index>(layout.offset[j]);
+      const std::size_t f = static_cast<std::size_t>(e);
+      if (e == Effect::kVerticalWaterVelocity) {
+        const auto& profile = from->parameters.profile;
+        if (!profile || profile->w_m_s.size() != layout.bins.w_m_s.size()) continue;
+        for (std::size_t b = 0; b < profile->w_m_s.size(); ++b) {
+          p[o + static_cast<Eigen::Index>(b)] = profile->w_m_s[b] / info(e).scale;
+        }
+      } else if (from->parameters.values[f] != info(e).nominal) {  // fitted there
+        p[o] = (from->parameters.values[f] - info(e).nominal) / info(e).scale;
+      }
+    }
   }
   if (k > 0) {
     const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
@@ -349,7 +367,8 @@ void add_intervals(const SampleSet& set, const Candidate& candidate, std::span<c
 // fit(), announced first to options.progress (one call per model fit: the
 // unit of diagnose's cost, seconds each on a long log).
 FitResult fit_reported(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
-                       std::span<const std::size_t> heldout, const DiagnoseOptions& options) {
+                       std::span<const std::size_t> heldout, const DiagnoseOptions& options,
+                       const FitResult* from = nullptr) {
   if (options.progress) {
     std::string what = candidate.ctd_density ? "ctd_density" : "";
     for (Effect e : candidate.fitted) {
@@ -358,7 +377,7 @@ FitResult fit_reported(const SampleSet& set, const Candidate& candidate, std::sp
     }
     options.progress(what.empty() ? "nominal" : what);
   }
-  return fit(set, candidate, train, heldout, options.score_block_s);
+  return fit(set, candidate, train, heldout, options.score_block_s, from);
 }
 
 Rms rms_where(const std::vector<double>& r, const std::vector<std::size_t>& idx) {
@@ -962,7 +981,8 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
 // interval also holds the finding's interval in the joint fit. Where the
 // joint fit cannot see the candidate, the conditional interval stands.
 void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
-                           const Candidate& current, const std::vector<ScreenedPair>& pairs, Diagnosis& d) {
+                           const Candidate& current, const FitResult& current_fit,
+                           const std::vector<ScreenedPair>& pairs, Diagnosis& d) {
   std::vector<int> tried;
   for (const ScreenedPair& screened : pairs) {
     if (std::find(tried.begin(), tried.end(), screened.alternative) != tried.end()) continue;
@@ -970,7 +990,9 @@ void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseO
     const auto alternative = static_cast<Effect>(screened.alternative);
     Candidate joint = current;
     joint.fitted.push_back(alternative);
-    FitResult f = fit_reported(set, joint, s.train, s.heldout, options);
+    // From the selected fit (the candidate from its nominal): the joint fit
+    // is a step from it, not a search from the nominal vehicle.
+    FitResult f = fit_reported(set, joint, s.train, s.heldout, options, &current_fit);
     const double seen = f.parameters.values[static_cast<std::size_t>(alternative)];
     if (!plausible(alternative, seen)) continue;
     add_intervals(set, joint, s.train, options.intervals, f);
@@ -1074,7 +1096,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     f.ci95_conditional_low = f.ci95_low;
     f.ci95_conditional_high = f.ci95_high;
   }
-  hold_aliased_readings(set, s, options, current, aliases, d);
+  hold_aliased_readings(set, s, options, current, current_fit, aliases, d);
   if (dynamic) widen_lift_at_stall(nominal, obs.track, d);
 
   const std::vector<double> r_ext = residuals_by_sample(set, current_fit.parameters, current.ctd_density, s.all);
