@@ -21,11 +21,16 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
 
 FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s,
                                 bool with_moment) {
+  return flow_forces_at_speed(h, polar_slopes(h), water_density, v1, v3, speed_m_s, with_moment);
+}
+
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density, double v1,
+                                double v3, double speed_m_s, bool with_moment) {
   FlowForces out;
   out.speed_m_s = speed_m_s;
   out.alpha_rad = std::atan2(v3, v1);
   if (!(out.speed_m_s > 0.0)) return out;
-  const ForceCoefficients c = force_coefficients(h, out.alpha_rad);
+  const ForceCoefficients c = force_coefficients(h, slopes, out.alpha_rad);
   const double dyn = 0.5 * water_density * h.reference_area_m2 * out.speed_m_s * out.speed_m_s;
   out.lift_coefficient = c.lift;
   out.lift_n = dyn * c.lift;

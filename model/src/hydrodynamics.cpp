@@ -52,15 +52,23 @@ double wing_induced_drag_per_rad2(const Hydrodynamics& h) {
 
 double lift_slope_per_rad(const Hydrodynamics& h) { return h.cl_alpha + wing_lift_slope_per_rad(h); }
 
+PolarSlopes polar_slopes(const Hydrodynamics& h) {
+  return {lift_slope_per_rad(h), h.cd_alpha2 + wing_induced_drag_per_rad2(h)};
+}
+
 ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad) {
+  return force_coefficients(h, polar_slopes(h), alpha_rad);
+}
+
+ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& slopes, double alpha_rad) {
   const double w = fit_weight(h, alpha_rad);
   ForceCoefficients fit{};
   if (w > 0.0) {
     // Beyond its range the polynomial is evaluated at the range's edge (it is
     // then only a fading part of the blend).
     const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
-    fit.lift = h.cl0 + lift_slope_per_rad(h) * a + h.cl_alpha_abs_alpha * a * std::abs(a);
-    fit.drag = h.cd0 + (h.cd_alpha2 + wing_induced_drag_per_rad2(h)) * a * a;
+    fit.lift = h.cl0 + slopes.lift_per_rad * a + h.cl_alpha_abs_alpha * a * std::abs(a);
+    fit.drag = h.cd0 + slopes.drag_per_rad2 * a * a;
   }
   if (w >= 1.0) return fit;
   // Crossflow: normal force ~ sin a |sin a|, axial (skin) force ~ cos a |cos a|,

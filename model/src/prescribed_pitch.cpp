@@ -38,7 +38,8 @@ Eigen::Vector2d velocities_from(const TranslationalMass& a, const Eigen::Vector2
 }  // namespace
 
 PrescribedPitchDynamics::PrescribedPitchDynamics(const VehicleParams& vehicle, double gravity_m_s2)
-    : dynamics_(vehicle, Environment{WaterColumn(vehicle.trim_density_kg_m3), gravity_m_s2}) {}
+    : dynamics_(vehicle, Environment{WaterColumn(vehicle.trim_density_kg_m3), gravity_m_s2}),
+      slopes_(polar_slopes(vehicle.hydro)) {}
 
 Eigen::Vector2d PrescribedPitchDynamics::velocities(const Impulse& p, const PrescribedPitchInputs& in) const {
   const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
@@ -74,16 +75,19 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
               a.a33,
               a.a13,
               a.a23,
-              m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water),
-              std::sin(in.theta_rad),
-              std::cos(in.theta_rad)};
+              m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water)};
+  }
+  if (!std::isnan(in.sin_theta)) {
+    pitch_ = {true, in.theta_rad, in.sin_theta, in.cos_theta};
+  } else if (!(pitch_.valid && eq(in.theta_rad, pitch_.theta_rad))) {
+    pitch_ = {true, in.theta_rad, std::sin(in.theta_rad), std::cos(in.theta_rad)};
   }
   const Eigen::Vector2d v = velocities_from({stage_.a11, stage_.a33, stage_.a13, stage_.a23}, p, in.q_rad_s);
   const double net_kg = stage_.net_kg;
-  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, in.density_kg_m3, v[0], v[1],
+  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, slopes_, in.density_kg_m3, v[0], v[1],
                                                std::sqrt(v[0] * v[0] + v[1] * v[1]), false);
   const double g = dynamics_.environment().gravity_m_s2;
-  const double sin_theta = stage_.sin_theta, cos_theta = stage_.cos_theta;
+  const double sin_theta = pitch_.sin_theta, cos_theta = pitch_.cos_theta;
   const double f1 = -net_kg * g * sin_theta + flow.f1;
   const double f3 = net_kg * g * cos_theta + flow.f3;
   return {{f1 - in.q_rad_s * p[1], f3 + in.q_rad_s * p[0]}, -v[0] * sin_theta + v[1] * cos_theta};

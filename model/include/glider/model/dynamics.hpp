@@ -40,6 +40,7 @@
 #include <Eigen/Core>
 
 #include "glider/model/environment.hpp"
+#include "glider/model/hydrodynamics.hpp"
 #include "glider/model/vehicle.hpp"
 
 namespace glider::model {
@@ -105,6 +106,10 @@ FlowForces flow_forces(const Hydrodynamics& h, double water_density, double v1, 
 // moment; the forces are the same bits either way).
 FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, double v1, double v3, double speed_m_s,
                                 bool with_moment = true);
+// The same with the polar's slopes of `h` given (polar_slopes(h)): a flight's
+// stages ask with one vehicle.
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density, double v1,
+                                double v3, double speed_m_s, bool with_moment = true);
 
 // Heading rate (rad/s) per unit of the current's starboard shear (1/s) for a
 // glider whose depth grows at depth_rate_m_s, moving at speed_m_s through

@@ -16,6 +16,18 @@ struct ForceCoefficients {
 
 ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad);
 
+// The polar's slopes, which depend on the vehicle alone: the whole lift slope
+// (lift_slope_per_rad) and the drag's a^2 coefficient (hull and wings'
+// induced drag). A flight asks force_coefficients millions of times with one
+// vehicle: taken once, they are the same numbers (the same expressions), so
+// the coefficients are the same bits.
+struct PolarSlopes {
+  double lift_per_rad = 0.0;
+  double drag_per_rad2 = 0.0;
+};
+PolarSlopes polar_slopes(const Hydrodynamics& h);
+ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& slopes, double alpha_rad);
+
 // The wings' share (0 without wings), by the reference area: the lift slope
 // of a swept finite wing, a_w = 2 pi AR / (2 + sqrt(AR^2 (1 + tan^2 sweep) + 4))
 // (the Helmbold/DATCOM form Merckelbach et al. 2019 use in gliderflight), and

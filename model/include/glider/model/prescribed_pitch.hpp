@@ -14,6 +14,7 @@
 // replaced by the measurement. The slide's own impulse (b) is neglected: the
 // battery moves at ~1 mm/s.
 #include <Eigen/Core>
+#include <limits>
 
 #include "glider/model/dynamics.hpp"
 
@@ -27,6 +28,10 @@ struct PrescribedPitchInputs {
   double depth_m = 0.0;  // measured depth (hydrostatics)
   double density_kg_m3 = 1025.0;
   double temperature_c = 10.0;
+  // sin and cos of theta_rad where the caller has them (a table of a
+  // track's stages); NaN: derivative() computes them.
+  double sin_theta = std::numeric_limits<double>::quiet_NaN();
+  double cos_theta = std::numeric_limits<double>::quiet_NaN();
 };
 
 class PrescribedPitchDynamics {
@@ -60,6 +65,7 @@ class PrescribedPitchDynamics {
 
  private:
   GliderDynamics dynamics_;  // its environment carries only the gravity
+  PolarSlopes slopes_;       // of the vehicle's polar, once (hydrodynamics.hpp)
   // What a stage needs of its inputs alone (masses, net weight, the pitch's
   // sine and cosine), kept for the last inputs: RK4's two middle stages share
   // them, and a step's last stage is usually the next step's first. The same
@@ -69,9 +75,18 @@ class PrescribedPitchDynamics {
     bool valid = false;
     PrescribedPitchInputs in;
     double a11 = 0.0, a33 = 0.0, a13 = 0.0, a23 = 0.0;  // translational mass (A(0,0), A(1,1), A(0,2), A(1,2))
-    double net_kg = 0.0, sin_theta = 0.0, cos_theta = 1.0;
+    double net_kg = 0.0;
   };
   mutable StageInputs stage_;
+  // The pitch's sine and cosine, for the last pitch: a step's first stage
+  // has the pitch of the last step's last stage (the same Hermite value) even
+  // where its other inputs differ in the last bit (the lagged ballast's
+  // m3 -> cc -> m3), and a sincos is a tenth of a diagnosis.
+  struct Pitch {
+    bool valid = false;
+    double theta_rad = 0.0, sin_theta = 0.0, cos_theta = 1.0;
+  };
+  mutable Pitch pitch_;
 };
 
 }  // namespace glider::model

@@ -62,6 +62,12 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                         {"gain", f.gain},
                         {"fitted", f.fitted}});
     if (f.heldout_rms_battpos_in) findings.back()["heldout_rms_battpos_in"] = *f.heldout_rms_battpos_in;
+    if (!f.interval_holds_with.empty()) {
+      ordered_json with = ordered_json::array();
+      for (Effect e : f.interval_holds_with) with.push_back(info(e).id);
+      findings.back()["ci95_holds_with"] = with;
+      findings.back()["ci95_conditional"] = {f.ci95_conditional_low, f.ci95_conditional_high};
+    }
     if (f.effect == Effect::kThermalExpansion) findings.back()["reference_temperature_c"] = d.thermal_reference_c;
   }
   j["findings"] = findings;

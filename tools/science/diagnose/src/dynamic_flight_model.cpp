@@ -20,9 +20,12 @@ DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, cons
     : nominal_(nominal),
       track_(track),
       max_step_s_(max_step_s),
+      stage_pitch_(std::make_unique<detail::StagePitchTable>(track, max_step_s)),
       relative_flights_(track.run_first.size()),
       start_states_(track.run_first.size()),
       next_start_(track.run_first.size(), 0) {}
+
+DynamicFlightModel::~DynamicFlightModel() = default;
 
 void DynamicFlightModel::predict(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                                  std::vector<double>& out, const VerticalVelocityProfile* profile) const {
@@ -196,7 +199,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   if (depth_rate != nullptr) depth_rate->assign(samples.size(), kNaN);
   if (speed != nullptr) speed->assign(samples.size(), kNaN);
   if (!flyable(x)) return;  // no negative drag or lift
-  const detail::FlightConditions conditions(nominal_, x, use_ctd, track_, profile, max_step_s_);
+  const detail::FlightConditions conditions(nominal_, x, use_ctd, track_, profile, max_step_s_, *stage_pitch_);
   const double depth_lag_s = std::abs(x[static_cast<std::size_t>(Effect::kDepthLag)]);  // no sign, as the pump's
   const Track& t = track_;
   std::size_t next = 0;  // next requested sample

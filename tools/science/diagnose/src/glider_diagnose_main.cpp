@@ -235,6 +235,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> fit_only;
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
+  double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
   glider::diagnose::PitchCalibration pitch_calibration;
   glider::slocum::LogSource log_source;
@@ -276,6 +277,9 @@ int main(int argc, char** argv) {
       ->expected(2);
   tool.add_number("--rate-window", rate_window_s, {0.0, 60.0, "s"},
                   "the measured depth rate is the slope of the depth over +-this many seconds (0: centred difference)");
+  tool.add_number("--score-block", score_block_s, {0.0, 600.0, "s"},
+                  "the selection compares held-out residuals averaged over blocks of a glide this long (0: sample "
+                  "by sample; fitting_core/block_score.hpp)");
   tool.add_number("--pitch-window", pitch_window_s, {0.0, 60.0, "s"},
                   "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)");
   using Calibration = glider::diagnose::PitchCalibration;
@@ -288,6 +292,7 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&]() -> int {
     log_path = log_source.inputs.front();
     glider::diagnose::DiagnoseOptions options;
+    options.score_block_s = score_block_s;
     options.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
                                              : glider::diagnose::FlightModelKind::kDynamic;
     options.intervals = intervals == "yos"      ? glider::diagnose::DiagnoseOptions::Intervals::kYos

@@ -23,12 +23,40 @@ using Derivative = model::PrescribedPitchDynamics::Derivative;
 
 }  // namespace
 
+StagePitchTable::StagePitchTable(const Track& t, double max_step_s) {
+  const std::size_t n = t.time_s.size();
+  offset_.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    offset_.push_back(pitch_.size());
+    // The last sample of the track (and of each run) is its own interval's
+    // end: its one stage is the sample (inputs() takes j = i there).
+    const std::size_t j = i + 1 < n ? i + 1 : i;
+    const double dt = j > i ? t.time_s[j] - t.time_s[i] : 0.0;
+    const int steps = rk4_steps(dt, max_step_s);
+    for (int k = 0; k <= 2 * steps; ++k) {
+      const double f = stage_fraction(k, steps);
+      // Pitch and its rate on the cubic Hermite through the samples.
+      const double f2 = f * f, f3 = f2 * f;
+      const double theta = (2.0 * f3 - 3.0 * f2 + 1.0) * t.pitch_rad[i] +
+                           (f3 - 2.0 * f2 + f) * dt * t.pitch_slope_rad_s[i] + (-2.0 * f3 + 3.0 * f2) * t.pitch_rad[j] +
+                           (f3 - f2) * dt * t.pitch_slope_rad_s[j];
+      const double q = dt > 0.0 ? ((6.0 * f2 - 6.0 * f) * (t.pitch_rad[i] - t.pitch_rad[j]) / dt +
+                                   (3.0 * f2 - 4.0 * f + 1.0) * t.pitch_slope_rad_s[i] +
+                                   (3.0 * f2 - 2.0 * f) * t.pitch_slope_rad_s[j])
+                                : t.pitch_slope_rad_s[i];
+      pitch_.push_back({theta, q, std::sin(theta), std::cos(theta)});
+    }
+  }
+}
+
 FlightConditions::FlightConditions(const model::VehicleParams& nominal, const EffectValues& x, bool use_ctd,
-                                   const Track& t, const VerticalVelocityProfile* profile, double max_step)
+                                   const Track& t, const VerticalVelocityProfile* profile, double max_step,
+                                   const StagePitchTable& stage_pitch)
     : track(t),
       vehicle(apply(nominal, x, t.median_temperature_c)),
       dynamics(vehicle),
       max_step_s(max_step),
+      pitch(stage_pitch),
       use_ctd_(use_ctd),
       constant_density_(vehicle.trim_density_kg_m3 + x[static_cast<std::size_t>(Effect::kWaterDensity)]),
       constant_w_(x[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)]),
@@ -50,22 +78,27 @@ int rk4_steps(double dt, double max_step_s) { return std::max(1, static_cast<int
 
 RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end)
     : c_(c), t_(c.track), first_(first), end_(end) {
-  in0_ = inputs(first, 0.0, cc_to_m3(t_.ballast_cc[first]), 0.0);
+  in0_ = inputs(first, 0, 1, cc_to_m3(t_.ballast_cc[first]), 0);
 }
 
-model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, double f, double lagged0, double f0) const {
+model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, double lagged0, int k0) const {
   const Track& t = t_;
   const std::size_t j = i + 1 < end_ ? i + 1 : i;
   model::PrescribedPitchInputs in;
   const double dt = j > i ? t.time_s[j] - t.time_s[i] : 0.0;
-  // Pitch and its rate on the cubic Hermite through the samples.
-  const double f2 = f * f, f3 = f2 * f;
-  in.theta_rad = (2.0 * f3 - 3.0 * f2 + 1.0) * t.pitch_rad[i] + (f3 - 2.0 * f2 + f) * dt * t.pitch_slope_rad_s[i] +
-                 (-2.0 * f3 + 3.0 * f2) * t.pitch_rad[j] + (f3 - f2) * dt * t.pitch_slope_rad_s[j];
-  in.q_rad_s =
-      dt > 0.0 ? ((6.0 * f2 - 6.0 * f) * (t.pitch_rad[i] - t.pitch_rad[j]) / dt +
-                  (3.0 * f2 - 4.0 * f + 1.0) * t.pitch_slope_rad_s[i] + (3.0 * f2 - 2.0 * f) * t.pitch_slope_rad_s[j])
-               : t.pitch_slope_rad_s[i];
+  const double f = stage_fraction(k, n), f0 = stage_fraction(k0, n);
+  // The pitch from the track's table where its interval is this one (the
+  // run's last sample is the table's only where the track ends there).
+  if (j == i + 1 || i + 1 == t.time_s.size()) {
+    const StagePitchTable::Pitch& p = c_.pitch.at(i, j > i ? k : 0);
+    in.theta_rad = p.theta_rad;
+    in.q_rad_s = p.q_rad_s;
+    in.sin_theta = p.sin_theta;
+    in.cos_theta = p.cos_theta;
+  } else {  // a run's last sample before the next run: its interval's end is itself
+    in.theta_rad = t.pitch_rad[i];
+    in.q_rad_s = t.pitch_slope_rad_s[i];
+  }
   in.depth_m = lerp(t.depth_m[i], t.depth_m[j], f);
   in.battery_pos_m = lerp(c_.battery(i), c_.battery(j), f);
   in.density_kg_m3 = lerp(c_.density(i), c_.density(j), f);
@@ -92,12 +125,9 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
     const double h = dt / steps;
     double depth = z[i - first_];
     for (int s = 0; s < steps; ++s) {
-      const double fa = static_cast<double>(s) / steps;
-      const double fb = (s + 0.5) / steps;
-      const double fc = static_cast<double>(s + 1) / steps;
-      const auto a = inputs(i, fa, lagged, fa);
-      const auto b = inputs(i, fb, lagged, fa);
-      const auto c = inputs(i, fc, lagged, fa);
+      const auto a = inputs(i, 2 * s, steps, lagged, 2 * s);
+      const auto b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
+      const auto c = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
       const Derivative d1 = dynamics.derivative(p, a);
       const Impulse p2 = p + 0.5 * h * d1.p_dot;
       const Derivative d2 = dynamics.derivative(p2, b);
@@ -111,7 +141,8 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
     }
     if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
     z[i + 1 - first_] = depth;
-    if (u != nullptr) (*u)[i + 1 - first_] = dynamics.velocities(p, inputs(i, 1.0, lagged, 1.0)).norm();
+    if (u != nullptr)
+      (*u)[i + 1 - first_] = dynamics.velocities(p, inputs(i, 2 * steps, steps, lagged, 2 * steps)).norm();
     flown = i + 1;
   }
   return flown;

@@ -14,12 +14,39 @@
 
 namespace glider::diagnose::detail {
 
+// Sub-steps of RK4 between samples i and i + 1: equal, at most max_step_s.
+int rk4_steps(double dt, double max_step_s);
+
+// The pitch at every stage of every RK4 step through the track (the cubic
+// Hermite through the samples), its rate, sine and cosine. They are the
+// track's alone, the same for every flight of a diagnosis (hundreds), so
+// they are computed once per track: the same expressions on the same
+// numbers, so the same bits (a sincos and a Hermite per stage were a tenth
+// of a diagnosis's CPU). Stage k of interval [i, i + 1] with n sub-steps is
+// at the fraction stage_fraction(k, n): k = 2s the start of sub-step s,
+// 2s + 1 its middle, 2n the end.
+class StagePitchTable {
+ public:
+  struct Pitch {
+    double theta_rad, q_rad_s, sin_theta, cos_theta;
+  };
+  StagePitchTable(const Track& track, double max_step_s);
+  const Pitch& at(std::size_t i, int k) const { return pitch_[offset_[i] + static_cast<std::size_t>(k)]; }
+
+ private:
+  std::vector<std::size_t> offset_;  // per interval i, its stage 0
+  std::vector<Pitch> pitch_;
+};
+
+// The fraction of its interval at which stage k of n sub-steps lies.
+inline double stage_fraction(int k, int n) { return k % 2 == 0 ? static_cast<double>(k / 2) / n : (k / 2 + 0.5) / n; }
+
 // What every run of one flight shares: the vehicle with the effect values,
 // its dynamics, the water and the integration step.
 class FlightConditions {
  public:
   FlightConditions(const model::VehicleParams& nominal, const EffectValues& x, bool use_ctd, const Track& track,
-                   const VerticalVelocityProfile* profile, double max_step_s);
+                   const VerticalVelocityProfile* profile, double max_step_s, const StagePitchTable& pitch);
   FlightConditions(const FlightConditions&) = delete;  // `dynamics` was made from `vehicle`
   FlightConditions& operator=(const FlightConditions&) = delete;
 
@@ -34,15 +61,13 @@ class FlightConditions {
   const model::VehicleParams vehicle;
   const model::PrescribedPitchDynamics dynamics;
   const double max_step_s;
+  const StagePitchTable& pitch;
 
  private:
   const bool use_ctd_;
   const double constant_density_, constant_w_;
   const VerticalVelocityProfile* profile_;
 };
-
-// Sub-steps of RK4 between samples i and i + 1: equal, at most max_step_s.
-int rk4_steps(double dt, double max_step_s);
 
 class RunFlight {
  public:
@@ -52,9 +77,10 @@ class RunFlight {
   std::size_t first() const { return first_; }
   std::size_t end() const { return end_; }
 
-  // Inputs at fraction f of the interval [i, i + 1], with the displaced
-  // volume lagged from `lagged0` at the interval's start fraction f0.
-  model::PrescribedPitchInputs inputs(std::size_t i, double f, double lagged0, double f0) const;
+  // Inputs at stage k of the interval [i, i + 1] (of n sub-steps:
+  // StagePitchTable), with the displaced volume lagged from `lagged0` at
+  // the interval's stage k0.
+  model::PrescribedPitchInputs inputs(std::size_t i, int k, int n, double lagged0, int k0) const;
 
   // Flies the run from its first sample with body velocities (v1, v3) up
   // to sample `last`: the model's depth change through the water at each

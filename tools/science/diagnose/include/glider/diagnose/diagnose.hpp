@@ -46,6 +46,12 @@ struct Finding {
   double gain = 0.0;                             // fraction of the baseline held-out error removed so far
   bool fitted = true;                            // false: a measured input (CTD density), not a fitted number
   std::optional<double> heldout_rms_battpos_in;  // pitch_trim_offset: what it explains
+  // Candidates not taken that alias this finding and that the joint fit of
+  // both says are there: the interval also holds the finding's value in
+  // that fit (diagnose.cpp, hold_aliased_readings); the interval of the
+  // selected model alone is then ci95_conditional.
+  std::vector<Effect> interval_holds_with;
+  double ci95_conditional_low = 0.0, ci95_conditional_high = 0.0;
 };
 
 // Identifiability of a finding against an alternative whose depth-rate
@@ -133,6 +139,10 @@ struct DiagnoseOptions {
   // A finding must cut the held-out RMS by 3 % AND by half a millimetre per
   // second (fitting_core/selection.hpp: the rule every plane selects by).
   fitting_core::Margins margins{0.03, 0.0005};
+  // ... on the held-out residuals averaged over blocks of a glide this long
+  // (fitting_core/block_score.hpp: the depth sensor's noise averaged out,
+  // an effect that lasts a glide kept); 0: sample by sample, the rule before.
+  double score_block_s = 0.0;
   // Samples 1 s apart on a glide are correlated over the vehicle's ~20 s
   // response: fits use an even stride that keeps at most this many samples
   // per half (the baseline and the reported RMS use every sample).

@@ -7,6 +7,7 @@
 // (never scored) closest to the measured depth. It predicts the
 // depth rate of every sample, turns included, which the steady model cannot:
 // that is where a pump lag shows ("the model turns earlier than the glider").
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -16,14 +17,16 @@
 namespace glider::diagnose {
 
 namespace detail {
-class RunFlight;  // one run's flight (src/run_flight.hpp)
-}
+class RunFlight;        // one run's flight (src/run_flight.hpp)
+class StagePitchTable;  // the track's pitch at every RK4 stage (src/run_flight.hpp)
+}  // namespace detail
 
 class DynamicFlightModel final : public DepthRateModel {
  public:
   // Integration step: at most max_step_s (RK4); the log's cycles are split
   // into equal sub-steps.
   DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s = 1.0);
+  ~DynamicFlightModel() override;
 
   // Depth rate (m/s, + down) at `samples` (indices into the track, sorted);
   // only the runs that hold them are flown.
@@ -58,6 +61,7 @@ class DynamicFlightModel final : public DepthRateModel {
   model::VehicleParams nominal_;
   const Track& track_;
   double max_step_s_;
+  std::unique_ptr<const detail::StagePitchTable> stage_pitch_;  // the track's pitch at every stage (run_flight.hpp)
   mutable std::vector<double> depth_buffer_, fit_buffer_, fit_relative_buffer_;  // per run, reused across calls
   // Each run's last flight through the water (relative depth and speed),
   // for the effect values but the water's vertical velocity, from (v1, v3).
