@@ -8,7 +8,17 @@ becomes a shore event (glider-shore-surfacing/1: the last fix before the dive, t
 glider's m_water_vx/vy after its update, its DR position before the first fix), written into a glider
 folder holding what the shore would have had at that call; glider-forecast forecasts the next
 surfacing, scored against the first fix after it (position) and the time the glider reached 1 m.
-Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N]
+The waypoint the glider flew to at each dive is its own (c_wpt_lat/lon, x_last_wpt_lat/lon in the .dbd
+files of tests/data/real/dbd/comet-2019, decoded with glider-convert); `--waypoint N` forces one.
+Each forecast's position error is split into terms (docs/forecast.md, "Where the error comes from"):
+  flight  = the baseline flight (water as the glider believed it) - the glider's own dead reckoning
+            (both fly the believed water: what is left is heading law, speed through the water, waypoints)
+  current = (forecast current - the current the glider measured over the dive) x time under water
+  time    = (forecast current - believed current) x (forecast - true time under water)
+  rest    = error - the three (the runs' spread and median, the DR's own error)
+With --check (CTest forecast.real_comet_2019) it exits 1 unless each forecast's current is nearer the one
+the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two estimates).
+Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N] [--check]
 """
 import argparse
 import csv
@@ -76,8 +86,72 @@ def event(glider, start, end, fix, dr, water, mission):
 
 
 def distance_m(lat1, lon1, lat2, lon2):
+    return math.hypot(*offset_m(lat1, lon1, lat2, lon2))
+
+
+def offset_m(lat1, lon1, lat2, lon2):
+    """(east, north) of point 2 from point 1, metres (flat earth: a few km)."""
     r = 6371000.0
-    return math.hypot(math.radians(lon2 - lon1) * r * math.cos(math.radians(lat1)), math.radians(lat2 - lat1) * r)
+    return (math.radians(lon2 - lon1) * r * math.cos(math.radians(lat1)), math.radians(lat2 - lat1) * r)
+
+
+def find_program(build, name):
+    for root, _, files in os.walk(os.path.join(build, "tools")):
+        if name in files:
+            return os.path.join(root, name)
+    raise SystemExit("%s not built in %s" % (name, build))
+
+
+def mission_waypoints(goto_ma):
+    """The goto list's waypoints as (lat, lon) in decimal degrees (the file gives lon lat in ddmm)."""
+    out, inside = [], False
+    with open(goto_ma) as f:
+        for line in f:
+            text = line.split("#")[0].strip()
+            if line.strip().startswith("<start:waypoints>"):
+                inside = True
+            elif line.strip().startswith("<end:waypoints>"):
+                inside = False
+            elif inside and text:
+                lon, lat = (float(v) for v in text.split()[:2])
+                out.append((ddmm(lat), ddmm(lon)))
+    return out
+
+
+def active_waypoints(convert, dbd_dir, names, waypoints, dives):
+    """The waypoint the glider flew to at each dive time, from its own c_wpt_lat/lon (logged when set)
+    and x_last_wpt_lat/lon (the one reached, logged with the next c_wpt): a dive before the first
+    c_wpt of the files flies to the waypoint reached at that first change."""
+    rows = []
+    for n in names:
+        csv_path = os.path.join(tempdir, n + ".wpt.csv")
+        subprocess.run([convert, os.path.join(dbd_dir, n + ".dbd"), "--quiet", "--out", csv_path, "--columns",
+                        "c_wpt_lat,c_wpt_lon,x_last_wpt_lat,x_last_wpt_lon"], check=True, capture_output=True)
+        rows += load(csv_path)
+
+    def index(lat, lon):
+        for i, (wlat, wlon) in enumerate(waypoints):
+            if abs(ddmm(lat) - wlat) < 1e-6 and abs(ddmm(lon) - wlon) < 1e-6:
+                return i
+        raise SystemExit("waypoint %s %s is not in the goto list" % (lat, lon))
+
+    changes = []  # (time, waypoint active from then on)
+    first_before = None
+    for r in rows:
+        if r.get("c_wpt_lat") is not None and r.get("c_wpt_lon") is not None:
+            if not changes and r.get("x_last_wpt_lat") is not None:
+                first_before = index(r["x_last_wpt_lat"], r["x_last_wpt_lon"])
+            changes.append((r["m_present_time"], index(r["c_wpt_lat"], r["c_wpt_lon"])))
+    out = []
+    for t in dives:
+        active = first_before
+        for when, w in changes:
+            if when <= t:
+                active = w
+        if active is None:
+            raise SystemExit("the .dbd files do not say which waypoint was active at %s" % utc(t))
+        out.append(active)
+    return out
 
 
 def main():
@@ -86,12 +160,14 @@ def main():
     p.add_argument("--source", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     p.add_argument("--out", default=None)
     p.add_argument("--runs", type=int, default=200)
+    p.add_argument("--waypoint", type=int, default=None, help="force this active waypoint for every forecast")
+    p.add_argument("--check", action="store_true", help="test mode: the current checks above, PASS/FAIL line")
     a = p.parse_args()
     out = a.out or os.path.join(a.build, "benchmark", "forecast_real")
     real = os.path.join(a.source, "tests", "data", "real")
     nsb3 = os.path.join(a.source, "boards", "missions", "comet-nsb3")
     vehicle = os.path.join(a.source, "boards", "vehicles", "slocum_comet.toml")
-    forecast = os.path.join(a.build, "tools", "shore", "forecast", "glider-forecast")
+    forecast = find_program(a.build, "glider-forecast")
     files = [load(os.path.join(real, n + ".csv")) for n in ("comet-2019-222-02-154", "comet-2019-222-02-156")]
     # Surfacings: [0] before 154's dive, [1] between 154 and 156, [2] after 156.
     fix0, dive0, water0, start0 = dive_start(files[0])
@@ -100,8 +176,19 @@ def main():
     up2, first2, dr2, water2 = surfacing(files[1])
     events = [event("comet", start0, dive0, fix0, None, water0, "nsb3.mi"),
               event("comet", up1, dive1, fix1, dr1, water1, "nsb3.mi")]
-    truths = [(up1, first1), (up2, first2)]
+    truths = [(up1, first1, dr1, water1), (up2, first2, dr2, water2)]
+    global tempdir
+    tempdir = os.path.join(out, "dbd")
+    os.makedirs(tempdir, exist_ok=True)
+    if a.waypoint is not None:
+        wpts = [a.waypoint, a.waypoint]
+    else:
+        wpts = active_waypoints(find_program(a.build, "glider-convert"),
+                                os.path.join(real, "dbd", "comet-2019"),
+                                ["comet-2019-222-02-%d" % n for n in (154, 155, 156)],
+                                mission_waypoints(os.path.join(nsb3, "mafiles", "goto_l10.ma")), [dive0, dive1])
     rows = []
+    failures = []
     for k in range(2):
         d = os.path.join(out, "from%d" % k, "comet")
         shutil.rmtree(os.path.dirname(d), ignore_errors=True)
@@ -110,15 +197,16 @@ def main():
         for i, e in enumerate(events[:k + 1]):
             with open(os.path.join(d, "logs", "2019082%d_%04d.surfacing.json" % (i, i + 1)), "w") as f:
                 json.dump(e, f, indent=2)
-        # Both dives fly to the goto list's first waypoint (c_heading 241-305 deg and 7-12 deg: north-west
-        # to 54.558 N 7.217 E); the history holds no fix of an earlier arrival, so it is given.
+        # The history holds no fix of an earlier arrival: the waypoint is the glider's own (its .dbd's
+        # c_wpt: dive 154 flew to waypoint 1, 54.30 N 7.43 E, reached by DR 6918 s in, then waypoint 0;
+        # dive 156 to waypoint 0, 54.558 N 7.217 E).
         run = subprocess.run([forecast, "--glider-dir", d, "--vehicle", vehicle, "--runs", str(a.runs),
-                              "--waypoint", "0", "--json"], capture_output=True, text=True)
+                              "--waypoint", str(wpts[k]), "--json"], capture_output=True, text=True)
         if run.returncode != 0:
             print(run.stdout, run.stderr)
             sys.exit(1)
         f = json.loads(run.stdout)
-        up, first = truths[k]
+        up, first, dr, water = truths[k]
         lat, lon = ddmm(first["m_gps_lat"]), ddmm(first["m_gps_lon"])
         n = f["next_surfacing"]
         b = f["baseline"]
@@ -134,6 +222,32 @@ def main():
               (k, f["from_fix"]["utc"], moved, (up - t(f["dive_utc"])) / 3600.0, e_pos, e_t, b_pos, b_t,
                f["current"]["method"], f["current"]["east_m_s"], f["current"]["north_m_s"], f["wall_s"]))
         rows.append((e_pos, e_t, b_pos, b_t))
+        # The error's terms, east and north, in the fix's frame.
+        fx = f["from_fix"]
+        dive_t = t(f["dive_utc"])
+        true_s, pred_s = up - dive_t, t(n["time_utc"]) - dive_t
+        truth = offset_m(fx["lat_deg"], fx["lon_deg"], lat, lon)
+        pred = offset_m(fx["lat_deg"], fx["lon_deg"], n["lat_deg"], n["lon_deg"])
+        base = offset_m(fx["lat_deg"], fx["lon_deg"], b["lat_deg"], b["lon_deg"])
+        dr_end = offset_m(fx["lat_deg"], fx["lon_deg"], ddmm(dr["m_lat"]), ddmm(dr["m_lon"]))
+        cp = (f["current"]["east_m_s"], f["current"]["north_m_s"])
+        cb = (b["current_east_m_s"], b["current_north_m_s"])
+        ct = (water["m_water_vx"], water["m_water_vy"])
+        err = [pred[i] - truth[i] for i in range(2)]
+        flight = [base[i] - dr_end[i] for i in range(2)]
+        current = [(cp[i] - ct[i]) * true_s for i in range(2)]
+        timing = [(cp[i] - cb[i]) * (pred_s - true_s) for i in range(2)]
+        rest = [err[i] - flight[i] - current[i] - timing[i] for i in range(2)]
+        print("  waypoint %d; error %.0f m = flight %.0f m (%+.0f E %+.0f N) + current %.0f m (%+.0f E %+.0f N; "
+              "forecast %+.3f %+.3f, measured over the dive %+.3f %+.3f m/s) + time %.0f m + rest %.0f m" %
+              (wpts[k], math.hypot(*err), math.hypot(*flight), flight[0], flight[1], math.hypot(*current),
+               current[0], current[1], cp[0], cp[1], ct[0], ct[1], math.hypot(*timing), math.hypot(*rest)))
+        off = math.hypot(cp[0] - ct[0], cp[1] - ct[1])
+        persistence_off = math.hypot(cb[0] - ct[0], cb[1] - ct[1])
+        if not off < persistence_off:
+            failures.append("from surfacing %d the current is %.3f m/s off, persistence %.3f" % (k, off, persistence_off))
+        if k == 1 and not off < 0.1:
+            failures.append("from surfacing 1 the current is %.3f m/s off (0.1 allowed)" % off)
     med = lambda v: sorted(v)[len(v) // 2] if len(v) % 2 else 0.5 * sum(sorted(v)[len(v) // 2 - 1:len(v) // 2 + 1])
     print("\nreal comet-2019: %d forecasts" % len(rows))
     print("| | position median | position max | time median |\n|---|---|---|---|")
@@ -141,6 +255,9 @@ def main():
                                                          med([r[1] for r in rows]) / 60))
     print("| baseline (last current persists) | %.2f km | %.2f km | %.1f min |" %
           (med([r[2] for r in rows]) / 1000, max(r[2] for r in rows) / 1000, med([r[3] for r in rows]) / 60))
+    if a.check:
+        print("FAIL real_comet_2019: " + "; ".join(failures) if failures else "PASS real_comet_2019")
+        sys.exit(1 if failures else 0)
 
 
 if __name__ == "__main__":

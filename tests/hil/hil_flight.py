@@ -85,15 +85,19 @@ def number(text):
 
 def read_log(path):
     """Rows as dicts of numbers, with "t": simulated seconds since the first
-    row. A target log whose m_present_time is wall-clock UTC says its loop's
-    time scale in a "# time_scale: X" line; its times are scaled back."""
+    row. A target log's m_present_time is the loop clock told in UTC ("# time:
+    m_present_time is the loop clock told in UTC ..."): simulated seconds
+    already. An older target log stamped rows with the wall clock and says
+    its loop's time scale in a "# time_scale: X" line; its times are scaled
+    back."""
     with open(path) as f:
         text = f.readlines()
     lines = [line for line in text if not line.startswith("#")]
     scale = 1.0
+    loop_time = any(re.match(r"#\s*time:.*loop clock told in UTC", line) for line in text)
     for line in text:
         m = re.match(r"#\s*time_scale:\s*([0-9.eE+-]+)", line)
-        if m:
+        if m and not loop_time:
             scale = float(m.group(1))
     rows = [{k: number(v) for k, v in row.items()} for row in csv.DictReader(lines)]
     t0 = rows[0]["m_present_time"]

@@ -34,8 +34,9 @@ TEST(SlocumWriterTarget, RingLogThreadWritesTheCsvsValues) {
   options.vehicle = "bench";
   fw::SlocumLogger slocum(sink, options);
   CHECK_TRUE(slocum.start());
-  // Rows stamped as the target stamps them: the UTC of their cycle's start
-  // on the loop clock (here 1000 times faster: 250 us apart, odd microseconds).
+  // Rows stamped as the target stamps them: the loop clock told in UTC (here
+  // the loop clock runs 1000 times faster: rows 250 ms of loop time apart are
+  // handed over about 250 us apart).
   const target::LoopClock clock(1000.0);
   target::RingLogOptions log_options;
   log_options.loop_clock = &clock;
@@ -69,6 +70,10 @@ TEST(SlocumWriterTarget, RingLogThreadWritesTheCsvsValues) {
   CHECK_EQUAL(csv.rows(), read.log.rows());
   // UTC times (the ring log's stamp), bit for bit.
   CHECK(csv.time().front() > 1.6e9);
+  // The loop clock told in UTC (docs/comms.md, the Slocum files' time base):
+  // rows 250 ms of loop time apart are 250 ms apart in the files, though the
+  // loop clock ran 1000 times faster than the wall clock (old: 250 us apart).
+  for (std::size_t i = 1; i < csv.rows(); ++i) CHECK(std::fabs(csv.time()[i] - csv.time()[i - 1] - 0.25) < 1e-5);
   for (std::size_t i = 0; i < csv.rows(); ++i) {
     CHECK_EQUAL(std::bit_cast<std::uint64_t>(csv.time()[i]), std::bit_cast<std::uint64_t>(read.log.time()[i]));
   }

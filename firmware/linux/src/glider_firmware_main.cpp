@@ -9,6 +9,7 @@
 // Under systemd (Type=notify, WatchdogSec=) it reports READY and feeds the
 // watchdog after every healthy cycle (packaging/glider-firmware.service).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -17,13 +18,16 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "glider/cli/tool.hpp"
 #include "glider/firmware/app/flight_application.hpp"
 #include "glider/firmware/app/mission_reload.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
+#include "glider/firmware/app/reload_arena.hpp"
 #include "glider/firmware/comms/comms_task.hpp"
 #include "glider/firmware/comms/file_access_posix.hpp"
 #include "glider/firmware/comms/log_forward.hpp"
@@ -102,9 +106,26 @@ fw::comms::CommsConfig comms_config(const target::ModemBoardConfig& modem, const
   c.gps_wait_s = flight.plan.gps_wait_s;
   c.keystroke_wait_s = flight.plan.surface_dwell_s;
   c.printout_cycle_s = flight.plan.printout_cycle_s;
+  if (modem.reply_window_s) c.reply_window_s = *modem.reply_window_s;
   const double utc_now_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   c.utc_at_zero_s = utc_now_s - hal::to_seconds(clock_now_us);
   return c;
+}
+
+// The wake-up lateness of the cycles that ran while a Zmodem transfer did
+// (after the loop: this sorts a copy), exact: the HIL check of a call's cost
+// reads it (tests/comms_e2e/check_hil_e2e.py).
+void print_transfer_lateness(std::span<const hal::Micros> late_us, std::FILE* out) {
+  if (late_us.empty()) return;
+  std::vector<hal::Micros> sorted(late_us.begin(), late_us.end());
+  std::sort(sorted.begin(), sorted.end());
+  const auto at = [&sorted](double q) {
+    return static_cast<long long>(sorted[static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1))]);
+  };
+  std::fprintf(out,
+               "glider-firmware: loop during transfers: cycles %zu, wake-up late median %lld us, p99 %lld us, "
+               "max %lld us\n",
+               sorted.size(), at(0.5), at(0.99), static_cast<long long>(sorted.back()));
 }
 
 std::string default_log_name(const std::filesystem::path& directory) {
@@ -224,8 +245,9 @@ int main(int argc, char** argv) {
                             {"board_file", board.source},
                             {"mission_file", mission_path},
                             {"time",
-                             "m_present_time is UTC seconds (system clock) when the row was made; the loop runs on the "
-                             "monotonic clock; m_gps_utc_s is the GPS receiver's own UTC of a fresh fix"},
+                             "m_present_time is the loop clock told in UTC: UTC seconds (system clock) at the first "
+                             "row plus the loop time since (monotonic; simulated seconds at a time scale); "
+                             "m_gps_utc_s is the GPS receiver's own UTC of a fresh fix"},
                             {"conventions", "Slocum names, units and signs"}};
     if (time_scale != 1.0) options.log_metadata.emplace_back("time_scale", std::to_string(time_scale));
     std::unique_ptr<target::LinuxHal> linux_hal = target::LinuxHal::build(board, options, out);
@@ -289,6 +311,10 @@ int main(int argc, char** argv) {
     if (board.modem) {
       modem.emplace(board.modem->line);
       reloader.emplace(mission_path, board.vehicle, mission_options);
+      // Control-F and zr parse mission files in flight: from this arena, not the heap.
+      if (!fw::app::reload_arena::reserve(fw::app::kReloadArenaBytes)) {
+        return tool.fail(cli::kError, "cannot reserve the mission reload arena");
+      }
       comms.emplace(application.flight(), *modem, hal.gps, hal.log,
                     comms_config(*board.modem, *prepared.config, mission_path, hal.clock.now_us()),
                     zmodem ? &*zmodem : nullptr, &*reloader);
@@ -306,6 +332,8 @@ int main(int argc, char** argv) {
     target::StopReason reason = target::StopReason::kError;
     try {
       target::RealtimeLoop loop(application.executive(), linux_hal->clock(), board.loop, out);
+      // The cycles of a transfer, kept apart: their lateness is what a call costs the loop.
+      loop.set_tagged([&comms] { return comms && comms->transferring(); });
       std::uint32_t overruns_seen = 0;
       reason = loop.run([&] { return (flight.complete() || (comms && comms->reset_requested())) && calls_over(); },
                         [&] {
@@ -318,6 +346,7 @@ int main(int argc, char** argv) {
       loop.timing().format(line, sizeof line);
       std::fprintf(out, "glider-firmware: loop: %s; watchdog %s (%llu pings)\n", line,
                    loop.watchdog_enabled() ? "on" : "off", static_cast<unsigned long long>(loop.watchdog_pings()));
+      print_transfer_lateness(loop.tagged_lateness_us(), out);
     } catch (const std::exception& error) {
       std::fprintf(out, "glider-firmware: %s\n", error.what());
     }

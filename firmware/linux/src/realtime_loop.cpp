@@ -12,6 +12,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -64,6 +65,7 @@ RealtimeLoop::RealtimeLoop(fw::Executive& executive, const LoopClock& clock, con
   // Under systemd with WatchdogSec=, WATCHDOG_USEC says how often to ping.
   std::uint64_t usec = 0;
   if (sd_watchdog_enabled(0, &usec) > 0) watchdog_us_ = usec;
+  tagged_lateness_us_.reserve(kTaggedCapacity);
 }
 
 RealtimeLoop::~RealtimeLoop() {
@@ -110,6 +112,9 @@ StopReason RealtimeLoop::run(const std::function<bool()>& done, const std::funct
   StopReason reason = StopReason::kCycleLimit;  // unless done, signalled or failed first
   for (std::uint64_t cycle = 0; max_cycles == 0 || cycle < max_cycles; ++cycle) {
     const hal::Micros woke = monotonic_now_us();
+    if (tagged_ && tagged_lateness_us_.size() < kTaggedCapacity && tagged_()) {
+      tagged_lateness_us_.push_back(std::max<hal::Micros>(woke - deadline, 0));
+    }
     const hal::Micros next_deadline = executive_.step();
     const hal::Micros worked = monotonic_now_us() - woke;
     timing_.record(woke - deadline, worked, period);

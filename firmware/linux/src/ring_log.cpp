@@ -58,8 +58,14 @@ bool RingBufferLog::write(const hal::FlightLogRecord& record) {
   }
   hal::Micros utc_us = utc_now_us();
   if (options_.loop_clock != nullptr) {
-    // Back to the cycle's start, in real time (the loop clock may run faster).
-    utc_us -= monotonic_now_us() - options_.loop_clock->to_monotonic_us(record.time_us);
+    if (!anchored_) {
+      // The first row's cycle start in UTC (back from now in real time: the
+      // loop clock may run faster), less its loop time.
+      utc_at_loop_zero_us_ =
+          utc_us - (monotonic_now_us() - options_.loop_clock->to_monotonic_us(record.time_us)) - record.time_us;
+      anchored_ = true;
+    }
+    utc_us = utc_at_loop_zero_us_ + record.time_us;
   }
   ring_[head] = Slot{record, utc_us};
   head_.store(next, std::memory_order_release);

@@ -30,6 +30,8 @@ const std::vector<config::KeyRange>& limits() {
       {"compass.stale_after_s", kStaleAfter},
       {"depth.baud", kBaud},
       {"modem.baud", kBaud},
+      // After each answer, once the shore has typed (docs/comms.md, the reply window); 0: keystroke_wait_time only.
+      {"modem.reply_window_s", {0.0, 600.0, "s"}},
       {"depth.response_timeout_ms", {1.0, 1000.0, "ms"}},
       {"depth.retries", {0.0, 5.0, ""}},
       {"depth.cycle_budget_ms", {1.0, 1000.0, "ms (and at least depth.response_timeout_ms)"}},
@@ -134,6 +136,7 @@ ModemBoardConfig read_modem(const TomlDocument& doc, const std::string& board_na
   modem.primary_number = phone_number(doc, "modem.primary_number", "");
   if (modem.primary_number.empty()) doc.fail("modem.primary_number", "a number to dial is needed");
   modem.secondary_number = phone_number(doc, "modem.secondary_number", "");
+  if (doc.has("modem.reply_window_s")) modem.reply_window_s = number_or(doc, "modem.reply_window_s", 0.0);
   const std::string sensors = doc.string_or("modem.dialog_sensors", "");
   if (!sensors.empty()) {
     modem.dialog_sensors.clear();

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <string_view>
 
 namespace glider::fw::comms {
@@ -523,11 +522,8 @@ void CommsTask::run(hal::Micros now_us) {
         connected_this_surfacing_ = false;
         resume_ = false;
         dials_ = 0;
-        const std::time_t t = static_cast<std::time_t>(config_.utc_at_zero_s + hal::to_seconds(now_us));
-        std::tm tm{};
-        gmtime_r(&t, &tm);
-        std::snprintf(segment_name_, sizeof segment_name_, "%s-%04d-%03d-%d-%d", config_.vehicle_name,
-                      tm.tm_year + 1900, tm.tm_yday, config_.mission_number, segment_);
+        format_segment_name(segment_name_, sizeof segment_name_, config_.vehicle_name,
+                            config_.utc_at_zero_s + hal::to_seconds(now_us), config_.mission_number, segment_);
         enter(CommsState::kGpsWait, now_us);
       }
       break;

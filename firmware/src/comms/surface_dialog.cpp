@@ -4,7 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
+
+#include "glider/utc_time.hpp"
 
 namespace glider::fw::comms {
 namespace {
@@ -40,12 +41,29 @@ void print_sensor(const DialogSensor& s, DialogQueue& out) {
   out.appendf("   sensor:%s%*s secs ago\r\n", left, pad, age);
 }
 
-void format_iso(double utc_s, char* out, std::size_t size) {
-  const std::time_t t = static_cast<std::time_t>(std::floor(utc_s));
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  std::snprintf(out, size, "%04d-%02d-%02dT%02d:%02d:%02d", tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday, tm.tm_hour,
-                tm.tm_min, tm.tm_sec);
+// What the dialog prints for a time it cannot tell (not finite, or a year
+// outside 0..9999): never a made-up date such as 1970.
+constexpr const char* kUnknownTime = "unknown";
+
+// UTC seconds -> whole seconds, truncated toward the earlier time (a clock
+// never shows a second that has not begun). False when not finite or beyond
+// year 9999 (the range check keeps the cast defined).
+bool whole_seconds(double utc_s, std::int64_t& whole_s) {
+  constexpr double kYear10000S = 253402300800.0;  // 10000-01-01T00:00:00Z
+  if (!std::isfinite(utc_s) || utc_s < 0.0 || utc_s >= kYear10000S) return false;
+  whole_s = static_cast<std::int64_t>(std::floor(utc_s));
+  return true;
+}
+
+// "2026-11-27T05:40:12": the base library's ISO writer (one UTC code path),
+// without its zone letter, as Slocum prints an abort's time.
+void format_abort_time(double utc_s, char* out, std::size_t size) {
+  const std::size_t n = utc::write_iso(out, size, utc_s);
+  if (n == 0) {
+    std::snprintf(out, size, "%s", kUnknownTime);
+    return;
+  }
+  out[n - 1] = '\0';  // the 'Z'
 }
 
 }  // namespace
@@ -79,14 +97,22 @@ const char* slocum_abort_name(AbortCause cause) {
 }
 
 void format_ctime(double utc_s, char* out, std::size_t size) {
-  static constexpr const char* kDays[] = {"Sun", "Mon", "Tue", "Wed", "Thu", "Fri", "Sat"};
-  static constexpr const char* kMonths[] = {"Jan", "Feb", "Mar", "Apr", "May", "Jun",
-                                            "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"};
-  const std::time_t t = static_cast<std::time_t>(std::floor(std::isfinite(utc_s) ? utc_s : 0.0));
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  std::snprintf(out, size, "%s %s %2d %02d:%02d:%02d %d", kDays[tm.tm_wday % 7], kMonths[tm.tm_mon % 12], tm.tm_mday,
-                tm.tm_hour, tm.tm_min, tm.tm_sec, tm.tm_year + 1900);
+  std::int64_t whole_s = 0;
+  if (!whole_seconds(utc_s, whole_s) || utc::write_ctime(out, size, whole_s) == 0) {
+    std::snprintf(out, size, "%s", kUnknownTime);
+  }
+}
+
+void format_segment_name(char* out, std::size_t size, const char* vehicle, double utc_s, int mission, int segment) {
+  std::int64_t whole_s = 0;
+  if (!whole_seconds(utc_s, whole_s)) {
+    std::snprintf(out, size, "%s-%s-%d-%d", vehicle, kUnknownTime, mission, segment);
+    return;
+  }
+  const utc::Civil c = utc::civil_from_seconds(whole_s);
+  const std::int64_t day_of_year = utc::days_from_civil(c.year, c.month, c.day) - utc::days_from_civil(c.year, 1, 1);
+  std::snprintf(out, size, "%s-%04d-%03lld-%d-%d", vehicle, c.year, static_cast<long long>(day_of_year), mission,
+                segment);
 }
 
 void print_vehicle_name(const char* name, DialogQueue& out) { out.appendf("Vehicle Name: %s\r\n", name); }
@@ -111,7 +137,7 @@ void print_dialog(const DialogSnapshot& s, DialogQueue& out) {
   out.appendf("ABORT HISTORY: total since reset: %u\r\n", s.aborts.total);
   if (s.aborts.total > 0) {
     char when_iso[64];
-    format_iso(s.aborts.last_time_utc_s, when_iso, sizeof when_iso);
+    format_abort_time(s.aborts.last_time_utc_s, when_iso, sizeof when_iso);
     out.appendf("ABORT HISTORY: last abort cause: %s\r\n", slocum_abort_name(s.aborts.last_cause));
     out.appendf("ABORT HISTORY: last abort details: %s\r\n", to_string(s.aborts.last_cause));
     out.appendf("ABORT HISTORY: last abort time: %s\r\n", when_iso);

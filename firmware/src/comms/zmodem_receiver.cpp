@@ -92,6 +92,12 @@ Status Receiver::step(hal::Micros now, std::size_t budget) {
     on_event(event, byte, now);
   });
   if (status_ == Status::running && expired(now)) on_timeout(now);
+  if (status_ == Status::running && state_ == State::finishing && o_count_ == 0 && now >= fin_again_us_) {
+    // No "OO" yet: our ZFIN may have vanished (its lead-in garbled) and the
+    // sender waits for it; said again once before the "OO" is given up on.
+    send(Header::flags(Frame::fin, 0));
+    fin_again_us_ = deadline_;
+  }
   const bool mid_frame = (state_ == State::receiving && accepting_) || (between_files() && resync_at_us_ < 0);
   if (status_ == Status::running && mid_frame && now - heard_us_ >= std::max(kMinResyncUs, 4 * round_trip_us_)) {
     // Silence in the middle of a frame: the end of a subpacket (data, or the
@@ -147,6 +153,10 @@ void Receiver::on_event(Parser::Event event, std::uint8_t byte, hal::Micros now)
         send(Header::at(Frame::rpos, static_cast<std::uint32_t>(offset_)));
       } else if (state_ == State::wait_file || state_ == State::file_info) {
         send(Header::flags(Frame::nak, 0));
+      } else if (state_ == State::finishing) {
+        // The sender's repeat of its ZFIN (all it says now): our answer was
+        // garbled and lrzsz's sz waits for a ZFIN, tens of seconds, before it exits.
+        send(Header::flags(Frame::fin, 0));
       }
       return;
     case Parser::Event::bad_subpacket:
@@ -237,6 +247,7 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
       // "OO" would reach the console glued to the shore's next command),
       // a repeated ZFIN answered meanwhile.
       deadline_ = now + std::min(options_.timeout_us, std::max(options_.timeout_us / 10, 3 * round_trip_us_));
+      fin_again_us_ = now + std::max(kMinResyncUs, 4 * round_trip_us_);
       return;
     case Frame::nak:
       // The sender saw our last header garbled (lrzsz's sz answers so, then

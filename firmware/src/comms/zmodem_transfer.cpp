@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/firmware/comms/zmodem_transfer.hpp"
 
-#include <dirent.h>
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+
+#include "glider/firmware/comms/directory_entries.hpp"
 
 namespace glider::fw::comms {
 
@@ -27,26 +26,16 @@ void ZmodemTransfer::list_files() {
   // Heap-free (it runs in the control cycle a send arrives): the folder is
   // read with getdents64 into a fixed buffer, not opendir (which mallocs).
   listed_ = 0;
-  const int dir = ::open(data_dir_.data(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir < 0) return;
-  alignas(8) std::array<char, 4096> buffer{};
-  while (listed_ < kMaxListed) {
-    const ssize_t got = ::getdents64(dir, buffer.data(), buffer.size());
-    if (got <= 0) break;
-    for (ssize_t at = 0; at < got;) {
-      const auto* entry = reinterpret_cast<const dirent64*>(buffer.data() + at);
-      at += entry->d_reclen;
-      const char* name = entry->d_name;
-      if (listed_ == kMaxListed) break;
-      // Plain names only (what Zmodem may carry): no hidden or temporary files, no folders.
-      if (name[0] == '.' || std::strlen(name) >= kMaxFileName || !zmodem::is_safe_name(name)) continue;
-      struct stat st {};
-      if (::fstatat(dir, name, &st, 0) != 0 || !S_ISREG(st.st_mode)) continue;
-      if (open_files_ != nullptr && open_files_->is_open(name)) continue;
-      std::snprintf(names_[listed_++].text, kMaxFileName, "%s", name);
-    }
-  }
-  ::close(dir);
+  for_each_directory_entry(data_dir_.data(), [this](int dir, const char* name, unsigned char /*type*/) {
+    if (listed_ == kMaxListed) return false;
+    // Plain names only (what Zmodem may carry): no hidden or temporary files, no folders.
+    if (name[0] == '.' || std::strlen(name) >= kMaxFileName || !zmodem::is_safe_name(name)) return true;
+    struct stat st {};
+    if (::fstatat(dir, name, &st, 0) != 0 || !S_ISREG(st.st_mode)) return true;
+    if (open_files_ != nullptr && open_files_->is_open(name)) return true;
+    std::snprintf(names_[listed_++].text, kMaxFileName, "%s", name);
+    return true;
+  });
   // Oldest first: Slocum segment names (<vehicle>-<yyyy>-<ddd>-<mission>-<segment>,
   // zero-padded) and 8.3 numbers sort in the order they were written.
   std::sort(names_.begin(), names_.begin() + static_cast<std::ptrdiff_t>(listed_),

@@ -6,14 +6,36 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <utility>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 
 #include "glider/config/value_limits.hpp"
 
 namespace glider::fw::mission_file {
 namespace {
+
+// The whole file, read with POSIX calls: no stdio FILE, whose buffer is
+// glibc's own malloc (a mission re-read in flight takes its memory from the
+// reload arena instead of the heap: glider/firmware/app/reload_arena.hpp).
+bool read_whole_file(const std::filesystem::path& path, std::string& text) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      ::close(fd);
+      return n == 0;
+    }
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -94,11 +116,12 @@ struct Reader {
       error(included_at, "argument file " + path.string() + " is not a regular file (a FIFO or device never ends)");
       return;
     }
-    std::ifstream in(path);
-    if (!in) {
+    std::string text;
+    if (!read_whole_file(path, text)) {
       error(included_at, "cannot open argument file " + path.string());
       return;
     }
+    std::istringstream in(text);
     read_ma_stream(in, path.filename().string(), behavior, included_at);
   }
 
@@ -247,11 +270,12 @@ MiDocument read_mi_file(const std::filesystem::path& path) {
         {Severity::kError, path.string(), 0, "not a regular file (a FIFO, device or directory cannot be a mission)"});
     return doc;
   }
-  std::ifstream in(path);
-  if (!in) {
+  std::string text;
+  if (!read_whole_file(path, text)) {
     doc.diagnostics.push_back({Severity::kError, path.string(), 0, "cannot open mission file"});
     return doc;
   }
+  std::istringstream in(text);
   Reader{doc}.read_mi(in, path.filename().string(), path.parent_path());
   return doc;
 }

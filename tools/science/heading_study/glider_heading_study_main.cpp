@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "glider/units.hpp"
 #include "heading_metrics.hpp"
 #include "heading_replay.hpp"
+#include "unseen_table.hpp"
 
 namespace {
 
@@ -112,8 +114,22 @@ int main(int argc, char** argv) {
   app.add_option("--real", real_logs,
                  "real logs to measure instead of the three comet CSVs: a CSV, or a directory / glob of a glider's "
                  "binary files (repeatable)");
+  std::string unseen_table;
+  app.add_option("--unseen-table", unseen_table,
+                 "only the replay out of sample: each comet-2019 log's identified loop predicting the other's steady "
+                 "errors, in each log's water; the markdown table written to this file "
+                 "(docs/diagnose/heading-replay-unseen.md, which sil.HeadingReplayUnseen checks)");
   return tool.run(argc, argv, [&] {
     std::filesystem::create_directories(out_dir);
+    if (!unseen_table.empty()) {
+      std::string table = glider::heading_study::table_header();
+      for (const auto& c : glider::heading_study::unseen_cases()) {
+        table += glider::heading_study::table_row(glider::heading_study::predict_unseen(source, c, out_dir));
+      }
+      std::ofstream(unseen_table) << table;
+      std::printf("%s", table.c_str());
+      return glider::cli::kOk;
+    }
     replay_options.yaw_disturbance = !no_disturbance;
     replay_options.match_speed = !nominal_speed;
     replay_options.current_shear = !no_shear;

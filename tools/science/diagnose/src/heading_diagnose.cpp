@@ -139,6 +139,120 @@ ClosedLoopCheck check_closed_loop(const HeadingTrack& track, const model::Vehicl
   return check_autopilot_closed_loop(open_loop, d.autopilot.candidates, plant, fit_autopilot, fly, margins);
 }
 
+// The fin's measurement on the innovations: at most this many rounds of
+// noise and fin, stopped when the fin moves less than this.
+constexpr int kNoiseRounds = 4;
+constexpr double kFinSettled = 0.01;
+
+// Glide samples once the pitch-over is done (kShearSettleS), split as the
+// links' samples: the innovations' own (their random-yaw state takes the
+// lift factor's settling that the rate error's 80 s avoid, and the turns
+// onto each glide's heading - the fin moves the command asks for, not the
+// ones the loop makes against the water - are what tells the fin's
+// authority apart from the random yaw).
+LinkSamples settled_samples(const HeadingTrack& track, std::size_t max_samples) {
+  std::vector<std::size_t> samples;
+  std::vector<bool> diving;
+  for (std::size_t run = 0; run < track.run_first.size(); ++run) {
+    for (std::size_t i = track.run_first[run] + 1; i < track.run_end(run); ++i) {
+      if (track.time_s[i] - track.time_s[track.run_first[run]] < kShearSettleS) continue;
+      samples.push_back(i);
+      diving.push_back(track.phase[i] == flightlog::Phase::kDive);
+    }
+  }
+  return split(samples, track.yo, diving, max_samples);
+}
+
+// The fin's authority measured on the heading's one-step innovations with
+// the compass noise and the random yaw modelled (heading_innovations): the
+// rate error of the logged fin reads it biased in a closed loop (the fin
+// answers the random yaw and the compass noise; docs/science.md "The fin's
+// authority in a closed loop"), the innovations do not. The rate error chose
+// it (its held-out margins are calibrated on that error); it is refitted
+// here alone (the link's other effects at their nominal values: the rate
+// error fits them jointly with the biased fin - a SIL log with a random yaw
+// and the vehicle file's fin read fin 0.61 with roll offset +0.07 rad - and
+// held there they bias the fin's measurement too, 0.82 [0.75, 0.90]); where
+// that interval holds 1 it is no finding (the bias had made it one) and the
+// others are refitted on the rate error without it. The roll offset and the
+// yaw's dynamics stay the rate error's: a steady yaw the loop holds against
+// is what shows the roll offset, and the random yaw's state would take it.
+// The held-out RMS and gains stay the rate error's.
+void measure_fin_on_innovations(const HeadingTrack& track, const model::VehicleParams& nominal,
+                                const HeadingValues& base, const HeadingResiduals& rate_error,
+                                const LinkSamples& rate_samples, HeadingDiagnosis& d,
+                                const HeadingDiagnoseOptions& options) {
+  const auto fin = std::find_if(d.yaw.findings.begin(), d.yaw.findings.end(),
+                                [](const HeadingFinding& f) { return f.effect == HeadingEffect::kFinEffectiveness; });
+  if (fin == d.yaw.findings.end()) return;
+  // The noise and the fin are the likeliest together, both on the same
+  // settled samples: the noise fitted with the fin at its last measurement,
+  // then the fin on that noise, until the fin settles (a noise fitted at the
+  // nominal fin takes the fin's misfit as random yaw: a truth log's halved
+  // fin read 0.75 [0.49, 1.00] that way, its random yaw 3.5 times the
+  // truth's; one fitted on every sample takes the first 20 s of each glide's
+  // misfit as random yaw: a SIL log's fin x1.65 read 1.88 [1.35, 2.40]).
+  const LinkSamples samples = settled_samples(track, options.max_fit_samples);
+  YawNoise noise;
+  noise.heading_rad = d.heading_noise_rad;
+  HeadingValues at_fin = base;
+  LinkFit measured;
+  for (int round = 0; round < kNoiseRounds; ++round) {
+    noise = fit_yaw_noise(track, nominal, at_fin, noise, samples.all);
+    const HeadingResiduals innovations = [&](const HeadingValues& v, std::span<const std::size_t> w,
+                                             std::vector<double>& o) {
+      heading_innovations(track, nominal, v, noise, w, o);
+    };
+    HeadingSelectOptions select;
+    select.intervals = options.intervals;
+    select.fit_only = {HeadingEffect::kFinEffectiveness};
+    select.select = false;
+    measured = select_heading_effects(HeadingLink::kVehicle, d.yaw.candidates, base, innovations, samples, select);
+    if (measured.findings.empty()) return;
+    const double before = at(at_fin, HeadingEffect::kFinEffectiveness);
+    at(at_fin, HeadingEffect::kFinEffectiveness) = measured.findings.front().value;
+    if (std::abs(measured.findings.front().value - before) < kFinSettled) break;
+  }
+  d.yaw_noise = noise;
+  if (measured.findings.empty()) return;
+  const HeadingFinding& m = measured.findings.front();
+  if (!(m.ci95_low <= m.nominal && m.nominal <= m.ci95_high)) {
+    fin->value = m.value;
+    fin->ci95_low = m.ci95_low;
+    fin->ci95_high = m.ci95_high;
+    at(d.yaw.values, HeadingEffect::kFinEffectiveness) = m.value;
+    return;
+  }
+  HeadingFinding refuted = *fin;
+  refuted.value = m.value;
+  refuted.ci95_low = m.ci95_low;
+  refuted.ci95_high = m.ci95_high;
+  std::vector<HeadingEffect> rest;
+  for (const HeadingFinding& f : d.yaw.findings) {
+    if (f.effect != HeadingEffect::kFinEffectiveness) rest.push_back(f.effect);
+  }
+  const std::vector<HeadingFinding> chosen = d.yaw.findings;
+  HeadingSelectOptions refit;
+  refit.margins.absolute = min_absolute_improvement(HeadingLink::kVehicle);
+  refit.intervals = options.intervals;
+  refit.fit_only = rest;  // none: the baseline alone
+  refit.select = false;
+  LinkFit again =
+      select_heading_effects(HeadingLink::kVehicle, d.yaw.candidates, base, rate_error, rate_samples, refit);
+  again.identifiability = d.yaw.identifiability;
+  again.dropped = {refuted};
+  // The ranking and gains of the rate error's selection, for the findings kept.
+  for (HeadingFinding& f : again.findings) {
+    for (const HeadingFinding& c : chosen) {
+      if (c.effect == f.effect) {
+        f.heldout_rms = c.heldout_rms;
+        f.gain = c.gain;
+      }
+    }
+  }
+  d.yaw = again;
+}
+
 }  // namespace
 
 const HeadingEffectInfo& info(HeadingEffect effect) { return kInfo[static_cast<std::size_t>(effect)]; }
@@ -287,11 +401,13 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   std::vector<bool> diving;
   for (std::size_t i : track.scored) diving.push_back(track.phase[i] == flightlog::Phase::kDive);
   const LinkSamples yaw_samples = split(track.scored, track.yo, diving, options.max_fit_samples);
-  d.yaw = run_link(HeadingLink::kVehicle, base,
-                   against([&](const HeadingValues& v, std::span<const std::size_t> w,
-                               std::vector<double>& o) { predict_yaw_rate(track, nominal, v, w, o); },
-                           track.yaw_rate_rad_s),
-                   yaw_samples, options);
+  const HeadingResiduals yaw_error = against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                                                 std::vector<double>& o) { predict_yaw_rate(track, nominal, v, w, o); },
+                                             track.yaw_rate_rad_s);
+  d.yaw = run_link(HeadingLink::kVehicle, base, yaw_error, yaw_samples, options);
+  if (options.yaw_noise_model && options.fit_only.empty()) {
+    measure_fin_on_innovations(track, nominal, base, yaw_error, yaw_samples, d, options);
+  }
 
   // The current's shear, on what the vehicle link leaves (every glide
   // sample once the pitch-over is done: the scored ones alone never see

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/heading_models.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -187,33 +188,51 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
   pick(predicted, rows, out);
 }
 
+namespace {
+
+// The yaw model's values for one set of effects: where the yaw rate relaxes
+// to at sample interval k (w: the fraction of it, now: the time) on a glide
+// rolled `roll`, and how fast.
+struct YawPlant {
+  const HeadingTrack& t;
+  const model::HeadingModel& hd;
+  double delay, fin_gain, roll_offset, tau, fin_rate;
+  YawPlant(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values)
+      : t(track),
+        hd(vehicle.heading),
+        delay(std::abs(value(values, HeadingEffect::kYawDelay))),
+        fin_gain(vehicle.heading.fin_yaw_gain_per_m * value(values, HeadingEffect::kFinEffectiveness)),
+        roll_offset(value(values, HeadingEffect::kRollOffset)),
+        tau(std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)))),
+        fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9) {}
+  double roll_of(std::size_t run) const { return t.roll_rad[t.run_first[run]] + roll_offset; }
+  double target(std::size_t k, double w, double now, double roll) const {
+    const double speed = t.speed_m_s[k] + w * (t.speed_m_s[k + 1] - t.speed_m_s[k]);
+    const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
+    const double fin = fin_between_rows(t.row_time_s, t.row_fin_filled_rad, now - delay, fin_rate);
+    return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
+  }
+};
+
+}  // namespace
+
 // The model's yaw (dynamics.hpp): the yaw rate relaxes toward
 // V (fin_gain eff fin(t - delay) + roll_gain a_eff sin(roll + offset)),
 // from the run's first heading and the steady rate there; its heading goes
 // through the measured yaw rate's estimator.
 void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
                       std::span<const std::size_t> samples, std::vector<double>& out) {
-  const model::HeadingModel& hd = vehicle.heading;
-  const double delay = std::abs(value(values, HeadingEffect::kYawDelay));
-  const double fin_gain = hd.fin_yaw_gain_per_m * value(values, HeadingEffect::kFinEffectiveness);
-  const double roll_offset = value(values, HeadingEffect::kRollOffset);
-  const double tau = std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)));
-  const double fin_rate = hd.fin_rate_rad_s > 0.0 ? hd.fin_rate_rad_s : 1e9;
+  const YawPlant plant(t, vehicle, values);
+  const double tau = plant.tau;
   std::vector<double> rate(t.size(), kNaN);
-  const std::span<const double> row_time(t.row_time_s);
   std::vector<double> model_heading;
   std::size_t wanted = 0;
   for (std::size_t run = 0; run < t.run_first.size(); ++run) {
     const std::size_t first = t.run_first[run], end = t.run_end(run);
     if (wanted >= samples.size()) break;
     if (samples[wanted] >= end) continue;
-    const double roll = t.roll_rad[first] + roll_offset;
-    auto target = [&](std::size_t k, double w, double now) {
-      const double speed = t.speed_m_s[k] + w * (t.speed_m_s[k + 1] - t.speed_m_s[k]);
-      const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
-      const double fin = fin_between_rows(row_time, t.row_fin_filled_rad, now - delay, fin_rate);
-      return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
-    };
+    const double roll = plant.roll_of(run);
+    auto target = [&](std::size_t k, double w, double now) { return plant.target(k, w, now, roll); };
     model_heading.assign(1, t.heading_rad[first]);
     double yaw_rate = target(first, 0.0, t.time_s[first]);
     double psi = t.heading_rad[first];
@@ -236,6 +255,128 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
     while (wanted < samples.size() && samples[wanted] < end) ++wanted;
   }
   pick(rate, samples, out);
+}
+
+namespace {
+
+// The filter over every glide: the innovations per second at each sample
+// (NaN at a glide's first) and, if asked, the innovations' variances (rad^2).
+void filter_headings(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
+                     const YawNoise& noise, std::vector<double>& innovation, std::vector<double>* variance) {
+  const YawPlant plant(t, vehicle, values);
+  const double tau = plant.tau;
+  const double tau_d = std::max(1.0, noise.correlation_s);
+  const double var_d = noise.disturbance_rad_s * noise.disturbance_rad_s;
+  // The compass's noise, at least the heading's rounding (a zero variance
+  // would make the filter trust a reading exactly).
+  const double var_n = std::max(noise.heading_rad * noise.heading_rad, 1e-8);
+  innovation.assign(t.size(), kNaN);
+  if (variance != nullptr) variance->assign(t.size(), kNaN);
+  for (std::size_t run = 0; run < t.run_first.size(); ++run) {
+    const std::size_t first = t.run_first[run], end = t.run_end(run);
+    const double roll = plant.roll_of(run);
+    auto target = [&](std::size_t k, double w, double now) { return plant.target(k, w, now, roll); };
+    // The state from sample k to k + 1: the mean as predict_yaw_rate steps it
+    // (the yaw rate relaxing toward fin + roll + random yaw, the heading by
+    // the trapezoid), the random yaw decaying, and (P not null) the
+    // covariance by its linearisation.
+    auto step = [&](Eigen::Vector3d& x, std::size_t k, Eigen::Matrix3d* P) {
+      double s = t.time_s[k];
+      const double span = t.time_s[k + 1] - s;
+      while (s < t.time_s[k + 1]) {
+        const double h = std::min(kStepS, t.time_s[k + 1] - s);
+        const double u = target(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
+        const double a = std::exp(-h / tau), phi = std::exp(-h / tau_d);
+        Eigen::Matrix3d F;
+        F << 1.0, 0.5 * h * (1.0 + a), 0.5 * h * (1.0 - a), 0.0, a, 1.0 - a, 0.0, 0.0, phi;
+        x = F * x + Eigen::Vector3d(0.5 * h * (1.0 - a) * u, (1.0 - a) * u, 0.0);
+        if (P != nullptr) {
+          *P = F * *P * F.transpose();
+          (*P)(2, 2) += var_d * (1.0 - phi * phi);
+        }
+        s += h;
+      }
+    };
+    // From the glide's first reading and its measured rate.
+    Eigen::Vector3d x(t.heading_rad[first], std::isfinite(t.yaw_rate_rad_s[first]) ? t.yaw_rate_rad_s[first] : 0.0,
+                      0.0);
+    Eigen::Matrix3d P = Eigen::Vector3d(var_n, 4.0 * var_d + 1e-8, var_d).asDiagonal();
+    for (std::size_t k = first; k + 1 < end; ++k) {
+      step(x, k, &P);
+      // The next reading: the innovation, then the update.
+      const std::size_t j = k + 1;
+      const double nu = x[0] - t.heading_rad[j];
+      innovation[j] = nu / (t.time_s[j] - t.time_s[k]);
+      const double S = P(0, 0) + var_n;
+      if (variance != nullptr) (*variance)[j] = S;
+      const Eigen::Vector3d gain = P.col(0) / S;
+      x -= gain * nu;
+      const Eigen::RowVector3d heading_row = P.row(0);
+      P -= gain * heading_row;
+    }
+  }
+}
+
+}  // namespace
+
+void heading_innovations(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
+                         const YawNoise& noise, std::span<const std::size_t> samples, std::vector<double>& out) {
+  std::vector<double> innovation;
+  filter_headings(t, vehicle, values, noise, innovation, nullptr);
+  pick(innovation, samples, out);
+}
+
+YawNoise fit_yaw_noise(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
+                       const YawNoise& start, std::span<const std::size_t> samples, bool grid) {
+  // -2 log likelihood of the innovations (Gaussian): a grid around the start
+  // (the compass noise x1/4..x4, the random yaw's RMS 1e-4..2e-2 rad/s, its
+  // correlation 10-300 s), then each of the three refined by factors down to
+  // 4 % (the filter's mean does not depend on them, the innovations'
+  // whiteness does: a compass noise read 40 % high left the fin 20 % weak
+  // on a SIL log).
+  std::vector<double> innovation, variance;
+  auto cost = [&](const YawNoise& trial) {
+    filter_headings(t, vehicle, values, trial, innovation, &variance);
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (const std::size_t k : samples) {
+      if (k == 0 || !std::isfinite(innovation[k]) || !std::isfinite(variance[k]) || variance[k] <= 0.0) continue;
+      const double nu = innovation[k] * (t.time_s[k] - t.time_s[k - 1]);
+      sum += std::log(variance[k]) + nu * nu / variance[k];
+      ++n;
+    }
+    return n > 0 ? sum : std::numeric_limits<double>::infinity();
+  };
+  YawNoise best = start;
+  double best_cost = grid ? std::numeric_limits<double>::infinity() : cost(start);
+  for (const double noise_scale : {0.25, 0.5, 1.0, 2.0, 4.0}) {
+    if (!grid) break;
+    for (int i = 0; i <= 10; ++i) {
+      for (const double correlation : {10.0, 30.0, 100.0, 300.0}) {
+        YawNoise trial = start;
+        trial.heading_rad = std::max(start.heading_rad, 1e-4) * noise_scale;
+        trial.disturbance_rad_s = 1e-4 * std::pow(200.0, i / 10.0);
+        trial.correlation_s = correlation;
+        if (const double c = cost(trial); c < best_cost) {
+          best_cost = c;
+          best = trial;
+        }
+      }
+    }
+  }
+  for (const double factor : {1.4, 1.18, 1.08, 1.04}) {
+    for (double YawNoise::*field : {&YawNoise::heading_rad, &YawNoise::disturbance_rad_s, &YawNoise::correlation_s}) {
+      for (const double f : {factor, 1.0 / factor}) {
+        YawNoise trial = best;
+        trial.*field *= f;
+        if (const double c = cost(trial); c < best_cost) {
+          best_cost = c;
+          best = trial;
+        }
+      }
+    }
+  }
+  return best;
 }
 
 }  // namespace glider::diagnose

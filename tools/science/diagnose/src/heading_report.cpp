@@ -48,6 +48,17 @@ ordered_json link_json(const LinkFit& f) {
                         {"gain", x.gain}});
   }
   j["findings"] = findings;
+  // Chosen by the rate error, then refuted by the fin's measurement on the
+  // innovations (heading_diagnose.hpp yaw_noise_model): that measurement.
+  ordered_json refuted = ordered_json::array();
+  for (const HeadingFinding& x : f.dropped) {
+    refuted.push_back({{"effect", info(x.effect).id},
+                       {"value", x.value},
+                       {"nominal", x.nominal},
+                       {"ci95", {x.ci95_low, x.ci95_high}},
+                       {"why", "the heading's innovations (compass noise and random yaw modelled) hold the nominal"}});
+  }
+  j["refuted"] = refuted;
   ordered_json pairs = ordered_json::array();
   for (const HeadingAmbiguity& a : f.identifiability) {
     pairs.push_back({{"chosen", info(a.chosen).id},
@@ -79,6 +90,9 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
   j["heading_noise_rad"] = d.heading_noise_rad;
   j["unexplained_yaw_rate"] = {{"rms_rad_s", d.unexplained_yaw_rate_rad_s},
                                {"correlation_s", d.unexplained_correlation_s}};
+  j["yaw_noise"] = {{"compass_rad", d.yaw_noise.heading_rad},
+                    {"random_yaw_rad_s", d.yaw_noise.disturbance_rad_s},
+                    {"random_yaw_correlation_s", d.yaw_noise.correlation_s}};
   ordered_json shear = ordered_json::array();
   for (const ShearBin& b : d.current_shear.bins) {
     if (!b.fitted) continue;
@@ -180,6 +194,11 @@ std::string heading_text(const HeadingDiagnosis& d) {
           info(x.effect).id, x.value, info(x.effect).unit, x.nominal, x.ci95_low, x.ci95_high, x.heldout_rms,
           100.0 * x.gain);
     }
+    for (const HeadingFinding& x : f->dropped) {
+      add("            not %-16s %+.4g %s (95%% CI %.4g .. %.4g on the heading's innovations, noise modelled: holds "
+          "%.4g)\n",
+          info(x.effect).id, x.value, info(x.effect).unit, x.ci95_low, x.ci95_high, x.nominal);
+    }
   }
   if (d.closed_loop.heldout_glides > 0) {
     const ClosedLoopCheck& c = d.closed_loop;
@@ -209,6 +228,11 @@ std::string heading_text(const HeadingDiagnosis& d) {
   add("  c_fin held / changed by the previous cycle's error (rate inside its deadband):");
   for (const HoldBin& b : d.holds) {
     add(" %.0f-%.0f deg %zu/%zu;", rad_to_deg(b.from_rad), rad_to_deg(b.to_rad), b.held, b.changed);
+  }
+  if (d.yaw_noise.heading_rad > 0.0) {
+    add("\n  the fin measured on the heading's innovations with compass noise %.2f deg and a random yaw %.3f deg/s "
+        "over %.0f s (likeliest)",
+        rad_to_deg(d.yaw_noise.heading_rad), rad_to_deg(d.yaw_noise.disturbance_rad_s), d.yaw_noise.correlation_s);
   }
   add("\n  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
       d.delay_servo_s, d.delay_after_fin_s);

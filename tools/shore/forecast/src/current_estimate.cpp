@@ -7,10 +7,11 @@
 #include <numbers>
 #include <optional>
 
+#include "glider/forecast/tidal_prior.hpp"
+
 namespace glider::forecast {
 namespace {
 
-constexpr double kM2PeriodS = 44714.16;
 // The glider's per-segment estimate scatters by this much even in steady
 // water (DR speed error, the fix's noise over a short segment): the floor of
 // every sigma.
@@ -172,10 +173,10 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   // smallest error wins, and its error is the estimate's uncertainty (the
   // hindcast says how well the rule does in this water, its formula does not).
   const double half = 0.5 * (to_utc_s - from_utc_s);
-  enum Rule { kLast, kTrend, kTidal };
+  enum Rule { kLast, kTrend, kTidal, kPrior, kRules };
   // Squared errors of each rule, and of persistence on the same cases.
-  double sum2[3] = {0.0, 0.0, 0.0}, last_on[3] = {0.0, 0.0, 0.0};
-  int count[3] = {0, 0, 0};
+  double sum2[kRules] = {}, last_on[kRules] = {};
+  int count[kRules] = {};
   for (std::size_t j = 1; j < all.size(); ++j) {
     if (all[j].utc_s > from_utc_s || all[j].utc_s <= from_utc_s - 86400.0) continue;
     const std::vector<CurrentSample> before(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(j));
@@ -184,19 +185,37 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
       return std::pow(p.east_m_s - all[j].east_m_s, 2) + std::pow(p.north_m_s - all[j].north_m_s, 2);
     };
     const double last2 = error2(last_current(before));
-    for (int rule = kLast; rule <= kTidal; ++rule) {
-      const std::optional<CurrentEstimate> p = rule == kLast ? std::optional<CurrentEstimate>(last_current(before))
-                                                             : predict_fitted(before, from, to, rule == kTidal);
+    for (int rule = kLast; rule < kRules; ++rule) {
+      std::optional<CurrentEstimate> p;
+      if (rule == kLast) {
+        p = last_current(before);
+      } else if (rule == kPrior) {
+        p = predict_with_prior(before, from, to);
+      } else {
+        p = predict_fitted(before, from, to, rule == kTidal);
+      }
       if (!p) continue;
       sum2[rule] += error2(*p);
       last_on[rule] += last2;
       ++count[rule];
     }
   }
+  if (all.empty()) return last_current(all);
+  // Fewer than two hindcasts (one or two estimates in the day): nothing can
+  // choose a rule nor measure its error; the tidal prior gives both (a
+  // turning tide makes persistence of one estimate wrong by more than any
+  // difference of two estimates says).
+  if (count[kLast] < 2) {
+    CurrentEstimate e = predict_with_prior(all, from_utc_s, to_utc_s);
+    e.sigma_east_m_s = std::hypot(e.sigma_east_m_s, kSigmaFloorMS);
+    e.sigma_north_m_s = std::hypot(e.sigma_north_m_s, kSigmaFloorMS);
+    e.samples = static_cast<int>(all.size());
+    return e;
+  }
   int best = kLast;
-  double best_rms = count[kLast] > 0 ? std::sqrt(sum2[kLast] / count[kLast]) : -1.0;
+  double best_rms = std::sqrt(sum2[kLast] / count[kLast]);
   double best_gain = 1.0;
-  for (int rule = kTrend; rule <= kTidal; ++rule) {
+  for (int rule = kTrend; rule < kRules; ++rule) {
     // Two hindcasts at least: a tide shows itself in a few 3 h dives.
     if (count[rule] < 2) continue;
     const double gain = sum2[rule] / std::max(last_on[rule], 1e-12);  // < 1: better than persistence
@@ -207,10 +226,21 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
     }
   }
   CurrentEstimate e = last_current(all);
-  if (best != kLast) {
+  if (best == kPrior) {
+    e = predict_with_prior(all, from_utc_s, to_utc_s);
+  } else if (best != kLast) {
     if (const std::optional<CurrentEstimate> p = predict_fitted(all, from_utc_s, to_utc_s, best == kTidal)) e = *p;
+  } else {
+    // Persistence's scatter of consecutive estimates, pooled with what the
+    // prior says carrying the last one over this window costs, as two cases'
+    // worth (a scaled-inverse-chi-square prior, 2 degrees of freedom): a few
+    // differences of a turning tide do not make persistence certain.
+    const double prior_var = persistence_prior_variance(all.back(), from_utc_s, to_utc_s);
+    const double n = static_cast<double>(all.size() - 1), nu0 = 2.0;
+    e.sigma_east_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_east_m_s * e.sigma_east_m_s) / (nu0 + n));
+    e.sigma_north_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_north_m_s * e.sigma_north_m_s) / (nu0 + n));
   }
-  if (best_rms >= 0.0 && count[best] >= 3) {
+  if (count[best] >= 3) {
     // Per component: the hindcast's error split evenly.
     const double per_axis = best_rms / std::sqrt(2.0);
     e.sigma_east_m_s = std::max(e.sigma_east_m_s, per_axis);

@@ -85,12 +85,14 @@ fs::path vehicle_file(const fs::path& glider_dir, const std::string& glider, con
 // model) that part is taken out: the DR's through-water track of the segment
 // (its position on surfacing less the fix it dived from and the current it
 // already carried) times (ratio - 1), over the time.
-std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio) {
+std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio, double first_span_s) {
   std::vector<CurrentSample> out;
-  // The first event's estimate is of a segment before the history (its
-  // length unknown: taken as half an hour before the call).
+  // The first event's estimate is the mean over the segment that ended at
+  // its call, which began before the history: as long as the segments the
+  // mission flies (`first_span_s`, the coming dive's expected length).
   if (!history.empty() && history[0].water_vx_m_s && history[0].water_vy_m_s) {
-    out.push_back({history[0].call_start_utc_s - 1800.0, *history[0].water_vx_m_s, *history[0].water_vy_m_s});
+    out.push_back({history[0].call_start_utc_s - 0.5 * first_span_s, *history[0].water_vx_m_s, *history[0].water_vy_m_s,
+                   first_span_s});
   }
   for (std::size_t i = 1; i < history.size(); ++i) {
     const Surfacing& s = history[i];
@@ -290,6 +292,16 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     f.notes.push_back("the last call (" + history.back().file.filename().string() +
                       ") had no fix; forecast from the fix of " + last->file.filename().string());
   }
+  // The glider's own abort: after one it stays at the surface until the
+  // pilot resumes or restarts the mission; the runs fly it as resumed.
+  if (history.back().surfaced_by_abort) {
+    f.glider_aborted = true;
+    f.glider_abort_cause = history.back().last_abort_cause;
+    f.notes.push_back("the glider surfaced by an abort at its last call (" + history.back().reasons +
+                      (f.glider_abort_cause.empty() ? "" : "; last abort: " + f.glider_abort_cause) +
+                      "): it does not dive again until the mission is resumed or restarted; the runs fly it as "
+                      "resumed, and abort_risk is theirs");
+  }
   f.glider = last->glider;
   f.fix_lat_deg = *last->lat_deg;
   f.fix_lon_deg = *last->lon_deg;
@@ -381,7 +393,6 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double dr = std::hypot(r.dr_east_m, r.dr_north_m), truth = std::hypot(r.east_m, r.north_m);
     if (r.surfaced && !r.aborted && dr > 100.0 && truth / dr > 0.5 && truth / dr < 2.0) f.dr_speed_ratio = truth / dr;
   }
-  const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio);
   // when_secs counts from the arrival at the surface: the dive is shorter by the time spent up.
   double expected_s = now.config.plan.surface_interval_s > 0.0
                           ? std::max(60.0, now.config.plan.surface_interval_s - setup.surface_time_s)
@@ -390,8 +401,9 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double last_dive = history.back().call_start_utc_s - history[history.size() - 2].call_end_utc_s;
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);
   }
+  const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio, expected_s);
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s);
-  f.baseline_current = last_current(current_samples(history, 1.0));
+  f.baseline_current = last_current(current_samples(history, 1.0, expected_s));
   if (samples.empty()) {
     f.notes.push_back("no depth-averaged current from the surfacings yet (m_water_vx/vy): still water +- " +
                       std::to_string(f.current.sigma_east_m_s).substr(0, 4) + " m/s assumed");
@@ -445,6 +457,7 @@ nlohmann::json forecast_json(const Forecast& f) {
     out["next_surfacing"] = nullptr;
   }
   out["abort_risk"] = f.abort_risk;
+  out["glider_aborted"] = f.glider_aborted ? json{{"cause", f.glider_abort_cause}} : json(nullptr);
   out["abort_causes"] = json::object();
   for (const auto& [cause, fraction] : f.abort_causes) out["abort_causes"][cause] = fraction;
   out["current"] = {{"east_m_s", f.current.east_m_s},
@@ -588,6 +601,9 @@ std::string forecast_after_surfacing(const fs::path& glider_dir) {
     const Forecast f = make_forecast(glider_dir, options);
     char text[400];
     if (!f.refusal.empty()) return "forecast: the mission is refused: " + f.refusal;
+    const std::string aborted = f.glider_aborted ? "; the glider surfaced by an abort (" + f.glider_abort_cause +
+                                                       "): it waits for the pilot, the runs fly it as resumed"
+                                                 : "";
     if (!f.have_surfacing) {
       std::snprintf(text, sizeof text, "forecast: no run surfaces normally; abort risk %.0f %% (%.1f s)",
                     100.0 * f.abort_risk, f.wall_s);
@@ -598,7 +614,7 @@ std::string forecast_after_surfacing(const fs::path& glider_dir) {
                     f.lat_deg, f.lon_deg, format_utc(f.time_utc_s).c_str(), f.ellipse.semi_major_m,
                     f.ellipse.semi_minor_m, 100.0 * f.abort_risk, f.runs, f.wall_s);
     }
-    return text;
+    return text + aborted;
   } catch (const std::exception& e) {
     const std::string message = std::string("forecast: failed: ") + e.what();
     try {

@@ -4,6 +4,7 @@
 // to the next surfacing, with its own current and vehicle drawn.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -56,10 +57,13 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
   } else if (std::isfinite(config.plan.heading_rad)) {
     opt.heading_deg = rad_to_deg(config.plan.heading_rad);
   }
-  const double east_now = s.current.east_m_s, north_now = s.current.north_m_s;
+  // The navigator steers and dead-reckons with what the glider believes (its
+  // m_water_vx/vy at the dive), not with the forecast's own estimate of the
+  // water: the two differ whenever the forecast expects the current to change.
+  const std::optional<fw::EastNorth> belief = s.firmware_current;
   const double up_s = s.surface_time_s;
-  opt.before_launch = [east_now, north_now, up_s](fw::FlightSoftware& flight) {
-    flight.seed_current({east_now, north_now});
+  opt.before_launch = [belief, up_s](fw::FlightSoftware& flight) {
+    if (belief) flight.seed_current(*belief);
     flight.seed_clocks(up_s, up_s);
   };
   RunOutcome out;

@@ -12,6 +12,7 @@
 #include "glider/firmware/app/mission_setup.hpp"
 #include "glider/forecast/forecast.hpp"
 #include "glider/forecast/surfacing_history.hpp"
+#include "glider/forecast/tidal_prior.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/portable_random.hpp"
@@ -20,9 +21,7 @@
 namespace glider::forecast {
 namespace fs = std::filesystem;
 
-namespace {
-constexpr double kM2PeriodS = 44714.16;
-}
+namespace {}
 
 Truth fly_truth(const TruthOptions& o) {
   Truth truth;

@@ -100,7 +100,19 @@ Surfacing parse_surfacing(const fs::path& file) {
   }
   if (event.contains("reasons") && event["reasons"].is_array()) {
     for (const json& r : event["reasons"]) {
-      if (r.is_string()) s.reasons += (s.reasons.empty() ? "" : "; ") + r.get<std::string>();
+      if (!r.is_string()) continue;
+      std::string text = r.get<std::string>();
+      s.reasons += (s.reasons.empty() ? "" : "; ") + text;
+      std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (text.find("abort") != std::string::npos) s.surfaced_by_abort = true;
+    }
+  }
+  if (event.contains("aborts") && event["aborts"].is_object()) {
+    const json& a = event["aborts"];
+    if (a.contains("last_cause") && a["last_cause"].is_string())
+      s.last_abort_cause = a["last_cause"].get<std::string>();
+    if (a.contains("last_details") && a["last_details"].is_string() && !a["last_details"].get<std::string>().empty()) {
+      s.last_abort_cause += (s.last_abort_cause.empty() ? "" : ": ") + a["last_details"].get<std::string>();
     }
   }
   return s;

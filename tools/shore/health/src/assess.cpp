@@ -4,8 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <optional>
+
+#include "glider/utc_time.hpp"
 
 namespace glider::health {
 namespace {
@@ -100,6 +101,12 @@ double segment_half_width(const EffectAssessment& a, const std::vector<SegmentMe
   return half[half.size() / 2];
 }
 
+// The 95 % half-width of a ratio a / b from the half-widths of a and b (the
+// delta method, a and b independent): the step's and the hinge's relative sizes.
+double ratio_half_width(double ratio, double half_a, double half_b, double b) {
+  return std::hypot(half_a / std::abs(b), ratio * half_b / std::abs(b));
+}
+
 // A step's 95 % interval: the wider of the segments' scatter about the
 // levels (the trend's) and their own intervals (an error they share), and
 // for a relative rule the change over the level before with the level
@@ -118,7 +125,7 @@ void step_interval(const EffectAssessment& a, const std::vector<SegmentMeasureme
   }
   const double before = std::abs(tr.level_before);
   const double ratio = change / before;
-  const double relative_half = std::hypot(half / before, ratio * hb / before);
+  const double relative_half = ratio_half_width(ratio, half, hb, before);
   low = ratio - relative_half;
   high = ratio + relative_half;
 }
@@ -133,14 +140,9 @@ std::string step_message(const HealthEffectInfo& e, double change, double low, d
 
 }  // namespace
 
-std::string utc_iso(double unix_seconds) {
-  const std::time_t t = static_cast<std::time_t>(std::floor(unix_seconds));
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
-}
+// The base library's one UTC writer (whole seconds, truncated toward the
+// earlier time as the floor before gmtime did; empty for a non-finite time).
+std::string utc_iso(double unix_seconds) { return utc::format_iso(std::floor(unix_seconds)); }
 
 Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::vector<Alert>& previous,
                   const AssessOptions& options) {
@@ -225,8 +227,8 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
       alert.effect = a.effect;
       alert.kind = "line";
       alert.size = hinge_rate;
-      const double half = std::hypot(0.5 * (tr.hinge_slope_per_day.high - tr.hinge_slope_per_day.low) / hinge_before,
-                                     hinge_rate * 0.5 * (tr.hinge_level.high - tr.hinge_level.low) / hinge_before);
+      const double half = ratio_half_width(hinge_rate, 0.5 * (tr.hinge_slope_per_day.high - tr.hinge_slope_per_day.low),
+                                           0.5 * (tr.hinge_level.high - tr.hinge_level.low), hinge_before);
       alert.low = hinge_rate - half;
       alert.high = hinge_rate + half;
       alert.relative = true;

@@ -9,6 +9,7 @@
 #include "glider/diagnose/heading_diagnose.hpp"
 #include "glider/diagnose/observations.hpp"
 #include "glider/diagnose/trend.hpp"
+#include "glider/fitting_core/intervals.hpp"
 
 namespace glider::health {
 namespace {
@@ -104,17 +105,31 @@ EffectValue pump_rate(const flightlog::FlightLog& raw) {
     return dt > 0.0 && dt <= kMaxIntervalS && std::abs(v[k + 1] - v[k]) > kMovedCc;
   };
   std::vector<double> rates;
+  std::vector<long> run_of;  // the pump run (one stroke between stops) each rate is from
+  long run = 0;
+  bool in_run = false;
   for (std::size_t k = 1; k + 2 < t.size(); ++k) {
-    if (!running(k - 1) || !running(k) || !running(k + 1)) continue;
-    if ((v[k + 1] - v[k]) * (v[k] - v[k - 1]) <= 0.0) continue;  // same direction
+    if (!running(k - 1) || !running(k) || !running(k + 1) || (v[k + 1] - v[k]) * (v[k] - v[k - 1]) <= 0.0) {
+      in_run = false;
+      continue;
+    }
+    if (!in_run) ++run;
+    in_run = true;
     rates.push_back(std::abs(v[k + 1] - v[k]) / (t[k + 1] - t[k]));
+    run_of.push_back(run);
   }
   if (rates.size() < 3) {
     return not_judged("only " + std::to_string(rates.size()) +
                       " interval(s) with the pump running throughout (3 needed): the pump's travel is too short "
                       "against the sampling of m_ballast_pumped");
   }
-  const diagnose::Interval i = diagnose::mean_with_interval(rates);
+  // The fitting core's rule: consecutive rates share a stroke's pressure and
+  // oil temperature (serially correlated: counted over the effective sample
+  // count), and with two strokes or more each stroke is a cluster (the wider
+  // of the two, Student-t on strokes - 1).
+  const fitting_core::IntervalRule rule =
+      run >= 2 ? fitting_core::IntervalRule::kGlides : fitting_core::IntervalRule::kLag1;
+  const fitting_core::Estimate i = fitting_core::mean_with_rule(rates, run_of, rule);
   return {i.value, i.low, i.high, {}};
 }
 

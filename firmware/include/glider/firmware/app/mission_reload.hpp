@@ -5,8 +5,11 @@
 // value, range). Only a mission that passes replaces the flown plan (its
 // waypoints and surfacing; the yo and the abort limits stay those of the
 // launch); a refused one leaves the vehicle flying the old plan and the
-// reason goes into the next dialog. Reading files allocates: this runs only
-// in the cycle the pilot presses Control-F (docs/comms.md).
+// reason goes into the next dialog. Parsing allocates: the parser's memory
+// comes from the reload arena reserved at start-up, not the heap
+// (reload_arena.hpp); this runs only in the cycle the pilot presses
+// Control-F, or when an upload is complete (docs/comms.md).
+#include <cstddef>
 #include <filesystem>
 
 #include "glider/firmware/app/mission_setup.hpp"
@@ -14,6 +17,12 @@
 #include "glider/firmware/comms/comms_task.hpp"
 
 namespace glider::fw::app {
+
+// The reload arena a program reserves at start-up for MissionFileReloader
+// (reload_arena.hpp). box_current: a re-read reaches 56 kB of it, an
+// upload's install 105 kB (comms.ReloadHeap prints them); 2 MiB leaves room
+// for missions some 20 times larger.
+constexpr std::size_t kReloadArenaBytes = std::size_t{2} << 20;
 
 class MissionFileReloader final : public comms::MissionReloader {
  public:

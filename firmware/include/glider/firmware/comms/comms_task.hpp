@@ -136,6 +136,8 @@ class CommsTask final : public PeriodicTask, public hal::LogSink, private Consol
   void set_log_progress(LogProgress* progress) { log_progress_ = progress; }
   ParameterTable& parameters() { return parameters_; }
   CommsState state() const { return state_; }
+  // A Zmodem transfer (zs, zr, send) is running in the call.
+  bool transferring() const { return transferring_; }
   // No call in progress and nothing holding the vehicle up.
   bool idle() const { return state_ == CommsState::kIdle; }
   const CommsStats& stats() const { return stats_; }

@@ -67,7 +67,13 @@ struct DialogSnapshot {
 const char* slocum_abort_name(AbortCause cause);
 
 // "Sat Mar 28 20:40:38 2026" (C's ctime, without its newline), UTC.
+// "unknown" when utc_s is not finite or its year is outside 0..9999.
 void format_ctime(double utc_s, char* out, std::size_t size);
+
+// Slocum's segment name "<vehicle>-<yyyy>-<ddd>-<mission>-<segment>", ddd the
+// UTC day of the year counted from 0 (as tm_yday). "<vehicle>-unknown-..."
+// when utc_s cannot be told (as format_ctime).
+void format_segment_name(char* out, std::size_t size, const char* vehicle, double utc_s, int mission, int segment);
 
 // The whole dialog block, from "Glider <name> at surface." to the prompt.
 void print_dialog(const DialogSnapshot& s, DialogQueue& out);

@@ -59,6 +59,8 @@ class Receiver : public Session {
   bool accepting_ = false;          // data at offset_ is being taken
   bool file_open_ = false;
   int o_count_ = 0;  // 'O's of the sender's "OO" after ZFIN
+  // When our ZFIN is said again if no "OO" has come (finishing).
+  hal::Micros fin_again_us_ = 0;
   // The link's round trip (smoothed), measured from a ZRPOS/ZRINIT/ZNAK to the next header:
   // how long the sender's "OO" may take to arrive after our ZFIN.
   hal::Micros now_ = 0;

@@ -9,7 +9,10 @@
 // loop is restarted.
 #include <cstdio>
 #include <functional>
+#include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "glider/firmware/executive.hpp"
 #include "glider/target/loop_clock.hpp"
@@ -51,6 +54,13 @@ class RealtimeLoop {
   StopReason run(const std::function<bool()>& done, const std::function<bool()>& healthy, std::uint64_t max_cycles = 0);
 
   const LoopTiming& timing() const { return timing_; }
+  // Cycles worth watching on their own (glider-firmware: a Zmodem transfer
+  // running, the HIL check's "lateness during a transfer"): each one for
+  // which `tagged()`, asked at its wake-up, is true has its wake-up lateness
+  // kept, up to kTaggedCapacity cycles (kept at init: no heap in the loop).
+  static constexpr std::size_t kTaggedCapacity = 65536;
+  void set_tagged(std::function<bool()> tagged) { tagged_ = std::move(tagged); }
+  std::span<const hal::Micros> tagged_lateness_us() const { return tagged_lateness_us_; }
   bool watchdog_enabled() const { return watchdog_us_ > 0; }
   std::uint64_t watchdog_pings() const { return watchdog_pings_; }
 
@@ -66,6 +76,8 @@ class RealtimeLoop {
   std::uint64_t watchdog_us_ = 0;
   std::uint64_t watchdog_pings_ = 0;
   LoopTiming timing_;
+  std::function<bool()> tagged_;
+  std::vector<hal::Micros> tagged_lateness_us_;
 };
 
 }  // namespace glider::target

@@ -40,9 +40,13 @@ struct RingLogOptions {
   std::uint32_t fsync_every_rows = 60;
   std::vector<std::pair<std::string, std::string>> metadata;  // `# key: value` lines before the header
   std::FILE* messages = stderr;                               // disk full / recovered, once per episode
-  // The loop's clock: each row's m_present_time is the UTC of its cycle's start
-  // (the record's loop time), not of the moment the row was handed over after
-  // the cycle's work. Null: the moment of hand-over.
+  // The loop's clock: each row's m_present_time is the loop clock told in
+  // UTC, the UTC at loop time 0 (read once, at the first row) plus the row's
+  // loop time: the time the firmware flew by (its timers, `MT:`), so on a
+  // bench clock at --time-scale the CSV and the Slocum files describe the
+  // flown (simulated) flight, and a step of the system clock (NTP, GPS) never
+  // reorders rows (docs/comms.md, the Slocum files' time base). Null: the
+  // system clock at the moment of hand-over.
   const LoopClock* loop_clock = nullptr;
   // The system call that writes the file (tests inject a full disk).
   ssize_t (*write_fn)(int fd, const void* data, std::size_t size) = nullptr;
@@ -101,6 +105,9 @@ class RingBufferLog final : public hal::LogSink {
   std::atomic<std::uint64_t> rows_lost_disk_{0};
   std::atomic<std::uint64_t> fsyncs_{0};
   std::atomic<hal::Micros> written_through_us_{-1};
+  // Loop side only: UTC at loop time 0 (with loop_clock), read at the first row.
+  bool anchored_ = false;
+  hal::Micros utc_at_loop_zero_us_ = 0;
   // Writer thread only:
   std::vector<char> buffer_;
   std::size_t buffered_bytes_ = 0;

@@ -36,6 +36,8 @@ struct ModemBoardConfig {
   std::string primary_number;    // RUDICS number dialled first
   std::string secondary_number;  // "" none
   std::vector<std::string> dialog_sensors{"m_battery", "m_depth", "m_water_vx", "m_water_vy"};
+  // modem.reply_window_s (fw::comms::CommsConfig::reply_window_s); absent: CommsConfig's default.
+  std::optional<double> reply_window_s;
 };
 
 struct TargetBoard {

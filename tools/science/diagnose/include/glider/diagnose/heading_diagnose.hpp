@@ -43,6 +43,10 @@ struct HeadingDiagnosis {
   // slow yaw disturbance, not compass noise, when that is tens of seconds).
   double unexplained_yaw_rate_rad_s = 0.0;
   double unexplained_correlation_s = 0.0;
+  // The compass noise and random yaw the fin was measured with on the
+  // heading's innovations (heading_rad 0: not measured - the vehicle link
+  // did not name the fin, or yaw_noise_model is off).
+  YawNoise yaw_noise;
   // The current's vertical shear across the heading, from what the
   // extended yaw model leaves (heading_shear.hpp); the unexplained yaw
   // above is what is left after it.
@@ -63,7 +67,17 @@ struct HeadingDiagnosis {
 
 struct HeadingDiagnoseOptions {
   HeadingTrackOptions track;
-  std::size_t max_fit_samples = 4000;   // per half, even stride (the fits' cost)
+  std::size_t max_fit_samples = 4000;  // per half, even stride (the fits' cost)
+  // A fin_effectiveness the vehicle link names (chosen on the yaw rate of
+  // the logged fin) measured on the heading's one-step innovations with the
+  // compass noise and the random yaw modelled (heading_models.hpp
+  // heading_innovations), and no finding where that interval holds 1;
+  // false: the rate error's value, biased in a closed loop (docs/science.md
+  // "The fin's authority in a closed loop"). Not with fit_only (a
+  // measurement of named effects, e.g. health's on decimated logs, whose
+  // headings are interpolated between readings: the innovations need every
+  // heading reading as logged).
+  bool yaw_noise_model = true;
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
   // Fly the closed-loop check (heading_closed_loop.hpp; not with fit_only).

@@ -48,6 +48,7 @@ struct LinkFit {
   double baseline_rms = 0.0, baseline_rms_dive = 0.0, baseline_rms_climb = 0.0;  // all samples
   double baseline_heldout_rms = 0.0;
   std::vector<HeadingFinding> findings;           // strongest first
+  std::vector<HeadingFinding> dropped;            // chosen, then refuted (heading_diagnose.hpp yaw_noise_model)
   std::vector<HeadingAmbiguity> identifiability;  // every pair judged (selected links only)
   HeadingValues values{};                         // nominal with the findings
   double extended_rms = 0.0, extended_heldout_rms = 0.0;

@@ -65,4 +65,36 @@ void predict_autopilot_fin(const HeadingTrack& track, const AutopilotSettings& s
 void predict_yaw_rate(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
                       std::span<const std::size_t> samples, std::vector<double>& out);
 
+// What the log's heading holds besides the fin's and the roll's yaw: the
+// compass's noise and a slow random yaw (the water, a twisted hull) that the
+// glider's own autopilot answers with its fin - so the logged fin is
+// correlated with both, and an error that compares the yaw rate of the
+// logged fin with the measured one reads the fin's authority biased (the
+// independent truth's deep logs: 0.29-0.55 for 1; without its random yaw
+// 1.05-1.71, without its compass noise 0.16-0.32; docs/science.md).
+struct YawNoise {
+  double heading_rad = 0.0;        // compass noise, white (the diagnosis's heading_noise_rad)
+  double disturbance_rad_s = 0.0;  // the random yaw rate's RMS (first-order Gauss-Markov) ...
+  double correlation_s = 30.0;     // ... and its correlation time
+};
+
+// The vehicle link's error with that noise modelled (the prediction-error
+// method): a Kalman filter per glide on (heading, yaw rate, random yaw), the
+// model's yaw driven by the logged fin and roll, predicts each logged heading
+// from the readings before it; the error is that one-step innovation per
+// second of the step (rad/s, model - measured), white when the model is
+// right. The fin acts on the heading only after the servo has moved it, so
+// the innovation is independent of the fin that produced it, and the fit of
+// the fin's authority is not biased by the loop that chose the fin. NaN at
+// each glide's first sample.
+void heading_innovations(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
+                         const YawNoise& noise, std::span<const std::size_t> samples, std::vector<double>& out);
+
+// The noise's sizes that make the innovations at `samples` likeliest
+// (Gaussian) with these values: a grid around `start` (its compass noise
+// x1/4..x4; the random yaw 1e-4..2e-2 rad/s over 10-300 s; `grid` false:
+// from `start` itself), then refined by factors down to 4 %.
+YawNoise fit_yaw_noise(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
+                       const YawNoise& start, std::span<const std::size_t> samples, bool grid = true);
+
 }  // namespace glider::diagnose

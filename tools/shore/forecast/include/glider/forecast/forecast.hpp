@@ -62,8 +62,10 @@ struct Forecast {
   double east_m = 0.0, north_m = 0.0;  // median, from the fix
   double time_utc_s = 0.0, time_p10_utc_s = 0.0, time_p90_utc_s = 0.0;
   Ellipse ellipse;
-  double abort_risk = 0.0;
+  double abort_risk = 0.0;  // the runs' (the SIL flights' own aborts), not the glider's
   std::map<std::string, double> abort_causes;
+  bool glider_aborted = false;     // the last call's Because: names an abort (the glider waits for the pilot)
+  std::string glider_abort_cause;  // its ABORT HISTORY's last cause, as printed
   bool baseline_ok = false;
   double baseline_lat_deg = 0.0, baseline_lon_deg = 0.0, baseline_time_utc_s = 0.0;
   double baseline_east_m = 0.0, baseline_north_m = 0.0;

@@ -24,6 +24,8 @@ struct Surfacing {
   std::string mission_name;
   std::vector<std::string> files_delivered;  // names sent to the glider in this call
   std::string reasons;                       // why it surfaced (Because: lines)
+  bool surfaced_by_abort = false;            // a Because: line names an abort
+  std::string last_abort_cause;              // ABORT HISTORY's last cause (and details), "" if none said
   bool has_fix() const { return lat_deg && lon_deg; }
 };
 

@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: Apache-2.0
+// The forecast's current with one or two estimates (the tidal prior,
+// docs/forecast.md "The current"), and the navigator's belief in the
+// Monte-Carlo flights. Seeded synthetic water, no shore folder.
+#include <CppUTest/TestHarness.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "glider/firmware/mission_file/mission_loader.hpp"
+#include "glider/forecast/current_estimate.hpp"
+#include "glider/forecast/forecast.hpp"
+#include "glider/forecast/sil_truth.hpp"
+#include "glider/forecast/tidal_prior.hpp"
+#include "glider/model/vehicle_file.hpp"
+#include "glider/sil/mission_setup.hpp"
+
+namespace fc = glider::forecast;
+
+namespace {
+
+constexpr double kM2 = 44714.16;
+constexpr double kOmega = 2.0 * std::numbers::pi / kM2;
+
+// The mean over [a, b] of m + A cos(w t) + B sin(w t).
+double window_mean(double m, double a_cos, double b_sin, double a, double b) {
+  return m + (a_cos * (std::sin(kOmega * b) - std::sin(kOmega * a)) +
+              b_sin * (std::cos(kOmega * a) - std::cos(kOmega * b))) /
+                 (kOmega * (b - a));
+}
+
+struct Coverage {
+  int inside = 0, cases = 0;
+  double z2 = 0.0;
+};
+
+// Waters drawn from `truth` (a mean and an M2 tide per component), `n`
+// estimates of 3 h segments (each the segment's mean plus the estimate's
+// noise), the next 3 h window forecast: how often the window's true mean
+// falls within 1.96 sigma, per component.
+Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> phase(0.0, kM2);
+  Coverage c;
+  const double dive = 3.0 * 3600.0, up = 900.0;
+  for (int draw = 0; draw < 2000; ++draw) {
+    double m[2], a[2], b[2];
+    for (int k = 0; k < 2; ++k) {
+      m[k] = truth.mean_sigma_m_s * g(random);
+      a[k] = truth.m2_sigma_m_s * g(random);
+      b[k] = truth.m2_sigma_m_s * g(random);
+    }
+    const double t0 = phase(random);
+    std::vector<fc::CurrentSample> samples;
+    double t = t0;
+    for (int i = 0; i < n; ++i) {
+      fc::CurrentSample s;
+      s.utc_s = t + 0.5 * dive;
+      s.span_s = dive;
+      s.east_m_s = window_mean(m[0], a[0], b[0], t, t + dive) + truth.estimate_sigma_m_s * g(random);
+      s.north_m_s = window_mean(m[1], a[1], b[1], t, t + dive) + truth.estimate_sigma_m_s * g(random);
+      samples.push_back(s);
+      t += dive + up;
+    }
+    const fc::CurrentEstimate e = fc::estimate_current(samples, t, t + dive);
+    const double err[2] = {e.east_m_s - window_mean(m[0], a[0], b[0], t, t + dive),
+                           e.north_m_s - window_mean(m[1], a[1], b[1], t, t + dive)};
+    const double sigma[2] = {e.sigma_east_m_s, e.sigma_north_m_s};
+    for (int k = 0; k < 2; ++k) {
+      ++c.cases;
+      if (std::fabs(err[k]) <= 1.96 * sigma[k]) ++c.inside;
+      c.z2 += err[k] * err[k] / (sigma[k] * sigma[k]);
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_GROUP(ForecastCurrent){};
+
+TEST(ForecastCurrent, OneOrTwoEstimatesOfATurningTideAreCoveredByTheirSigma) {
+  // Waters from the stated prior: with one or two 3 h estimates the window's
+  // mean lies within 1.96 sigma in 95 % of the cases (persistence's sigma
+  // before, 0.05 m/s with one estimate, covered 22 %, mean z^2 46).
+  const fc::TidalPrior prior;
+  for (int n = 1; n <= 2; ++n) {
+    const Coverage c = coverage(n, prior, 1234u + static_cast<std::uint32_t>(n));
+    const double inside = static_cast<double>(c.inside) / c.cases, z2 = c.z2 / c.cases;
+    const std::string what =
+        std::to_string(n) + " estimates: " + std::to_string(inside) + " inside, mean z^2 " + std::to_string(z2);
+    CHECK_TEXT(inside > 0.93 && inside < 0.97, what.c_str());
+    CHECK_TEXT(z2 > 0.85 && z2 < 1.15, what.c_str());
+  }
+}
+
+TEST(ForecastCurrent, AWeakerTideThanThePriorIsStillCovered) {
+  // A tide of half the prior's amplitude and no mean: the prior's sigma is
+  // then wider than the error (covered more often), never narrower.
+  fc::TidalPrior water;
+  water.mean_sigma_m_s = 0.0;
+  water.m2_sigma_m_s = 0.12;
+  for (int n = 1; n <= 2; ++n) {
+    const Coverage c = coverage(n, water, 99u + static_cast<std::uint32_t>(n));
+    CHECK_TEXT(static_cast<double>(c.inside) / c.cases > 0.95, std::to_string(c.inside).c_str());
+  }
+}
+
+TEST(ForecastCurrent, HalfAnHourOnTheLastEstimatePersists) {
+  // A 34-minute box dive right after a 30-minute estimate: the tide has
+  // barely moved, and the prior's prediction is the last estimate, give or
+  // take what a 0.31 m/s tide turns in 34 min (0.07 m/s).
+  std::vector<fc::CurrentSample> one{{1000.0, 0.20, -0.10, 1800.0}};
+  const fc::CurrentEstimate e = fc::estimate_current(one, 2000.0, 2000.0 + 2040.0);
+  STRCMP_EQUAL("tidal prior", e.method.c_str());
+  DOUBLES_EQUAL(0.20, e.east_m_s, 0.02);
+  DOUBLES_EQUAL(-0.10, e.north_m_s, 0.01);
+  CHECK_TEXT(e.sigma_east_m_s > 0.05 && e.sigma_east_m_s < 0.08, std::to_string(e.sigma_east_m_s).c_str());
+}
+
+TEST(ForecastCurrent, AQuarterPeriodOnTheLastEstimateSaysLittle) {
+  // 3.1 h on (a quarter of M2) the tide's part of the estimate is gone: the
+  // prediction falls towards the mean and its sigma towards the prior's.
+  std::vector<fc::CurrentSample> one{{0.0, 0.30, 0.0, 0.0}};
+  const fc::CurrentEstimate e = fc::estimate_current(one, kM2 / 4.0 - 600.0, kM2 / 4.0 + 600.0);
+  CHECK(e.east_m_s < 0.15);
+  CHECK(e.sigma_east_m_s > 0.2);
+}
+
+TEST(ForecastCurrent, PersistenceOfAFewEqualEstimatesKeepsThePriorsDoubt) {
+  // Three equal estimates 3 h apart: persistence wins its two hindcasts with
+  // no error, yet a 3 h window may hold a turning tide: its sigma is the
+  // prior's (2 cases' worth) pooled with the two zero differences.
+  std::vector<fc::CurrentSample> three;
+  for (int i = 0; i < 3; ++i) three.push_back({i * 11700.0, 0.1, 0.1, 10800.0});
+  const fc::CurrentEstimate e = fc::estimate_current(three, 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0);
+  STRCMP_EQUAL("last", e.method.c_str());
+  const double prior_var = fc::persistence_prior_variance(three.back(), 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0);
+  CHECK(prior_var > 0.01);
+  DOUBLES_EQUAL(std::sqrt((2.0 * prior_var + 2.0 * 0.02 * 0.02) / 4.0), e.sigma_east_m_s, 1e-6);
+}
+
+TEST_GROUP(ForecastBelief){};
+
+TEST(ForecastBelief, TheNavigatorDeadReckonsWithTheGlidersEstimateNotTheForecasts) {
+  // The runs fly the forecast's water, but the glider steers and dead-reckons
+  // with its own m_water_vx/vy: a glider with no estimate yet does not carry
+  // the forecast's current in its DR (its DR misses by that current times the
+  // time under water); one whose estimate is the water's does.
+  const glider::model::VehicleParams vehicle =
+      glider::model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_shallow.toml");
+  const auto loaded = glider::fw::mission_file::load_mission_file(
+      GLIDER_SOURCE_DIR "/boards/missions/box_current/missions/box.mi", glider::sil::mission_vehicle(vehicle, 200.0));
+  CHECK_TRUE(loaded.config.has_value());
+  fc::FlightSetup setup;
+  setup.vehicle = vehicle;
+  setup.config = *loaded.config;
+  setup.fix = {54.3161, 7.4098};
+  setup.current.east_m_s = 0.20;
+  setup.current.north_m_s = 0.0;
+  fc::ForecastOptions options;
+  options.threads = 1;
+  options.max_dive_s = 3.0 * 3600.0;
+  const fc::RunOutcome none = fc::fly_runs(setup, options, 1, false).at(0);
+  setup.firmware_current = glider::fw::EastNorth{0.20, 0.0};
+  const fc::RunOutcome known = fc::fly_runs(setup, options, 1, false).at(0);
+  CHECK_TRUE(none.surfaced && known.surfaced);
+  const double miss_none = std::hypot(none.east_m - none.dr_east_m, none.north_m - none.dr_north_m);
+  const double miss_known = std::hypot(known.east_m - known.dr_east_m, known.north_m - known.dr_north_m);
+  const std::string what = "DR miss without an estimate " + std::to_string(miss_none) + " m after " +
+                           std::to_string(none.time_s) + " s, with " + std::to_string(miss_known) + " m";
+  CHECK_TEXT(miss_none > 0.5 * 0.20 * none.time_s, what.c_str());
+  CHECK_TEXT(miss_known < 0.25 * miss_none, what.c_str());
+}
+
+TEST(ForecastCurrent, ASteadyCurrentAfterOneEstimateIsForecastAsATideWouldTurnIt) {
+  // The prior's cost in water without a tide (docs/forecast.md, Known
+  // limits): one 3 h estimate of a steady 0.2 m/s, the next 3 h dive 15 min
+  // later, is forecast as about 0.02 m/s with a sigma of 0.25 (the truth
+  // within it).
+  const std::vector<fc::CurrentSample> one{{5400.0, 0.2, 0.0, 10800.0}};
+  const fc::CurrentEstimate e = fc::estimate_current(one, 11700.0, 22500.0);
+  DOUBLES_EQUAL(0.02, e.east_m_s, 0.01);
+  DOUBLES_EQUAL(0.25, e.sigma_east_m_s, 0.01);
+  CHECK(0.2 - e.east_m_s < 1.96 * e.sigma_east_m_s);
+}
+
+TEST_GROUP(ForecastGliderAbort){};
+
+TEST(ForecastGliderAbort, AnAbortAtTheLastCallIsSaid) {
+  // A glider that surfaced by an abort waits for the pilot: the forecast says
+  // so (a note, "glider_aborted" with the cause) instead of forecasting a
+  // dive as if nothing happened; without the abort neither appears.
+  namespace fs = std::filesystem;
+  fc::TruthOptions o;
+  o.mission = GLIDER_SOURCE_DIR "/boards/missions/box_current/missions/box.mi";
+  o.vehicle = GLIDER_SOURCE_DIR "/boards/vehicles/slocum_shallow.toml";
+  o.seed = 5;
+  o.surfacings = 2;
+  const fc::Truth truth = fc::fly_truth(o);
+  const fs::path dir = fs::path(GLIDER_TEST_OUTPUT_DIR) / "forecast_glider_abort";
+  fs::remove_all(dir);
+  fc::write_glider_folder(truth, o, "unit", 1, dir);
+  fc::ForecastOptions options;
+  options.vehicle = o.vehicle.string();
+  options.runs = 4;
+  options.threads = 1;
+  options.write = false;
+  auto says_abort = [](const fc::Forecast& f) {
+    return std::any_of(f.notes.begin(), f.notes.end(),
+                       [](const std::string& n) { return n.find("surfaced by an abort") != std::string::npos; });
+  };
+  const fc::Forecast plain = fc::make_forecast(dir, options);
+  CHECK_FALSE(plain.glider_aborted);
+  CHECK_FALSE(says_abort(plain));
+  CHECK_TRUE(fc::forecast_json(plain)["glider_aborted"].is_null());
+
+  std::vector<fs::path> events;
+  for (const auto& e : fs::directory_iterator(dir / "logs")) events.push_back(e.path());
+  std::sort(events.begin(), events.end());
+  nlohmann::json last = nlohmann::json::parse(std::ifstream(events.back()));
+  last["reasons"] = {"Abort [behavior abend start_when = 0.0]"};
+  last["aborts"] = {{"total_since_reset", 1}, {"last_cause", "MS_ABORT_OVERDEPTH"}, {"last_details", "overdepth"}};
+  std::ofstream(events.back()) << last.dump(2) << "\n";
+  const fc::Forecast aborted = fc::make_forecast(dir, options);
+  CHECK_TRUE(aborted.glider_aborted);
+  CHECK_TRUE(says_abort(aborted));
+  STRCMP_EQUAL("MS_ABORT_OVERDEPTH: overdepth", aborted.glider_abort_cause.c_str());
+  STRCMP_EQUAL("MS_ABORT_OVERDEPTH: overdepth",
+               fc::forecast_json(aborted)["glider_aborted"]["cause"].get<std::string>().c_str());
+  // The shore's call after the surfacing says it in the journal line too (the
+  // pilot's vehicle file in the glider folder, as a first call has it).
+  fs::copy_file(o.vehicle, dir / "vehicle.toml", fs::copy_options::overwrite_existing);
+  const std::string line = fc::forecast_after_surfacing(dir);
+  CHECK_TEXT(line.find("surfaced by an abort (MS_ABORT_OVERDEPTH: overdepth)") != std::string::npos, line.c_str());
+}

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: Apache-2.0
+// Health's rules on the fitting core and the base library: the pump rate's
+// interval (serially correlated strokes), the UTC text. Synthetic, fast.
+#include <CppUTest/TestHarness.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "glider/flightlog/flight_log.hpp"
+#include "glider/health/assess.hpp"
+#include "glider/health/measure.hpp"
+
+using namespace glider;
+
+namespace {
+
+// m_ballast_pumped every 4 s: `strokes` pump strokes (in and out by turns),
+// each at its own rate drawn about `mean_cc_s` (a stroke's pressure and oil
+// temperature set it), 12 samples each with 0.3 cc reading noise, the pump
+// still for 3 samples between them.
+flightlog::FlightLog strokes_log(std::mt19937& random, int strokes, double mean_cc_s, double stroke_sigma_cc_s) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::string csv = "# source: health pump-rate test\nm_present_time,m_ballast_pumped\n";
+  double t = 1000.0, v = -200.0;
+  for (int s = 0; s < strokes; ++s) {
+    const double rate = (mean_cc_s + stroke_sigma_cc_s * g(random)) * (s % 2 == 0 ? 1.0 : -1.0);
+    for (int i = 0; i < 3; ++i, t += 4.0) csv += std::to_string(t) + "," + std::to_string(v + 0.3 * g(random)) + "\n";
+    for (int i = 0; i < 12; ++i, t += 4.0) {
+      v += rate * 4.0;
+      csv += std::to_string(t) + "," + std::to_string(v + 0.3 * g(random)) + "\n";
+    }
+  }
+  flightlog::ReadOptions only_the_pump;
+  only_the_pump.required.clear();  // the raw file health reads the pump from (segments.cpp)
+  return flightlog::parse_flight_log(csv, "strokes.csv", only_the_pump);
+}
+
+}  // namespace
+
+TEST_GROUP(HealthRules){};
+
+TEST(HealthRules, PumpRateIntervalCoversTheStrokesMean) {
+  // Four strokes per segment whose rates differ by 3 cc/s (1 sigma): the
+  // rates within a stroke are one stroke's, not independent samples. The
+  // interval covers the strokes' mean in about 95 % of segments (Student-t
+  // over the rates as independent covered 42 %).
+  std::mt19937 random(2024u);
+  int covered = 0;
+  const int segments = 300;
+  for (int k = 0; k < segments; ++k) {
+    const health::EffectValue e = health::pump_rate(strokes_log(random, 4, 30.0, 3.0));
+    CHECK_TRUE(e.judged());
+    if (e.low <= 30.0 && 30.0 <= e.high) ++covered;
+  }
+  const double fraction = static_cast<double>(covered) / segments;
+  UT_PRINT(("pump rate interval covered the strokes' mean in " + std::to_string(covered) + " of " +
+            std::to_string(segments) + " segments")
+               .c_str());
+  CHECK_TEXT(fraction > 0.90 && fraction < 0.99, std::to_string(fraction).c_str());
+}
+
+TEST(HealthRules, PumpRateOfOneStrokeIsCountedOverItsEffectiveSamples) {
+  // One stroke at a steady 30 cc/s: a value and a finite interval about it.
+  std::mt19937 random(7u);
+  const health::EffectValue e = health::pump_rate(strokes_log(random, 1, 30.0, 0.0));
+  CHECK_TRUE(e.judged());
+  DOUBLES_EQUAL(30.0, e.value, 0.2);
+  CHECK(std::isfinite(e.low) && std::isfinite(e.high) && e.low < 30.0 && e.high > 30.0);
+}
+
+TEST(HealthRules, UtcTextIsTheBaseLibrarysAndRefusesANonFiniteTime) {
+  // 2019-08-21T13:54:06.7Z: whole seconds, truncated; NaN has no text (the
+  // gmtime path wrote -219246529-01-00T08:29:52Z).
+  STRCMP_EQUAL("2019-08-21T13:54:06Z", health::utc_iso(1566395646.7).c_str());
+  STRCMP_EQUAL("", health::utc_iso(std::nan("")).c_str());
+}
