@@ -112,7 +112,7 @@ hal::GpsFix fix_at(const LocalFrame& frame, EastNorth p, hal::Micros t) {
 
 }  // namespace
 
-TEST(Navigator, CurrentFromTheDrErrorAndACrabAngleAgainstIt) {
+TEST(Navigator, CurrentFromTheDrErrorAndTheAimPointUpstreamOfTheWaypoint) {
   const LocalFrame frame({54.0, 7.0});
   MissionPlan plan;
   plan.waypoint_count = 1;
@@ -153,8 +153,13 @@ TEST(Navigator, CurrentFromTheDrErrorAndACrabAngleAgainstIt) {
   in.segment_complete = false;
   in.now_us += hal::kMicrosPerSecond;
   out = nav.update(in);
-  // To make good north against 0.1 m/s east at 0.3 m/s: steer asin(1/3) west of north.
-  DOUBLES_EQUAL(2.0 * std::numbers::pi - std::asin(0.1 / 0.3), out.heading_target_rad, 0.01);
+  // Slocum's law: the DR is at (100.1, 300.3) (the fix, then one second
+  // north at 0.3 m/s and east with the current), the waypoint 9700 m away,
+  // 32 334 s at the average 0.3 m/s; the current (100 m over 1001 s:
+  // 0.0999 m/s east) moves the aim 3230 m west: atan2(-3330, 9700) = 18.95
+  // deg west of north (the crab law it replaced: asin(1/3) = 19.47 deg).
+  DOUBLES_EQUAL(0.3, nav.average_speed_m_s(), 1e-12);
+  DOUBLES_EQUAL(5.952458, out.heading_target_rad, 1e-4);
 }
 
 TEST(Navigator, WaypointReachedByTheFixAdvancesAndTheListEnds) {

@@ -63,6 +63,10 @@ class Navigator {
   std::int32_t waypoints_reached() const { return reached_; }
   std::int32_t segments() const { return segments_; }
   double speed_m_s() const { return dr_.last_speed_m_s(); }  // horizontal, through the water
+  // The mean of that speed over all the time spent gliding since launch
+  // (Slocum's m_avg_speed; NaN before the first glide): the speed the
+  // current correction counts the time to the waypoint at.
+  double average_speed_m_s() const;
   // Up between segments (or before the first), and since when.
   bool at_surface() const { return state_ != State::kUnderWater; }
   hal::Micros surfaced_us() const { return surfaced_us_; }
@@ -131,6 +135,8 @@ class Navigator {
   EastNorth position_{};  // last known (fix or DR)
   EastNorth current_{};
   bool have_current_ = false;
+  double glided_m_ = 0.0;  // through the water, while the DR infers a speed
+  double glided_s_ = 0.0;
   std::int32_t waypoint_ = 0;
   std::int32_t reached_ = 0;
   std::int32_t segments_ = 0;
