@@ -4,7 +4,7 @@
 
 The commands are read from the markdown itself, so a doc cannot drift from
 the programs again:
-  - in fenced sh/bash/shell blocks, every line that starts (after an optional
+  - in fenced sh/bash/shell blocks and indented (four-space) code blocks, every line that starts (after an optional
     `$ ` prompt) with `./glider`, `glider-...` or `build/release/...`; in
     untagged blocks (transcripts), the `$ `-prompted ones;
   - in the text, every `./glider ...` code span: they are the commands and
@@ -61,6 +61,7 @@ PLACEHOLDERS = {
     ("./glider sil", "--fault", "NAME@TIME"): "leak@150",
     ("./glider sil", "--slocum-dir", "DIR"): "{tmp}/slocum",
     ("./glider sil", "--sbdlist", "FILE"): "boards/sbdlist.dat",
+    ("./glider sil", "--max-sim-time-s", "S"): "7200",
     ("./glider regress", None, "DIR"): "tests/cards/abort_leak.toml",
     ("./glider regress", None, "DIR|CARD"): "tests/cards/abort_leak.toml",
     ("./glider campaign run", None, "FILE"): "tests/campaign/demo_small.toml",
@@ -85,6 +86,12 @@ PLACEHOLDERS = {
     ("./glider diagnose", "--window-m", "A,B"): "10,35",
     ("./glider health", None, "DIR|FILES"): "tests/data/real/dbd/comet-2016",
     ("./glider health", "--state", "FILE"): "{tmp}/state.json",
+    ("./glider health", "--hours-apart", "H"): "8",
+    ("./glider shore serve", "--root", "DIR"): "{tmp}/shore",
+    ("./glider shore serve", "--cache", "DIR"): "tests/data/real/dbd/comet-2019/cac",
+    ("./glider shore queue", None, "GLIDER"): "comet",
+    ("./glider shore queue", None, "FILE"): "boards/missions/comet-nsb3/missions/nsb3.mi",
+    ("./glider shore dialog", None, "FILE"): "tests/shore/data/surface_dialog.txt",
     ("./glider diagnose-deployment", None, "LOG"): "{demo_deployment}",
     ("./glider diagnose-deployment", None, "LOGS"): "{demo_deployment}",
     ("./glider diagnose-deployment", "--join", "N"): "1",
@@ -134,9 +141,23 @@ def code_lines(path):
     block = None  # language of the open fenced block
     block_skip = None
     pending_skip = None
+    indented_start = None  # first line of the open indented code block
     for number, line in enumerate(lines, 1):
         fence = re.match(r"^\s*```(\S*)", line)
         skip = SKIP.search(line)
+        # An indented code block (four spaces, after a blank line, outside a fence) is a code block too: its
+        # command lines are commands as in a fenced sh block.
+        if block is None and not fence:
+            previous = lines[number - 2] if number >= 2 else ""
+            if line.startswith("    ") and line.strip() and (indented_start is not None or not previous.strip()):
+                if indented_start is None:
+                    # A mark for the block: on the line before its blank line (an HTML comment cannot touch it).
+                    mark = SKIP.search(lines[number - 3]) if number >= 3 else None
+                    indented_start, indented_skip = number, mark.group(1) if mark else None
+                out.append((number, line, indented_skip, "sh", indented_start))
+                continue
+            if line.strip():
+                indented_start = None
         if fence:
             if block is None:
                 block, block_skip = fence.group(1), pending_skip
@@ -195,8 +216,10 @@ def extract(path):
 
 
 def tokens(text):
-    text = re.sub(r"([\[\]()])", r" \1 ", text).replace("] ...", "]")
-    return shlex.split(text)
+    # Brackets and parentheses are the synopsis' own, except inside quotes (a glob: 'logs/*.[de]bd').
+    parts = re.split(r"""('[^']*'|"[^"]*")""", text)
+    text = "".join(part if part[:1] in ("'", '"') else re.sub(r"([\[\]()])", r" \1 ", part) for part in parts)
+    return shlex.split(text.replace("] ...", "]"))
 
 
 def first_alternative(items):
