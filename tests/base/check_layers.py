@@ -98,6 +98,13 @@ def folders(path):
 
 
 tools = os.path.join(ROOT, "tools")
+# Beside the wings only their CMakeLists.txt and README.md (a source left at a wing's root after a merge,
+# e.g. tools/shore/x.cpp from before the station moved, belongs in a folder of the wing).
+for wing in [""] + [w for w in WINGS if os.path.isdir(os.path.join(tools, w))]:
+    for name in sorted(os.listdir(os.path.join(tools, wing))):
+        if os.path.isfile(os.path.join(tools, wing, name)) and name not in ("CMakeLists.txt", "README.md"):
+            problems.append(f"{os.path.join('tools', wing, name)}: a file beside the wings; it belongs in a folder "
+                            "of its wing")
 for name in folders(tools):
     checked += 1
     if name not in WINGS:
