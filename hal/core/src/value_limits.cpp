@@ -27,7 +27,9 @@ std::string show_value(double value) {
 }
 
 std::string show_range(const Range& range) {
-  std::string out = "[" + show_value(range.min) + ", " + show_value(range.max) + "]";
+  // Built by append: GCC 12 warns falsely (-Wrestrict, its bug 105651) on "literal" + std::string&&.
+  std::string out("[");
+  out.append(show_value(range.min)).append(", ").append(show_value(range.max)).append("]");
   if (range.unit != nullptr && range.unit[0] != '\0') out += std::string(" ") + range.unit;
   return out;
 }

@@ -53,7 +53,7 @@ const std::vector<config::KeyRange>& limits() {
         t.push_back({names.back().c_str(), range});
       };
       add("slave", {1.0, 247.0, ""});
-      add("base_address", {0.0, 65535.0 - regs::kBlockLength, ""});
+      add("base_address", {0.0, 65535.0 - static_cast<double>(regs::kBlockLength), ""});
       add("counts_per_unit", {1e-3, 1e6, "counts per unit"});
       for (const char* leaf : {"travel_min_", "travel_max_", "min_", "max_"}) add(leaf + u, {-1e4, 1e4, unit});
       add("max_rate_" + u + "_s", {1e-6, 1e4, "unit/s"});

@@ -69,7 +69,6 @@ void print_text(const Report& r) {
 
 int main(int argc, char** argv) {
   glider::cli::Tool tool("glider-steady", "Steady glides of a glider vehicle model (forward and inverse)");
-  CLI::App& app = tool.app();
   std::string vehicle_path;
   double ballast_cc = NAN, battpos_in = NAN, glide_path_deg = NAN, net_buoyancy_g = NAN;
   double depth_m = 100.0;

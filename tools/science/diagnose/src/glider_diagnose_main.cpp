@@ -50,7 +50,7 @@ void print_worst_yo(const glider::diagnose::SpeedScore& u) {
       sum += (*y).*rms * (*y).*rms * static_cast<double>(y->samples);
       n += y->samples;
     }
-    return n ? std::sqrt(sum / static_cast<double>(n)) : NAN;
+    return n ? std::sqrt(sum / static_cast<double>(n)) : static_cast<double>(NAN);
   };
   using Yo = glider::diagnose::SpeedOfYo;
   std::printf(

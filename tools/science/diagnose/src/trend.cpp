@@ -199,7 +199,10 @@ std::string number(double x) {
   return text;
 }
 
-std::string bracket(const Interval& i) { return "[" + number(i.low) + ", " + number(i.high) + "]"; }
+std::string bracket(const Interval& i) {
+  std::string text("[");  // by append: GCC 12's false -Wrestrict on "literal" + std::string&&
+  return text.append(number(i.low)).append(", ").append(number(i.high)).append("]");
+}
 
 }  // namespace
 
