@@ -44,7 +44,7 @@ struct Coverage {
 // estimates of 3 h segments (each the segment's mean plus the estimate's
 // noise), the next 3 h window forecast: how often the window's true mean
 // falls within 1.96 sigma, per component.
-Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed) {
+Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed, const fc::TidalPrior& used = {}) {
   std::mt19937 random(seed);
   std::normal_distribution<double> g(0.0, 1.0);
   std::uniform_real_distribution<double> phase(0.0, kM2);
@@ -69,7 +69,7 @@ Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed) {
       samples.push_back(s);
       t += dive + up;
     }
-    const fc::CurrentEstimate e = fc::estimate_current(samples, t, t + dive);
+    const fc::CurrentEstimate e = fc::estimate_current(samples, t, t + dive, used);
     const double err[2] = {e.east_m_s - window_mean(m[0], a[0], b[0], t, t + dive),
                            e.north_m_s - window_mean(m[1], a[1], b[1], t, t + dive)};
     const double sigma[2] = {e.sigma_east_m_s, e.sigma_north_m_s};
@@ -138,13 +138,21 @@ TEST(ForecastCurrent, PersistenceOfAFewEqualEstimatesKeepsThePriorsDoubt) {
   // Three equal estimates 3 h apart: persistence wins its two hindcasts with
   // no error, yet a 3 h window may hold a turning tide: its sigma is the
   // prior's (2 cases' worth) pooled with the two zero differences.
+  // (The fixed prior's doubt; weighed by their evidence, three equal
+  // estimates over 9 h are evidence of steady water, and the doubt pooled is
+  // that of the widths they favour, smaller but not nil.)
   std::vector<fc::CurrentSample> three;
   for (int i = 0; i < 3; ++i) three.push_back({i * 11700.0, 0.1, 0.1, 10800.0});
-  const fc::CurrentEstimate e = fc::estimate_current(three, 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0);
-  STRCMP_EQUAL("last", e.method.c_str());
-  const double prior_var = fc::persistence_prior_variance(three.back(), 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0);
-  CHECK(prior_var > 0.01);
-  DOUBLES_EQUAL(std::sqrt((2.0 * prior_var + 2.0 * 0.02 * 0.02) / 4.0), e.sigma_east_m_s, 1e-6);
+  for (const fc::PriorMode mode : {fc::PriorMode::kFixed, fc::PriorMode::kEvidence}) {
+    fc::TidalPrior prior;
+    prior.mode = mode;
+    const fc::CurrentEstimate e = fc::estimate_current(three, 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0, prior);
+    STRCMP_EQUAL("last", e.method.c_str());
+    const double prior_var =
+        fc::persistence_prior_variance(three.back(), 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0, prior, three);
+    CHECK(prior_var > (mode == fc::PriorMode::kFixed ? 0.01 : 0.0004));
+    DOUBLES_EQUAL(std::sqrt((2.0 * prior_var + 2.0 * 0.02 * 0.02) / 4.0), e.sigma_east_m_s, 1e-6);
+  }
 }
 
 TEST_GROUP(ForecastBelief){};
@@ -181,15 +189,52 @@ TEST(ForecastBelief, TheNavigatorDeadReckonsWithTheGlidersEstimateNotTheForecast
 }
 
 TEST(ForecastCurrent, ASteadyCurrentAfterOneEstimateIsForecastAsATideWouldTurnIt) {
-  // The prior's cost in water without a tide (docs/forecast.md, Known
+  // The fixed prior's cost in water without a tide (docs/forecast.md, Known
   // limits): one 3 h estimate of a steady 0.2 m/s, the next 3 h dive 15 min
   // later, is forecast as about 0.02 m/s with a sigma of 0.25 (the truth
   // within it).
   const std::vector<fc::CurrentSample> one{{5400.0, 0.2, 0.0, 10800.0}};
-  const fc::CurrentEstimate e = fc::estimate_current(one, 11700.0, 22500.0);
+  fc::TidalPrior fixed;
+  fixed.mode = fc::PriorMode::kFixed;
+  const fc::CurrentEstimate e = fc::estimate_current(one, 11700.0, 22500.0, fixed);
   DOUBLES_EQUAL(0.02, e.east_m_s, 0.01);
   DOUBLES_EQUAL(0.25, e.sigma_east_m_s, 0.01);
   CHECK(0.2 - e.east_m_s < 1.96 * e.sigma_east_m_s);
+  // Weighed by its evidence the prior lets a 0.2 m/s estimate say more of
+  // the water's size: nearer the steady 0.2, its sigma narrower, the truth
+  // still within it. Off: persistence.
+  const fc::CurrentEstimate weighed = fc::estimate_current(one, 11700.0, 22500.0);
+  const std::string what = std::to_string(weighed.east_m_s) + " +- " + std::to_string(weighed.sigma_east_m_s);
+  CHECK_TEXT(weighed.east_m_s > e.east_m_s + 0.02, what.c_str());
+  CHECK_TEXT(weighed.sigma_east_m_s < e.sigma_east_m_s, what.c_str());
+  CHECK_TEXT(0.2 - weighed.east_m_s < 1.96 * weighed.sigma_east_m_s, what.c_str());
+  fc::TidalPrior off;
+  off.mode = fc::PriorMode::kOff;
+  const fc::CurrentEstimate persisted = fc::estimate_current(one, 11700.0, 22500.0, off);
+  STRCMP_EQUAL("last", persisted.method.c_str());
+  DOUBLES_EQUAL(0.2, persisted.east_m_s, 1e-12);
+}
+
+TEST(ForecastCurrent, WeakWaterIsForecastWithTheWeakWatersSigma) {
+  // Waters drawn from a prior a quarter of the pilot's (a weak-tide sea):
+  // weighed by their evidence, one or two estimates give a narrower sigma
+  // than the fixed prior's (which keeps the shelf sea's, several times too
+  // wide: mean z^2 far below 1), and still cover the window's mean in
+  // >= 93 % of the cases.
+  fc::TidalPrior weak;
+  weak.mean_sigma_m_s = 0.025;
+  weak.m2_sigma_m_s = 0.0625;
+  fc::TidalPrior fixed;
+  fixed.mode = fc::PriorMode::kFixed;
+  for (int n = 1; n <= 2; ++n) {
+    const Coverage c = coverage(n, weak, 4321u + static_cast<std::uint32_t>(n));
+    const Coverage f = coverage(n, weak, 4321u + static_cast<std::uint32_t>(n), fixed);
+    const double inside = static_cast<double>(c.inside) / c.cases, z2 = c.z2 / c.cases, z2_fixed = f.z2 / f.cases;
+    const std::string what = std::to_string(n) + " estimates: " + std::to_string(inside) + " inside, mean z^2 " +
+                             std::to_string(z2) + " (fixed prior " + std::to_string(z2_fixed) + ")";
+    CHECK_TEXT(inside > 0.93, what.c_str());
+    CHECK_TEXT(z2 > 1.5 * z2_fixed, what.c_str());
+  }
 }
 
 TEST_GROUP(ForecastGliderAbort){};

@@ -167,7 +167,9 @@ std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& 
 
 }  // namespace
 
-CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s) {
+CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
+                                 const TidalPrior& prior) {
+  const bool use_prior = prior.mode != PriorMode::kOff;
   // Each rule predicts every past estimate of the last day from the ones
   // before it (over a window as long as the coming one); the rule with the
   // smallest error wins, and its error is the estimate's uncertainty (the
@@ -190,7 +192,7 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
       if (rule == kLast) {
         p = last_current(before);
       } else if (rule == kPrior) {
-        p = predict_with_prior(before, from, to);
+        if (use_prior) p = predict_with_prior(before, from, to, prior);
       } else {
         p = predict_fitted(before, from, to, rule == kTidal);
       }
@@ -205,8 +207,10 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   // choose a rule nor measure its error; the tidal prior gives both (a
   // turning tide makes persistence of one estimate wrong by more than any
   // difference of two estimates says).
+  // Without a prior (the pilot's "off") persistence alone.
+  if (count[kLast] < 2 && !use_prior) return last_current(all);
   if (count[kLast] < 2) {
-    CurrentEstimate e = predict_with_prior(all, from_utc_s, to_utc_s);
+    CurrentEstimate e = predict_with_prior(all, from_utc_s, to_utc_s, prior);
     e.sigma_east_m_s = std::hypot(e.sigma_east_m_s, kSigmaFloorMS);
     e.sigma_north_m_s = std::hypot(e.sigma_north_m_s, kSigmaFloorMS);
     e.samples = static_cast<int>(all.size());
@@ -227,15 +231,15 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   }
   CurrentEstimate e = last_current(all);
   if (best == kPrior) {
-    e = predict_with_prior(all, from_utc_s, to_utc_s);
+    e = predict_with_prior(all, from_utc_s, to_utc_s, prior);
   } else if (best != kLast) {
     if (const std::optional<CurrentEstimate> p = predict_fitted(all, from_utc_s, to_utc_s, best == kTidal)) e = *p;
-  } else {
+  } else if (use_prior) {
     // Persistence's scatter of consecutive estimates, pooled with what the
     // prior says carrying the last one over this window costs, as two cases'
     // worth (a scaled-inverse-chi-square prior, 2 degrees of freedom): a few
     // differences of a turning tide do not make persistence certain.
-    const double prior_var = persistence_prior_variance(all.back(), from_utc_s, to_utc_s);
+    const double prior_var = persistence_prior_variance(all.back(), from_utc_s, to_utc_s, prior, all);
     const double n = static_cast<double>(all.size() - 1), nu0 = 2.0;
     e.sigma_east_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_east_m_s * e.sigma_east_m_s) / (nu0 + n));
     e.sigma_north_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_north_m_s * e.sigma_north_m_s) / (nu0 + n));
@@ -248,6 +252,10 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   }
   e.samples = static_cast<int>(all.size());
   return e;
+}
+
+CurrentEstimate estimate_current(const std::vector<CurrentSample>& samples, double from_utc_s, double to_utc_s) {
+  return estimate_current(samples, from_utc_s, to_utc_s, TidalPrior{});
 }
 
 }  // namespace glider::forecast
