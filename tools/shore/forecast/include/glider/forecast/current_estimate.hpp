@@ -45,5 +45,7 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& samples, doub
 
 // The last sample (zero with a wide sigma when there is none).
 CurrentEstimate last_current(const std::vector<CurrentSample>& samples);
+// The same with `floor` (m/s) the least sigma when there are two or more.
+CurrentEstimate last_current(const std::vector<CurrentSample>& samples, double floor);
 
 }  // namespace glider::forecast

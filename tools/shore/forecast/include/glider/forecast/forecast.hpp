@@ -77,10 +77,8 @@ struct Forecast {
   TidalPrior favoured;          // the widths the estimates favour (evidence mode)
   double dr_speed_ratio = 1.0;  // true over dead-reckoned speed through the water (the model's calibration)
   // The glider's own dead-reckoned speed through the water over its recent
-  // dives against the model's on the coming one (1: not measured), and the
-  // drag factor that brings the model's to the glider's.
+  // dives against the model's on the coming one (1: not measured; said, not applied).
   double glider_speed_ratio = 1.0;
-  double speed_drag_factor = 1.0;
   int speed_dives = 0;
   // The model's own miss on the glider's recent dives, flown again with the
   // current each one measured (the waypoint replay's flights): RMS east and
