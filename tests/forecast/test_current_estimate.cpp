@@ -159,6 +159,28 @@ TEST(ForecastCurrent, PersistenceOfAFewEqualEstimatesKeepsThePriorsDoubt) {
   }
 }
 
+TEST(ForecastCurrent, PreciseEstimatesAreNotFlooredAtTheDefaultNoise) {
+  // Eight 3 h estimates of a steady 0.1 m/s, each within 2 mm/s: the noise
+  // the estimates favour (1/8 of the prior's 0.02) is the sigma's floor, so
+  // the forecast's sigma is below 0.01 m/s (a constant 0.02 floor made the
+  // SIL's 95 % ellipses hold the truth at 0.1-0.4 of their size); the fixed
+  // prior keeps its 0.02.
+  std::vector<fc::CurrentSample> eight;
+  for (int i = 0; i < 8; ++i) {
+    eight.push_back({i * 11700.0, 0.1 + 0.002 * ((i % 3) - 1), -0.05 + 0.002 * ((i % 2) * 2 - 1), 10800.0});
+  }
+  const double from = 8 * 11700.0 - 5400.0, to = from + 10800.0;
+  const fc::CurrentEstimate e = fc::estimate_current(eight, from, to);
+  const std::string what =
+      e.method + " +- " + std::to_string(e.sigma_east_m_s) + " / " + std::to_string(e.sigma_north_m_s);
+  CHECK_TEXT(e.sigma_east_m_s < 0.01 && e.sigma_north_m_s < 0.01, what.c_str());
+  DOUBLES_EQUAL(0.1, e.east_m_s, 0.005);
+  fc::TidalPrior fixed;
+  fixed.mode = fc::PriorMode::kFixed;
+  const fc::CurrentEstimate f = fc::estimate_current(eight, from, to, fixed);
+  CHECK(f.sigma_east_m_s >= 0.02);
+}
+
 TEST_GROUP(ForecastBelief){};
 
 TEST(ForecastBelief, TheNavigatorDeadReckonsWithTheGlidersEstimateNotTheForecasts) {
