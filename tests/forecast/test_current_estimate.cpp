@@ -82,6 +82,25 @@ Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed, const 
   return c;
 }
 
+// A SIL truth of `mission` flown to its 2nd surfacing, written as the glider
+// folder `name` up to its 1st (the first forecast has one estimate).
+std::filesystem::path first_surfacing_folder(const fc::TruthOptions& o, const std::string& name) {
+  const fc::Truth truth = fc::fly_truth(o);
+  const std::filesystem::path dir = std::filesystem::path(GLIDER_TEST_OUTPUT_DIR) / name;
+  std::filesystem::remove_all(dir);
+  fc::write_glider_folder(truth, o, "unit", 1, dir);
+  return dir;
+}
+
+fc::TruthOptions truth_options(const char* mission, const char* vehicle, std::uint64_t seed) {
+  fc::TruthOptions o;
+  o.mission = std::string(GLIDER_SOURCE_DIR) + mission;
+  o.vehicle = std::string(GLIDER_SOURCE_DIR) + vehicle;
+  o.seed = seed;
+  o.surfacings = 2;
+  return o;
+}
+
 }  // namespace
 
 TEST_GROUP(ForecastCurrent){};
@@ -263,6 +282,33 @@ TEST(ForecastCurrent, WeakWaterIsForecastWithTheWeakWatersSigma) {
   }
 }
 
+TEST_GROUP(ForecastRuns){};
+
+TEST(ForecastRuns, ThePositionDoesNotWanderWithTheNumberOfRuns) {
+  // The first forecast of an nsb3.mi SIL truth (3 h dives, one estimate:
+  // the current's sigma wide): the position from 16 and from 64 runs. The
+  // runs' median moved with the sampling; the median of the antithetic
+  // pairs' midpoints cancels the draws' linear part (docs/forecast.md, Output).
+  const fc::TruthOptions o =
+      truth_options("/boards/missions/comet-nsb3/missions/nsb3.mi", "/boards/vehicles/slocum_comet.toml", 7);
+  const std::filesystem::path dir = first_surfacing_folder(o, "forecast_runs");
+  fc::ForecastOptions options;
+  options.vehicle = o.vehicle.string();
+  options.threads = 1;
+  options.write = false;
+  options.runs = 16;
+  const fc::Forecast few = fc::make_forecast(dir, options);
+  options.runs = 64;
+  const fc::Forecast many = fc::make_forecast(dir, options);
+  CHECK_TRUE(few.have_surfacing && many.have_surfacing);
+  const double moved = std::hypot(few.east_m - many.east_m, few.north_m - many.north_m);
+  const std::string what = "moved " + std::to_string(moved) + " m; ellipse " +
+                           std::to_string(many.ellipse.semi_major_m) + " m, current sigma " +
+                           std::to_string(many.current.sigma_east_m_s);
+  CHECK_TEXT(many.ellipse.semi_major_m > 500.0, what.c_str());  // a wide spread, or the case tests nothing
+  CHECK_TEXT(moved < 0.05 * many.ellipse.semi_major_m, what.c_str());
+}
+
 TEST_GROUP(ForecastGliderAbort){};
 
 TEST(ForecastGliderAbort, AnAbortAtTheLastCallIsSaid) {
@@ -270,15 +316,9 @@ TEST(ForecastGliderAbort, AnAbortAtTheLastCallIsSaid) {
   // so (a note, "glider_aborted" with the cause) instead of forecasting a
   // dive as if nothing happened; without the abort neither appears.
   namespace fs = std::filesystem;
-  fc::TruthOptions o;
-  o.mission = GLIDER_SOURCE_DIR "/boards/missions/box_current/missions/box.mi";
-  o.vehicle = GLIDER_SOURCE_DIR "/boards/vehicles/slocum_shallow.toml";
-  o.seed = 5;
-  o.surfacings = 2;
-  const fc::Truth truth = fc::fly_truth(o);
-  const fs::path dir = fs::path(GLIDER_TEST_OUTPUT_DIR) / "forecast_glider_abort";
-  fs::remove_all(dir);
-  fc::write_glider_folder(truth, o, "unit", 1, dir);
+  const fc::TruthOptions o =
+      truth_options("/boards/missions/box_current/missions/box.mi", "/boards/vehicles/slocum_shallow.toml", 5);
+  const fs::path dir = first_surfacing_folder(o, "forecast_glider_abort");
   fc::ForecastOptions options;
   options.vehicle = o.vehicle.string();
   options.runs = 4;

@@ -136,8 +136,23 @@ void summarise(const std::vector<RunOutcome>& runs, const fw::LatLon& fix, Forec
   f.runs = static_cast<int>(runs.size());
   if (e.empty()) return;
   f.have_surfacing = true;
-  f.east_m = percentile(e, 0.5);
-  f.north_m = percentile(n, 0.5);
+  // The position: the median over the antithetic pairs' midpoints (runs
+  // 2k and 2k+1 drew opposite water, drag and trim: their midpoint has the
+  // draws' linear part cancelled, and the median keeps a few runs that fly
+  // off - a stall, a waypoint reached - from moving it); a pair with a run
+  // that did not surface normally is left out. Without a whole pair, the
+  // runs' median.
+  std::vector<double> mid_e, mid_n;
+  for (std::size_t i = 0; i + 1 < runs.size(); i += 2) {
+    const RunOutcome& a = runs[i];
+    const RunOutcome& b = runs[i + 1];
+    if (a.surfaced && !a.aborted && b.surfaced && !b.aborted) {
+      mid_e.push_back(0.5 * (a.east_m + b.east_m));
+      mid_n.push_back(0.5 * (a.north_m + b.north_m));
+    }
+  }
+  f.east_m = percentile(mid_e.empty() ? e : mid_e, 0.5);
+  f.north_m = percentile(mid_n.empty() ? n : mid_n, 0.5);
   const fw::LatLon at = fw::LocalFrame(fix).to_global({f.east_m, f.north_m});
   f.lat_deg = at.lat_deg;
   f.lon_deg = at.lon_deg;
