@@ -18,7 +18,8 @@ Each forecast's position error is split into terms (docs/forecast.md, "Where the
   rest    = error - the three (the runs' spread and median, the DR's own error)
 With --check (CTest forecast.real_comet_2019) it exits 1 unless each forecast's current is nearer the one
 the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two estimates).
-Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N] [--check]
+Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
+       [--current-prior evidence|fixed|off] [--check]
 """
 import argparse
 import csv
@@ -161,6 +162,7 @@ def main():
     p.add_argument("--out", default=None)
     p.add_argument("--runs", type=int, default=200)
     p.add_argument("--waypoint", type=int, default=None, help="force this active waypoint for every forecast")
+    p.add_argument("--current-prior", default=None, help="glider-forecast's --current-prior (evidence, fixed, off)")
     p.add_argument("--check", action="store_true", help="test mode: the current checks above, PASS/FAIL line")
     a = p.parse_args()
     out = a.out or os.path.join(a.build, "benchmark", "forecast_real")
@@ -201,7 +203,9 @@ def main():
         # c_wpt: dive 154 flew to waypoint 1, 54.30 N 7.43 E, reached by DR 6918 s in, then waypoint 0;
         # dive 156 to waypoint 0, 54.558 N 7.217 E).
         run = subprocess.run([forecast, "--glider-dir", d, "--vehicle", vehicle, "--runs", str(a.runs),
-                              "--waypoint", str(wpts[k]), "--json"], capture_output=True, text=True)
+                              "--waypoint", str(wpts[k]), "--json"] +
+                             (["--current-prior", a.current_prior] if a.current_prior else []),
+                             capture_output=True, text=True)
         if run.returncode != 0:
             print(run.stdout, run.stderr)
             sys.exit(1)

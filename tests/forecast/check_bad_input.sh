@@ -56,4 +56,29 @@ code=$?
 [ $code -eq 1 ] && grep -q "nor vehicle.toml in .*no_vehicle: give --vehicle FILE" "$out/no_vehicle.txt" ||
   fail "no_vehicle: exit $code: $(cat "$out/no_vehicle.txt")"
 echo "ok no_vehicle: $(head -1 "$out/no_vehicle.txt")"
+# The pilot's prior (GLIDER/forecast.toml, docs/forecast.md "The pilot's prior"): a value out of range,
+# NaN, an unknown key or mode, each named by file:line and key; the command line's range-checked too
+# (usage, exit 2); a good file is used (the JSON says so) and the command line overrides it.
+prior_file() {  # NAME CONTENT PATTERN
+  cp -r "$good" "$out/$1" && printf '%b' "$2" >"$out/$1/forecast.toml"
+  expect "$1" "$out/$1" "$3"
+}
+prior_file prior_range '[current_prior]\nm2_sigma_m_s = 3.0\n' "forecast.toml:2: current_prior.m2_sigma_m_s = 3.000000 is outside \\[0.000000, 2.000000\\] m/s"
+prior_file prior_nan '[current_prior]\nmode = "fixed"\nmean_sigma_m_s = nan\n' "forecast.toml:3: current_prior.mean_sigma_m_s = nan is outside"
+prior_file prior_key '[current_prior]\ntide = 0.3\n' "forecast.toml:2: current_prior.tide: unknown key"
+prior_file prior_mode '[current_prior]\nmode = "maybe"\n' "forecast.toml:2: current_prior.mode: 'maybe' is not a prior mode"
+prior_file prior_section '[prior]\nmode = "off"\n' "forecast.toml:1: key 'prior' is not a forecast setting"
+"$forecast" --glider-dir "$good" --vehicle "$v" --runs 2 --prior-m2-sigma nan >"$out/prior_cli.txt" 2>&1
+code=$?
+[ $code -eq 2 ] || fail "prior_cli: --prior-m2-sigma nan: exit $code, want 2: $(cat "$out/prior_cli.txt")"
+echo "ok prior_cli: $(head -1 "$out/prior_cli.txt")"
+cp -r "$good" "$out/prior_good" && printf '[current_prior]\nmode = "fixed"\nm2_sigma_m_s = 0.05\n' >"$out/prior_good/forecast.toml"
+"$forecast" --glider-dir "$out/prior_good" --vehicle "$v" --runs 2 --json >"$out/prior_good.json" 2>&1 ||
+  fail "prior_good: $(cat "$out/prior_good.json")"
+grep -q '"m2_sigma_m_s": 0.05' "$out/prior_good.json" && grep -q '"mode": "fixed"' "$out/prior_good.json" ||
+  fail "prior_good: the file's prior is not in the JSON: $(grep -A8 '"prior"' "$out/prior_good.json")"
+"$forecast" --glider-dir "$out/prior_good" --vehicle "$v" --runs 2 --current-prior off --json >"$out/prior_off.json" 2>&1 ||
+  fail "prior_off: $(cat "$out/prior_off.json")"
+grep -q '"mode": "off"' "$out/prior_off.json" || fail "prior_off: --current-prior off did not override the file"
+echo "ok prior_good: GLIDER/forecast.toml used, --current-prior overrides it"
 echo "PASS bad_input"

@@ -44,7 +44,7 @@ struct Coverage {
 // estimates of 3 h segments (each the segment's mean plus the estimate's
 // noise), the next 3 h window forecast: how often the window's true mean
 // falls within 1.96 sigma, per component.
-Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed) {
+Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed, const fc::TidalPrior& used = {}) {
   std::mt19937 random(seed);
   std::normal_distribution<double> g(0.0, 1.0);
   std::uniform_real_distribution<double> phase(0.0, kM2);
@@ -69,7 +69,7 @@ Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed) {
       samples.push_back(s);
       t += dive + up;
     }
-    const fc::CurrentEstimate e = fc::estimate_current(samples, t, t + dive);
+    const fc::CurrentEstimate e = fc::estimate_current(samples, t, t + dive, used);
     const double err[2] = {e.east_m_s - window_mean(m[0], a[0], b[0], t, t + dive),
                            e.north_m_s - window_mean(m[1], a[1], b[1], t, t + dive)};
     const double sigma[2] = {e.sigma_east_m_s, e.sigma_north_m_s};
@@ -80,6 +80,25 @@ Coverage coverage(int n, const fc::TidalPrior& truth, std::uint32_t seed) {
     }
   }
   return c;
+}
+
+// A SIL truth of `mission` flown to its 2nd surfacing, written as the glider
+// folder `name` up to its 1st (the first forecast has one estimate).
+std::filesystem::path first_surfacing_folder(const fc::TruthOptions& o, const std::string& name) {
+  const fc::Truth truth = fc::fly_truth(o);
+  const std::filesystem::path dir = std::filesystem::path(GLIDER_TEST_OUTPUT_DIR) / name;
+  std::filesystem::remove_all(dir);
+  fc::write_glider_folder(truth, o, "unit", 1, dir);
+  return dir;
+}
+
+fc::TruthOptions truth_options(const char* mission, const char* vehicle, std::uint64_t seed) {
+  fc::TruthOptions o;
+  o.mission = std::string(GLIDER_SOURCE_DIR) + mission;
+  o.vehicle = std::string(GLIDER_SOURCE_DIR) + vehicle;
+  o.seed = seed;
+  o.surfacings = 2;
+  return o;
 }
 
 }  // namespace
@@ -138,13 +157,47 @@ TEST(ForecastCurrent, PersistenceOfAFewEqualEstimatesKeepsThePriorsDoubt) {
   // Three equal estimates 3 h apart: persistence wins its two hindcasts with
   // no error, yet a 3 h window may hold a turning tide: its sigma is the
   // prior's (2 cases' worth) pooled with the two zero differences.
+  // (The fixed prior's doubt; weighed by their evidence, three equal
+  // estimates over 9 h are evidence of steady water, and the doubt pooled is
+  // that of the widths they favour, smaller but not nil.)
   std::vector<fc::CurrentSample> three;
   for (int i = 0; i < 3; ++i) three.push_back({i * 11700.0, 0.1, 0.1, 10800.0});
-  const fc::CurrentEstimate e = fc::estimate_current(three, 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0);
-  STRCMP_EQUAL("last", e.method.c_str());
-  const double prior_var = fc::persistence_prior_variance(three.back(), 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0);
-  CHECK(prior_var > 0.01);
-  DOUBLES_EQUAL(std::sqrt((2.0 * prior_var + 2.0 * 0.02 * 0.02) / 4.0), e.sigma_east_m_s, 1e-6);
+  for (const fc::PriorMode mode : {fc::PriorMode::kFixed, fc::PriorMode::kEvidence}) {
+    fc::TidalPrior prior;
+    prior.mode = mode;
+    const fc::CurrentEstimate e = fc::estimate_current(three, 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0, prior);
+    STRCMP_EQUAL("last", e.method.c_str());
+    const double prior_var =
+        fc::persistence_prior_variance(three.back(), 3 * 11700.0 - 5400.0, 3 * 11700.0 + 5400.0, prior, three);
+    CHECK(prior_var > (mode == fc::PriorMode::kFixed ? 0.01 : 0.0004));
+    // The floor of persistence's own sigma: the estimate noise (the one
+    // the estimates favour, in evidence mode).
+    const double floor = fc::favoured_prior(three, 3 * 11700.0 - 5400.0, prior).estimate_sigma_m_s;
+    DOUBLES_EQUAL(mode == fc::PriorMode::kFixed ? 0.02 : floor, floor, 1e-12);
+    DOUBLES_EQUAL(std::sqrt((2.0 * prior_var + 2.0 * floor * floor) / 4.0), e.sigma_east_m_s, 1e-6);
+  }
+}
+
+TEST(ForecastCurrent, PreciseEstimatesAreNotFlooredAtTheDefaultNoise) {
+  // Eight 3 h estimates of a steady 0.1 m/s, each within 2 mm/s: the noise
+  // the estimates favour (1/8 of the prior's 0.02) is the sigma's floor, so
+  // the forecast's sigma is below 0.01 m/s (a constant 0.02 floor made the
+  // SIL's 95 % ellipses hold the truth at 0.1-0.4 of their size); the fixed
+  // prior keeps its 0.02.
+  std::vector<fc::CurrentSample> eight;
+  for (int i = 0; i < 8; ++i) {
+    eight.push_back({i * 11700.0, 0.1 + 0.002 * ((i % 3) - 1), -0.05 + 0.002 * ((i % 2) * 2 - 1), 10800.0});
+  }
+  const double from = 8 * 11700.0 - 5400.0, to = from + 10800.0;
+  const fc::CurrentEstimate e = fc::estimate_current(eight, from, to);
+  const std::string what =
+      e.method + " +- " + std::to_string(e.sigma_east_m_s) + " / " + std::to_string(e.sigma_north_m_s);
+  CHECK_TEXT(e.sigma_east_m_s < 0.01 && e.sigma_north_m_s < 0.01, what.c_str());
+  DOUBLES_EQUAL(0.1, e.east_m_s, 0.005);
+  fc::TidalPrior fixed;
+  fixed.mode = fc::PriorMode::kFixed;
+  const fc::CurrentEstimate f = fc::estimate_current(eight, from, to, fixed);
+  CHECK(f.sigma_east_m_s >= 0.02);
 }
 
 TEST_GROUP(ForecastBelief){};
@@ -181,15 +234,79 @@ TEST(ForecastBelief, TheNavigatorDeadReckonsWithTheGlidersEstimateNotTheForecast
 }
 
 TEST(ForecastCurrent, ASteadyCurrentAfterOneEstimateIsForecastAsATideWouldTurnIt) {
-  // The prior's cost in water without a tide (docs/forecast.md, Known
+  // The fixed prior's cost in water without a tide (docs/forecast.md, Known
   // limits): one 3 h estimate of a steady 0.2 m/s, the next 3 h dive 15 min
   // later, is forecast as about 0.02 m/s with a sigma of 0.25 (the truth
   // within it).
   const std::vector<fc::CurrentSample> one{{5400.0, 0.2, 0.0, 10800.0}};
-  const fc::CurrentEstimate e = fc::estimate_current(one, 11700.0, 22500.0);
+  fc::TidalPrior fixed;
+  fixed.mode = fc::PriorMode::kFixed;
+  const fc::CurrentEstimate e = fc::estimate_current(one, 11700.0, 22500.0, fixed);
   DOUBLES_EQUAL(0.02, e.east_m_s, 0.01);
   DOUBLES_EQUAL(0.25, e.sigma_east_m_s, 0.01);
   CHECK(0.2 - e.east_m_s < 1.96 * e.sigma_east_m_s);
+  // Weighed by its evidence the prior lets a 0.2 m/s estimate say more of
+  // the water's size: nearer the steady 0.2, its sigma narrower, the truth
+  // still within it. Off: persistence.
+  const fc::CurrentEstimate weighed = fc::estimate_current(one, 11700.0, 22500.0);
+  const std::string what = std::to_string(weighed.east_m_s) + " +- " + std::to_string(weighed.sigma_east_m_s);
+  CHECK_TEXT(weighed.east_m_s > e.east_m_s + 0.02, what.c_str());
+  CHECK_TEXT(weighed.sigma_east_m_s < e.sigma_east_m_s, what.c_str());
+  CHECK_TEXT(0.2 - weighed.east_m_s < 1.96 * weighed.sigma_east_m_s, what.c_str());
+  fc::TidalPrior off;
+  off.mode = fc::PriorMode::kOff;
+  const fc::CurrentEstimate persisted = fc::estimate_current(one, 11700.0, 22500.0, off);
+  STRCMP_EQUAL("last", persisted.method.c_str());
+  DOUBLES_EQUAL(0.2, persisted.east_m_s, 1e-12);
+}
+
+TEST(ForecastCurrent, WeakWaterIsForecastWithTheWeakWatersSigma) {
+  // Waters drawn from a prior a quarter of the pilot's (a weak-tide sea):
+  // weighed by their evidence, one or two estimates give a narrower sigma
+  // than the fixed prior's (which keeps the shelf sea's, several times too
+  // wide: mean z^2 far below 1), and still cover the window's mean in
+  // >= 93 % of the cases.
+  fc::TidalPrior weak;
+  weak.mean_sigma_m_s = 0.025;
+  weak.m2_sigma_m_s = 0.0625;
+  fc::TidalPrior fixed;
+  fixed.mode = fc::PriorMode::kFixed;
+  for (int n = 1; n <= 2; ++n) {
+    const Coverage c = coverage(n, weak, 4321u + static_cast<std::uint32_t>(n));
+    const Coverage f = coverage(n, weak, 4321u + static_cast<std::uint32_t>(n), fixed);
+    const double inside = static_cast<double>(c.inside) / c.cases, z2 = c.z2 / c.cases, z2_fixed = f.z2 / f.cases;
+    const std::string what = std::to_string(n) + " estimates: " + std::to_string(inside) + " inside, mean z^2 " +
+                             std::to_string(z2) + " (fixed prior " + std::to_string(z2_fixed) + ")";
+    CHECK_TEXT(inside > 0.93, what.c_str());
+    CHECK_TEXT(z2 > 1.5 * z2_fixed, what.c_str());
+  }
+}
+
+TEST_GROUP(ForecastRuns){};
+
+TEST(ForecastRuns, ThePositionDoesNotWanderWithTheNumberOfRuns) {
+  // The first forecast of an nsb3.mi SIL truth (3 h dives, one estimate:
+  // the current's sigma wide): the position from 16 and from 64 runs. The
+  // runs' median moved with the sampling; the median of the antithetic
+  // pairs' midpoints cancels the draws' linear part (docs/forecast.md, Output).
+  const fc::TruthOptions o =
+      truth_options("/boards/missions/comet-nsb3/missions/nsb3.mi", "/boards/vehicles/slocum_comet.toml", 7);
+  const std::filesystem::path dir = first_surfacing_folder(o, "forecast_runs");
+  fc::ForecastOptions options;
+  options.vehicle = o.vehicle.string();
+  options.threads = 1;
+  options.write = false;
+  options.runs = 16;
+  const fc::Forecast few = fc::make_forecast(dir, options);
+  options.runs = 64;
+  const fc::Forecast many = fc::make_forecast(dir, options);
+  CHECK_TRUE(few.have_surfacing && many.have_surfacing);
+  const double moved = std::hypot(few.east_m - many.east_m, few.north_m - many.north_m);
+  const std::string what = "moved " + std::to_string(moved) + " m; ellipse " +
+                           std::to_string(many.ellipse.semi_major_m) + " m, current sigma " +
+                           std::to_string(many.current.sigma_east_m_s);
+  CHECK_TEXT(many.ellipse.semi_major_m > 500.0, what.c_str());  // a wide spread, or the case tests nothing
+  CHECK_TEXT(moved < 0.05 * many.ellipse.semi_major_m, what.c_str());
 }
 
 TEST_GROUP(ForecastGliderAbort){};
@@ -199,15 +316,9 @@ TEST(ForecastGliderAbort, AnAbortAtTheLastCallIsSaid) {
   // so (a note, "glider_aborted" with the cause) instead of forecasting a
   // dive as if nothing happened; without the abort neither appears.
   namespace fs = std::filesystem;
-  fc::TruthOptions o;
-  o.mission = GLIDER_SOURCE_DIR "/boards/missions/box_current/missions/box.mi";
-  o.vehicle = GLIDER_SOURCE_DIR "/boards/vehicles/slocum_shallow.toml";
-  o.seed = 5;
-  o.surfacings = 2;
-  const fc::Truth truth = fc::fly_truth(o);
-  const fs::path dir = fs::path(GLIDER_TEST_OUTPUT_DIR) / "forecast_glider_abort";
-  fs::remove_all(dir);
-  fc::write_glider_folder(truth, o, "unit", 1, dir);
+  const fc::TruthOptions o =
+      truth_options("/boards/missions/box_current/missions/box.mi", "/boards/vehicles/slocum_shallow.toml", 5);
+  const fs::path dir = first_surfacing_folder(o, "forecast_glider_abort");
   fc::ForecastOptions options;
   options.vehicle = o.vehicle.string();
   options.runs = 4;

@@ -99,6 +99,9 @@ class FlightSoftware final : public PeriodicTask {
   const MissionPlan& plan() const { return config_.plan; }
   // Before the first run(): the current estimate the mission resumes with.
   void seed_current(EastNorth current) { navigator_.seed_current(current); }
+  bool seed_average_speed(double speed_m_s, double glided_s) {
+    return navigator_.seed_average_speed(speed_m_s, glided_s);
+  }
   void seed_clocks(double since_surfacing_s, double since_comms_s) {
     navigator_.seed_clocks(since_surfacing_s, since_comms_s);
   }

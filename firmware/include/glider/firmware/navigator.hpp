@@ -89,6 +89,19 @@ class Navigator {
     current_ = current;
     have_current_ = true;
   }
+  // The mean glide speed carried over the same way (Slocum's m_avg_speed at
+  // the dive, as if glided for `glided_s`): a resumed flight steers with
+  // Slocum's current correction from its first moment, not the plain bearing
+  // until its first glide. Ignored unless 0 < speed <= kMaxSeededSpeedMps and
+  // 0 < glided_s < 1e9 (both finite); returns whether it was taken.
+  static constexpr double kMaxSeededSpeedMps = 3.0;
+  bool seed_average_speed(double speed_m_s, double glided_s) {
+    if (!(std::isfinite(speed_m_s) && speed_m_s > 0.0 && speed_m_s <= kMaxSeededSpeedMps)) return false;
+    if (!(std::isfinite(glided_s) && glided_s > 0.0 && glided_s < 1e9)) return false;
+    glided_m_ = speed_m_s * glided_s;
+    glided_s_ = glided_s;
+    return true;
+  }
   // The when_secs clocks carried over the same way: the glider arrived at the
   // surface `since_surfacing_s` and its last call connected `since_comms_s`
   // before this start (a forecast starts at the dive, after the glider's time

@@ -14,7 +14,9 @@ namespace {
 
 // The glider's per-segment estimate scatters by this much even in steady
 // water (DR speed error, the fix's noise over a short segment): the floor of
-// every sigma.
+// every sigma. It is the prior's estimate noise (0.02 m/s by default); in
+// evidence mode the noise the estimates favour (tidal_prior.hpp): a 0.02
+// floor made the SIL's 95 % ellipses hold the truth at 0.1-0.4 of their size.
 constexpr double kSigmaFloorMS = 0.02;
 constexpr double kNoHistorySigmaMS = 0.25;
 
@@ -28,7 +30,7 @@ struct Fit {
 // evaluation rows and its 1-sigma (parameter covariance from the residuals,
 // plus the residual scatter itself: the next segment's own deviation).
 Fit least_squares(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const Eigen::VectorXd& w,
-                  const Eigen::RowVectorXd& x_eval) {
+                  const Eigen::RowVectorXd& x_eval, double floor) {
   const Eigen::Index n = x.rows(), p = x.cols();
   if (n <= p) return {};
   const Eigen::MatrixXd xw = w.asDiagonal() * x;
@@ -43,14 +45,16 @@ Fit least_squares(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const Eige
   Fit f;
   f.value = x_eval * b;
   const double param_var = x_eval * cov * x_eval.transpose();
-  f.sigma = std::sqrt(std::max(0.0, param_var) + s2 + kSigmaFloorMS * kSigmaFloorMS);
+  f.sigma = std::sqrt(std::max(0.0, param_var) + s2 + floor * floor);
   f.ok = std::isfinite(f.value) && std::isfinite(f.sigma);
   return f;
 }
 
 }  // namespace
 
-CurrentEstimate last_current(const std::vector<CurrentSample>& samples) {
+CurrentEstimate last_current(const std::vector<CurrentSample>& samples) { return last_current(samples, kSigmaFloorMS); }
+
+CurrentEstimate last_current(const std::vector<CurrentSample>& samples, double floor) {
   CurrentEstimate e;
   e.samples = static_cast<int>(samples.size());
   if (samples.empty()) {
@@ -69,8 +73,8 @@ CurrentEstimate last_current(const std::vector<CurrentSample>& samples) {
     ++n;
   }
   const double fallback = 0.05;
-  e.sigma_east_m_s = n > 0 ? std::hypot(std::sqrt(se / n), kSigmaFloorMS) : fallback;
-  e.sigma_north_m_s = n > 0 ? std::hypot(std::sqrt(sn / n), kSigmaFloorMS) : fallback;
+  e.sigma_east_m_s = n > 0 ? std::hypot(std::sqrt(se / n), floor) : fallback;
+  e.sigma_north_m_s = n > 0 ? std::hypot(std::sqrt(sn / n), floor) : fallback;
   e.method = "last";
   return e;
 }
@@ -80,7 +84,7 @@ namespace {
 // The fitted rules alone: `tidal` (mean + M2) or else the trend; nullopt
 // when the history is too short for the rule asked.
 std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
-                                              bool tidal) {
+                                              bool tidal, double floor) {
   // Only the last day counts: older water is other water.
   std::vector<CurrentSample> samples;
   for (const CurrentSample& s : all) {
@@ -102,8 +106,8 @@ std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& 
       ye(i) = used[static_cast<std::size_t>(i)].east_m_s;
       yn(i) = used[static_cast<std::size_t>(i)].north_m_s;
     }
-    const Fit fe = least_squares(x, ye, w, x_eval);
-    const Fit fn = least_squares(x, yn, w, x_eval);
+    const Fit fe = least_squares(x, ye, w, x_eval, floor);
+    const Fit fn = least_squares(x, yn, w, x_eval, floor);
     if (!fe.ok || !fn.ok) return false;
     e.east_m_s = fe.value;
     e.north_m_s = fn.value;
@@ -167,7 +171,11 @@ std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& 
 
 }  // namespace
 
-CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s) {
+CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
+                                 const TidalPrior& prior) {
+  const bool use_prior = prior.mode != PriorMode::kOff;
+  const double floor = prior.mode == PriorMode::kEvidence ? favoured_prior(all, from_utc_s, prior).estimate_sigma_m_s
+                                                          : prior.estimate_sigma_m_s;
   // Each rule predicts every past estimate of the last day from the ones
   // before it (over a window as long as the coming one); the rule with the
   // smallest error wins, and its error is the estimate's uncertainty (the
@@ -184,15 +192,15 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
     auto error2 = [&](const CurrentEstimate& p) {
       return std::pow(p.east_m_s - all[j].east_m_s, 2) + std::pow(p.north_m_s - all[j].north_m_s, 2);
     };
-    const double last2 = error2(last_current(before));
+    const double last2 = error2(last_current(before, floor));
     for (int rule = kLast; rule < kRules; ++rule) {
       std::optional<CurrentEstimate> p;
       if (rule == kLast) {
-        p = last_current(before);
+        p = last_current(before, floor);
       } else if (rule == kPrior) {
-        p = predict_with_prior(before, from, to);
+        if (use_prior) p = predict_with_prior(before, from, to, prior);
       } else {
-        p = predict_fitted(before, from, to, rule == kTidal);
+        p = predict_fitted(before, from, to, rule == kTidal, floor);
       }
       if (!p) continue;
       sum2[rule] += error2(*p);
@@ -200,15 +208,17 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
       ++count[rule];
     }
   }
-  if (all.empty()) return last_current(all);
+  if (all.empty()) return last_current(all, floor);
   // Fewer than two hindcasts (one or two estimates in the day): nothing can
   // choose a rule nor measure its error; the tidal prior gives both (a
   // turning tide makes persistence of one estimate wrong by more than any
   // difference of two estimates says).
+  // Without a prior (the pilot's "off") persistence alone.
+  if (count[kLast] < 2 && !use_prior) return last_current(all, floor);
   if (count[kLast] < 2) {
-    CurrentEstimate e = predict_with_prior(all, from_utc_s, to_utc_s);
-    e.sigma_east_m_s = std::hypot(e.sigma_east_m_s, kSigmaFloorMS);
-    e.sigma_north_m_s = std::hypot(e.sigma_north_m_s, kSigmaFloorMS);
+    CurrentEstimate e = predict_with_prior(all, from_utc_s, to_utc_s, prior);
+    e.sigma_east_m_s = std::hypot(e.sigma_east_m_s, floor);
+    e.sigma_north_m_s = std::hypot(e.sigma_north_m_s, floor);
     e.samples = static_cast<int>(all.size());
     return e;
   }
@@ -225,17 +235,18 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
       best_rms = std::sqrt(sum2[rule] / count[rule]);
     }
   }
-  CurrentEstimate e = last_current(all);
+  CurrentEstimate e = last_current(all, floor);
   if (best == kPrior) {
-    e = predict_with_prior(all, from_utc_s, to_utc_s);
+    e = predict_with_prior(all, from_utc_s, to_utc_s, prior);
   } else if (best != kLast) {
-    if (const std::optional<CurrentEstimate> p = predict_fitted(all, from_utc_s, to_utc_s, best == kTidal)) e = *p;
-  } else {
+    if (const std::optional<CurrentEstimate> p = predict_fitted(all, from_utc_s, to_utc_s, best == kTidal, floor))
+      e = *p;
+  } else if (use_prior) {
     // Persistence's scatter of consecutive estimates, pooled with what the
     // prior says carrying the last one over this window costs, as two cases'
     // worth (a scaled-inverse-chi-square prior, 2 degrees of freedom): a few
     // differences of a turning tide do not make persistence certain.
-    const double prior_var = persistence_prior_variance(all.back(), from_utc_s, to_utc_s);
+    const double prior_var = persistence_prior_variance(all.back(), from_utc_s, to_utc_s, prior, all);
     const double n = static_cast<double>(all.size() - 1), nu0 = 2.0;
     e.sigma_east_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_east_m_s * e.sigma_east_m_s) / (nu0 + n));
     e.sigma_north_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_north_m_s * e.sigma_north_m_s) / (nu0 + n));
@@ -248,6 +259,10 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   }
   e.samples = static_cast<int>(all.size());
   return e;
+}
+
+CurrentEstimate estimate_current(const std::vector<CurrentSample>& samples, double from_utc_s, double to_utc_s) {
+  return estimate_current(samples, from_utc_s, to_utc_s, TidalPrior{});
 }
 
 }  // namespace glider::forecast

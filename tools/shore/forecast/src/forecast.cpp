@@ -14,6 +14,7 @@
 #include "glider/cli/tool.hpp"
 #include "glider/config/value_limits.hpp"
 #include "glider/firmware/geo.hpp"
+#include "glider/forecast/tidal_prior.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/portable_random.hpp"
@@ -135,8 +136,23 @@ void summarise(const std::vector<RunOutcome>& runs, const fw::LatLon& fix, Forec
   f.runs = static_cast<int>(runs.size());
   if (e.empty()) return;
   f.have_surfacing = true;
-  f.east_m = percentile(e, 0.5);
-  f.north_m = percentile(n, 0.5);
+  // The position: the median over the antithetic pairs' midpoints (runs
+  // 2k and 2k+1 drew opposite water, drag and trim: their midpoint has the
+  // draws' linear part cancelled, and the median keeps a few runs that fly
+  // off - a stall, a waypoint reached - from moving it); a pair with a run
+  // that did not surface normally is left out. Without a whole pair, the
+  // runs' median.
+  std::vector<double> mid_e, mid_n;
+  for (std::size_t i = 0; i + 1 < runs.size(); i += 2) {
+    const RunOutcome& a = runs[i];
+    const RunOutcome& b = runs[i + 1];
+    if (a.surfaced && !a.aborted && b.surfaced && !b.aborted) {
+      mid_e.push_back(0.5 * (a.east_m + b.east_m));
+      mid_n.push_back(0.5 * (a.north_m + b.north_m));
+    }
+  }
+  f.east_m = percentile(mid_e.empty() ? e : mid_e, 0.5);
+  f.north_m = percentile(mid_n.empty() ? n : mid_n, 0.5);
   const fw::LatLon at = fw::LocalFrame(fix).to_global({f.east_m, f.north_m});
   f.lat_deg = at.lat_deg;
   f.lon_deg = at.lon_deg;
@@ -196,8 +212,10 @@ void add_model_miss(Forecast& f, const ForecastOptions& options, std::vector<Run
   for (std::size_t i = 0; i < runs.size(); ++i) {
     RunOutcome& r = runs[i];
     if (!r.surfaced) continue;
-    sil::PortableRandom draw(sil::derived_seed(options.seed + i, 0x6d697373ULL));
-    const double g1 = draw.gaussian(), g2 = draw.gaussian();
+    // Antithetic pairs, as the runs' own draws (monte_carlo.cpp).
+    sil::PortableRandom draw(sil::derived_seed(options.seed + (i & ~std::size_t{1}), 0x6d697373ULL));
+    const double sign = (i & 1U) != 0U ? -1.0 : 1.0;
+    const double g1 = sign * draw.gaussian(), g2 = sign * draw.gaussian();
     r.east_m += se * g1;
     r.north_m += sn * (rho * g1 + std::sqrt(std::max(0.0, 1.0 - rho * rho)) * g2);
   }
@@ -273,6 +291,57 @@ void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, co
   }
 }
 
+// The glider's own speed through the water, as its dead reckoning counts
+// it, against the model's: over each recent dive of the last day the DR's
+// track less the current it carried ((DR position on surfacing - the fix it
+// dived from) / time - its m_water_vx/vy then), against one still-water
+// flight of the model (whose DR is its track through the water). Both count
+// speed from the depth rate and pitch the same way. Said (a note, JSON
+// current.glider_speed_ratio), not applied: scaling the model's drag to
+// match is ill-conditioned on slocum_comet.toml (drag x1.1-1.4 cuts its
+// speed 0.35 -> 0.04-0.10 m/s, not by drag^-1/2; docs/forecast.md). Also
+// the mean glide speed the runs start with (the model's).
+void measure_speed(const std::vector<Surfacing>& history, FlightSetup& setup, const ForecastOptions& options,
+                   Forecast& f) {
+  std::vector<double> glider_speeds;
+  for (std::size_t i = 1; i < history.size(); ++i) {
+    const Surfacing& s = history[i];
+    const Surfacing& before = history[i - 1];
+    if (s.call_start_utc_s <= f.fix_utc_s - 86400.0) continue;  // the last day's dives: today's trim
+    if (!before.has_fix() || !s.dr_lat_deg || !s.dr_lon_deg) continue;
+    const double under_s = s.call_start_utc_s - before.call_end_utc_s;
+    if (!(under_s >= 1800.0)) continue;  // a short dive's speed is mostly its turns
+    const fw::EastNorth dr =
+        fw::LocalFrame({*before.lat_deg, *before.lon_deg}).to_local({*s.dr_lat_deg, *s.dr_lon_deg});
+    const double ce = before.water_vx_m_s.value_or(0.0), cn = before.water_vy_m_s.value_or(0.0);
+    const double speed = std::hypot(dr.east_m / under_s - ce, dr.north_m / under_s - cn);
+    if (std::isfinite(speed) && speed > 0.02) glider_speeds.push_back(speed);
+  }
+  FlightSetup still = setup;
+  still.current = CurrentEstimate{};
+  still.firmware_current.reset();
+  const RunOutcome r = fly_runs(still, options, 1, false).at(0);
+  const double average = r.average_speed_m_s;
+  const double model =
+      r.surfaced && !r.aborted && r.time_s > 600.0 ? std::hypot(r.dr_east_m, r.dr_north_m) / r.time_s : 0.0;
+  if (!glider_speeds.empty() && model > 0.02) {
+    std::sort(glider_speeds.begin(), glider_speeds.end());
+    const double glider = glider_speeds[glider_speeds.size() / 2];
+    f.glider_speed_ratio = glider / model;
+    f.speed_dives = static_cast<int>(glider_speeds.size());
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "speed through the water by dead reckoning: the glider's %.3f m/s over %zu recent dives, the "
+                  "model's %.3f (said, not applied)",
+                  glider, glider_speeds.size(), model);
+    f.notes.push_back(text);
+  }
+  if (std::isfinite(average) && average > 0.0) {
+    setup.average_speed_m_s = average;
+    setup.average_weight_s = 3600.0;
+  }
+}
+
 }  // namespace
 
 Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& options) {
@@ -303,6 +372,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
                       "resumed, and abort_risk is theirs");
   }
   f.glider = last->glider;
+  f.prior = current_prior(glider_dir, options.prior);
   f.fix_lat_deg = *last->lat_deg;
   f.fix_lon_deg = *last->lon_deg;
   f.fix_utc_s = last->call_start_utc_s;
@@ -337,6 +407,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   if (history.back().water_vx_m_s && history.back().water_vy_m_s) {
     setup.firmware_current = fw::EastNorth{*history.back().water_vx_m_s, *history.back().water_vy_m_s};
   }
+  measure_speed(history, setup, options, f);
   std::vector<DiveMiss> misses;
   if (options.waypoint >= 0 && now.applied.empty()) {
     if (options.waypoint >= now.config.plan.waypoint_count) {
@@ -402,7 +473,16 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);
   }
   const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio, expected_s);
-  f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s);
+  f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior);
+  f.favoured = favoured_prior(samples, f.dive_utc_s, f.prior);
+  if (f.prior.mode == PriorMode::kEvidence && !samples.empty()) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the estimates favour a mean current of +- %.3f m/s and an M2 tide of +- %.3f m/s per component "
+                  "(the prior's %.3f and %.3f, weighted by their evidence)",
+                  f.favoured.mean_sigma_m_s, f.favoured.m2_sigma_m_s, f.prior.mean_sigma_m_s, f.prior.m2_sigma_m_s);
+    f.notes.push_back(text);
+  }
   f.baseline_current = last_current(current_samples(history, 1.0, expected_s));
   if (samples.empty()) {
     f.notes.push_back("no depth-averaged current from the surfacings yet (m_water_vx/vy): still water +- " +
@@ -466,7 +546,16 @@ nlohmann::json forecast_json(const Forecast& f) {
                     {"sigma_north_m_s", f.current.sigma_north_m_s},
                     {"method", f.current.method},
                     {"samples", f.current.samples},
-                    {"dr_speed_ratio", f.dr_speed_ratio}};
+                    {"dr_speed_ratio", f.dr_speed_ratio},
+                    {"glider_speed_ratio", f.glider_speed_ratio},
+                    {"speed_dives", f.speed_dives},
+                    {"prior",
+                     {{"mode", to_string(f.prior.mode)},
+                      {"mean_sigma_m_s", f.prior.mean_sigma_m_s},
+                      {"m2_sigma_m_s", f.prior.m2_sigma_m_s},
+                      {"estimate_sigma_m_s", f.prior.estimate_sigma_m_s},
+                      {"favoured_mean_sigma_m_s", f.favoured.mean_sigma_m_s},
+                      {"favoured_m2_sigma_m_s", f.favoured.m2_sigma_m_s}}}};
   out["model_miss"] = {{"dives", f.model_miss_dives},
                        {"rms_east_m", f.model_miss_east_m},
                        {"rms_north_m", f.model_miss_north_m},

@@ -148,6 +148,18 @@ int main(int argc, char** argv) {
   tool.add_integer("--from", from, 1, 200, "surfacing", "first surfacing forecast from")->capture_default_str();
   tool.add_integer("--runs", options.runs, 1, 100000, "runs", "Monte-Carlo runs per forecast")->capture_default_str();
   tool.add_integer("--threads", options.threads, 1, 64, "threads", "threads per forecast")->capture_default_str();
+  std::string prior_mode = "evidence";
+  app.add_option("--current-prior", prior_mode, "the forecasts' current prior: evidence, fixed or off")
+      ->check(CLI::IsMember({"evidence", "fixed", "off"}))
+      ->capture_default_str();
+  tool.add_number("--truth-drag-sigma", truth_options.drag_sigma, {0.0, 1.0, ""},
+                  "the true vehicle's drag off the file's, 1 sigma of its log")
+      ->capture_default_str();
+  double tide_max = truth_options.tide_amplitude_max_m_s, mean_max = truth_options.mean_current_max_m_s;
+  tool.add_number("--tide-max", tide_max, {0.0, 2.0, "m/s"}, "the truths' M2 amplitude is drawn up to this")
+      ->capture_default_str();
+  tool.add_number("--mean-max", mean_max, {0.0, 2.0, "m/s"}, "the truths' mean current is drawn up to this")
+      ->capture_default_str();
   double check_km = 0.0;
   tool.add_number("--check-km", check_km, {0.0, 100.0, "km"},
                   "test mode: exit 1 unless every forecast is within this of the truth and the truth of the first "
@@ -156,6 +168,9 @@ int main(int argc, char** argv) {
     if (seed < 0) {
       seed = static_cast<std::int64_t>(std::random_device{}() % 1000000);
     }
+    options.prior.mode = fc::parse_prior_mode(prior_mode);
+    truth_options.tide_amplitude_max_m_s = tide_max;
+    truth_options.mean_current_max_m_s = mean_max;
     truth_options.mission = mission;
     truth_options.vehicle = vehicle;
     options.vehicle = vehicle;

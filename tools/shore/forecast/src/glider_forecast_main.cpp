@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "glider/cli/tool.hpp"
 #include "glider/forecast/forecast.hpp"
@@ -15,6 +17,9 @@ int main(int argc, char** argv) {
   glider::forecast::ForecastOptions options;
   std::string glider_dir;
   bool json = false;
+  std::string prior_mode;
+  double prior_mean = 0.10, prior_m2 = 0.25, prior_estimate = 0.02;
+  std::vector<std::pair<CLI::Option*, int>> prior_options;  // 0 mean, 1 M2, 2 estimate
   auto common = [&](CLI::App* command) {
     command->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER); required");
     command->add_option("--mission", options.mission,
@@ -32,6 +37,20 @@ int main(int argc, char** argv) {
     tool.add_number(command, "--max-working-depth-m", options.max_working_depth_m, {1.0, 11000.0, "m"},
                     "the glider's rating the mission is checked against")
         ->capture_default_str();
+    command
+        ->add_option("--current-prior", prior_mode,
+                     "the current's prior: evidence (the estimates weigh its widths), fixed or off (persistence); "
+                     "default: GLIDER/forecast.toml's, else evidence")
+        ->check(CLI::IsMember({"evidence", "fixed", "off"}));
+    prior_options.emplace_back(tool.add_number(command, "--prior-mean-sigma", prior_mean, {0.0, 2.0, "m/s"},
+                                               "the prior's mean current, 1 sigma per component (default 0.10)"),
+                               0);
+    prior_options.emplace_back(tool.add_number(command, "--prior-m2-sigma", prior_m2, {0.0, 2.0, "m/s"},
+                                               "the prior's M2 tide coefficients, 1 sigma (default 0.25)"),
+                               1);
+    prior_options.emplace_back(tool.add_number(command, "--prior-estimate-sigma", prior_estimate, {0.001, 1.0, "m/s"},
+                                               "each current estimate's own error, 1 sigma (default 0.02)"),
+                               2);
   };
   common(&app);
   tool.add_json_flag(json);
@@ -43,6 +62,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   return tool.run(argc, argv, [&]() -> int {
     if (glider_dir.empty()) throw glider::cli::ToolError(glider::cli::kUsage, "--glider-dir is required");
+    if (!prior_mode.empty()) options.prior.mode = glider::forecast::parse_prior_mode(prior_mode);
+    for (const auto& [option, which] : prior_options) {
+      if (option->count() == 0) continue;
+      if (which == 0) options.prior.mean_sigma_m_s = prior_mean;
+      if (which == 1) options.prior.m2_sigma_m_s = prior_m2;
+      if (which == 2) options.prior.estimate_sigma_m_s = prior_estimate;
+    }
     if (*rehearse) {
       const glider::forecast::Rehearsal r = glider::forecast::rehearse(glider_dir, file, options);
       if (json) {

@@ -5,11 +5,20 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace glider::forecast {
 namespace {
 
 constexpr double kOmega = 2.0 * std::numbers::pi / kM2PeriodS;
+// Evidence mode: each width scaled by 2^k, k = 1 .. -5 (x2 down to x1/32:
+// from a tide twice the pilot's down to water with practically none).
+constexpr int kScaleTop = 1, kScales = 7;
+// The estimate's noise scaled by 1 .. 1/8: a glider (or a SIL) whose dead
+// reckoning is better than the pilot's guess shows it in the estimates'
+// scatter, and a noise that is too large shrinks a weak current to zero.
+constexpr int kNoiseScales = 4;
+constexpr double kOctaveSigma = 1.0;
 
 // A harmonic averaged over a span keeps sinc(omega span / 2) of its amplitude.
 double kept(double span_s) {
@@ -24,55 +33,178 @@ double covariance(double t1, double s1, double t2, double s2, const TidalPrior& 
          p.m2_sigma_m_s * p.m2_sigma_m_s * std::cos(kOmega * (t1 - t2)) * kept(s1) * kept(s2);
 }
 
-}  // namespace
-
-CurrentEstimate predict_with_prior(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
-                                   const TidalPrior& prior) {
+std::vector<CurrentSample> last_day(const std::vector<CurrentSample>& all, double from_utc_s) {
   std::vector<CurrentSample> samples;
   for (const CurrentSample& s : all) {
     if (s.utc_s > from_utc_s - 86400.0 && s.utc_s <= from_utc_s) samples.push_back(s);
   }
-  const double t_w = 0.5 * (from_utc_s + to_utc_s), s_w = std::max(0.0, to_utc_s - from_utc_s);
+  return samples;
+}
+
+// One hypothesis (fixed widths): the posterior mean over the window per
+// component, its variance, and the log marginal likelihood of the estimates.
+struct Posterior {
+  double east = 0.0, north = 0.0, var = 0.0;
+  double log_evidence = 0.0;
+  bool ok = true;
+};
+
+Posterior condition(const std::vector<CurrentSample>& samples, double t_w, double s_w, const TidalPrior& prior) {
+  Posterior p;
   const double prior_var = covariance(t_w, s_w, t_w, s_w, prior);
+  p.var = prior_var;
+  if (samples.empty()) return p;
+  const auto n = static_cast<Eigen::Index>(samples.size());
+  Eigen::MatrixXd k(n, n);
+  Eigen::VectorXd k_w(n), y_e(n), y_n(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const CurrentSample& a = samples[static_cast<std::size_t>(i)];
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const CurrentSample& b = samples[static_cast<std::size_t>(j)];
+      k(i, j) = covariance(a.utc_s, a.span_s, b.utc_s, b.span_s, prior);
+    }
+    k(i, i) += prior.estimate_sigma_m_s * prior.estimate_sigma_m_s;
+    k_w(i) = covariance(t_w, s_w, a.utc_s, a.span_s, prior);
+    y_e(i) = a.east_m_s;
+    y_n(i) = a.north_m_s;
+  }
+  // The noise on the diagonal keeps k positive definite.
+  const Eigen::LLT<Eigen::MatrixXd> llt(k);
+  if (llt.info() != Eigen::Success) {
+    p.ok = false;
+    return p;
+  }
+  const Eigen::VectorXd weights = llt.solve(k_w);
+  p.east = weights.dot(y_e);
+  p.north = weights.dot(y_n);
+  p.var = std::max(prior_var - weights.dot(k_w), 0.0);
+  // log N(y; 0, K) for east and north (independent, the same kernel).
+  const Eigen::MatrixXd l = llt.matrixL();
+  const double log_det = 2.0 * l.diagonal().array().log().sum();
+  const double quad = y_e.dot(llt.solve(y_e)) + y_n.dot(llt.solve(y_n));
+  p.log_evidence = -0.5 * quad - log_det - static_cast<double>(n) * std::log(2.0 * std::numbers::pi);
+  return p;
+}
+
+// The hypotheses and their posterior weights given `samples`.
+struct Hypothesis {
+  TidalPrior widths;
+  Posterior posterior;
+  double weight = 1.0;
+};
+
+std::vector<Hypothesis> weigh(const std::vector<CurrentSample>& samples, double t_w, double s_w,
+                              const TidalPrior& prior) {
+  std::vector<Hypothesis> out;
+  if (prior.mode != PriorMode::kEvidence) {
+    out.push_back({prior, condition(samples, t_w, s_w, prior), 1.0});
+    return out;
+  }
+  for (int a = 0; a < kScales; ++a) {
+    for (int b = 0; b < kScales; ++b) {
+      for (int c = 0; c < kNoiseScales; ++c) {
+        Hypothesis h;
+        h.widths = prior;
+        h.widths.mean_sigma_m_s = prior.mean_sigma_m_s * std::ldexp(1.0, kScaleTop - a);
+        h.widths.m2_sigma_m_s = prior.m2_sigma_m_s * std::ldexp(1.0, kScaleTop - b);
+        h.widths.estimate_sigma_m_s = prior.estimate_sigma_m_s * std::ldexp(1.0, -c);
+        h.posterior = condition(samples, t_w, s_w, h.widths);
+        // The hyperprior: the pilot's widths the likeliest, each octave away
+        // less so (log-normal, kOctaveSigma octaves), the noise's uniform.
+        const double da = kScaleTop - a, db = kScaleTop - b;
+        h.posterior.log_evidence -= 0.5 * (da * da + db * db) / (kOctaveSigma * kOctaveSigma);
+        if (h.posterior.ok) out.push_back(h);
+      }
+    }
+  }
+  if (out.empty()) return out;
+  double best = -INFINITY;
+  for (const Hypothesis& h : out) best = std::max(best, h.posterior.log_evidence);
+  double sum = 0.0;
+  for (Hypothesis& h : out) sum += (h.weight = std::exp(h.posterior.log_evidence - best));
+  for (Hypothesis& h : out) h.weight /= sum;
+  return out;
+}
+
+}  // namespace
+
+const char* to_string(PriorMode mode) {
+  switch (mode) {
+    case PriorMode::kEvidence:
+      return "evidence";
+    case PriorMode::kFixed:
+      return "fixed";
+    case PriorMode::kOff:
+      return "off";
+  }
+  return "?";
+}
+
+PriorMode parse_prior_mode(const std::string& text) {
+  if (text == "evidence") return PriorMode::kEvidence;
+  if (text == "fixed") return PriorMode::kFixed;
+  if (text == "off") return PriorMode::kOff;
+  throw std::invalid_argument("'" + text + "' is not a prior mode (evidence, fixed or off)");
+}
+
+void check_prior(const TidalPrior& prior) {
+  auto check = [](const char* name, double value, double low, double high) {
+    if (!(value >= low && value <= high)) {  // NaN fails too
+      throw std::invalid_argument(std::string(name) + " = " + std::to_string(value) + " is outside [" +
+                                  std::to_string(low) + ", " + std::to_string(high) + "] m/s");
+    }
+  };
+  check("mean_sigma_m_s", prior.mean_sigma_m_s, 0.0, 2.0);
+  check("m2_sigma_m_s", prior.m2_sigma_m_s, 0.0, 2.0);
+  check("estimate_sigma_m_s", prior.estimate_sigma_m_s, 0.001, 1.0);
+}
+
+CurrentEstimate predict_with_prior(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
+                                   const TidalPrior& prior) {
+  const std::vector<CurrentSample> samples = last_day(all, from_utc_s);
+  const double t_w = 0.5 * (from_utc_s + to_utc_s), s_w = std::max(0.0, to_utc_s - from_utc_s);
   CurrentEstimate e;
   e.method = "tidal prior";
   e.samples = static_cast<int>(samples.size());
-  double var = prior_var;
-  if (!samples.empty()) {
-    const auto n = static_cast<Eigen::Index>(samples.size());
-    Eigen::MatrixXd k(n, n);
-    Eigen::VectorXd k_w(n), y_e(n), y_n(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const CurrentSample& a = samples[static_cast<std::size_t>(i)];
-      for (Eigen::Index j = 0; j < n; ++j) {
-        const CurrentSample& b = samples[static_cast<std::size_t>(j)];
-        k(i, j) = covariance(a.utc_s, a.span_s, b.utc_s, b.span_s, prior);
-      }
-      k(i, i) += prior.estimate_sigma_m_s * prior.estimate_sigma_m_s;
-      k_w(i) = covariance(t_w, s_w, a.utc_s, a.span_s, prior);
-      y_e(i) = a.east_m_s;
-      y_n(i) = a.north_m_s;
-    }
-    // The noise on the diagonal keeps k positive definite.
-    const Eigen::LLT<Eigen::MatrixXd> llt(k);
-    if (llt.info() == Eigen::Success) {
-      const Eigen::VectorXd weights = llt.solve(k_w);
-      e.east_m_s = weights.dot(y_e);
-      e.north_m_s = weights.dot(y_n);
-      var = prior_var - weights.dot(k_w);
-    }
+  // The mixture's mean and variance (per component) over the hypotheses.
+  double m_e = 0.0, m_n = 0.0, s_e = 0.0, s_n = 0.0;
+  for (const Hypothesis& h : weigh(samples, t_w, s_w, prior)) {
+    m_e += h.weight * h.posterior.east;
+    m_n += h.weight * h.posterior.north;
+    s_e += h.weight * (h.posterior.var + h.posterior.east * h.posterior.east);
+    s_n += h.weight * (h.posterior.var + h.posterior.north * h.posterior.north);
   }
-  e.sigma_east_m_s = e.sigma_north_m_s = std::sqrt(std::max(var, 0.0));
+  e.east_m_s = m_e;
+  e.north_m_s = m_n;
+  e.sigma_east_m_s = std::sqrt(std::max(s_e - m_e * m_e, 0.0));
+  e.sigma_north_m_s = std::sqrt(std::max(s_n - m_n * m_n, 0.0));
   return e;
 }
 
 double persistence_prior_variance(const CurrentSample& last, double from_utc_s, double to_utc_s,
-                                  const TidalPrior& prior) {
+                                  const TidalPrior& prior, const std::vector<CurrentSample>& samples) {
   const double t_w = 0.5 * (from_utc_s + to_utc_s), s_w = std::max(0.0, to_utc_s - from_utc_s);
-  // Var(W - S) = Var W + Var S - 2 Cov(W, S), S carrying the estimate's own error.
-  return covariance(t_w, s_w, t_w, s_w, prior) + covariance(last.utc_s, last.span_s, last.utc_s, last.span_s, prior) +
-         prior.estimate_sigma_m_s * prior.estimate_sigma_m_s -
-         2.0 * covariance(t_w, s_w, last.utc_s, last.span_s, prior);
+  double var = 0.0;
+  for (const Hypothesis& h : weigh(last_day(samples, from_utc_s), t_w, s_w, prior)) {
+    const TidalPrior& p = h.widths;
+    // Var(W - S) = Var W + Var S - 2 Cov(W, S), S carrying the estimate's own error.
+    var += h.weight *
+           (covariance(t_w, s_w, t_w, s_w, p) + covariance(last.utc_s, last.span_s, last.utc_s, last.span_s, p) +
+            p.estimate_sigma_m_s * p.estimate_sigma_m_s - 2.0 * covariance(t_w, s_w, last.utc_s, last.span_s, p));
+  }
+  return var;
+}
+
+TidalPrior favoured_prior(const std::vector<CurrentSample>& samples, double from_utc_s, const TidalPrior& prior) {
+  TidalPrior out = prior;
+  if (prior.mode != PriorMode::kEvidence) return out;
+  out.mean_sigma_m_s = out.m2_sigma_m_s = out.estimate_sigma_m_s = 0.0;
+  for (const Hypothesis& h : weigh(last_day(samples, from_utc_s), from_utc_s, 0.0, prior)) {
+    out.mean_sigma_m_s += h.weight * h.widths.mean_sigma_m_s;
+    out.m2_sigma_m_s += h.weight * h.widths.m2_sigma_m_s;
+    out.estimate_sigma_m_s += h.weight * h.widths.estimate_sigma_m_s;
+  }
+  return out;
 }
 
 }  // namespace glider::forecast

@@ -34,10 +34,18 @@ struct CurrentEstimate {
   int samples = 0;
 };
 
-// The mean current over [from_utc_s, to_utc_s].
+struct TidalPrior;
+
+// The mean current over [from_utc_s, to_utc_s]; `prior` is the tidal prior
+// the fourth rule and the first estimates use (tidal_prior.hpp; its mode off:
+// persistence instead).
+CurrentEstimate estimate_current(const std::vector<CurrentSample>& samples, double from_utc_s, double to_utc_s,
+                                 const TidalPrior& prior);
 CurrentEstimate estimate_current(const std::vector<CurrentSample>& samples, double from_utc_s, double to_utc_s);
 
 // The last sample (zero with a wide sigma when there is none).
 CurrentEstimate last_current(const std::vector<CurrentSample>& samples);
+// The same with `floor` (m/s) the least sigma when there are two or more.
+CurrentEstimate last_current(const std::vector<CurrentSample>& samples, double floor);
 
 }  // namespace glider::forecast

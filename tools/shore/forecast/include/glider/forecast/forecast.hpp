@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "glider/forecast/current_estimate.hpp"
+#include "glider/forecast/forecast_settings.hpp"
 #include "glider/forecast/mission_now.hpp"
 #include "glider/model/vehicle.hpp"
 
@@ -34,7 +35,8 @@ struct ForecastOptions {
   int waypoint = -1;  // --waypoint: the active waypoint now (-1: replayed from the events since the plan began)
   std::vector<std::filesystem::path> rehearse;  // files applied after the queue (rehearsal)
   bool include_queue = true;
-  bool write = true;  // write forecast/forecast.json
+  bool write = true;     // write forecast/forecast.json
+  PriorOverrides prior;  // the command line's; GLIDER/forecast.toml's otherwise (forecast_settings.hpp)
 };
 
 struct RunOutcome {
@@ -45,6 +47,7 @@ struct RunOutcome {
   double east_m = 0.0, north_m = 0.0;        // from the last fix
   std::int32_t waypoints_reached = 0;        // counted by the firmware in this run
   double dr_east_m = 0.0, dr_north_m = 0.0;  // the firmware's dead-reckoned position on surfacing
+  double average_speed_m_s = 0.0;            // the navigator's mean glide speed then (m_avg_speed)
 };
 
 struct Ellipse {
@@ -70,7 +73,13 @@ struct Forecast {
   double baseline_lat_deg = 0.0, baseline_lon_deg = 0.0, baseline_time_utc_s = 0.0;
   double baseline_east_m = 0.0, baseline_north_m = 0.0;
   CurrentEstimate current, baseline_current;
+  TidalPrior prior;             // the pilot's (or the default) prior the current used
+  TidalPrior favoured;          // the widths the estimates favour (evidence mode)
   double dr_speed_ratio = 1.0;  // true over dead-reckoned speed through the water (the model's calibration)
+  // The glider's own dead-reckoned speed through the water over its recent
+  // dives against the model's on the coming one (1: not measured; said, not applied).
+  double glider_speed_ratio = 1.0;
+  int speed_dives = 0;
   // The model's own miss on the glider's recent dives, flown again with the
   // current each one measured (the waypoint replay's flights): RMS east and
   // north and their correlation, over `model_miss_dives` dives of the last
@@ -107,6 +116,11 @@ struct FlightSetup {
   // start to its end): a Slocum's when_secs counts from the arrival at the
   // surface and from the call, not from the dive (FlightSoftware::seed_clocks).
   double surface_time_s = 0.0;
+  // The glider's mean glide speed at the dive (its m_avg_speed, else the
+  // model's), carried over as if glided for `average_weight_s`: the runs
+  // steer Slocum's law at that speed from the first moment (0: none).
+  double average_speed_m_s = 0.0;
+  double average_weight_s = 0.0;
 };
 std::vector<RunOutcome> fly_runs(const FlightSetup& setup, const ForecastOptions& options, int n, bool vary);
 

@@ -6,17 +6,24 @@
 // per-segment estimates (Gaussian-process regression; each estimate and the
 // prediction are means over their segments). With one or two estimates no
 // hindcast can choose a rule or measure its error; this gives both the
-// prediction and its uncertainty from a stated prior (docs/forecast.md,
-// "The current"):
+// prediction and its uncertainty (docs/forecast.md, "The current").
+//
+// The prior's widths are the pilot's (a `glider-forecast` option, or the
+// glider folder's forecast.toml), by default a shelf sea's:
 //   mean current   N(0, 0.10 m/s) per component,
 //   M2 tide        cos and sin coefficients N(0, 0.25 m/s) per component
-//                  (mean amplitude 0.31 m/s: a shelf sea's tide),
+//                  (mean amplitude 0.31 m/s),
 //   each estimate  off its segment's true mean by N(0, 0.02 m/s) (the DR's
 //                  speed error and the fix's noise over a segment).
-// Over half an hour the tide moves little and the prediction is persistence;
-// a quarter period (3.1 h) on, the last estimate says almost nothing about
-// the water and the prediction falls back towards the mean, its sigma
-// growing to the prior's.
+// Mode "evidence" (the default) lets the estimates choose the widths: the
+// mean's and the tide's each scaled by 2, 1, 1/2 ... 1/32 (every pair a
+// hypothesis, equally likely beforehand: steady water, a pure tide, both, weak
+// or strong), each weighted by its marginal likelihood of the estimates so
+// far (Bayesian model averaging; the prediction is the mixture's mean and
+// variance). Weak water then stops paying for a shelf sea's tide after one
+// estimate, and a strong tide is not held back by the pilot's guess. Mode
+// "fixed" uses the widths as given; "off" uses no prior (persistence).
+#include <string>
 #include <vector>
 
 #include "glider/forecast/current_estimate.hpp"
@@ -26,22 +33,39 @@ namespace glider::forecast {
 // The principal lunar semidiurnal tide's period (12.42 h).
 inline constexpr double kM2PeriodS = 44714.16;
 
+enum class PriorMode { kEvidence, kFixed, kOff };
+
 struct TidalPrior {
   double mean_sigma_m_s = 0.10;
   double m2_sigma_m_s = 0.25;
   double estimate_sigma_m_s = 0.02;
+  PriorMode mode = PriorMode::kEvidence;
 };
+
+// "evidence" | "fixed" | "off"; parse_prior_mode throws std::invalid_argument for another text.
+const char* to_string(PriorMode mode);
+PriorMode parse_prior_mode(const std::string& text);
+
+// Allowed ranges (m/s): the widths 0-2 (0: that part absent), the estimate's
+// noise 0.001-1 (it keeps the regression well posed). Throws
+// std::invalid_argument naming the field, the value and the range (NaN too).
+void check_prior(const TidalPrior& prior);
 
 // The posterior mean current over [from_utc_s, to_utc_s] and its 1-sigma,
 // from the estimates of the last day before from_utc_s (method "tidal
-// prior"); with none, the prior itself.
+// prior"); with none, the prior itself (the mixture's, in evidence mode).
 CurrentEstimate predict_with_prior(const std::vector<CurrentSample>& samples, double from_utc_s, double to_utc_s,
                                    const TidalPrior& prior = {});
 
 // The prior's variance (per component) of persistence's error: the mean over
 // [from_utc_s, to_utc_s] less the estimate `last` (what carrying `last`
-// forward costs in this water before any hindcast has measured it).
+// forward costs in this water before any hindcast has measured it). In
+// evidence mode the hypotheses are weighted by `samples` (the last day's).
 double persistence_prior_variance(const CurrentSample& last, double from_utc_s, double to_utc_s,
-                                  const TidalPrior& prior = {});
+                                  const TidalPrior& prior = {}, const std::vector<CurrentSample>& samples = {});
+
+// The widths the estimates favour (evidence mode: the posterior mean of each
+// width over the hypotheses; else the prior's own), for the notes.
+TidalPrior favoured_prior(const std::vector<CurrentSample>& samples, double from_utc_s, const TidalPrior& prior = {});
 
 }  // namespace glider::forecast
