@@ -75,3 +75,33 @@ TEST(HealthRules, UtcTextIsTheBaseLibrarysAndRefusesANonFiniteTime) {
   STRCMP_EQUAL("2019-08-21T13:54:06Z", health::utc_iso(1566395646.7).c_str());
   STRCMP_EQUAL("", health::utc_iso(std::nan("")).c_str());
 }
+
+TEST(HealthRules, ALagIsNotKnownFinerThanHalfItsSampleSpacing) {
+  // health.PumpLag's segments on 4 s .sbd: the core's interval +-0.12 s at
+  // 28.7 s for a 30 s lag; at the SIL's lag-free pump [0, 0.006].
+  const health::EffectValue after = health::lag_at_sampling_resolution({28.7, 28.58, 28.82, {}}, 4.0);
+  DOUBLES_EQUAL(28.7, after.value, 1e-12);
+  DOUBLES_EQUAL(26.7, after.low, 1e-12);
+  DOUBLES_EQUAL(30.7, after.high, 1e-12);
+  const health::EffectValue at_zero = health::lag_at_sampling_resolution({1e-7, 0.0, 0.006, {}}, 4.0);
+  DOUBLES_EQUAL(0.0, at_zero.low, 1e-12);  // a lag has no sign
+  DOUBLES_EQUAL(2.0 + 1e-7, at_zero.high, 1e-12);
+  // Wider already: kept. Not judged, or no spacing: unchanged.
+  const health::EffectValue wide = health::lag_at_sampling_resolution({10.0, 2.0, 18.0, {}}, 4.0);
+  DOUBLES_EQUAL(2.0, wide.low, 1e-12);
+  DOUBLES_EQUAL(18.0, wide.high, 1e-12);
+  CHECK_FALSE(health::lag_at_sampling_resolution({std::nan(""), std::nan(""), std::nan(""), "why"}, 4.0).judged());
+  DOUBLES_EQUAL(28.58, health::lag_at_sampling_resolution({28.7, 28.58, 28.82, {}}, std::nan("")).low, 1e-12);
+}
+
+TEST(HealthRules, DepthSampleSpacingIsTheMedianGapOfStoredDepths) {
+  // Depth stored every 4 s with one 30 s gap and rows in between without it.
+  std::string csv = "# source: health spacing test\nm_present_time,m_depth\n";
+  double t = 0.0;
+  for (int i = 0; i < 20; ++i, t += 4.0)
+    csv += std::to_string(t) + "," + std::to_string(i) + "\n" + std::to_string(t + 1.0) + ",\n";
+  csv += std::to_string(t + 26.0) + ",20\n";
+  flightlog::ReadOptions only_depth;
+  only_depth.required.clear();
+  DOUBLES_EQUAL(4.0, health::depth_sample_spacing_s(flightlog::parse_flight_log(csv, "depth.csv", only_depth)), 1e-9);
+}
