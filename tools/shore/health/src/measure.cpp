@@ -23,8 +23,8 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 // segments' drag moved by a median 0.017 of its own 95 % half-width (max
 // 0.79, on the one segment where 1 s itself is the outlier: 1 s against
 // 0.5 s moves it by a median 0.61) and every other effect by less; 4 s moved
-// the drag by 3 half-widths (docs/health.md, "Cost"). Data sampled 2 s
-// apart or closer are flown as before.
+// the drag by 3 half-widths (docs/health.md, "Cost"). Data sampled 1 s
+// apart or closer are flown as before (ceil(gap / step) steps a gap).
 constexpr double kVerticalMaxStep_s = 2.0;
 
 EffectValue not_judged(std::string why) {
