@@ -303,12 +303,22 @@ int main(int argc, char** argv) {
         clean_days > 0 ? 100.0 * clean_alarms / clean_days : 0.0, clean_alarms, clean_days,
         fault_days > 0 ? 100.0 * fault_alarms / fault_days : 0.0, fault_alarms, fault_days);
 
-    // The real deployments: every binary deployment in tests/data/real/dbd.
-    std::printf("\nreal deployments (tests/data/real/dbd, full-resolution .dbd/.ebd):\n");
-    for (const char* deployment : {"comet-2016", "comet-2019"}) {
+    // The real deployments: every one in tests/data/real given as its
+    // segments (the binary folders, the per-segment CSV conversions; the
+    // merged comet-2016 CSV and gliderflight's six-column set are not
+    // segments: docs/health.md).
+    std::printf("\nreal deployments (tests/data/real):\n");
+    const std::string real = std::string(GLIDER_SOURCE_DIR) + "/tests/data/real/";
+    const std::vector<std::pair<std::string, std::vector<std::string>>> deployments{
+        {"comet-2016 (.dbd/.ebd)", {real + "dbd/comet-2016"}},
+        {"comet-2019 (.dbd/.ebd)", {real + "dbd/comet-2019"}},
+        {"comet-2019 (CSV)", {real + "comet-2019-222-02-154.csv", real + "comet-2019-222-02-156.csv"}},
+        {"amadeus-2014 (CSV)", {real + "gpl-3.0-or-later/amadeus-2014-204-05-000.csv"}}};
+    for (const auto& [deployment, inputs] : deployments) {
       health::HealthOptions o;
-      o.inputs = {std::string(GLIDER_SOURCE_DIR) + "/tests/data/real/dbd/" + deployment};
-      const health::NominalChoice nominal = health::nominal_for({}, {}, "comet", cli::boards_dir());
+      o.inputs = inputs;
+      const std::string glider = deployment.substr(0, deployment.find('-'));
+      const health::NominalChoice nominal = health::nominal_for({}, {}, glider, cli::boards_dir());
       o.vehicle = nominal.vehicle;
       o.vehicle_source = nominal.source;
       const health::HealthRun r = health::update_health(o);
@@ -316,7 +326,7 @@ int main(int argc, char** argv) {
       for (const auto& s : r.segments) days += (s.end_s - s.start_s) / 86400.0;
       std::size_t judged = 0;
       for (const auto& s : r.segments) judged += s.judged ? 1 : 0;
-      std::printf("  %s: %zu segments (%zu judged), %.3f glider-days: state %s, %zu alert(s)\n", deployment,
+      std::printf("  %s: %zu segments (%zu judged), %.3f glider-days: state %s, %zu alert(s)\n", deployment.c_str(),
                   r.segments.size(), judged, days, r.assessment.state.c_str(), r.assessment.alerts.size());
       for (const auto& a : r.assessment.alerts) std::printf("      %s\n", a.message.c_str());
     }

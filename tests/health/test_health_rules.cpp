@@ -3,9 +3,11 @@
 // interval (serially correlated strokes), the UTC text. Synthetic, fast.
 #include <CppUTest/TestHarness.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/health/assess.hpp"
@@ -74,4 +76,69 @@ TEST(HealthRules, UtcTextIsTheBaseLibrarysAndRefusesANonFiniteTime) {
   // gmtime path wrote -219246529-01-00T08:29:52Z).
   STRCMP_EQUAL("2019-08-21T13:54:06Z", health::utc_iso(1566395646.7).c_str());
   STRCMP_EQUAL("", health::utc_iso(std::nan("")).c_str());
+}
+
+TEST(HealthRules, AHingeRateIsKnownNoBetterThanItsSegmentsOwnIntervals) {
+  // Fouling on 8-hourly segments: 12 at 1.0, then +3 % a day for 12 (4
+  // days), each read with +-0.0001 of scatter but a +-0.004 interval of its
+  // own (the plane's error, shared: the plane reads an increment at 0.97 of
+  // it). The rate's interval is at least the two ends' own half-widths over
+  // the line's days, hypot(0.004, 0.004) / 4 d = 0.0014 a day (4.7 % of the
+  // rate), where the scatter alone gave +-0.0002.
+  std::vector<health::SegmentMeasurement> segments;
+  std::mt19937 random(11u);
+  std::normal_distribution<double> g(0.0, 1e-4);
+  for (int k = 0; k < 24; ++k) {
+    health::SegmentMeasurement m;
+    m.name = "seg" + std::to_string(k);
+    m.start_s = k * 28800.0;
+    m.end_s = m.start_s + 10800.0;
+    m.time_s = 0.5 * (m.start_s + m.end_s);
+    m.judged = true;
+    const double day = m.time_s / 86400.0, onset = 12 * 28800.0 / 86400.0;
+    const double v = 1.0 + 0.03 * std::max(0.0, day - onset) + g(random);
+    for (health::EffectValue& e : m.effects) e = {std::nan(""), std::nan(""), std::nan(""), "not in this test"};
+    m.effects[static_cast<std::size_t>(health::HealthEffect::kDragChange)] = {v, v - 0.004, v + 0.004, {}};
+    segments.push_back(m);
+  }
+  const health::Assessment a = health::assess(segments);
+  const health::Alert* line = nullptr;
+  for (const health::Alert& alert : a.alerts) {
+    if (alert.effect == health::HealthEffect::kDragChange && alert.kind == "line") line = &alert;
+  }
+  CHECK(line != nullptr);
+  DOUBLES_EQUAL(0.03, line->size, 0.002);
+  const double span_days = (segments.back().time_s - segments[11].time_s) / 86400.0;
+  const double floor = std::hypot(0.004, 0.004) / span_days;
+  CHECK_TEXT(0.5 * (line->high - line->low) >= 0.99 * floor, line->message.c_str());
+}
+
+TEST(HealthRules, ALagIsNotKnownFinerThanHalfItsSampleSpacing) {
+  // health.PumpLag's segments on 4 s .sbd: the core's interval +-0.12 s at
+  // 28.7 s for a 30 s lag; at the SIL's lag-free pump [0, 0.006].
+  const health::EffectValue after = health::lag_at_sampling_resolution({28.7, 28.58, 28.82, {}}, 4.0);
+  DOUBLES_EQUAL(28.7, after.value, 1e-12);
+  DOUBLES_EQUAL(26.7, after.low, 1e-12);
+  DOUBLES_EQUAL(30.7, after.high, 1e-12);
+  const health::EffectValue at_zero = health::lag_at_sampling_resolution({1e-7, 0.0, 0.006, {}}, 4.0);
+  DOUBLES_EQUAL(0.0, at_zero.low, 1e-12);  // a lag has no sign
+  DOUBLES_EQUAL(2.0 + 1e-7, at_zero.high, 1e-12);
+  // Wider already: kept. Not judged, or no spacing: unchanged.
+  const health::EffectValue wide = health::lag_at_sampling_resolution({10.0, 2.0, 18.0, {}}, 4.0);
+  DOUBLES_EQUAL(2.0, wide.low, 1e-12);
+  DOUBLES_EQUAL(18.0, wide.high, 1e-12);
+  CHECK_FALSE(health::lag_at_sampling_resolution({std::nan(""), std::nan(""), std::nan(""), "why"}, 4.0).judged());
+  DOUBLES_EQUAL(28.58, health::lag_at_sampling_resolution({28.7, 28.58, 28.82, {}}, std::nan("")).low, 1e-12);
+}
+
+TEST(HealthRules, DepthSampleSpacingIsTheMedianGapOfStoredDepths) {
+  // Depth stored every 4 s with one 30 s gap and rows in between without it.
+  std::string csv = "# source: health spacing test\nm_present_time,m_depth\n";
+  double t = 0.0;
+  for (int i = 0; i < 20; ++i, t += 4.0)
+    csv += std::to_string(t) + "," + std::to_string(i) + "\n" + std::to_string(t + 1.0) + ",\n";
+  csv += std::to_string(t + 26.0) + ",20\n";
+  flightlog::ReadOptions only_depth;
+  only_depth.required.clear();
+  DOUBLES_EQUAL(4.0, health::depth_sample_spacing_s(flightlog::parse_flight_log(csv, "depth.csv", only_depth)), 1e-9);
 }

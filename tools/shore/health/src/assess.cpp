@@ -130,6 +130,24 @@ void step_interval(const EffectAssessment& a, const std::vector<SegmentMeasureme
   high = ratio + relative_half;
 }
 
+// A hinge's slope 95 % half-width (per day): the wider of the segments'
+// scatter about the hinge (the trend's) and their own intervals, as a step's
+// (an error every segment shares does not average out): the line's two ends,
+// the level at the hinge and the last value, each known no better than the
+// median per-segment half-width on its side, over the days between them.
+// The vertical plane reads a drag increment at 0.95-0.99 of the truth, where
+// the scatter alone gave the rate +-1 % (docs/health.md, Benchmark).
+double hinge_slope_half_width(const EffectAssessment& a, const std::vector<SegmentMeasurement>& segments,
+                              double last_time_s) {
+  const diagnose::Trend& tr = a.trend;
+  const double scatter = 0.5 * (tr.hinge_slope_per_day.high - tr.hinge_slope_per_day.low);
+  const double span_days = (last_time_s - tr.hinge_s) / kDay;
+  if (!(span_days > 0.0)) return scatter;
+  const double hb = segment_half_width(a, segments, tr.hinge_s, true);
+  const double ha = segment_half_width(a, segments, tr.hinge_s, false);
+  return std::max(scatter, std::hypot(hb, ha) / span_days);
+}
+
 std::string step_message(const HealthEffectInfo& e, double change, double low, double high, double before,
                          bool relative) {
   std::string text = std::string(e.id) + " changed by " + number(change) + " " + e.unit + " [" + number(low) + ", " +
@@ -227,7 +245,7 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
       alert.effect = a.effect;
       alert.kind = "line";
       alert.size = hinge_rate;
-      const double half = ratio_half_width(hinge_rate, 0.5 * (tr.hinge_slope_per_day.high - tr.hinge_slope_per_day.low),
+      const double half = ratio_half_width(hinge_rate, hinge_slope_half_width(a, segments, t.back()),
                                            0.5 * (tr.hinge_level.high - tr.hinge_level.low), hinge_before);
       alert.low = hinge_rate - half;
       alert.high = hinge_rate + half;

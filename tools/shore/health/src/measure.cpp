@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/health/measure.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -15,6 +16,16 @@ namespace glider::health {
 namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
+
+// The dynamic model's RK4 step, at most (the core's default is 1 s). The
+// update's cost is the vertical fit's flights, and on the decimated .sbd
+// (4 s apart) 2 s steps halve the RK4 work: on 12 SIL surfacings the
+// segments' drag moved by a median 0.017 of its own 95 % half-width (max
+// 0.79, on the one segment where 1 s itself is the outlier: 1 s against
+// 0.5 s moves it by a median 0.61) and every other effect by less; 4 s moved
+// the drag by 3 half-widths (docs/health.md, "Cost"). Data sampled 1 s
+// apart or closer are flown as before (ceil(gap / step) steps a gap).
+constexpr double kVerticalMaxStep_s = 2.0;
 
 EffectValue not_judged(std::string why) {
   EffectValue v;
@@ -33,6 +44,7 @@ model::VehicleParams measure_vertical(const model::VehicleParams& nominal, const
   const diagnose::Observations obs = diagnose::prepare_observations(log);
   diagnose::DiagnoseOptions options;
   options.fit_only = {diagnose::Effect::kBuoyancyOffset, diagnose::Effect::kDragChange};
+  options.max_step_s = kVerticalMaxStep_s;
   const bool dynamic = !obs.track.scored.empty();
   if (dynamic) options.fit_only.push_back(diagnose::Effect::kPumpLag);
   const diagnose::Diagnosis d = diagnose::diagnose(nominal, obs, options);
@@ -49,7 +61,10 @@ model::VehicleParams measure_vertical(const model::VehicleParams& nominal, const
     }
     at(m.effects, e) = {f.value, f.ci95_low, f.ci95_high, {}};
   }
-  if (!dynamic) {
+  if (dynamic) {
+    EffectValue& lag = at(m.effects, HealthEffect::kPumpLag);
+    lag = lag_at_sampling_resolution(lag, depth_sample_spacing_s(log));
+  } else {
     at(m.effects, HealthEffect::kPumpLag) = not_judged(
         "needs the dynamic model (turns sampled every few seconds at least); these data are too sparse in "
         "the inflections: steady glides only");
@@ -131,6 +146,30 @@ EffectValue pump_rate(const flightlog::FlightLog& raw) {
       run >= 2 ? fitting_core::IntervalRule::kGlides : fitting_core::IntervalRule::kLag1;
   const fitting_core::Estimate i = fitting_core::mean_with_rule(rates, run_of, rule);
   return {i.value, i.low, i.high, {}};
+}
+
+double depth_sample_spacing_s(const flightlog::FlightLog& log) {
+  const flightlog::Column* depth = log.find("m_depth");
+  if (depth == nullptr) return std::nan("");
+  const flightlog::Column& time = log.time();
+  std::vector<double> gaps;
+  double last = std::nan("");
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    if (!std::isfinite((*depth)[i]) || !std::isfinite(time[i])) continue;
+    if (std::isfinite(last) && time[i] > last) gaps.push_back(time[i] - last);
+    last = time[i];
+  }
+  if (gaps.empty()) return std::nan("");
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+  return gaps[gaps.size() / 2];
+}
+
+EffectValue lag_at_sampling_resolution(EffectValue lag, double spacing_s) {
+  if (!lag.judged() || !(spacing_s > 0.0) || !std::isfinite(lag.low) || !std::isfinite(lag.high)) return lag;
+  const double half = 0.5 * spacing_s;
+  lag.low = std::max(0.0, std::min(lag.low, lag.value - half));
+  lag.high = std::max(lag.high, lag.value + half);
+  return lag;
 }
 
 EffectValue battery_per_km(const flightlog::FlightLog& log) {

@@ -40,6 +40,17 @@ SegmentMeasurement measure_segment(const model::VehicleParams& nominal, const Lo
 // interval; NaN and why when there are fewer than 3 such intervals.
 EffectValue pump_rate(const flightlog::FlightLog& raw);
 
+// The median spacing (s) of the stored m_depth values: the resolution in
+// time of what the vertical plane sees (NaN without two of them).
+double depth_sample_spacing_s(const flightlog::FlightLog& log);
+
+// A lag fitted from samples `spacing_s` apart is not known finer than half
+// that spacing: its 95 % interval widened to at least +-spacing/2 about the
+// value (never below 0, a lag has no sign). The core's Jacobian interval
+// claims less: +-0.12 s at 28.7 s for a 30 s lag on 4 s .sbd (health.PumpLag's
+// segments, missing the truth by 10 half-widths), [0, 0.006] at 0.
+EffectValue lag_at_sampling_resolution(EffectValue lag, double spacing_s);
+
 // Charge per km through the water: the coulomb counter's rise over the
 // distance flown in the glides (depth change / tan |pitch|).
 EffectValue battery_per_km(const flightlog::FlightLog& log);
