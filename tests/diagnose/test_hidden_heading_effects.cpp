@@ -5,6 +5,8 @@
 // and gain on the held-out glides. Magnitudes come from a seeded generator.
 #include <CppUTest/TestHarness.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -273,7 +275,10 @@ TEST(DiagnoseHiddenHeadingEffects, RandomYawDoesNotWeakenTheFin) {
   const diagnose::HeadingFinding* b = finding(biased, HeadingEffect::kFinEffectiveness);
   const diagnose::HeadingFinding* f = finding(o.diagnosis, HeadingEffect::kFinEffectiveness);
   const auto& refuted = o.diagnosis.yaw.dropped;
-  const diagnose::HeadingFinding* r = refuted.empty() ? nullptr : &refuted.front();
+  const auto fin_refuted = std::find_if(refuted.begin(), refuted.end(), [](const diagnose::HeadingFinding& x) {
+    return x.effect == HeadingEffect::kFinEffectiveness;
+  });
+  const diagnose::HeadingFinding* r = fin_refuted == refuted.end() ? nullptr : &*fin_refuted;
   char text[520];
   std::snprintf(text, sizeof text,
                 "random yaw %.4f rad/s over 30 s, fin x1: rate error alone %s %.3f [%.3f, %.3f]; diagnosis %s %.3f "

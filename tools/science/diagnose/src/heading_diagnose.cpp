@@ -2,6 +2,7 @@
 #include "glider/diagnose/heading_diagnose.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -143,6 +144,8 @@ ClosedLoopCheck check_closed_loop(const HeadingTrack& track, const model::Vehicl
 // noise and fin, stopped when the fin moves less than this.
 constexpr int kNoiseRounds = 4;
 constexpr double kFinSettled = 0.01;
+// Rounds of the fin on the innovations and the selection on the rate error.
+constexpr int kAlternations = 3;
 
 // Glide samples once the pitch-over is done (kShearSettleS), split as the
 // links' samples: the innovations' own (their random-yaw state takes the
@@ -164,91 +167,140 @@ LinkSamples settled_samples(const HeadingTrack& track, std::size_t max_samples) 
 }
 
 // The fin's authority measured on the heading's one-step innovations with
-// the compass noise and the random yaw modelled (heading_innovations): the
-// rate error of the logged fin reads it biased in a closed loop (the fin
-// answers the random yaw and the compass noise; docs/science.md "The fin's
-// authority in a closed loop"), the innovations do not. The rate error chose
-// it (its held-out margins are calibrated on that error); it is refitted
-// here alone (the link's other effects at their nominal values: the rate
-// error fits them jointly with the biased fin - a SIL log with a random yaw
-// and the vehicle file's fin read fin 0.61 with roll offset +0.07 rad - and
-// held there they bias the fin's measurement too, 0.82 [0.75, 0.90]); where
-// that interval holds 1 it is no finding (the bias had made it one) and the
-// others are refitted on the rate error without it. The roll offset and the
-// yaw's dynamics stay the rate error's: a steady yaw the loop holds against
-// is what shows the roll offset, and the random yaw's state would take it.
-// The held-out RMS and gains stay the rate error's.
-void measure_fin_on_innovations(const HeadingTrack& track, const model::VehicleParams& nominal,
-                                const HeadingValues& base, const HeadingResiduals& rate_error,
-                                const LinkSamples& rate_samples, HeadingDiagnosis& d,
-                                const HeadingDiagnoseOptions& options) {
-  const auto fin = std::find_if(d.yaw.findings.begin(), d.yaw.findings.end(),
-                                [](const HeadingFinding& f) { return f.effect == HeadingEffect::kFinEffectiveness; });
-  if (fin == d.yaw.findings.end()) return;
+// the compass noise and the random yaw modelled (heading_innovations), then
+// the rest of the vehicle link selected again on the rate error with that
+// fin held. The rate error of the logged fin reads the fin biased in a
+// closed loop (the fin answers the random yaw and the compass noise;
+// docs/science.md "The fin's authority in a closed loop"); the innovations
+// do not. And fin and roll offset are one column to the rate error where the
+// loop holds the fin against a steady yaw (a rolled glider: the mean fin
+// cancels the roll's yaw, so a stronger fin, read weaker by the bias, shows
+// as a roll offset - the independent truth's fin x1.39 and x1.91 were named
+// roll offsets of 0.056 and 0.098 rad, and no fin increase was ever named;
+// docs/science.md "The fin measured whenever the rate error names the fin
+// or a roll offset"). So when it names either, the fin is refitted here
+// alone (the link's other effects at their nominal values: the rate error
+// fits them jointly with the biased fin - a SIL log with a random yaw and
+// the vehicle file's fin read fin 0.61 with roll offset +0.07 rad - and held
+// there they bias the fin's measurement too, 0.82 [0.75, 0.90]); it is a
+// finding where its interval excludes 1 (with the innovations' value and
+// interval). The roll offset and the yaw's dynamics are then the rate
+// error's selection with that fin held (a steady yaw the loop holds against
+// is what shows the roll offset; the random yaw's state in the innovations
+// takes part of it: the truth's roll offsets measured there read 0.048 for
+// 0.084 and missed -0.073, where the rate error read 0.079 and -0.078).
+// What the rate error named and this does not is listed as dropped. The
+// held-out RMS and gains are the rate error's against the nominal.
+void measure_fin_then_reselect(const HeadingTrack& track, const model::VehicleParams& nominal,
+                               const HeadingValues& base, const HeadingResiduals& rate_error,
+                               const LinkSamples& rate_samples, HeadingDiagnosis& d,
+                               const HeadingDiagnoseOptions& options) {
+  // Either named: the fin is measured.
+  if (std::none_of(d.yaw.findings.begin(), d.yaw.findings.end(), [](const HeadingFinding& f) {
+        return f.effect == HeadingEffect::kFinEffectiveness || f.effect == HeadingEffect::kRollOffset;
+      })) {
+    return;
+  }
   // The noise and the fin are the likeliest together, both on the same
-  // settled samples: the noise fitted with the fin at its last measurement,
-  // then the fin on that noise, until the fin settles (a noise fitted at the
-  // nominal fin takes the fin's misfit as random yaw: a truth log's halved
-  // fin read 0.75 [0.49, 1.00] that way, its random yaw 3.5 times the
-  // truth's; one fitted on every sample takes the first 20 s of each glide's
-  // misfit as random yaw: a SIL log's fin x1.65 read 1.88 [1.35, 2.40]).
+  // settled samples: the noise fitted with the fin at its last
+  // measurement, then the fin on that noise, until it settles (a noise
+  // fitted at the nominal fin takes the fin's misfit as random yaw: a truth
+  // log's halved fin read 0.75 [0.49, 1.00] that way, its random yaw 3.5
+  // times the truth's; one fitted on every sample takes the first 20 s of
+  // each glide's misfit as random yaw: a SIL log's fin x1.65 read 1.88
+  // [1.35, 2.40]).
   const LinkSamples samples = settled_samples(track, options.max_fit_samples);
   YawNoise noise;
   noise.heading_rad = d.heading_noise_rad;
-  HeadingValues at_fin = base;
-  LinkFit measured;
-  for (int round = 0; round < kNoiseRounds; ++round) {
-    noise = fit_yaw_noise(track, nominal, at_fin, noise, samples.all);
-    const HeadingResiduals innovations = [&](const HeadingValues& v, std::span<const std::size_t> w,
-                                             std::vector<double>& o) {
-      heading_innovations(track, nominal, v, noise, w, o);
-    };
-    HeadingSelectOptions select;
-    select.intervals = options.intervals;
-    select.fit_only = {HeadingEffect::kFinEffectiveness};
-    select.select = false;
-    measured = select_heading_effects(HeadingLink::kVehicle, d.yaw.candidates, base, innovations, samples, select);
-    if (measured.findings.empty()) return;
-    const double before = at(at_fin, HeadingEffect::kFinEffectiveness);
-    at(at_fin, HeadingEffect::kFinEffectiveness) = measured.findings.front().value;
-    if (std::abs(measured.findings.front().value - before) < kFinSettled) break;
-  }
-  d.yaw_noise = noise;
-  if (measured.findings.empty()) return;
-  const HeadingFinding& m = measured.findings.front();
-  if (!(m.ci95_low <= m.nominal && m.nominal <= m.ci95_high)) {
-    fin->value = m.value;
-    fin->ci95_low = m.ci95_low;
-    fin->ci95_high = m.ci95_high;
-    at(d.yaw.values, HeadingEffect::kFinEffectiveness) = m.value;
-    return;
-  }
-  HeadingFinding refuted = *fin;
-  refuted.value = m.value;
-  refuted.ci95_low = m.ci95_low;
-  refuted.ci95_high = m.ci95_high;
-  std::vector<HeadingEffect> rest;
-  for (const HeadingFinding& f : d.yaw.findings) {
-    if (f.effect != HeadingEffect::kFinEffectiveness) rest.push_back(f.effect);
-  }
-  const std::vector<HeadingFinding> chosen = d.yaw.findings;
-  HeadingSelectOptions refit;
-  refit.margins.absolute = min_absolute_improvement(HeadingLink::kVehicle);
-  refit.intervals = options.intervals;
-  refit.fit_only = rest;  // none: the baseline alone
-  refit.select = false;
-  LinkFit again =
-      select_heading_effects(HeadingLink::kVehicle, d.yaw.candidates, base, rate_error, rate_samples, refit);
-  again.identifiability = d.yaw.identifiability;
-  again.dropped = {refuted};
-  // The ranking and gains of the rate error's selection, for the findings kept.
-  for (HeadingFinding& f : again.findings) {
-    for (const HeadingFinding& c : chosen) {
-      if (c.effect == f.effect) {
-        f.heldout_rms = c.heldout_rms;
-        f.gain = c.gain;
-      }
+  auto measure = [&](const std::vector<HeadingEffect>& effects, const HeadingValues& start) {
+    HeadingValues at_measured = start;
+    LinkFit fit;
+    for (int round = 0; round < kNoiseRounds; ++round) {
+      noise = fit_yaw_noise(track, nominal, at_measured, noise, samples.all);
+      const HeadingResiduals innovations = [&](const HeadingValues& v, std::span<const std::size_t> w,
+                                               std::vector<double>& o) {
+        heading_innovations(track, nominal, v, noise, w, o);
+      };
+      HeadingSelectOptions select;
+      select.intervals = options.intervals;
+      select.fit_only = effects;
+      select.select = false;
+      fit = select_heading_effects(HeadingLink::kVehicle, d.yaw.candidates, start, innovations, samples, select);
+      if (fit.findings.empty()) break;
+      const double before = at(at_measured, HeadingEffect::kFinEffectiveness);
+      for (const HeadingFinding& f : fit.findings) at(at_measured, f.effect) = f.value;
+      if (std::abs(at(at_measured, HeadingEffect::kFinEffectiveness) - before) < kFinSettled) break;
     }
+    return fit.findings;
+  };
+  // The fin alone (the link's other effects at their nominal values, the
+  // roll offset among them: fitted beside it on the innovations, a SIL log's
+  // random yaw read as a roll offset of 0.11 rad with the fin 1.16 [1.03,
+  // 1.29] for 1).
+  const LinkFit chosen = d.yaw;
+  std::vector<HeadingEffect> others;
+  for (HeadingEffect e : d.yaw.candidates) {
+    if (e != HeadingEffect::kFinEffectiveness) others.push_back(e);
+  }
+  HeadingSelectOptions reselect;
+  reselect.margins.absolute = min_absolute_improvement(HeadingLink::kVehicle);
+  reselect.intervals = options.intervals;
+  // Alternated: the fin with the roll offset of the last selection held,
+  // then the selection with that fin held, until neither changes.
+  double roll = 0.0;
+  std::vector<HeadingFinding> measured, left_out;
+  LinkFit again;
+  bool fin_confirmed = false, reselected = false;
+  for (int round = 0; round < kAlternations; ++round) {
+    HeadingValues start = base;
+    at(start, HeadingEffect::kRollOffset) = roll;
+    std::vector<HeadingFinding> m = measure({HeadingEffect::kFinEffectiveness}, start);
+    if (m.empty()) break;
+    const bool confirmed = !(m.front().ci95_low <= 1.0 && 1.0 <= m.front().ci95_high);
+    if (round > 0 && confirmed == fin_confirmed &&
+        (!confirmed || std::abs(m.front().value - measured.front().value) < kFinSettled))
+      break;
+    fin_confirmed = confirmed;
+    measured = m;
+    left_out = confirmed ? std::vector<HeadingFinding>{} : m;
+    HeadingValues held = base;
+    if (confirmed) at(held, HeadingEffect::kFinEffectiveness) = m.front().value;
+    again = select_heading_effects(HeadingLink::kVehicle, others, held, rate_error, rate_samples, reselect);
+    reselected = true;
+    const double last_roll = roll;
+    roll = at(again.values, HeadingEffect::kRollOffset);
+    if (roll == last_roll) break;
+  }
+  if (!reselected) return;  // no fit on the innovations: the rate error's findings stand
+  d.yaw_noise = noise;
+  const bool fin_named = std::any_of(d.yaw.findings.begin(), d.yaw.findings.end(), [](const HeadingFinding& f) {
+    return f.effect == HeadingEffect::kFinEffectiveness;
+  });
+  if (!fin_confirmed && !fin_named && roll == at(chosen.values, HeadingEffect::kRollOffset)) return;
+  again.candidates = chosen.candidates;
+  for (HeadingFinding& f : again.findings) f.nominal = at(base, f.effect);
+  if (fin_confirmed) {
+    HeadingFinding m = measured.front();
+    m.heldout_rms = again.extended_heldout_rms;
+    m.gain = 1.0 - again.extended_heldout_rms / chosen.baseline_heldout_rms;
+    again.findings.insert(again.findings.begin(), m);
+  }
+  // Against the nominal's baseline (the held fin's is the reselection's).
+  again.baseline_rms = chosen.baseline_rms;
+  again.baseline_rms_dive = chosen.baseline_rms_dive;
+  again.baseline_rms_climb = chosen.baseline_rms_climb;
+  again.baseline_heldout_rms = chosen.baseline_heldout_rms;
+  again.gain = 1.0 - again.extended_heldout_rms / chosen.baseline_heldout_rms;
+  for (HeadingFinding& f : again.findings) f.gain = 1.0 - f.heldout_rms / chosen.baseline_heldout_rms;
+  // What the rate error named and this does not: refuted (the fin by its
+  // measurement on the innovations, another by the reselection).
+  for (const HeadingFinding& c : chosen.findings) {
+    const bool still_named = std::any_of(again.findings.begin(), again.findings.end(),
+                                         [&](const HeadingFinding& f) { return f.effect == c.effect; });
+    if (still_named) continue;
+    const auto on_innovations =
+        std::find_if(left_out.begin(), left_out.end(), [&](const HeadingFinding& f) { return f.effect == c.effect; });
+    again.dropped.push_back(on_innovations != left_out.end() ? *on_innovations : c);
   }
   d.yaw = again;
 }
@@ -382,9 +434,10 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                              track.row_fin_rad),
                      servo_samples, options);
   const LinkSamples autopilot_samples = row_split(autopilot_rows(track));
+  AutopilotReplay autopilot_replay(track, d.configured);
   const HeadingResiduals autopilot_residuals =
       against([&](const HeadingValues& v, std::span<const std::size_t> w,
-                  std::vector<double>& o) { predict_autopilot_fin(track, d.configured, v, w, o); },
+                  std::vector<double>& o) { autopilot_replay.predict(v, w, o); },
               track.row_fin_command_rad);
   d.autopilot = run_link(HeadingLink::kAutopilot, base, autopilot_residuals, autopilot_samples, options);
   // The autopilot link's open-loop fit of exactly these effects.
@@ -406,7 +459,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                                              track.yaw_rate_rad_s);
   d.yaw = run_link(HeadingLink::kVehicle, base, yaw_error, yaw_samples, options);
   if (options.yaw_noise_model && options.fit_only.empty()) {
-    measure_fin_on_innovations(track, nominal, base, yaw_error, yaw_samples, d, options);
+    measure_fin_then_reselect(track, nominal, base, yaw_error, yaw_samples, d, options);
   }
 
   // The current's shear, on what the vehicle link leaves (every glide

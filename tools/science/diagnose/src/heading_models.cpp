@@ -158,19 +158,27 @@ AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSett
   return law;
 }
 
-void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& values,
-                           std::span<const std::size_t> rows, std::vector<double>& out) {
-  const double delay = std::abs(value(values, HeadingEffect::kAutopilotDelay));
-  AutopilotLaw law = AutopilotLaw::from(values, settings, t.fin_max_rad);
+AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings)
+    : track_(track), settings_(settings) {}
+
+const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay) {
+  for (const Inputs& cached : cache_) {
+    if (cached.delay == delay) return cached.rows;
+  }
+  if (cache_.size() >= kCachedDelays) cache_.erase(cache_.begin());
+  Inputs& made = cache_.emplace_back();
+  made.delay = delay;
+  const HeadingTrack& t = track_;
   const std::size_t n = t.row_time_s.size();
-  std::vector<double> predicted(n, kNaN);
+  made.rows.resize(n);
   const std::span<const double> time(t.row_time_s);
   double last_heading = kNaN;
   std::size_t after = 0;  // first row later than `when`: `when` only grows (rows sorted), so it only advances
   for (std::size_t i = 0; i < n; ++i) {
+    Input& in = made.rows[i];
     if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
-      law.output = 0.0;
+      in.kind = Input::kCentre;
       continue;
     }
     const double when = time[i] - delay;
@@ -178,14 +186,37 @@ void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& setti
     const std::size_t c = after == 0 ? SIZE_MAX : after - 1;  // row_at_or_before(time, when)
     const double heading = interpolate_from(time, t.row_heading_rad, c, when, true);
     const double command = c == SIZE_MAX ? kNaN : t.row_command_rad[c];
-    if (!std::isfinite(heading) || !std::isfinite(command)) continue;
-    const double error = wrap_pi(command - heading);
-    const double dt = i > 0 ? time[i] - time[i - 1] : 0.0;
-    const double rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
+    if (!std::isfinite(heading) || !std::isfinite(command)) {
+      in.kind = Input::kNone;
+      continue;
+    }
+    in.kind = Input::kStep;
+    in.error = wrap_pi(command - heading);
+    in.dt = i > 0 ? time[i] - time[i - 1] : 0.0;
+    in.rate = std::isfinite(last_heading) && in.dt > 0.0 ? wrap_pi(heading - last_heading) / in.dt : 0.0;
     last_heading = heading;
-    predicted[i] = law.step(error, rate, dt);
   }
-  pick(predicted, rows, out);
+  return made.rows;
+}
+
+void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::size_t> rows,
+                              std::vector<double>& out) {
+  const std::vector<Input>& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
+  AutopilotLaw law = AutopilotLaw::from(values, settings_, track_.fin_max_rad);
+  predicted_.assign(in.size(), kNaN);
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    if (in[i].kind == Input::kCentre) {
+      law.output = 0.0;
+    } else if (in[i].kind == Input::kStep) {
+      predicted_[i] = law.step(in[i].error, in[i].rate, in[i].dt);
+    }
+  }
+  pick(predicted_, rows, out);
+}
+
+void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& values,
+                           std::span<const std::size_t> rows, std::vector<double>& out) {
+  AutopilotReplay(t, settings).predict(values, rows, out);
 }
 
 namespace {

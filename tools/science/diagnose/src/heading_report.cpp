@@ -49,14 +49,18 @@ ordered_json link_json(const LinkFit& f) {
   }
   j["findings"] = findings;
   // Chosen by the rate error, then refuted by the fin's measurement on the
-  // innovations (heading_diagnose.hpp yaw_noise_model): that measurement.
+  // innovations (heading_diagnose.hpp yaw_noise_model): that measurement; or
+  // not selected again with the fin held at it: the rate error's value.
   ordered_json refuted = ordered_json::array();
   for (const HeadingFinding& x : f.dropped) {
-    refuted.push_back({{"effect", info(x.effect).id},
-                       {"value", x.value},
-                       {"nominal", x.nominal},
-                       {"ci95", {x.ci95_low, x.ci95_high}},
-                       {"why", "the heading's innovations (compass noise and random yaw modelled) hold the nominal"}});
+    const bool fin = x.effect == HeadingEffect::kFinEffectiveness;
+    refuted.push_back(
+        {{"effect", info(x.effect).id},
+         {"value", x.value},
+         {"nominal", x.nominal},
+         {"ci95", {x.ci95_low, x.ci95_high}},
+         {"why", fin ? "the heading's innovations (compass noise and random yaw modelled) hold the nominal"
+                     : "not selected again with the fin held at its measurement on the heading's innovations"}});
   }
   j["refuted"] = refuted;
   ordered_json pairs = ordered_json::array();

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "glider/diagnose/log_columns.hpp"
+#include "glider/diagnose/stored_on_change.hpp"
 #include "glider/diagnose/track.hpp"
 #include "glider/flightlog/gaps.hpp"
 #include "glider/model/hydrodynamics.hpp"
@@ -104,7 +105,10 @@ HeadingTrack prepare_heading_track(const flightlog::FlightLog& log, const model:
   t.row_heading_rad = heading;
   t.row_command_rad = command;
   t.row_fin_rad = fin;
-  t.row_fin_filled_rad = flightlog::interpolate_linear(time, fin, gap);
+  // A decimated file stores the fin when it moved: held where the writer
+  // found it unchanged, a straight line where it moved (stored_on_change.hpp).
+  t.row_fin_filled_rad = options.fin_stored_on_change ? fill_stored_on_change(time, fin, gap)
+                                                      : flightlog::interpolate_linear(time, fin, gap);
   t.row_fin_command_rad = fin_command;
   t.row_depth_m = c.depth_m;
   t.row_yo = c.yo;

@@ -73,11 +73,31 @@ model::VehicleParams measure_vertical(const model::VehicleParams& nominal, const
   return diagnose::apply(diagnose::diagnosed_nominal(nominal, d), d.extended, d.thermal_reference_c);
 }
 
-void measure_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& log, SegmentMeasurement& m) {
+// The segment with m_fin as the file stored it: the heading plane knows
+// where a file that stores the fin on change found it unchanged and where it
+// moved (diagnose/stored_on_change.hpp); the held column would put every
+// move at the next reading, ~2 s late on a 4 s .sbd (the fin read 0.85-0.92
+// for 1, and a halved fin's interval missed -50 %: docs/science.md).
+flightlog::FlightLog with_fin_as_stored(const flightlog::FlightLog& held, const flightlog::FlightLog& raw) {
+  const flightlog::Column* stored = raw.find("m_fin");
+  if (stored == nullptr || stored->size() != held.rows()) return held;
+  std::vector<flightlog::Column> columns;
+  std::size_t time_index = 0;
+  const auto& names = held.column_names();
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    if (&held.column(names[c]) == &held.time()) time_index = c;
+    columns.push_back(names[c] == "m_fin" ? *stored : held.column(names[c]));
+  }
+  return flightlog::FlightLog(held.source(), held.metadata(), names, std::move(columns), time_index);
+}
+
+void measure_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& held,
+                     const flightlog::FlightLog& raw, bool decimated, SegmentMeasurement& m) {
   try {
     diagnose::HeadingDiagnoseOptions options;
+    options.track.fin_stored_on_change = decimated;
     options.fit_only = {diagnose::HeadingEffect::kFinEffectiveness, diagnose::HeadingEffect::kRollOffset};
-    const diagnose::HeadingDiagnosis d = diagnose::diagnose_heading(nominal, log, options);
+    const diagnose::HeadingDiagnosis d = diagnose::diagnose_heading(nominal, with_fin_as_stored(held, raw), options);
     const double logged_roll = d.roll_logged ? d.logged_roll_rad : 0.0;
     for (const diagnose::HeadingFinding& f : d.yaw.findings) {
       if (f.effect == diagnose::HeadingEffect::kFinEffectiveness) {
@@ -229,7 +249,7 @@ SegmentMeasurement measure_segment(const model::VehicleParams& nominal, const Lo
         at(m.effects, e) = not_judged(m.why);
       }
     }
-    measure_heading(flown, log, m);
+    measure_heading(flown, log, *segment.raw, segment.files.decimated, m);
     at(m.effects, HealthEffect::kPumpRate) = pump_rate(*segment.raw);
     at(m.effects, HealthEffect::kBatteryPerKm) = battery_per_km(log);
   }

@@ -68,12 +68,15 @@ struct HeadingDiagnosis {
 struct HeadingDiagnoseOptions {
   HeadingTrackOptions track;
   std::size_t max_fit_samples = 4000;  // per half, even stride (the fits' cost)
-  // A fin_effectiveness the vehicle link names (chosen on the yaw rate of
-  // the logged fin) measured on the heading's one-step innovations with the
-  // compass noise and the random yaw modelled (heading_models.hpp
-  // heading_innovations), and no finding where that interval holds 1;
-  // false: the rate error's value, biased in a closed loop (docs/science.md
-  // "The fin's authority in a closed loop"). Not with fit_only (a
+  // Where the vehicle link names fin_effectiveness or roll_offset (chosen
+  // on the yaw rate of the logged fin, which reads the fin biased in a
+  // closed loop and a stronger fin as a roll offset), the fin measured on
+  // the heading's one-step innovations with the compass noise and the
+  // random yaw modelled (heading_models.hpp heading_innovations), no finding
+  // where that interval holds 1, and the rest of the link selected again
+  // with that fin held; false: the rate error's selection (docs/science.md
+  // "The fin's authority in a closed loop", "The fin measured whenever the
+  // rate error names the fin or a roll offset"). Not with fit_only (a
   // measurement of named effects, e.g. health's on decimated logs, whose
   // headings are interpolated between readings: the innovations need every
   // heading reading as logged).

@@ -62,6 +62,33 @@ void predict_servo_fin(const HeadingTrack& track, const model::VehicleParams& ve
                        std::span<const std::size_t> rows, std::vector<double>& out);
 void predict_autopilot_fin(const HeadingTrack& track, const AutopilotSettings& settings, const HeadingValues& values,
                            std::span<const std::size_t> rows, std::vector<double>& out);
+// predict_autopilot_fin for many values on one track (the fits): what the
+// law reads at each row (heading error, heading rate, cycle) depends on the
+// autopilot delay alone, so it is worked out once per delay (the last few
+// kept) and each call only steps the law - same bits, a fraction of the
+// cost (the replay was 2/3 of a heading diagnosis). Holds a reference to
+// the track; not for use from two threads at once.
+class AutopilotReplay {
+ public:
+  AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings);
+  void predict(const HeadingValues& values, std::span<const std::size_t> rows, std::vector<double>& out);
+
+ private:
+  struct Input {
+    enum Kind : unsigned char { kCentre, kNone, kStep } kind = kNone;  // fin centred / no prediction / a law step
+    double error = 0.0, rate = 0.0, dt = 0.0;
+  };
+  struct Inputs {
+    double delay = 0.0;
+    std::vector<Input> rows;
+  };
+  static constexpr std::size_t kCachedDelays = 4;
+  const std::vector<Input>& inputs(double delay);
+  const HeadingTrack& track_;
+  AutopilotSettings settings_;
+  std::vector<Inputs> cache_;
+  std::vector<double> predicted_;
+};
 void predict_yaw_rate(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
                       std::span<const std::size_t> samples, std::vector<double>& out);
 

@@ -41,7 +41,10 @@ struct HeadingTrack {
 
   // Every log row (NaN where not logged): the servo and the autopilot.
   std::vector<double> row_time_s, row_heading_rad, row_command_rad, row_fin_rad, row_fin_command_rad, row_depth_m;
-  std::vector<double> row_fin_filled_rad;  // m_fin interpolated across gaps up to max_gap_s (the yaw model's input)
+  // m_fin at every row (the yaw model's input): straight between its readings
+  // across gaps up to max_gap_s; with fin_stored_on_change held where the
+  // file's writer found it unchanged (stored_on_change.hpp).
+  std::vector<double> row_fin_filled_rad;
   std::vector<int> row_yo;
   // The autopilot flies this row: m_depth_state diving (1) or climbing (2)
   // where the log has it (the flight computer's own phase), else a dive or
@@ -67,6 +70,11 @@ struct HeadingTrackOptions {
   double min_run_s = 60.0;
   double max_gap_s = 30.0;
   double rate_half_window_s = 5.0;  // the yaw rate: slope of the heading over +-this
+  // The log's m_fin is as a decimated file (.sbd) stored it: on change, at
+  // most every few seconds; a row without it was checked and found unchanged
+  // once the storing interval had passed (stored_on_change.hpp). false: a
+  // full-resolution log, m_fin straight between its readings.
+  bool fin_stored_on_change = false;
 };
 
 // A setting the log states in its `settings_at_file_open` metadata

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""A stronger fin is named as a fin, not as a roll offset; a roll offset is
+named where the rate error's biased fin had hidden it.
+
+Two fixed draws of the independent truth (tools/science/truth), diagnosed as
+a black box (`glider-diagnose --plane heading --json`):
+
+- shallow variant, fin effectiveness x1.908 alone: the glider flies rolled
+  (-10 deg) and its loop holds the fin against the roll's yaw, so to the
+  yaw-rate error a stronger fin and a roll offset are one column, and the
+  closed loop reads the fin weaker. The code before this rule named a roll
+  offset of +0.098 rad [0.075, 0.121] and no fin. The fin must be named,
+  its interval holding 1.908, and no roll offset.
+- deep variant, roll offset -0.0659 rad alone: the rate error named a fin
+  that its measurement on the innovations refuted, and the code before
+  named nothing. The roll offset must be named, its interval holding the
+  truth, and no fin.
+"""
+import json
+import os
+import subprocess
+import sys
+
+
+def diagnose(truth, program, source, out, variant, seed, effects):
+    log = os.path.join(out, 'fin_or_roll_%d.csv' % seed)
+    command = [truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log, '--truth',
+               os.path.join(out, 'fin_or_roll_%d.json' % seed)]
+    for effect, value in effects.items():
+        command += ['--effect', '%s=%.9g' % (effect, value)]
+    subprocess.run(command, check=True, capture_output=True, timeout=120)
+    vehicle = os.path.join(source, 'boards', 'vehicles', 'slocum_we01.toml' if variant == 'deep' else
+                           'slocum_shallow.toml')
+    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json'], capture_output=True,
+                         text=True, timeout=120)
+    if run.returncode != 0:
+        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
+    found = {}
+    for link in (json.loads(run.stdout).get('heading') or {}).get('links', {}).values():
+        for f in link.get('findings', []) or []:
+            found[f['effect']] = f
+    return found
+
+
+def check(failures, found, effect, truth, absent):
+    f = found.get(effect)
+    print('%s %.4f hidden: findings %s' % (effect, truth, {
+        k: (round(v['value'], 4), [round(x, 4) for x in v['ci95']]) for k, v in found.items()}))
+    if f is None:
+        failures.append('%s %.4f not named' % (effect, truth))
+    elif not f['ci95'][0] <= truth <= f['ci95'][1]:
+        failures.append('%s interval %s misses %.4f' % (effect, f['ci95'], truth))
+    if absent in found:
+        failures.append('%s named beside a hidden %s' % (absent, effect))
+
+
+def main():
+    truth, program, source, out = sys.argv[1:5]
+    os.makedirs(out, exist_ok=True)
+    failures = []
+    fin = 1.90766954
+    check(failures, diagnose(truth, program, source, out, 'shallow', 284645423434941016,
+                             {'fin_effectiveness': fin}), 'fin_effectiveness', fin, 'roll_offset')
+    roll = -0.0658779576
+    check(failures, diagnose(truth, program, source, out, 'deep', 5253771433374317794, {'roll_offset': roll}),
+          'roll_offset', roll, 'fin_effectiveness')
+    if failures:
+        print('FAIL ' + '; '.join(failures))
+        return 1
+    print('PASS fin or roll named as hidden')
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
