@@ -142,7 +142,7 @@ def run_draw(args, case, seed):
     start = time.monotonic()
     try:
         plane = [] if args.plane == 'both' else ['--plane', args.plane]
-        diagnosed = subprocess.run([args.diagnose, log, '--vehicle', vehicle, '--json'] + plane,
+        diagnosed = subprocess.run([args.diagnose, log, '--vehicle', vehicle, '--json'] + plane + args.diagnose_arg,
                                    capture_output=True, text=True, timeout=args.timeout)
     except subprocess.TimeoutExpired:
         result['error'] = 'glider-diagnose: timed out after %d s' % args.timeout
@@ -268,6 +268,9 @@ def main():
     p.add_argument('--build', default=os.environ.get('GLIDER_BUILD_DIR', 'build/release'))
     p.add_argument('--truth', help='glider-truth (default: BUILD/tools/science/truth/glider-truth)')
     p.add_argument('--diagnose', help='glider-diagnose (default: BUILD/tools/science/diagnose/glider-diagnose)')
+    p.add_argument('--diagnose-arg', action='append', default=[],
+                   help='one more argument for every glider-diagnose run (repeat; e.g. --diagnose-arg=--score-block '
+                        '--diagnose-arg=60): a method switch benchmarked paired on the same seed')
     p.add_argument('--source', default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     p.add_argument('--out', help='directory for the logs (default: a temporary one)')
     p.add_argument('--keep', action='store_true', help='keep the logs and truths')

@@ -26,11 +26,17 @@ FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, do
 
 FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density, double v1,
                                 double v3, double speed_m_s, bool with_moment) {
+  return flow_forces_at_speed(h, slopes, water_density, v1, v3, speed_m_s, with_moment,
+                              skin_friction_factor(h, speed_m_s));
+}
+
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density, double v1,
+                                double v3, double speed_m_s, bool with_moment, double cd0_factor) {
   FlowForces out;
   out.speed_m_s = speed_m_s;
   out.alpha_rad = std::atan2(v3, v1);
   if (!(out.speed_m_s > 0.0)) return out;
-  const ForceCoefficients c = force_coefficients(h, slopes, out.alpha_rad);
+  const ForceCoefficients c = force_coefficients(h, slopes, out.alpha_rad, cd0_factor);
   const double dyn = 0.5 * water_density * h.reference_area_m2 * out.speed_m_s * out.speed_m_s;
   out.lift_coefficient = c.lift;
   out.lift_n = dyn * c.lift;

@@ -60,7 +60,37 @@ ForceCoefficients force_coefficients(const Hydrodynamics& h, double alpha_rad) {
   return force_coefficients(h, polar_slopes(h), alpha_rad);
 }
 
-ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& slopes, double alpha_rad) {
+double skin_friction_factor(const Hydrodynamics& h, double speed_m_s) {
+  if (h.cd0_reynolds_exponent == 0.0) return 1.0;
+  const double v = std::max(speed_m_s, kSkinFrictionMinSpeedMS);
+  return std::pow(v / h.cd0_reference_speed_m_s, -h.cd0_reynolds_exponent);
+}
+
+SkinFrictionFactor::SkinFrictionFactor(const Hydrodynamics& h) : hydro_(h) {
+  const double n = h.cd0_reynolds_exponent;
+  c1_ = -n;
+  c2_ = -c1_ * (n + 1.0) / 2.0;
+  c3_ = -c2_ * (n + 2.0) / 3.0;
+  c4_ = -c3_ * (n + 3.0) / 4.0;
+}
+
+double SkinFrictionFactor::operator()(double speed_m_s) const {
+  if (hydro_.cd0_reynolds_exponent == 0.0) return 1.0;
+  if (!(speed_m_s >= kTableFromMS && speed_m_s <= kTableToMS)) return skin_friction_factor(hydro_, speed_m_s);
+  const auto k = static_cast<std::size_t>(speed_m_s * (1.0 / kAnchorStepMS) + 0.5);
+  Anchor& a = anchors_[k];
+  if (a.inverse_speed == 0.0) {
+    const double at = static_cast<double>(k) * kAnchorStepMS;
+    a.factor = skin_friction_factor(hydro_, at);
+    a.inverse_speed = 1.0 / at;
+  }
+  const double d = speed_m_s * a.inverse_speed - 1.0;
+  return a.factor * (1.0 + d * (c1_ + d * (c2_ + d * (c3_ + d * c4_))));
+}
+
+ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& slopes, double alpha_rad,
+                                     double cd0_factor) {
+  const double cd0 = h.cd0 * cd0_factor;
   const double w = fit_weight(h, alpha_rad);
   ForceCoefficients fit{};
   if (w > 0.0) {
@@ -68,7 +98,7 @@ ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& 
     // then only a fading part of the blend).
     const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
     fit.lift = h.cl0 + slopes.lift_per_rad * a + h.cl_alpha_abs_alpha * a * std::abs(a);
-    fit.drag = h.cd0 + slopes.drag_per_rad2 * a * a;
+    fit.drag = cd0 + slopes.drag_per_rad2 * a * a;
   }
   if (w >= 1.0) return fit;
   // Crossflow: normal force ~ sin a |sin a|, axial (skin) force ~ cos a |cos a|,
@@ -76,7 +106,7 @@ ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& 
   const double s = std::sin(alpha_rad);
   const double c = std::cos(alpha_rad);
   const double normal = h.crossflow_cn90 * s * std::abs(s);
-  const double axial = h.cd0 * c * std::abs(c);
+  const double axial = cd0 * c * std::abs(c);
   const ForceCoefficients cross{normal * c - axial * s, normal * s + axial * c};
   return {w * fit.lift + (1.0 - w) * cross.lift, w * fit.drag + (1.0 - w) * cross.drag};
 }

@@ -39,7 +39,8 @@ Eigen::Vector2d velocities_from(const TranslationalMass& a, const Eigen::Vector2
 
 PrescribedPitchDynamics::PrescribedPitchDynamics(const VehicleParams& vehicle, double gravity_m_s2)
     : dynamics_(vehicle, Environment{WaterColumn(vehicle.trim_density_kg_m3), gravity_m_s2}),
-      slopes_(polar_slopes(vehicle.hydro)) {}
+      slopes_(polar_slopes(vehicle.hydro)),
+      skin_friction_(vehicle.hydro) {}
 
 Eigen::Vector2d PrescribedPitchDynamics::velocities(const Impulse& p, const PrescribedPitchInputs& in) const {
   const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
@@ -84,8 +85,9 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
   }
   const Eigen::Vector2d v = velocities_from({stage_.a11, stage_.a33, stage_.a13, stage_.a23}, p, in.q_rad_s);
   const double net_kg = stage_.net_kg;
-  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, slopes_, in.density_kg_m3, v[0], v[1],
-                                               std::sqrt(v[0] * v[0] + v[1] * v[1]), false);
+  const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
+  const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, slopes_, in.density_kg_m3, v[0], v[1], speed,
+                                               false, skin_friction_(speed));
   const double g = dynamics_.environment().gravity_m_s2;
   const double sin_theta = pitch_.sin_theta, cos_theta = pitch_.cos_theta;
   const double f1 = -net_kg * g * sin_theta + flow.f1;

@@ -46,6 +46,10 @@ std::string validate(const VehicleParams& v) {
   const Hydrodynamics& h = v.hydro;
   if (!(h.reference_area_m2 > 0.0)) return "hydrodynamics.reference_area_m2 must be positive";
   if (!(h.cd0 > 0.0)) return "hydrodynamics.cd0 must be positive";
+  if (!(h.cd0_reynolds_exponent >= 0.0 && h.cd0_reynolds_exponent <= 0.5)) {
+    return "hydrodynamics.cd0_reynolds_exponent must be in [0, 0.5]";
+  }
+  if (!(h.cd0_reference_speed_m_s > 0.0)) return "hydrodynamics.cd0_reference_speed_m_s must be positive";
   if (!(h.cmq_m2 <= 0.0)) return "hydrodynamics.cmq_m2 must not be positive (damping)";
   if (!(h.fit_valid_to_rad > 0.0 && h.crossflow_from_rad > h.fit_valid_to_rad)) {
     return "hydrodynamics: need 0 < fit_valid_to_rad < crossflow_from_rad";

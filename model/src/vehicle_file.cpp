@@ -58,6 +58,8 @@ void visit_numbers(VehicleParams& v, Visitor&& visit) {
   visit("hydrodynamics.cl_alpha_abs_alpha", v.hydro.cl_alpha_abs_alpha, req, {-100.0, 100.0, "1/rad^2"});
   visit("hydrodynamics.cd0", v.hydro.cd0, req, {0.001, 10.0, ""});
   visit("hydrodynamics.cd_alpha2", v.hydro.cd_alpha2, req, {0.0, 1000.0, "1/rad^2"});
+  visit("hydrodynamics.cd0_reynolds_exponent", v.hydro.cd0_reynolds_exponent, opt, {0.0, 0.5, ""});
+  visit("hydrodynamics.cd0_reference_speed_m_s", v.hydro.cd0_reference_speed_m_s, opt, {0.05, 3.0, "m/s"});
   visit("hydrodynamics.cm0_m", v.hydro.cm0_m, req, {-1.0, 1.0, "m"});
   visit("hydrodynamics.cm_alpha_m", v.hydro.cm_alpha_m, req, {-100.0, 100.0, "m/rad"});
   visit("hydrodynamics.cmq_m2", v.hydro.cmq_m2, req, {-100.0, 0.0, "m^2 s/rad"});

@@ -110,6 +110,10 @@ FlowForces flow_forces_at_speed(const Hydrodynamics& h, double water_density, do
 // stages ask with one vehicle.
 FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density, double v1,
                                 double v3, double speed_m_s, bool with_moment = true);
+// ... and with the skin friction's factor at this speed given
+// (SkinFrictionFactor; skin_friction_factor(h, speed_m_s) in the others).
+FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density, double v1,
+                                double v3, double speed_m_s, bool with_moment, double cd0_factor);
 
 // Heading rate (rad/s) per unit of the current's starboard shear (1/s) for a
 // glider whose depth grows at depth_rate_m_s, moving at speed_m_s through

@@ -64,8 +64,9 @@ class PrescribedPitchDynamics {
   const GliderDynamics& dynamics() const { return dynamics_; }
 
  private:
-  GliderDynamics dynamics_;  // its environment carries only the gravity
-  PolarSlopes slopes_;       // of the vehicle's polar, once (hydrodynamics.hpp)
+  GliderDynamics dynamics_;           // its environment carries only the gravity
+  PolarSlopes slopes_;                // of the vehicle's polar, once (hydrodynamics.hpp)
+  SkinFrictionFactor skin_friction_;  // the drag's Reynolds term without a pow per stage
   // What a stage needs of its inputs alone (masses, net weight, the pitch's
   // sine and cosine), kept for the last inputs: RK4's two middle stages share
   // them, and a step's last stage is usually the next step's first. The same

@@ -8,6 +8,11 @@
 // moment (internal masses, viscous moment, Munk) must vanish too, which
 // fixes where the battery has to be. Glides shallower than the best glide
 // ratio do not exist (paper 002 eq. 9, here for any C_L, C_D).
+// With a skin friction that follows the Reynolds number
+// (Hydrodynamics::cd0_reynolds_exponent > 0) C_D depends on V, and every
+// solver here is the fixed point of the speed-independent one at
+// cd0 (V / V_ref)^-n; min_glide_path_deg and has_stall_glide take the
+// file's cd0 (the drag at its reference speed).
 #include <optional>
 #include <string>
 
@@ -54,9 +59,17 @@ class PitchGlideSolver {
                           double gravity_m_s2 = 9.81) const;
 
  private:
+  // One pass on a speed-independent polar whose best glide is at t_best.
+  SteadyGlideResult solve_on(const Hydrodynamics& hydro, double t_best, double density_kg_m3, double pitch_rad,
+                             double net_buoyancy_kg, double gravity_m_s2) const;
   Hydrodynamics hydro_;
   double alpha0_;
   double t_best_[2];  // descending, climbing
+  // With the Reynolds term: the best glides of the polar at the factor of
+  // kBracketSpeedMS, faster than gliders fly (the bracket of every pass).
+  static constexpr double kBracketSpeedMS = 3.0;
+  double low_factor_ = 1.0;
+  mutable double t_best_low_[2];  // 0: not yet found
 };
 
 // Shallowest possible glide path (deg) descending (+1) or climbing (-1): at

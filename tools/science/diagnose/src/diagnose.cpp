@@ -1061,6 +1061,9 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   d.vehicle = given.name;
   d.thermal_reference_c = obs.track.median_temperature_c;
   model::VehicleParams nominal = given;
+  if (options.drag_reynolds_exponent) nominal.hydro.cd0_reynolds_exponent = *options.drag_reynolds_exponent;
+  d.drag_reynolds_exponent = nominal.hydro.cd0_reynolds_exponent;
+  d.drag_reference_speed_m_s = nominal.hydro.cd0_reference_speed_m_s;
   if (const auto rho = retrim_density(given, obs, options.retrim_tolerance_kg_m3)) {
     d.retrimmed_from_kg_m3 = given.trim_density_kg_m3;
     nominal.trim_density_kg_m3 = *rho;
@@ -1108,8 +1111,14 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   return d;
 }
 
+double drag_reynolds_exponent_for(const model::VehicleParams& vehicle, const std::optional<double>& asked) {
+  if (asked) return *asked;
+  return vehicle.hydro.cd0_reynolds_exponent > 0.0 ? vehicle.hydro.cd0_reynolds_exponent : kDragReynoldsExponentPrior;
+}
+
 model::VehicleParams diagnosed_nominal(const model::VehicleParams& given, const Diagnosis& d) {
   model::VehicleParams nominal = given;
+  nominal.hydro.cd0_reynolds_exponent = d.drag_reynolds_exponent;
   if (d.retrimmed_to_kg_m3) nominal.trim_density_kg_m3 = *d.retrimmed_to_kg_m3;
   return nominal;
 }

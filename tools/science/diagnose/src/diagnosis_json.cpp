@@ -28,6 +28,9 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                                 "the log's water is far from the vehicle's trim density: the vehicle is taken "
                                 "as ballasted for the log's median measured density"}};
   }
+  j["drag_reynolds"] = {{"exponent", d.drag_reynolds_exponent},
+                        {"reference_speed_m_s", d.drag_reference_speed_m_s},
+                        {"note", "the model's zero-lift drag is cd0 (V / reference_speed)^-exponent"}};
   j["samples_used"] = d.samples_used;
   j["train_samples"] = d.train_samples;
   j["heldout_samples"] = d.heldout_samples;

@@ -236,6 +236,7 @@ int main(int argc, char** argv) {
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
+  double drag_reynolds_exponent = glider::diagnose::kDragReynoldsExponentPrior;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
   glider::diagnose::PitchCalibration pitch_calibration;
   glider::slocum::LogSource log_source;
@@ -280,6 +281,11 @@ int main(int argc, char** argv) {
   tool.add_number("--score-block", score_block_s, {0.0, 600.0, "s"},
                   "the selection compares held-out residuals averaged over blocks of a glide this long (0: sample "
                   "by sample; fitting_core/block_score.hpp)");
+  const CLI::Option* drag_reynolds_option = tool.add_number(
+      "--drag-reynolds-exponent", drag_reynolds_exponent, {0.0, 0.5, ""},
+      "the skin friction's Reynolds exponent n of the fitted model, C_D0 (V/V_ref)^-n, V_ref the vehicle "
+      "file's hydrodynamics.cd0_reference_speed_m_s (default: the file's exponent if it states one, else "
+      "the prior 0.1; 0: off, the model before it; docs/science.md)");
   tool.add_number("--pitch-window", pitch_window_s, {0.0, 60.0, "s"},
                   "the measured pitch (the dynamic model's input) is smoothed over +-this many seconds (0: as logged)");
   using Calibration = glider::diagnose::PitchCalibration;
@@ -342,6 +348,8 @@ int main(int argc, char** argv) {
       const glider::diagnose::NominalVehicle nominal =
           glider::diagnose::nominal_vehicle({vehicle_path, default_vehicle, glider::cli::boards_dir()}, log, log_path);
       const glider::model::VehicleParams& vehicle = nominal.params;
+      options.drag_reynolds_exponent = glider::diagnose::drag_reynolds_exponent_for(
+          vehicle, drag_reynolds_option->count() > 0 ? std::optional<double>(drag_reynolds_exponent) : std::nullopt);
       const std::string& vehicle_source = nominal.source;
       const auto start = std::chrono::steady_clock::now();
       // Progress on stderr once a run has taken more than 2 s, at most a line a second.

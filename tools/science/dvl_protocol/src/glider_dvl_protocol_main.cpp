@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -104,6 +105,11 @@ int main(int argc, char** argv) {
   tool.add_number("--pitch-offset", pitch_calibration.offset_rad,
                   {-Calibration::kMaxAbsOffsetRad, Calibration::kMaxAbsOffsetRad, "rad"},
                   "pitch sensor calibration's offset, with --pitch-scale");
+  double drag_reynolds_exponent = glider::diagnose::kDragReynoldsExponentPrior;
+  const CLI::Option* drag_reynolds_option =
+      tool.add_number("--drag-reynolds-exponent", drag_reynolds_exponent, {0.0, 0.5, ""},
+                      "glider-diagnose's skin-friction Reynolds exponent (as glider-diagnose: the vehicle file's if it "
+                      "states one, else the prior 0.1; 0: off)");
   return tool.run(argc, argv, [&]() -> int {
     glider::flightlog::ReadOptions read_options;
     read_options.rename = glider::diagnose::column_renames(renames);
@@ -113,6 +119,8 @@ int main(int argc, char** argv) {
     const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log);
     glider::diagnose::DiagnoseOptions options;
     options.fit_only = glider::diagnose::depth_rate_effects(fit_only);
+    options.drag_reynolds_exponent = glider::diagnose::drag_reynolds_exponent_for(
+        vehicle, drag_reynolds_option->count() > 0 ? std::optional<double>(drag_reynolds_exponent) : std::nullopt);
     const glider::diagnose::Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
     if (!d.speed_through_water) throw std::runtime_error(log_path + ": no sci_speed_through_water to score");
     const glider::diagnose::Predictions pred = glider::diagnose::predict_all(vehicle, obs, d, options);

@@ -133,7 +133,22 @@ struct Diagnosis {
   // The log's median temperature (NaN without one): the thermal_expansion
   // effect is about it (apply's log_temperature_c).
   double thermal_reference_c = 0.0;
+  // The skin friction's Reynolds exponent the model flew (see
+  // DiagnoseOptions::drag_reynolds_exponent) and the speed its cd0 holds at.
+  double drag_reynolds_exponent = 0.0;
+  double drag_reference_speed_m_s = 0.0;
 };
+
+// The prior of the skin friction's Reynolds exponent (docs/science.md,
+// "Method rule: a drag that follows the Reynolds number"): the ITTC-1957
+// friction line's local slope at a Slocum's Re ~ 4e5 (0.24) times the
+// friction's share of the zero-lift drag (~0.4 for slocum_shallow: C_f 0.0058
+// on ~1.2 m^2 wetted over cd0 0.17 on 0.1 m^2).
+inline constexpr double kDragReynoldsExponentPrior = 0.1;
+
+// The exponent glider-diagnose flies: the one asked for (--drag-reynolds-exponent),
+// else the vehicle file's when it states one (> 0), else the prior.
+double drag_reynolds_exponent_for(const model::VehicleParams& vehicle, const std::optional<double>& asked);
 
 struct DiagnoseOptions {
   // A finding must cut the held-out RMS by 3 % AND by half a millimetre per
@@ -172,6 +187,14 @@ struct DiagnoseOptions {
   // See Diagnosis::retrimmed_to_kg_m3: how far the log's median density may be
   // from the vehicle's trim density before the vehicle is re-trimmed for it.
   double retrim_tolerance_kg_m3 = 5.0;
+  // The skin friction's Reynolds-number exponent n the fitted model flies
+  // (C_D0 (V / V_ref)^-n, model/hydrodynamics.hpp): unset, the vehicle
+  // file's (a SIL log's own vehicle is its truth); glider-diagnose asks for
+  // drag_reynolds_exponent_for(vehicle, nullopt): the file's when it states
+  // one, else the prior kDragReynoldsExponentPrior. 0 switches it off (the
+  // model before it, to the bit). Not fitted: over a log's 0.2-0.5 m/s it is
+  // a few % of drag that drag_change and buoyancy_offset would trade for it.
+  std::optional<double> drag_reynolds_exponent;
   // Score and fit only samples in this depth window (m), e.g. gliderflight's
   // 10-35 dbar; the model still flies the whole log.
   double window_min_m = -1e9, window_max_m = 1e9;
