@@ -66,8 +66,9 @@ double skin_friction_factor(const Hydrodynamics& h, double speed_m_s) {
   return std::pow(v / h.cd0_reference_speed_m_s, -h.cd0_reynolds_exponent);
 }
 
-SkinFrictionFactor::SkinFrictionFactor(const Hydrodynamics& h) : hydro_(h) {
-  const double n = h.cd0_reynolds_exponent;
+SkinFrictionFactor::SkinFrictionFactor(const Hydrodynamics& h)
+    : exponent_(h.cd0_reynolds_exponent), reference_m_s_(h.cd0_reference_speed_m_s) {
+  const double n = exponent_;
   c1_ = -n;
   c2_ = -c1_ * (n + 1.0) / 2.0;
   c3_ = -c2_ * (n + 2.0) / 3.0;
@@ -75,17 +76,13 @@ SkinFrictionFactor::SkinFrictionFactor(const Hydrodynamics& h) : hydro_(h) {
 }
 
 double SkinFrictionFactor::operator()(double speed_m_s) const {
-  if (hydro_.cd0_reynolds_exponent == 0.0) return 1.0;
-  if (!(speed_m_s >= kTableFromMS && speed_m_s <= kTableToMS)) return skin_friction_factor(hydro_, speed_m_s);
-  const auto k = static_cast<std::size_t>(speed_m_s * (1.0 / kAnchorStepMS) + 0.5);
-  Anchor& a = anchors_[k];
-  if (a.inverse_speed == 0.0) {
-    const double at = static_cast<double>(k) * kAnchorStepMS;
-    a.factor = skin_friction_factor(hydro_, at);
-    a.inverse_speed = 1.0 / at;
-  }
-  const double d = speed_m_s * a.inverse_speed - 1.0;
-  return a.factor * (1.0 + d * (c1_ + d * (c2_ + d * (c3_ + d * c4_))));
+  if (exponent_ == 0.0) return 1.0;
+  const double v = std::max(speed_m_s, kSkinFrictionMinSpeedMS);
+  const double d = v * anchor_inverse_ - 1.0;
+  if (std::abs(d) <= kAnchorSpan) return anchor_factor_ * (1.0 + d * (c1_ + d * (c2_ + d * (c3_ + d * c4_))));
+  anchor_factor_ = std::pow(v / reference_m_s_, -exponent_);
+  anchor_inverse_ = 1.0 / v;
+  return anchor_factor_;
 }
 
 ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& slopes, double alpha_rad,
