@@ -83,10 +83,16 @@ glider::diagnose::FlightModelKind model_kind(const std::string& model) {
   throw py::value_error("model must be 'dynamic' or 'steady', not '" + model + "'");
 }
 
-py::object diagnose(const Log& log, const py::object& vehicle, const std::string& model) {
+py::object diagnose(const Log& log, const py::object& vehicle, const std::string& model,
+                    const std::optional<double>& drag_reynolds_exponent) {
   const auto [params, vehicle_source] = pick_vehicle(log, vehicle);
   glider::diagnose::DiagnoseOptions options;
   options.model = model_kind(model);
+  // glider-diagnose's rule (its --drag-reynolds-exponent), so both give the same object.
+  if (drag_reynolds_exponent && !(*drag_reynolds_exponent >= 0.0 && *drag_reynolds_exponent <= 0.5))
+    throw py::value_error("drag_reynolds_exponent must be within [0, 0.5], not " +
+                          std::to_string(*drag_reynolds_exponent));
+  options.drag_reynolds_exponent = glider::diagnose::drag_reynolds_exponent_for(params, drag_reynolds_exponent);
   std::string text;
   {
     py::gil_scoped_release release;  // minutes on long logs: let other Python threads run
@@ -237,6 +243,8 @@ PYBIND11_MODULE(glider, m) {
         "The nominal vehicle flown through the log (dynamic: time-domain dynamics driven by the measured pitch; "
         "steady: steady glides): predicted and measured depth rate of the scored samples");
   m.def("diagnose", &diagnose, py::arg("log"), py::arg("vehicle") = py::none(), py::arg("model") = "dynamic",
-        "What the model gets wrong in the log: the same object as `glider-diagnose --json`");
+        py::arg("drag_reynolds_exponent") = py::none(),
+        "What the model gets wrong in the log: the same object as `glider-diagnose --json` (drag_reynolds_exponent: "
+        "as its --drag-reynolds-exponent; None: the vehicle file's, else the prior)");
   glider::python::bind_og1(m, log_class);
 }

@@ -17,7 +17,8 @@ namespace glider::health {
 inline constexpr const char* kStateSchema = "glider-health-state/1";
 // Bumped whenever a segment's measurement changes (another fit, another
 // rule for the data): a state measured otherwise is measured again.
-inline constexpr int kMeasurementVersion = 3;  // 2: 2 s RK4 steps, the lag floored at the sampling; 3: m_fin of decimated files as stored
+inline constexpr int kMeasurementVersion =
+    3;  // 2: 2 s RK4 steps, the lag floored at the sampling; 3: m_fin of decimated files as stored
 
 struct HealthState {
   std::string glider;
