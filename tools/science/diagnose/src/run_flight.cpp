@@ -2,6 +2,7 @@
 #include "run_flight.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -77,8 +78,9 @@ double FlightConditions::battery(std::size_t k) const {
 int rk4_steps(double dt, double max_step_s) { return std::max(1, static_cast<int>(std::ceil(dt / max_step_s - 1e-9))); }
 
 RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end)
-    : c_(c), t_(c.track), first_(first), end_(end) {
+    : c_(c), t_(c.track), first_(first), end_(end), spin_up_last_(first) {
   in0_ = inputs(first, 0, 1, cc_to_m3(t_.ballast_cc[first]), 0);
+  while (spin_up_last_ + 1 < end_ && t_.time_s[spin_up_last_ + 1] - t_.time_s[first_] <= t_.spin_up_s) ++spin_up_last_;
 }
 
 model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, double lagged0, int k0) const {
@@ -119,15 +121,30 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
   z[0] = 0.0;
   if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0_).norm();
   std::size_t flown = first_;
+  std::size_t stage = 0;  // next of spin_up_stages_
   for (std::size_t i = first_; i < last; ++i) {
     const double dt = t_.time_s[i + 1] - t_.time_s[i];
     const int steps = rk4_steps(dt, c_.max_step_s);
     const double h = dt / steps;
     double depth = z[i - first_];
+    // The spin-up's intervals are cached in order: the first not cached is the next to cache.
+    const bool cached = i - first_ < spin_up_cached_;
+    const bool to_cache = !cached && i < spin_up_last_;
     for (int s = 0; s < steps; ++s) {
-      const auto a = inputs(i, 2 * s, steps, lagged, 2 * s);
-      const auto b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
-      const auto c = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
+      std::array<model::PrescribedPitchInputs, 3> fresh;
+      const model::PrescribedPitchInputs* stages = fresh.data();
+      if (cached) {
+        stages = &spin_up_stages_[stage];
+        stage += 3;
+      } else {
+        fresh[0] = inputs(i, 2 * s, steps, lagged, 2 * s);
+        fresh[1] = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
+        fresh[2] = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
+        if (to_cache) spin_up_stages_.insert(spin_up_stages_.end(), fresh.begin(), fresh.end());
+      }
+      const model::PrescribedPitchInputs& a = stages[0];
+      const model::PrescribedPitchInputs& b = stages[1];
+      const model::PrescribedPitchInputs& c = stages[2];
       const Derivative d1 = dynamics.derivative(p, a);
       const Impulse p2 = p + 0.5 * h * d1.p_dot;
       const Derivative d2 = dynamics.derivative(p2, b);
@@ -139,6 +156,7 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
       p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
       lagged = c.pumped_volume_m3;
     }
+    if (to_cache) ++spin_up_cached_;
     if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
     z[i + 1 - first_] = depth;
     if (u != nullptr)
@@ -154,6 +172,12 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
   z[0] = t.depth_m[first_] + rel[0];
   double water = 0.0;
   for (std::size_t i = first_; i < flown; ++i) {
+    // The spin-up's water, integrated once (in order, as fly() caches its stages).
+    if (i - first_ < spin_up_water_.size()) {
+      water = spin_up_water_[i - first_];
+      z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
+      continue;
+    }
     const double dt = t.time_s[i + 1] - t.time_s[i];
     const int steps = rk4_steps(dt, c_.max_step_s);
     const double h = dt / steps;
@@ -163,6 +187,7 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       const double wc = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
       water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
     }
+    if (i < spin_up_last_) spin_up_water_.push_back(water);
     z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
   }
 }
@@ -186,8 +211,7 @@ void RunFlight::guess_start(double& v1, double& v3) const {
 void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::vector<double>& rel) const {
   guess_start(v1, v3);
   const Track& t = t_;
-  std::size_t fit_last = first_;
-  while (fit_last + 1 < end_ && t.time_s[fit_last + 1] - t.time_s[first_] <= t.spin_up_s) ++fit_last;
+  const std::size_t fit_last = spin_up_last_;
   if (fit_last < first_ + 3) return;
   const std::size_t n = fit_last - first_;
   auto misfit = [&](double a, double b, Eigen::VectorXd& r) {

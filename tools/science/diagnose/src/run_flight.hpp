@@ -107,6 +107,19 @@ class RunFlight {
   const Track& t_;
   std::size_t first_, end_;
   model::PrescribedPitchInputs in0_;
+  // The spin-up's last sample (the start-state fit flies [first_, spin_up_last_]).
+  std::size_t spin_up_last_;
+  // The spin-up's stage inputs (three a step: its start, middle and end),
+  // kept as the first flight computed them: they depend on the conditions
+  // alone, never on the start state, and the start-state fit flies the
+  // spin-up 4-35 times (then the whole run once more). The same values
+  // read back: the same bits. Filled in order from first_; the samples
+  // filled so far.
+  mutable std::vector<model::PrescribedPitchInputs> spin_up_stages_;
+  mutable std::size_t spin_up_cached_ = 0;
+  // The water's vertical displacement at each spin-up sample after the
+  // first, integrated once the same way (ground_depth).
+  mutable std::vector<double> spin_up_water_;
 };
 
 }  // namespace glider::diagnose::detail
