@@ -2,8 +2,8 @@
 #include "run_flight.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <Eigen/Dense>
@@ -77,8 +77,15 @@ double FlightConditions::battery(std::size_t k) const {
 
 int rk4_steps(double dt, double max_step_s) { return std::max(1, static_cast<int>(std::ceil(dt / max_step_s - 1e-9))); }
 
-RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end)
-    : c_(c), t_(c.track), first_(first), end_(end), spin_up_last_(first) {
+RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end, RunStages& stages)
+    : c_(c), t_(c.track), first_(first), end_(end), spin_up_last_(first), stages_(stages) {
+  const FlightConditions::InputKey key = c.input_key();
+  if (!stages_.valid || std::memcmp(&stages_.key, &key, sizeof key) != 0) {
+    stages_.valid = true;
+    stages_.key = key;
+    stages_.stages.clear();
+    stages_.intervals = 0;
+  }
   in0_ = inputs(first, 0, 1, cc_to_m3(t_.ballast_cc[first]), 0);
   while (spin_up_last_ + 1 < end_ && t_.time_s[spin_up_last_ + 1] - t_.time_s[first_] <= t_.spin_up_s) ++spin_up_last_;
 }
@@ -121,27 +128,23 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
   z[0] = 0.0;
   if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0_).norm();
   std::size_t flown = first_;
-  std::size_t stage = 0;  // next of spin_up_stages_
+  std::size_t stage = 0;  // next of stages_.stages
   for (std::size_t i = first_; i < last; ++i) {
     const double dt = t_.time_s[i + 1] - t_.time_s[i];
     const int steps = rk4_steps(dt, c_.max_step_s);
     const double h = dt / steps;
     double depth = z[i - first_];
-    // The spin-up's intervals are cached in order: the first not cached is the next to cache.
-    const bool cached = i - first_ < spin_up_cached_;
-    const bool to_cache = !cached && i < spin_up_last_;
+    // The intervals are cached in order: the first not cached is the next to cache.
+    const bool cached = i - first_ < stages_.intervals;
     for (int s = 0; s < steps; ++s) {
-      std::array<model::PrescribedPitchInputs, 3> fresh;
-      const model::PrescribedPitchInputs* stages = fresh.data();
-      if (cached) {
-        stages = &spin_up_stages_[stage];
-        stage += 3;
-      } else {
-        fresh[0] = inputs(i, 2 * s, steps, lagged, 2 * s);
-        fresh[1] = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
-        fresh[2] = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
-        if (to_cache) spin_up_stages_.insert(spin_up_stages_.end(), fresh.begin(), fresh.end());
+      if (!cached) {
+        const model::PrescribedPitchInputs a = inputs(i, 2 * s, steps, lagged, 2 * s);
+        const model::PrescribedPitchInputs b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
+        const model::PrescribedPitchInputs c = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
+        stages_.stages.insert(stages_.stages.end(), {a, b, c});
       }
+      const model::PrescribedPitchInputs* stages = &stages_.stages[stage];
+      stage += 3;
       const model::PrescribedPitchInputs& a = stages[0];
       const model::PrescribedPitchInputs& b = stages[1];
       const model::PrescribedPitchInputs& c = stages[2];
@@ -156,7 +159,7 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
       p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
       lagged = c.pumped_volume_m3;
     }
-    if (to_cache) ++spin_up_cached_;
+    if (!cached) ++stages_.intervals;
     if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
     z[i + 1 - first_] = depth;
     if (u != nullptr)
@@ -181,7 +184,12 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
     const double dt = t.time_s[i + 1] - t.time_s[i];
     const int steps = rk4_steps(dt, c_.max_step_s);
     const double h = dt / steps;
-    for (int s = 0; s < steps; ++s) {
+    if (!c_.has_profile()) {
+      // The same sum with the one velocity at every stage (no depths to look up).
+      const double w = c_.water_w(0.0);
+      for (int s = 0; s < steps; ++s) water += h / 6.0 * (w + 2.0 * w + 2.0 * w + w);
+    }
+    for (int s = 0; s < steps && c_.has_profile(); ++s) {
       const double wa = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s) / steps));
       const double wb = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], (s + 0.5) / steps));
       const double wc = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
