@@ -63,6 +63,22 @@ FlightConditions::FlightConditions(const model::VehicleParams& nominal, const Ef
       constant_w_(x[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)]),
       profile_(profile) {}
 
+bool FlightConditions::same_water(bool has_profile, double w, const VerticalVelocityProfile& profile) const {
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  if (has_profile != (profile_ != nullptr)) return false;
+  if (profile_ == nullptr) return same(w, constant_w_);
+  return same(profile.bin_m, profile_->bin_m) && same(profile.first_m, profile_->first_m) &&
+         profile.w_m_s.size() == profile_->w_m_s.size() &&
+         (profile.w_m_s.empty() ||
+          std::memcmp(profile.w_m_s.data(), profile_->w_m_s.data(), sizeof(double) * profile.w_m_s.size()) == 0);
+}
+
+void FlightConditions::water_of(bool& has_profile, double& w, VerticalVelocityProfile& profile) const {
+  has_profile = profile_ != nullptr;
+  w = constant_w_;
+  profile = profile_ != nullptr ? *profile_ : VerticalVelocityProfile{};
+}
+
 double FlightConditions::density(std::size_t k) const {
   return use_ctd_ && std::isfinite(track.density_kg_m3[k]) ? track.density_kg_m3[k] : constant_density_;
 }
@@ -85,6 +101,11 @@ RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t e
     stages_.key = key;
     stages_.stages.clear();
     stages_.intervals = 0;
+  }
+  if (!stages_.water_valid || !c.same_water(stages_.water_has_profile, stages_.water_w, stages_.water_profile)) {
+    stages_.water_valid = true;
+    c.water_of(stages_.water_has_profile, stages_.water_w, stages_.water_profile);
+    stages_.water.clear();
   }
   in0_ = inputs(first, 0, 1, cc_to_m3(t_.ballast_cc[first]), 0);
   while (spin_up_last_ + 1 < end_ && t_.time_s[spin_up_last_ + 1] - t_.time_s[first_] <= t_.spin_up_s) ++spin_up_last_;
@@ -175,9 +196,9 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
   z[0] = t.depth_m[first_] + rel[0];
   double water = 0.0;
   for (std::size_t i = first_; i < flown; ++i) {
-    // The spin-up's water, integrated once (in order, as fly() caches its stages).
-    if (i - first_ < spin_up_water_.size()) {
-      water = spin_up_water_[i - first_];
+    // The water's displacement, integrated once in this water (in order, as fly() caches its stages).
+    if (i - first_ < stages_.water.size()) {
+      water = stages_.water[i - first_];
       z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
       continue;
     }
@@ -195,7 +216,7 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       const double wc = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
       water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
     }
-    if (i < spin_up_last_) spin_up_water_.push_back(water);
+    stages_.water.push_back(water);
     z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
   }
 }

@@ -63,6 +63,10 @@ class FlightConditions {
   // The water's own vertical velocity at a depth (m/s, + down).
   double water_w(double depth_m) const { return profile_ != nullptr ? profile_->at(depth_m) : constant_w_; }
   bool has_profile() const { return profile_ != nullptr; }
+  // The water of these conditions is `profile` (or the constant `w` without
+  // one), bit for bit.
+  bool same_water(bool has_profile, double w, const VerticalVelocityProfile& profile) const;
+  void water_of(bool& has_profile, double& w, VerticalVelocityProfile& profile) const;
   // Sample k's density (the CTD's where asked for and logged), temperature and battery position.
   double density(std::size_t k) const;
   double temperature(std::size_t k) const;
@@ -92,6 +96,12 @@ struct RunStages {
   FlightConditions::InputKey key{};
   std::vector<model::PrescribedPitchInputs> stages;
   std::size_t intervals = 0;  // the intervals filled so far
+  // The water's vertical displacement after each interval (ground_depth),
+  // for the water it was integrated in: its own key.
+  bool water_valid = false, water_has_profile = false;
+  double water_w = 0.0;
+  VerticalVelocityProfile water_profile;
+  std::vector<double> water;
 };
 
 class RunFlight {
@@ -136,9 +146,6 @@ class RunFlight {
   // The spin-up's last sample (the start-state fit flies [first_, spin_up_last_]).
   std::size_t spin_up_last_;
   RunStages& stages_;
-  // The water's vertical displacement at each spin-up sample after the
-  // first, integrated once the same way (ground_depth).
-  mutable std::vector<double> spin_up_water_;
 };
 
 }  // namespace glider::diagnose::detail
