@@ -23,6 +23,7 @@ DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, cons
       stage_pitch_(std::make_unique<detail::StagePitchTable>(track, max_step_s)),
       relative_flights_(track.run_first.size()),
       start_states_(track.run_first.size()),
+      run_stages_(track.run_first.size()),
       next_start_(track.run_first.size(), 0) {}
 
 DynamicFlightModel::~DynamicFlightModel() = default;
@@ -206,7 +207,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   for (std::size_t run = 0; run < t.run_first.size() && next < samples.size(); ++run) {
     const std::size_t end = t.run_end(run);
     if (samples[next] >= end) continue;  // nothing requested in this run (every sample is in a run)
-    const detail::RunFlight run_flight(conditions, t.run_first[run], end);
+    const detail::RunFlight run_flight(conditions, t.run_first[run], end, run_stages_[run]);
     double v1 = 0.0, v3 = 0.0;
     start_state(run_flight, run, x, use_ctd, profile, v1, v3);
     const std::size_t last = last_needed(end, samples.back());

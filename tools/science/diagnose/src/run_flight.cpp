@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <Eigen/Dense>
@@ -62,6 +63,22 @@ FlightConditions::FlightConditions(const model::VehicleParams& nominal, const Ef
       constant_w_(x[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)]),
       profile_(profile) {}
 
+bool FlightConditions::same_water(bool has_profile, double w, const VerticalVelocityProfile& profile) const {
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  if (has_profile != (profile_ != nullptr)) return false;
+  if (profile_ == nullptr) return same(w, constant_w_);
+  return same(profile.bin_m, profile_->bin_m) && same(profile.first_m, profile_->first_m) &&
+         profile.w_m_s.size() == profile_->w_m_s.size() &&
+         (profile.w_m_s.empty() ||
+          std::memcmp(profile.w_m_s.data(), profile_->w_m_s.data(), sizeof(double) * profile.w_m_s.size()) == 0);
+}
+
+void FlightConditions::water_of(bool& has_profile, double& w, VerticalVelocityProfile& profile) const {
+  has_profile = profile_ != nullptr;
+  w = constant_w_;
+  profile = profile_ != nullptr ? *profile_ : VerticalVelocityProfile{};
+}
+
 double FlightConditions::density(std::size_t k) const {
   return use_ctd_ && std::isfinite(track.density_kg_m3[k]) ? track.density_kg_m3[k] : constant_density_;
 }
@@ -76,9 +93,22 @@ double FlightConditions::battery(std::size_t k) const {
 
 int rk4_steps(double dt, double max_step_s) { return std::max(1, static_cast<int>(std::ceil(dt / max_step_s - 1e-9))); }
 
-RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end)
-    : c_(c), t_(c.track), first_(first), end_(end) {
+RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end, RunStages& stages)
+    : c_(c), t_(c.track), first_(first), end_(end), spin_up_last_(first), stages_(stages) {
+  const FlightConditions::InputKey key = c.input_key();
+  if (!stages_.valid || std::memcmp(&stages_.key, &key, sizeof key) != 0) {
+    stages_.valid = true;
+    stages_.key = key;
+    stages_.stages.clear();
+    stages_.intervals = 0;
+  }
+  if (!stages_.water_valid || !c.same_water(stages_.water_has_profile, stages_.water_w, stages_.water_profile)) {
+    stages_.water_valid = true;
+    c.water_of(stages_.water_has_profile, stages_.water_w, stages_.water_profile);
+    stages_.water.clear();
+  }
   in0_ = inputs(first, 0, 1, cc_to_m3(t_.ballast_cc[first]), 0);
+  while (spin_up_last_ + 1 < end_ && t_.time_s[spin_up_last_ + 1] - t_.time_s[first_] <= t_.spin_up_s) ++spin_up_last_;
 }
 
 model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, double lagged0, int k0) const {
@@ -119,15 +149,26 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
   z[0] = 0.0;
   if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0_).norm();
   std::size_t flown = first_;
+  std::size_t stage = 0;  // next of stages_.stages
   for (std::size_t i = first_; i < last; ++i) {
     const double dt = t_.time_s[i + 1] - t_.time_s[i];
     const int steps = rk4_steps(dt, c_.max_step_s);
     const double h = dt / steps;
     double depth = z[i - first_];
+    // The intervals are cached in order: the first not cached is the next to cache.
+    const bool cached = i - first_ < stages_.intervals;
     for (int s = 0; s < steps; ++s) {
-      const auto a = inputs(i, 2 * s, steps, lagged, 2 * s);
-      const auto b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
-      const auto c = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
+      if (!cached) {
+        const model::PrescribedPitchInputs a = inputs(i, 2 * s, steps, lagged, 2 * s);
+        const model::PrescribedPitchInputs b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
+        const model::PrescribedPitchInputs c = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
+        stages_.stages.insert(stages_.stages.end(), {a, b, c});
+      }
+      const model::PrescribedPitchInputs* stages = &stages_.stages[stage];
+      stage += 3;
+      const model::PrescribedPitchInputs& a = stages[0];
+      const model::PrescribedPitchInputs& b = stages[1];
+      const model::PrescribedPitchInputs& c = stages[2];
       const Derivative d1 = dynamics.derivative(p, a);
       const Impulse p2 = p + 0.5 * h * d1.p_dot;
       const Derivative d2 = dynamics.derivative(p2, b);
@@ -139,6 +180,7 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
       p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
       lagged = c.pumped_volume_m3;
     }
+    if (!cached) ++stages_.intervals;
     if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
     z[i + 1 - first_] = depth;
     if (u != nullptr)
@@ -154,15 +196,27 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
   z[0] = t.depth_m[first_] + rel[0];
   double water = 0.0;
   for (std::size_t i = first_; i < flown; ++i) {
+    // The water's displacement, integrated once in this water (in order, as fly() caches its stages).
+    if (i - first_ < stages_.water.size()) {
+      water = stages_.water[i - first_];
+      z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
+      continue;
+    }
     const double dt = t.time_s[i + 1] - t.time_s[i];
     const int steps = rk4_steps(dt, c_.max_step_s);
     const double h = dt / steps;
-    for (int s = 0; s < steps; ++s) {
+    if (!c_.has_profile()) {
+      // The same sum with the one velocity at every stage (no depths to look up).
+      const double w = c_.water_w(0.0);
+      for (int s = 0; s < steps; ++s) water += h / 6.0 * (w + 2.0 * w + 2.0 * w + w);
+    }
+    for (int s = 0; s < steps && c_.has_profile(); ++s) {
       const double wa = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s) / steps));
       const double wb = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], (s + 0.5) / steps));
       const double wc = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
       water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
     }
+    stages_.water.push_back(water);
     z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
   }
 }
@@ -186,8 +240,7 @@ void RunFlight::guess_start(double& v1, double& v3) const {
 void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::vector<double>& rel) const {
   guess_start(v1, v3);
   const Track& t = t_;
-  std::size_t fit_last = first_;
-  while (fit_last + 1 < end_ && t.time_s[fit_last + 1] - t.time_s[first_] <= t.spin_up_s) ++fit_last;
+  const std::size_t fit_last = spin_up_last_;
   if (fit_last < first_ + 3) return;
   const std::size_t n = fit_last - first_;
   auto misfit = [&](double a, double b, Eigen::VectorXd& r) {

@@ -50,8 +50,23 @@ class FlightConditions {
   FlightConditions(const FlightConditions&) = delete;  // `dynamics` was made from `vehicle`
   FlightConditions& operator=(const FlightConditions&) = delete;
 
+  // What a run's stage inputs depend on besides the track (RunFlight::inputs):
+  // the density source, the density where none is logged, the hull's
+  // reference temperature and the pump's lag. Compared bit for bit.
+  struct InputKey {
+    double use_ctd, constant_density, hull_reference_temperature_c, pump_lag_s;
+  };
+  InputKey input_key() const {
+    return {use_ctd_ ? 1.0 : 0.0, constant_density_, vehicle.hull_reference_temperature_c, vehicle.ballast.lag_s};
+  }
+
   // The water's own vertical velocity at a depth (m/s, + down).
   double water_w(double depth_m) const { return profile_ != nullptr ? profile_->at(depth_m) : constant_w_; }
+  bool has_profile() const { return profile_ != nullptr; }
+  // The water of these conditions is `profile` (or the constant `w` without
+  // one), bit for bit.
+  bool same_water(bool has_profile, double w, const VerticalVelocityProfile& profile) const;
+  void water_of(bool& has_profile, double& w, VerticalVelocityProfile& profile) const;
   // Sample k's density (the CTD's where asked for and logged), temperature and battery position.
   double density(std::size_t k) const;
   double temperature(std::size_t k) const;
@@ -69,10 +84,31 @@ class FlightConditions {
   const VerticalVelocityProfile* profile_;
 };
 
+// A run's stage inputs (three a RK4 step: its start, middle and end) as
+// the first flight under the same input key computed them: they depend on
+// that key and the track alone, never on the start state nor on the other
+// effect values, and a diagnosis flies a run hundreds of times (the
+// start-state fit's 4-35 flights of the spin-up, then every fit's Jacobian
+// column of an effect that leaves them alone). The same values read back:
+// the same bits. Filled in order from the run's first sample.
+struct RunStages {
+  bool valid = false;
+  FlightConditions::InputKey key{};
+  std::vector<model::PrescribedPitchInputs> stages;
+  std::size_t intervals = 0;  // the intervals filled so far
+  // The water's vertical displacement after each interval (ground_depth),
+  // for the water it was integrated in: its own key.
+  bool water_valid = false, water_has_profile = false;
+  double water_w = 0.0;
+  VerticalVelocityProfile water_profile;
+  std::vector<double> water;
+};
+
 class RunFlight {
  public:
-  // The run of samples [first, end).
-  RunFlight(const FlightConditions& c, std::size_t first, std::size_t end);
+  // The run of samples [first, end); `stages` is kept by the caller between
+  // flights of the run (reset here where the conditions' input key differs).
+  RunFlight(const FlightConditions& c, std::size_t first, std::size_t end, RunStages& stages);
 
   std::size_t first() const { return first_; }
   std::size_t end() const { return end_; }
@@ -107,6 +143,9 @@ class RunFlight {
   const Track& t_;
   std::size_t first_, end_;
   model::PrescribedPitchInputs in0_;
+  // The spin-up's last sample (the start-state fit flies [first_, spin_up_last_]).
+  std::size_t spin_up_last_;
+  RunStages& stages_;
 };
 
 }  // namespace glider::diagnose::detail

@@ -19,6 +19,7 @@ namespace glider::diagnose {
 namespace detail {
 class RunFlight;        // one run's flight (src/run_flight.hpp)
 class StagePitchTable;  // the track's pitch at every RK4 stage (src/run_flight.hpp)
+struct RunStages;       // a run's stage inputs, kept between its flights (src/run_flight.hpp)
 }  // namespace detail
 
 class DynamicFlightModel final : public DepthRateModel {
@@ -86,6 +87,7 @@ class DynamicFlightModel final : public DepthRateModel {
   };
   static constexpr std::size_t kStartStates = 8;
   mutable std::vector<std::vector<StartState>> start_states_;
+  mutable std::vector<detail::RunStages> run_stages_;  // per run
   mutable std::vector<std::size_t> next_start_;
   // The last flights' answers, by their whole question: a selection asks the
   // same values at the same samples again (about a quarter of the flights of
