@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -234,7 +233,7 @@ double train_rss_at(const SampleSet& set, const Parameters& x, bool ctd, std::sp
 // The density input is part of the key: a grid run with the constant
 // density where the fit uses the CTD's put a 14.7 s lag's start at 5 s, on
 // a shoulder of the CTD fit's residual the local fit stopped on (5.6 s,
-// tests/diagnose/pump_lag_search).
+// tests/diagnose_pump_lag).
 double lag_grid_start(const SampleSet& set, Effect e, bool ctd, std::span<const std::size_t> train) {
   if (const auto it = set.lag_start.find({e, ctd}); it != set.lag_start.end()) return it->second;
   const DelayGrid grid = lag_grid(e);
@@ -246,38 +245,6 @@ double lag_grid_start(const SampleSet& set, Effect e, bool ctd, std::span<const 
   const double start = best_on_grid(grid, rss);
   set.lag_start.emplace(std::pair{e, ctd}, start);
   return start;
-}
-
-// The scaled start of lag `e` at `lag`: a fifth of a scale from 0 where that
-// is 0 (at 0 the gradient of |value| vanishes).
-double lag_start_scaled(Effect e, double lag) { return lag > 0.0 ? (lag - info(e).nominal) / info(e).scale : 0.2; }
-
-// Global check after the local fit: each lag's training RSS over its grid,
-// the other parameters held at the local solution (a conditional profile).
-// A grid point below the solution means the fit stopped on a shoulder or in
-// a minimum the others' values moved away from the grid start's: the fit
-// starts again from that point and the better of the two is kept.
-void refit_from_lag_grid(const SampleSet& set, const Candidate& candidate, const Layout& layout,
-                         std::span<const std::size_t> train, const std::function<void(Eigen::VectorXd&)>& local_fit,
-                         Eigen::VectorXd& p) {
-  for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
-    const Effect e = candidate.fitted[j];
-    if (!is_lag(e)) continue;
-    const Parameters at_fit = unpack(candidate, layout, p);
-    const double fitted_rss = train_rss_at(set, at_fit, candidate.ctd_density, train);
-    const DelayGrid grid = lag_grid(e);
-    const std::vector<double> rss = rss_on_grid(grid, [&](double lag) {
-      Parameters x = at_fit;
-      x.values[static_cast<std::size_t>(e)] = lag;
-      return train_rss_at(set, x, candidate.ctd_density, train);
-    });
-    const auto best = static_cast<std::size_t>(std::min_element(rss.begin(), rss.end()) - rss.begin());
-    if (!(rss[best] < fitted_rss)) continue;
-    Eigen::VectorXd q = p;
-    q[static_cast<Eigen::Index>(layout.offset[j])] = lag_start_scaled(e, best_on_grid(grid, rss));
-    local_fit(q);
-    if (train_rss_at(set, unpack(candidate, layout, q), candidate.ctd_density, train) < fitted_rss) p = q;
-  }
 }
 
 // The held-out residuals `h` (of `heldout`) averaged over blocks of a glide
@@ -309,8 +276,8 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
     const Effect e = candidate.fitted[j];
     if (!is_lag(e)) continue;
-    p[static_cast<Eigen::Index>(layout.offset[j])] =
-        lag_start_scaled(e, lag_grid_start(set, e, candidate.ctd_density, train));
+    const double start = lag_grid_start(set, e, candidate.ctd_density, train);
+    p[static_cast<Eigen::Index>(layout.offset[j])] = start > 0.0 ? (start - info(e).nominal) / info(e).scale : 0.2;
   }
   if (from != nullptr) {
     for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
@@ -330,13 +297,9 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   }
   if (k > 0) {
     const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
-    const auto local_fit = [&](Eigen::VectorXd& q) {
-      Eigen::LevenbergMarquardt<const ForwardDifference<FitFunctor>> lm(functor);
-      lm.parameters.maxfev = 400;
-      lm.minimize(q);
-    };
-    local_fit(p);
-    refit_from_lag_grid(set, candidate, layout, train, local_fit, p);
+    Eigen::LevenbergMarquardt<const ForwardDifference<FitFunctor>> lm(functor);
+    lm.parameters.maxfev = 400;
+    lm.minimize(p);
   }
   result.parameters = unpack(candidate, layout, p);
   std::vector<double> h;
