@@ -13,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 #include <unsupported/Eigen/NonLinearOptimization>
+#include <utility>
 
 #include "glider/diagnose/dynamic_flight_model.hpp"
 #include "glider/diagnose/forward_difference.hpp"
@@ -55,10 +56,11 @@ struct SampleSet {
   std::span<const int> yo;
   std::vector<flightlog::Phase> phase;
   std::vector<std::size_t> usable;  // sorted indices of the samples scored
-  // Per lag effect, the best point of its grid over the allowed range
-  // (lag_grid_start): computed at the first fit that needs it, once per
-  // diagnosis (the training samples are the same in every fit).
-  mutable std::map<Effect, double> lag_start{};
+  // Per lag effect and density input (the CTD's or the constant's), the
+  // best point of its grid over the allowed range (lag_grid_start):
+  // computed at the first fit that needs it, once per diagnosis (the
+  // training samples are the same in every fit).
+  mutable std::map<std::pair<Effect, bool>, double> lag_start{};
 };
 
 // How the optimiser's parameter vector maps onto effects: one scaled number
@@ -213,31 +215,35 @@ DelayGrid lag_grid(Effect e) {
                                 : doubling_delay_grid(info(e).scale, info(e).plausible_max);
 }
 
-// The training RSS of `values` (with no depth profile).
-double train_rss_at(const SampleSet& set, const EffectValues& values, bool ctd, std::span<const std::size_t> train) {
+// The training RSS of `x`.
+double train_rss_at(const SampleSet& set, const Parameters& x, bool ctd, std::span<const std::size_t> train) {
   std::vector<double> r;
-  residuals(set, Parameters{values, std::nullopt}, ctd, train, r);
+  residuals(set, x, ctd, train, r);
   double rss = 0.0;
   for (double v : r) rss += v * v;
   return rss;
 }
 
 // Global step of the lag's global-then-local search: the lag alone (every
-// other effect nominal) on its grid; the local fit then starts at the best
-// point. Once per lag and diagnosis (SampleSet::lag_start): 8 flights for
-// the pump lag instead of a start in the nearest minimum (a hidden 37.9 s
-// lag started at 5 s lost to a lift change 0.80 + depth lag 5.9 s;
-// tests/diagnose/test_long_delays.cpp).
-double lag_grid_start(const SampleSet& set, Effect e, std::span<const std::size_t> train) {
-  if (const auto it = set.lag_start.find(e); it != set.lag_start.end()) return it->second;
+// other effect nominal, the candidate's density input) on its grid; the
+// local fit then starts at the best point. Once per lag, density input and
+// diagnosis (SampleSet::lag_start): 8 flights for the pump lag instead of a
+// start in the nearest minimum (a hidden 37.9 s lag started at 5 s lost to
+// a lift change 0.80 + depth lag 5.9 s; tests/diagnose/test_long_delays.cpp).
+// The density input is part of the key: a grid run with the constant
+// density where the fit uses the CTD's put a 14.7 s lag's start at 5 s, on
+// a shoulder of the CTD fit's residual the local fit stopped on (5.6 s,
+// tests/diagnose_pump_lag).
+double lag_grid_start(const SampleSet& set, Effect e, bool ctd, std::span<const std::size_t> train) {
+  if (const auto it = set.lag_start.find({e, ctd}); it != set.lag_start.end()) return it->second;
   const DelayGrid grid = lag_grid(e);
   const std::vector<double> rss = rss_on_grid(grid, [&](double lag) {
-    EffectValues x = nominal_values();
-    x[static_cast<std::size_t>(e)] = lag;
-    return train_rss_at(set, x, false, train);
+    Parameters x{nominal_values(), std::nullopt};
+    x.values[static_cast<std::size_t>(e)] = lag;
+    return train_rss_at(set, x, ctd, train);
   });
   const double start = best_on_grid(grid, rss);
-  set.lag_start.emplace(e, start);
+  set.lag_start.emplace(std::pair{e, ctd}, start);
   return start;
 }
 
@@ -270,7 +276,7 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
   for (std::size_t j = 0; j < candidate.fitted.size(); ++j) {
     const Effect e = candidate.fitted[j];
     if (!is_lag(e)) continue;
-    const double start = lag_grid_start(set, e, train);
+    const double start = lag_grid_start(set, e, candidate.ctd_density, train);
     p[static_cast<Eigen::Index>(layout.offset[j])] = start > 0.0 ? (start - info(e).nominal) / info(e).scale : 0.2;
   }
   if (from != nullptr) {
