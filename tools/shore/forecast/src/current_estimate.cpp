@@ -181,9 +181,26 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   // smallest error wins, and its error is the estimate's uncertainty (the
   // hindcast says how well the rule does in this water, its formula does not).
   const double half = 0.5 * (to_utc_s - from_utc_s);
+  // Persistence and its sigma: the scatter of consecutive estimates, pooled
+  // with what the prior says carrying the last one over this window costs,
+  // as two cases' worth (a scaled-inverse-chi-square prior, 2 degrees of
+  // freedom): a few differences of a turning tide do not make persistence
+  // certain. Without a prior, the scatter alone.
+  auto persistence = [&](const std::vector<CurrentSample>& s, double from, double to) {
+    CurrentEstimate e = last_current(s, floor);
+    if (!use_prior || s.empty()) return e;
+    const double prior_var = persistence_prior_variance(s.back(), from, to, prior, s);
+    const double n = static_cast<double>(s.size() - 1), nu0 = 2.0;
+    const double se2 = n > 0.0 ? e.sigma_east_m_s * e.sigma_east_m_s : 0.0;
+    const double sn2 = n > 0.0 ? e.sigma_north_m_s * e.sigma_north_m_s : 0.0;
+    e.sigma_east_m_s = std::sqrt((nu0 * prior_var + n * se2) / (nu0 + n));
+    e.sigma_north_m_s = std::sqrt((nu0 * prior_var + n * sn2) / (nu0 + n));
+    return e;
+  };
   enum Rule { kLast, kTrend, kTidal, kPrior, kRules };
-  // Squared errors of each rule, and of persistence on the same cases.
-  double sum2[kRules] = {}, last_on[kRules] = {};
+  // Squared errors of each rule, and of persistence on the same cases; and
+  // each error in the sigma the rule gave it (z^2, east and north).
+  double sum2[kRules] = {}, last_on[kRules] = {}, z2[kRules] = {};
   int count[kRules] = {};
   for (std::size_t j = 1; j < all.size(); ++j) {
     if (all[j].utc_s > from_utc_s || all[j].utc_s <= from_utc_s - 86400.0) continue;
@@ -196,7 +213,7 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
     for (int rule = kLast; rule < kRules; ++rule) {
       std::optional<CurrentEstimate> p;
       if (rule == kLast) {
-        p = last_current(before, floor);
+        p = persistence(before, from, to);
       } else if (rule == kPrior) {
         if (use_prior) p = predict_with_prior(before, from, to, prior);
       } else {
@@ -205,6 +222,8 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
       if (!p) continue;
       sum2[rule] += error2(*p);
       last_on[rule] += last2;
+      z2[rule] += std::pow((p->east_m_s - all[j].east_m_s) / std::max(p->sigma_east_m_s, 1e-6), 2) +
+                  std::pow((p->north_m_s - all[j].north_m_s) / std::max(p->sigma_north_m_s, 1e-6), 2);
       ++count[rule];
     }
   }
@@ -223,7 +242,6 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
     return e;
   }
   int best = kLast;
-  double best_rms = std::sqrt(sum2[kLast] / count[kLast]);
   double best_gain = 1.0;
   for (int rule = kTrend; rule < kRules; ++rule) {
     // Two hindcasts at least: a tide shows itself in a few 3 h dives.
@@ -232,31 +250,28 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
     if (gain < best_gain) {
       best = rule;
       best_gain = gain;
-      best_rms = std::sqrt(sum2[rule] / count[rule]);
     }
   }
-  CurrentEstimate e = last_current(all, floor);
+  CurrentEstimate e = persistence(all, from_utc_s, to_utc_s);
   if (best == kPrior) {
     e = predict_with_prior(all, from_utc_s, to_utc_s, prior);
   } else if (best != kLast) {
     if (const std::optional<CurrentEstimate> p = predict_fitted(all, from_utc_s, to_utc_s, best == kTidal, floor))
       e = *p;
-  } else if (use_prior) {
-    // Persistence's scatter of consecutive estimates, pooled with what the
-    // prior says carrying the last one over this window costs, as two cases'
-    // worth (a scaled-inverse-chi-square prior, 2 degrees of freedom): a few
-    // differences of a turning tide do not make persistence certain.
-    const double prior_var = persistence_prior_variance(all.back(), from_utc_s, to_utc_s, prior, all);
-    const double n = static_cast<double>(all.size() - 1), nu0 = 2.0;
-    e.sigma_east_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_east_m_s * e.sigma_east_m_s) / (nu0 + n));
-    e.sigma_north_m_s = std::sqrt((nu0 * prior_var + n * e.sigma_north_m_s * e.sigma_north_m_s) / (nu0 + n));
   }
-  if (count[best] >= 3) {
-    // Per component: the hindcast's error split evenly.
-    const double per_axis = best_rms / std::sqrt(2.0);
-    e.sigma_east_m_s = std::max(e.sigma_east_m_s, per_axis);
-    e.sigma_north_m_s = std::max(e.sigma_north_m_s, per_axis);
-  }
+  // The winner's sigma, scaled by how its hindcasts' errors compared with
+  // the sigmas it gave them (sixth session): its formula said how sure it
+  // is, the hindcasts say how sure it was right to be in this water. Pooled
+  // with two cases' worth (east and north) of z^2 = 1, the formula taken at
+  // its word. Before, the sigma was at least the hindcasts' RMS error: the
+  // first hindcasts, from one or two estimates, made the later forecasts'
+  // sigmas 2-3 times what their errors were (the current measured over the
+  // SIL dives at an RMS 0.3-0.6 of the sigma) while the tidal fit's stayed
+  // too narrow (1.2-1.7).
+  const double pseudo = 4.0;
+  const double scale = std::sqrt((pseudo + z2[best]) / (pseudo + 2.0 * count[best]));
+  e.sigma_east_m_s = std::max(e.sigma_east_m_s * scale, floor);
+  e.sigma_north_m_s = std::max(e.sigma_north_m_s * scale, floor);
   e.samples = static_cast<int>(all.size());
   return e;
 }

@@ -93,6 +93,11 @@ void score_case(const fc::Forecast& f, const fc::TruthSurfacing& next, Score& s,
         e, std::fabs(f.time_utc_s - next.surfaced_utc_s), b, std::fabs(f.baseline_time_utc_s - next.surfaced_utc_s),
         f.ellipse.semi_major_m, f.ellipse.semi_minor_m, radius, f.current.method.c_str(), f.current.sigma_east_m_s,
         f.current.sigma_north_m_s, ze, zn, f.wall_s);
+    // The currents themselves (m/s), to score a current rule without its
+    // flights: the forecast's, persistence's and the one measured next.
+    std::printf("    current forecast %+.3f %+.3f, persistence %+.3f %+.3f, measured next %+.3f %+.3f m/s\n",
+                f.current.east_m_s, f.current.north_m_s, f.baseline_current.east_m_s, f.baseline_current.north_m_s,
+                next.have_current ? next.water_vx : std::nan(""), next.have_current ? next.water_vy : std::nan(""));
   }
 }
 
