@@ -1031,7 +1031,8 @@ void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseO
 // 0.1-0.5 s pressure-sensor lag up to 1.9 s). A delay that small rarely
 // earns a finding of its own, so where the selection names a pump lag and
 // no depth lag, the pump lag's value and interval are those of the joint
-// fit: the depth lag a nuisance (in the extended vehicle, not a finding).
+// fit, where it predicts the held-out yos no worse: the depth lag a
+// nuisance (in the extended vehicle, not a finding).
 // Not where the depth lag was screened as the pump lag's alias: its
 // interval then already holds that joint reading.
 void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
@@ -1065,7 +1066,11 @@ void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const 
   FitResult f = fit_reported(set, joint, s.train, s.heldout, options, &from);
   double& lag = f.parameters.values[index];
   lag = std::abs(lag);  // fitted as |value|, as every lag
-  if (!plausible(Effect::kDepthLag, lag)) return;
+  // Not where the delay beside it predicts the held-out yos worse (the
+  // selection's own score): the data do not carry it there (fresh truth
+  // draws: a 4.76 s lag beside a drag change read 1.72 s, an 8.73 s lag
+  // alone 3.76 s; docs/science.md).
+  if (!plausible(Effect::kDepthLag, lag) || f.heldout_score > current_fit.heldout_score) return;
   add_intervals(set, joint, s.train, options.intervals, f);
   current = std::move(joint);
   current_fit = std::move(f);
