@@ -163,6 +163,7 @@ def main():
     p.add_argument("--runs", type=int, default=200)
     p.add_argument("--waypoint", type=int, default=None, help="force this active waypoint for every forecast")
     p.add_argument("--current-prior", default=None, help="glider-forecast's --current-prior (evidence, fixed, off)")
+    p.add_argument("--speed-correction", action="store_true", help="glider-forecast's --speed-correction")
     p.add_argument("--check", action="store_true", help="test mode: the current checks above, PASS/FAIL line")
     a = p.parse_args()
     out = a.out or os.path.join(a.build, "benchmark", "forecast_real")
@@ -204,7 +205,8 @@ def main():
         # dive 156 to waypoint 0, 54.558 N 7.217 E).
         run = subprocess.run([forecast, "--glider-dir", d, "--vehicle", vehicle, "--runs", str(a.runs),
                               "--waypoint", str(wpts[k]), "--json"] +
-                             (["--current-prior", a.current_prior] if a.current_prior else []),
+                             (["--current-prior", a.current_prior] if a.current_prior else []) +
+                             (["--speed-correction"] if a.speed_correction else []),
                              capture_output=True, text=True)
         if run.returncode != 0:
             print(run.stdout, run.stderr)

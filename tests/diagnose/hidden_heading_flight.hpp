@@ -23,8 +23,14 @@
 
 namespace glider::hidden {
 
+// With WE01's lift and drag (slocum_we01.toml), which slocum_comet.toml
+// flew until issue 24 gave it the comet's own (0.30 m/s instead of 0.40):
+// these flights and their thresholds were calibrated at that speed, and the
+// yaw rates scale with it (re-tuning them to the comet's polar: open).
 inline model::VehicleParams comet() {
-  return model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_comet.toml");
+  model::VehicleParams v = model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_comet.toml");
+  v.hydro = model::load_vehicle_file(GLIDER_SOURCE_DIR "/boards/vehicles/slocum_we01.toml").hydro;
+  return v;
 }
 
 // The gains the log's header states (Slocum's, as in the comet logs).

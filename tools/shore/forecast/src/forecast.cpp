@@ -297,10 +297,35 @@ void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, co
 // dived from) / time - its m_water_vx/vy then), against one still-water
 // flight of the model (whose DR is its track through the water). Both count
 // speed from the depth rate and pitch the same way. Said (a note, JSON
-// current.glider_speed_ratio), not applied: scaling the model's drag to
-// match is ill-conditioned on slocum_comet.toml (drag x1.1-1.4 cuts its
-// speed 0.35 -> 0.04-0.10 m/s, not by drag^-1/2; docs/forecast.md). Also
-// the mean glide speed the runs start with (the model's).
+// current.glider_speed_ratio); with options.speed_correction also applied:
+// the vehicle's drag (cd0 and cd_alpha2, as the runs' draws scale it) is
+// scaled until the model's speed is the glider's. The speed falls smoothly
+// with drag, about as drag^-1/2, since slocum_comet.toml flies the comet's
+// own polar (model.comet_drag_sweep), so secant steps settle it in a few
+// flights. Also the mean glide speed the runs start with
+// (the model's).
+constexpr double kSpeedDragMin = 0.5, kSpeedDragMax = 2.5;  // beyond: a wrong trim, not drag
+constexpr int kSpeedPasses = 6;
+constexpr double kSpeedStepMax = 1.3;     // per pass: the slope is the comet polar's only near the last flight
+constexpr double kSpeedTolerance = 0.01;  // of the ratio: below the DR's own spread
+
+double still_water_speed(const FlightSetup& setup, const ForecastOptions& options, double& average) {
+  FlightSetup still = setup;
+  still.current = CurrentEstimate{};
+  still.firmware_current.reset();
+  // Straight toward the active waypoint, not through it: a flight that
+  // reaches it and turns back covers less ground than it glides.
+  fw::MissionPlan& plan = still.config.plan;
+  if (plan.waypoint_count > 0) {
+    const fw::EastNorth w = fw::LocalFrame(still.fix).to_local(plan.waypoints[0]);
+    plan.heading_rad = std::atan2(w.east_m, w.north_m);
+    plan.waypoint_count = 0;
+  }
+  const RunOutcome r = fly_runs(still, options, 1, false).at(0);
+  average = r.average_speed_m_s;
+  return r.surfaced && !r.aborted && r.time_s > 600.0 ? std::hypot(r.dr_east_m, r.dr_north_m) / r.time_s : 0.0;
+}
+
 void measure_speed(const std::vector<Surfacing>& history, FlightSetup& setup, const ForecastOptions& options,
                    Forecast& f) {
   std::vector<double> glider_speeds;
@@ -317,24 +342,66 @@ void measure_speed(const std::vector<Surfacing>& history, FlightSetup& setup, co
     const double speed = std::hypot(dr.east_m / under_s - ce, dr.north_m / under_s - cn);
     if (std::isfinite(speed) && speed > 0.02) glider_speeds.push_back(speed);
   }
-  FlightSetup still = setup;
-  still.current = CurrentEstimate{};
-  still.firmware_current.reset();
-  const RunOutcome r = fly_runs(still, options, 1, false).at(0);
-  const double average = r.average_speed_m_s;
-  const double model =
-      r.surfaced && !r.aborted && r.time_s > 600.0 ? std::hypot(r.dr_east_m, r.dr_north_m) / r.time_s : 0.0;
+  double average = 0.0;
+  const double model = still_water_speed(setup, options, average);
   if (!glider_speeds.empty() && model > 0.02) {
     std::sort(glider_speeds.begin(), glider_speeds.end());
     const double glider = glider_speeds[glider_speeds.size() / 2];
     f.glider_speed_ratio = glider / model;
     f.speed_dives = static_cast<int>(glider_speeds.size());
-    char text[200];
+    char text[240];
     std::snprintf(text, sizeof text,
                   "speed through the water by dead reckoning: the glider's %.3f m/s over %zu recent dives, the "
-                  "model's %.3f (said, not applied)",
-                  glider, glider_speeds.size(), model);
+                  "model's %.3f (%s)",
+                  glider, glider_speeds.size(), model,
+                  options.speed_correction ? "corrected below" : "said, not applied");
     f.notes.push_back(text);
+    if (options.speed_correction) {
+      const model::Hydrodynamics nominal = setup.vehicle.hydro;
+      // Secant steps on log speed against log drag, the first at drag^-1/2
+      // (the horizontal speed falls faster, ~drag^-0.7..-1, as the angle of
+      // attack grows).
+      double factor = 1.0, ratio = f.glider_speed_ratio, corrected = model, corrected_average = average;
+      double slope = -0.5, last_log_factor = 0.0, last_log_speed = std::log(model);
+      // The flights' speed is smooth in drag only to a few per cent (where
+      // each yo ends): the best pass is kept, not the last.
+      double best_factor = 1.0, best_ratio = ratio, best_speed = model, best_average = average;
+      for (int pass = 0; pass < kSpeedPasses && std::abs(best_ratio - 1.0) > kSpeedTolerance; ++pass) {
+        const double step = std::clamp(std::exp(std::log(best_ratio) / slope), 1.0 / kSpeedStepMax, kSpeedStepMax);
+        const double next = std::clamp(best_factor * step, kSpeedDragMin, kSpeedDragMax);
+        if (next == factor) break;  // at a limit
+        factor = next;
+        setup.vehicle.hydro.cd0 = nominal.cd0 * factor;
+        setup.vehicle.hydro.cd_alpha2 = nominal.cd_alpha2 * factor;
+        corrected = still_water_speed(setup, options, corrected_average);
+        if (!(corrected > 0.02)) break;  // no glide there: keep the best so far
+        ratio = glider / corrected;
+        if (std::abs(ratio - 1.0) < std::abs(best_ratio - 1.0)) {
+          best_factor = factor;
+          best_ratio = ratio;
+          best_speed = corrected;
+          best_average = corrected_average;
+        }
+        const double log_factor = std::log(factor), log_speed = std::log(corrected);
+        const double secant = (log_speed - last_log_speed) / (log_factor - last_log_factor);
+        if (std::isfinite(secant) && secant < -0.1 && secant > -3.0) slope = secant;  // else keep the last
+        last_log_factor = log_factor;
+        last_log_speed = log_speed;
+      }
+      setup.vehicle.hydro.cd0 = nominal.cd0 * best_factor;
+      setup.vehicle.hydro.cd_alpha2 = nominal.cd_alpha2 * best_factor;
+      f.speed_drag_factor = best_factor;
+      if (best_factor != 1.0) {
+        average = best_average;
+        std::snprintf(text, sizeof text, "the model's drag x%.3f: its dead-reckoned speed %.3f m/s (ratio %.3f)",
+                      best_factor, best_speed, best_ratio);
+      } else {
+        setup.vehicle.hydro = nominal;
+        std::snprintf(text, sizeof text, "the model's drag not corrected: no factor in [%.1f, %.1f] brought it nearer",
+                      kSpeedDragMin, kSpeedDragMax);
+      }
+      f.notes.push_back(text);
+    }
   }
   if (std::isfinite(average) && average > 0.0) {
     setup.average_speed_m_s = average;
@@ -500,6 +567,8 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
 
   FlightSetup base = setup;
   base.current = f.baseline_current;
+  base.vehicle.hydro.cd0 /= f.speed_drag_factor;  // the baseline flies the nominal vehicle
+  base.vehicle.hydro.cd_alpha2 /= f.speed_drag_factor;
   const std::vector<RunOutcome> baseline = fly_runs(base, options, 1, false);
   if (!baseline.empty() && baseline[0].surfaced && !baseline[0].aborted) {
     f.baseline_ok = true;
@@ -548,6 +617,7 @@ nlohmann::json forecast_json(const Forecast& f) {
                     {"samples", f.current.samples},
                     {"dr_speed_ratio", f.dr_speed_ratio},
                     {"glider_speed_ratio", f.glider_speed_ratio},
+                    {"speed_drag_factor", f.speed_drag_factor},
                     {"speed_dives", f.speed_dives},
                     {"prior",
                      {{"mode", to_string(f.prior.mode)},

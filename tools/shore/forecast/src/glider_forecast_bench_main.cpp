@@ -162,8 +162,13 @@ int main(int argc, char** argv) {
   app.add_option("--current-prior", prior_mode, "the forecasts' current prior: evidence, fixed or off")
       ->check(CLI::IsMember({"evidence", "fixed", "off"}))
       ->capture_default_str();
+  app.add_flag("--speed-correction", options.speed_correction,
+               "the forecasts scale the model's drag to the glider's dead-reckoned speed (docs/forecast.md)");
   tool.add_number("--truth-drag-sigma", truth_options.drag_sigma, {0.0, 1.0, ""},
                   "the true vehicle's drag off the file's, 1 sigma of its log")
+      ->capture_default_str();
+  tool.add_number("--truth-drag", truth_options.drag_factor, {0.2, 5.0, ""},
+                  "the true vehicle's drag as a factor of the file's (times the drawn one)")
       ->capture_default_str();
   double tide_max = truth_options.tide_amplitude_max_m_s, mean_max = truth_options.mean_current_max_m_s;
   tool.add_number("--tide-max", tide_max, {0.0, 2.0, "m/s"}, "the truths' M2 amplitude is drawn up to this")

@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
     tool.add_number(command, "--max-working-depth-m", options.max_working_depth_m, {1.0, 11000.0, "m"},
                     "the glider's rating the mission is checked against")
         ->capture_default_str();
+    command->add_flag(
+        "--speed-correction", options.speed_correction,
+        "scale the model's drag to the glider's dead-reckoned speed through the water (docs/forecast.md)");
     command
         ->add_option("--current-prior", prior_mode,
                      "the current's prior: evidence (the estimates weigh its widths), fixed or off (persistence); "

@@ -59,7 +59,7 @@ Truth fly_truth(const TruthOptions& o) {
   oscillation.north_m_s = tide * std::cos(tide_dir);
   // The true vehicle is not the file's.
   model::VehicleParams flown = vehicle;
-  const double drag = std::exp(o.drag_sigma * draw.gaussian());
+  const double drag = o.drag_factor * std::exp(o.drag_sigma * draw.gaussian());
   flown.hydro.cd0 *= drag;
   flown.hydro.cd_alpha2 *= drag;
   flown.buoyancy_offset_kg += o.buoyancy_sigma_kg * draw.gaussian();

@@ -37,6 +37,9 @@ struct ForecastOptions {
   bool include_queue = true;
   bool write = true;     // write forecast/forecast.json
   PriorOverrides prior;  // the command line's; GLIDER/forecast.toml's otherwise (forecast_settings.hpp)
+  // --speed-correction: the model's drag scaled until its dead-reckoned
+  // speed through the water is the glider's (docs/forecast.md, speed term).
+  bool speed_correction = false;
 };
 
 struct RunOutcome {
@@ -80,6 +83,7 @@ struct Forecast {
   // dives against the model's on the coming one (1: not measured; said, not applied).
   double glider_speed_ratio = 1.0;
   int speed_dives = 0;
+  double speed_drag_factor = 1.0;  // the drag factor applied to the vehicle (--speed-correction; 1: none)
   // The model's own miss on the glider's recent dives, flown again with the
   // current each one measured (the waypoint replay's flights): RMS east and
   // north and their correlation, over `model_miss_dives` dives of the last

@@ -26,6 +26,7 @@ struct TruthOptions {
   double mean_current_max_m_s = 0.15;    // |mean| drawn up to this
   double tide_amplitude_max_m_s = 0.25;  // M2 amplitude drawn up to this
   double drag_sigma = 0.05;              // the true vehicle's drag against the file's
+  double drag_factor = 1.0;              // and a fixed factor on it (a fouled or cleaner glider)
   double buoyancy_sigma_kg = 0.010;
   double max_working_depth_m = 100.0;
 };
