@@ -38,6 +38,36 @@ flightlog::FlightLog strokes_log(std::mt19937& random, int strokes, double mean_
   return flightlog::parse_flight_log(csv, "strokes.csv", only_the_pump);
 }
 
+// Fouling on 8-hourly segments: 12 at 1.0, then +3 % a day for 12 (4 days),
+// each increment read at `gain` of the truth, with +-0.0001 of scatter and
+// a +-`own_half` interval of its own.
+std::vector<health::SegmentMeasurement> drag_ramp(double gain, double own_half) {
+  std::vector<health::SegmentMeasurement> segments;
+  std::mt19937 random(11u);
+  std::normal_distribution<double> g(0.0, 1e-4);
+  for (int k = 0; k < 24; ++k) {
+    health::SegmentMeasurement m;
+    m.name = "seg" + std::to_string(k);
+    m.start_s = k * 28800.0;
+    m.end_s = m.start_s + 10800.0;
+    m.time_s = 0.5 * (m.start_s + m.end_s);
+    m.judged = true;
+    const double day = m.time_s / 86400.0, onset = 12 * 28800.0 / 86400.0;
+    const double v = 1.0 + gain * 0.03 * std::max(0.0, day - onset) + g(random);
+    for (health::EffectValue& e : m.effects) e = {std::nan(""), std::nan(""), std::nan(""), "not in this test"};
+    m.effects[static_cast<std::size_t>(health::HealthEffect::kDragChange)] = {v, v - own_half, v + own_half, {}};
+    segments.push_back(m);
+  }
+  return segments;
+}
+
+const health::Alert* drag_line_alert(const health::Assessment& a) {
+  for (const health::Alert& alert : a.alerts) {
+    if (alert.effect == health::HealthEffect::kDragChange && alert.kind == "line") return &alert;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 TEST_GROUP(HealthRules){};
@@ -79,38 +109,33 @@ TEST(HealthRules, UtcTextIsTheBaseLibrarysAndRefusesANonFiniteTime) {
 }
 
 TEST(HealthRules, AHingeRateIsKnownNoBetterThanItsSegmentsOwnIntervals) {
-  // Fouling on 8-hourly segments: 12 at 1.0, then +3 % a day for 12 (4
-  // days), each read with +-0.0001 of scatter but a +-0.004 interval of its
-  // own (the plane's error, shared: the plane reads an increment at 0.97 of
-  // it). The rate's interval is at least the two ends' own half-widths over
-  // the line's days, hypot(0.004, 0.004) / 4 d = 0.0014 a day (4.7 % of the
-  // rate), where the scatter alone gave +-0.0002.
-  std::vector<health::SegmentMeasurement> segments;
-  std::mt19937 random(11u);
-  std::normal_distribution<double> g(0.0, 1e-4);
-  for (int k = 0; k < 24; ++k) {
-    health::SegmentMeasurement m;
-    m.name = "seg" + std::to_string(k);
-    m.start_s = k * 28800.0;
-    m.end_s = m.start_s + 10800.0;
-    m.time_s = 0.5 * (m.start_s + m.end_s);
-    m.judged = true;
-    const double day = m.time_s / 86400.0, onset = 12 * 28800.0 / 86400.0;
-    const double v = 1.0 + 0.03 * std::max(0.0, day - onset) + g(random);
-    for (health::EffectValue& e : m.effects) e = {std::nan(""), std::nan(""), std::nan(""), "not in this test"};
-    m.effects[static_cast<std::size_t>(health::HealthEffect::kDragChange)] = {v, v - 0.004, v + 0.004, {}};
-    segments.push_back(m);
-  }
+  // The ramp read with +-0.0001 of scatter but a +-0.004 interval of its
+  // own (the plane's error, shared by every segment). The rate's interval is at least the two ends' own half-widths
+  // over the line's days, hypot(0.004, 0.004) / 4 d = 0.0014 a day (4.7 % of the rate), where the scatter alone gave
+  // +-0.0002.
+  const std::vector<health::SegmentMeasurement> segments = drag_ramp(1.0, 0.004);
   const health::Assessment a = health::assess(segments);
-  const health::Alert* line = nullptr;
-  for (const health::Alert& alert : a.alerts) {
-    if (alert.effect == health::HealthEffect::kDragChange && alert.kind == "line") line = &alert;
-  }
+  const health::Alert* line = drag_line_alert(a);
   CHECK(line != nullptr);
   DOUBLES_EQUAL(0.03, line->size, 0.002);
   const double span_days = (segments.back().time_s - segments[11].time_s) / 86400.0;
   const double floor = std::hypot(0.004, 0.004) / span_days;
   CHECK_TEXT(0.5 * (line->high - line->low) >= 0.99 * floor, line->message.c_str());
+}
+
+TEST(HealthRules, AHingeRateReachesOutByThePlanesGainOnTheIncrement) {
+  // The vertical plane reads a drag increment on the 4 s .sbd at 0.986-0.997
+  // of the truth (docs/health.md, "Limits"): a +3 %/day ramp read at 0.986
+  // of it, with a scatter and own intervals (+-0.0005) too small to show
+  // that, has an interval reaching the truth: its high end at least the
+  // reading's over 0.986 (the rule before: [0.0294, 0.0297], missing 0.03).
+  const health::Assessment a = health::assess(drag_ramp(0.986, 0.0005));
+  const health::Alert* line = drag_line_alert(a);
+  CHECK(line != nullptr);
+  DOUBLES_EQUAL(0.986 * 0.03, line->size, 0.0005);
+  CHECK_TEXT(line->low <= 0.03 && 0.03 <= line->high, line->message.c_str());
+  CHECK_TEXT(line->high >= line->size / 0.986, line->message.c_str());
+  CHECK_TEXT(line->low <= line->size, line->message.c_str());
 }
 
 TEST(HealthRules, ALagIsNotKnownFinerThanHalfItsSampleSpacing) {
