@@ -119,8 +119,7 @@ int main(int argc, char** argv) {
     const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log);
     glider::diagnose::DiagnoseOptions options;
     options.fit_only = glider::diagnose::depth_rate_effects(fit_only);
-    options.drag_reynolds_exponent = glider::diagnose::drag_reynolds_exponent_for(
-        vehicle, drag_reynolds_option->count() > 0 ? std::optional<double>(drag_reynolds_exponent) : std::nullopt);
+    if (drag_reynolds_option->count() > 0) options.drag_reynolds_exponent = drag_reynolds_exponent;
     const glider::diagnose::Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
     if (!d.speed_through_water) throw std::runtime_error(log_path + ": no sci_speed_through_water to score");
     const glider::diagnose::Predictions pred = glider::diagnose::predict_all(vehicle, obs, d, options);
