@@ -61,6 +61,14 @@ TEST(DiagnoseReynoldsPrior, StatedIncludingZeroElseThePrior) {
   DOUBLES_EQUAL(0.05, diagnose::drag_reynolds_exponent_for(coded, std::nullopt), 0.0);
 }
 
+TEST(DiagnoseReynoldsPrior, TheDiagnosedVehicleStatesWhatItFlew) {
+  diagnose::Diagnosis d;
+  d.drag_reynolds_exponent = 0.0;  // --drag-reynolds-exponent 0 on a silent file
+  const model::VehicleParams flown = diagnose::diagnosed_nominal(shallow(), d);
+  const model::VehicleParams back = model::parse_vehicle_text(model::vehicle_file_text(flown), "extended.toml");
+  DOUBLES_EQUAL(0.0, diagnose::drag_reynolds_exponent_for(back, std::nullopt), 0.0);
+}
+
 TEST(DiagnoseReynoldsPrior, ALogsMetadataKeepsSilenceAndStatement) {
   // A real log converted with a silent vehicle file diagnoses as that file does (the prior) ...
   const model::VehicleParams silent = through_metadata(shallow());

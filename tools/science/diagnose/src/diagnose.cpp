@@ -1133,6 +1133,9 @@ double drag_reynolds_exponent_for(const model::VehicleParams& vehicle, const std
 model::VehicleParams diagnosed_nominal(const model::VehicleParams& given, const Diagnosis& d) {
   model::VehicleParams nominal = given;
   nominal.hydro.cd0_reynolds_exponent = d.drag_reynolds_exponent;
+  // The exponent flown is stated: an extended vehicle file written from this
+  // (and diagnosed again) flies it, 0 included, not the prior.
+  nominal.hydro.cd0_reynolds_exponent_stated = true;
   if (d.retrimmed_to_kg_m3) nominal.trim_density_kg_m3 = *d.retrimmed_to_kg_m3;
   return nominal;
 }
