@@ -92,6 +92,7 @@ VehicleParams read(const TomlDocument& doc) {
   visit_numbers(v, [&doc](const char* key, double& field, Need need, const config::Range& range) {
     field = need == Need::kRequired ? doc.number(key, range) : doc.number_or(key, field, range);
   });
+  v.hydro.cd0_reynolds_exponent_stated = doc.has("hydrodynamics.cd0_reynolds_exponent");
   doc.leave_table("fitted");  // the devices fitted: the firmware's (fw::app::read_fitted_devices)
   doc.reject_unknown_keys();
   const std::string problem = validate(v);
@@ -123,11 +124,16 @@ std::vector<std::pair<std::string, std::string>> vehicle_metadata(const VehicleP
   VehicleParams copy = v;
   const bool second = has_second_mass(v);
   const bool wings = has_wings(v);
-  visit_numbers(copy, [&out, second, wings](const char* key, double& field, Need, const config::Range&) {
-    if (!second && std::string_view(key).starts_with("second_mass.")) return;
-    if (!wings && std::string_view(key).starts_with("hydrodynamics.wing_")) return;
-    out.emplace_back(std::string("vehicle.") + key, format_number(field));
-  });
+  const bool exponent_stated = v.hydro.cd0_reynolds_exponent_stated;
+  visit_numbers(
+      copy, [&out, second, wings, exponent_stated](const char* key, double& field, Need, const config::Range&) {
+        if (!second && std::string_view(key).starts_with("second_mass.")) return;
+        if (!wings && std::string_view(key).starts_with("hydrodynamics.wing_")) return;
+        // Silence is kept (a log's vehicle read back diagnoses as its file
+        // would); an exponent set in code is written.
+        if (!exponent_stated && field == 0.0 && std::string_view(key) == "hydrodynamics.cd0_reynolds_exponent") return;
+        out.emplace_back(std::string("vehicle.") + key, format_number(field));
+      });
   return out;
 }
 

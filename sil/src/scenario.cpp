@@ -82,7 +82,12 @@ ScenarioResult run_scenario(const model::VehicleParams& vehicle, const fw::Fligh
 
   Metadata metadata = options.metadata;
   metadata.emplace_back("seed", std::to_string(options.seed));
-  for (auto& entry : model::vehicle_metadata(options.logged_vehicle.value_or(vehicle))) {
+  // The SIL flew the file's Reynolds exponent (0 where the file is silent):
+  // its logs state it, so a diagnosis of them flies the SIL's own drag, not
+  // the prior for a real glider (diagnose.hpp: drag_reynolds_exponent_for).
+  model::VehicleParams logged = options.logged_vehicle.value_or(vehicle);
+  logged.hydro.cd0_reynolds_exponent_stated = true;
+  for (auto& entry : model::vehicle_metadata(logged)) {
     metadata.push_back(std::move(entry));
   }
 

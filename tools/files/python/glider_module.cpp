@@ -88,11 +88,11 @@ py::object diagnose(const Log& log, const py::object& vehicle, const std::string
   const auto [params, vehicle_source] = pick_vehicle(log, vehicle);
   glider::diagnose::DiagnoseOptions options;
   options.model = model_kind(model);
-  // glider-diagnose's rule (its --drag-reynolds-exponent), so both give the same object.
+  // glider-diagnose's rule (its --drag-reynolds-exponent; unset, diagnose() chooses), so both give the same object.
   if (drag_reynolds_exponent && !(*drag_reynolds_exponent >= 0.0 && *drag_reynolds_exponent <= 0.5))
     throw py::value_error("drag_reynolds_exponent must be within [0, 0.5], not " +
                           std::to_string(*drag_reynolds_exponent));
-  options.drag_reynolds_exponent = glider::diagnose::drag_reynolds_exponent_for(params, drag_reynolds_exponent);
+  options.drag_reynolds_exponent = drag_reynolds_exponent;
   std::string text;
   {
     py::gil_scoped_release release;  // minutes on long logs: let other Python threads run

@@ -56,6 +56,11 @@ struct Hydrodynamics {
   // so n is below that. 0 = the drag of the file at every speed (the model
   // before this key, to the bit).
   double cd0_reynolds_exponent = 0.0;
+  // Whether the vehicle file states cd0_reynolds_exponent (0 included): the
+  // model flies the field either way; a diagnosis of a file that is silent
+  // flies its documented prior instead (diagnose.hpp:
+  // drag_reynolds_exponent_for). Kept through vehicle_metadata.
+  bool cd0_reynolds_exponent_stated = false;
   double cd0_reference_speed_m_s = 0.35;  // a Slocum's typical speed through water
   double cm0_m = 0.0;                     // viscous moment only: the Munk moment comes
   double cm_alpha_m = 0.0;                //   from the added masses in the dynamics

@@ -957,8 +957,13 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
     amb.alternative_value = is_lag(alternative) ? std::abs(value) : value;
     amb.chosen_heldout_rms_m_s = current_fit.heldout_rms;
     amb.alternative_heldout_rms_m_s = f.heldout_rms;
-    // Within the selection's own margins the held-out yos cannot tell them apart.
-    amb.ambiguous = indistinguishable(f.heldout_score, current_fit.heldout_score, options.margins);
+    amb.score_block_s = options.score_block_s;
+    amb.chosen_heldout_score_m_s = current_fit.heldout_score;
+    amb.alternative_heldout_score_m_s = f.heldout_score;
+    // Within the selection's own margins, on either view of the held-out
+    // error, the held-out yos cannot tell them apart.
+    amb.ambiguous = indistinguishable(HeldOut{f.heldout_score, f.heldout_rms},
+                                      HeldOut{current_fit.heldout_score, current_fit.heldout_rms}, options.margins);
     // An implausible alternative is still stated: what rules it out is then
     // the prior (flight_model.cpp's plausible ranges), not this log.
     amb.ruled_out_by_prior = !plausible(alternative, value);
@@ -1122,7 +1127,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   d.vehicle = given.name;
   d.thermal_reference_c = obs.track.median_temperature_c;
   model::VehicleParams nominal = given;
-  if (options.drag_reynolds_exponent) nominal.hydro.cd0_reynolds_exponent = *options.drag_reynolds_exponent;
+  nominal.hydro.cd0_reynolds_exponent = drag_reynolds_exponent_for(given, options.drag_reynolds_exponent);
   d.drag_reynolds_exponent = nominal.hydro.cd0_reynolds_exponent;
   d.drag_reference_speed_m_s = nominal.hydro.cd0_reference_speed_m_s;
   if (const auto rho = retrim_density(given, obs, options.retrim_tolerance_kg_m3)) {
@@ -1176,12 +1181,18 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
 
 double drag_reynolds_exponent_for(const model::VehicleParams& vehicle, const std::optional<double>& asked) {
   if (asked) return *asked;
-  return vehicle.hydro.cd0_reynolds_exponent > 0.0 ? vehicle.hydro.cd0_reynolds_exponent : kDragReynoldsExponentPrior;
+  const model::Hydrodynamics& h = vehicle.hydro;
+  // An exponent set in code (not from a file) counts as stated.
+  const bool stated = h.cd0_reynolds_exponent_stated || h.cd0_reynolds_exponent != 0.0;
+  return stated ? h.cd0_reynolds_exponent : kDragReynoldsExponentPrior;
 }
 
 model::VehicleParams diagnosed_nominal(const model::VehicleParams& given, const Diagnosis& d) {
   model::VehicleParams nominal = given;
   nominal.hydro.cd0_reynolds_exponent = d.drag_reynolds_exponent;
+  // The exponent flown is stated: an extended vehicle file written from this
+  // (and diagnosed again) flies it, 0 included, not the prior.
+  nominal.hydro.cd0_reynolds_exponent_stated = true;
   if (d.retrimmed_to_kg_m3) nominal.trim_density_kg_m3 = *d.retrimmed_to_kg_m3;
   return nominal;
 }

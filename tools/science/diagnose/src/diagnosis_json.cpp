@@ -82,6 +82,11 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                                {"signature_correlation", a.correlation},
                                {"heldout_rms_depth_rate_m_s", a.chosen_heldout_rms_m_s},
                                {"alternative_heldout_rms_depth_rate_m_s", a.alternative_heldout_rms_m_s}});
+    if (a.score_block_s > 0.0) {  // the selection's score, which the verdict also takes
+      identifiability.back()["score_block_s"] = a.score_block_s;
+      identifiability.back()["heldout_block_rms_depth_rate_m_s"] = a.chosen_heldout_score_m_s;
+      identifiability.back()["alternative_heldout_block_rms_depth_rate_m_s"] = a.alternative_heldout_score_m_s;
+    }
     if (!a.ambiguous) continue;
     ambiguous.push_back({{"effect", info(a.chosen).id},
                          {"alternative", info(a.alternative).id},

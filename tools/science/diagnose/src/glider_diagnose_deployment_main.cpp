@@ -98,12 +98,18 @@ int main(int argc, char** argv) {
                   "logs whose times count from their start (SIL logs) are placed this many days apart, in the "
                   "order given");
   app.add_option("--rename", renames, "read column FROM as TO (FROM=TO)");
+  double drag_reynolds_exponent = glider::diagnose::kDragReynoldsExponentPrior;
+  const CLI::Option* drag_reynolds_option =
+      tool.add_number("--drag-reynolds-exponent", drag_reynolds_exponent, {0.0, 0.5, ""},
+                      "glider-diagnose's skin-friction Reynolds exponent (as glider-diagnose: the vehicle file's if it "
+                      "states one, else the prior 0.1; 0: off)");
   app.add_option("--report", report_dir, "write the summary, deployment.json and a plot per effect here");
   tool.add_json_flag(json);
   return tool.run(argc, argv, [&]() -> int {
     glider::diagnose::DeploymentOptions options;
     options.diagnose.model = flight_model == "steady" ? glider::diagnose::FlightModelKind::kSteady
                                                       : glider::diagnose::FlightModelKind::kDynamic;
+    if (drag_reynolds_option->count() > 0) options.diagnose.drag_reynolds_exponent = drag_reynolds_exponent;
     glider::flightlog::ReadOptions read_options;
     try {
       options.effects = glider::diagnose::depth_rate_effects(fit);

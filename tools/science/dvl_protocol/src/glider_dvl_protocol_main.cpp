@@ -110,6 +110,10 @@ int main(int argc, char** argv) {
       tool.add_number("--drag-reynolds-exponent", drag_reynolds_exponent, {0.0, 0.5, ""},
                       "glider-diagnose's skin-friction Reynolds exponent (as glider-diagnose: the vehicle file's if it "
                       "states one, else the prior 0.1; 0: off)");
+  double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
+  tool.add_number("--score-block", score_block_s, {0.0, 600.0, "s"},
+                  "glider-diagnose's selection score: held-out residuals averaged over blocks of a glide this long "
+                  "(0: sample by sample; as glider-diagnose --score-block)");
   return tool.run(argc, argv, [&]() -> int {
     glider::flightlog::ReadOptions read_options;
     read_options.rename = glider::diagnose::column_renames(renames);
@@ -119,8 +123,8 @@ int main(int argc, char** argv) {
     const glider::diagnose::Observations obs = glider::diagnose::prepare_observations(log);
     glider::diagnose::DiagnoseOptions options;
     options.fit_only = glider::diagnose::depth_rate_effects(fit_only);
-    options.drag_reynolds_exponent = glider::diagnose::drag_reynolds_exponent_for(
-        vehicle, drag_reynolds_option->count() > 0 ? std::optional<double>(drag_reynolds_exponent) : std::nullopt);
+    if (drag_reynolds_option->count() > 0) options.drag_reynolds_exponent = drag_reynolds_exponent;
+    options.score_block_s = score_block_s;
     const glider::diagnose::Diagnosis d = glider::diagnose::diagnose(vehicle, obs, options);
     if (!d.speed_through_water) throw std::runtime_error(log_path + ": no sci_speed_through_water to score");
     const glider::diagnose::Predictions pred = glider::diagnose::predict_all(vehicle, obs, d, options);

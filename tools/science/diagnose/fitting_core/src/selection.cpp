@@ -22,6 +22,11 @@ bool indistinguishable(double alternative_heldout_rms, double chosen_heldout_rms
   return alternative_heldout_rms <= chosen_heldout_rms + margin(chosen_heldout_rms, margins);
 }
 
+bool indistinguishable(const HeldOut& alternative, const HeldOut& chosen, const Margins& margins) {
+  return indistinguishable(alternative.score, chosen.score, margins) ||
+         indistinguishable(alternative.rms, chosen.rms, margins);
+}
+
 double bic(double rss, double n, double parameters) { return n * std::log(rss / n) + parameters * std::log(n); }
 
 }  // namespace glider::fitting_core

@@ -65,6 +65,11 @@ struct Ambiguity {
   double correlation = 0.0;  // |partial correlation| of their depth-rate signatures on the fitted samples
   double alternative_value = 0.0, alternative_ci95_low = 0.0, alternative_ci95_high = 0.0;
   double chosen_heldout_rms_m_s = 0.0, alternative_heldout_rms_m_s = 0.0;
+  // The score the selection compared (held-out residuals averaged over
+  // blocks of a glide this long; 0: none, the score is the RMS above): the
+  // verdict takes both (fitting_core::indistinguishable(HeldOut...)).
+  double score_block_s = 0.0;
+  double chosen_heldout_score_m_s = 0.0, alternative_heldout_score_m_s = 0.0;
   std::string separate;
   // The alternative's value is outside the effect's plausible range
   // (flight_model.cpp, e.g. a mean vertical water velocity beyond 2 cm/s):
@@ -146,8 +151,12 @@ struct Diagnosis {
 // on ~1.2 m^2 wetted over cd0 0.17 on 0.1 m^2).
 inline constexpr double kDragReynoldsExponentPrior = 0.1;
 
-// The exponent glider-diagnose flies: the one asked for (--drag-reynolds-exponent),
-// else the vehicle file's when it states one (> 0), else the prior.
+// The exponent every diagnosis flies (diagnose() calls it, so the CLI, the
+// deployment view, health, Python and the DVL protocol agree): the one asked
+// for (DiagnoseOptions::drag_reynolds_exponent, --drag-reynolds-exponent),
+// else the vehicle file's when the file states the key (0 included:
+// Hydrodynamics::cd0_reynolds_exponent_stated, or a non-zero exponent set in
+// code), else the prior. Asking for 0 switches the prior off.
 double drag_reynolds_exponent_for(const model::VehicleParams& vehicle, const std::optional<double>& asked);
 
 struct DiagnoseOptions {
@@ -188,11 +197,10 @@ struct DiagnoseOptions {
   // from the vehicle's trim density before the vehicle is re-trimmed for it.
   double retrim_tolerance_kg_m3 = 5.0;
   // The skin friction's Reynolds-number exponent n the fitted model flies
-  // (C_D0 (V / V_ref)^-n, model/hydrodynamics.hpp): unset, the vehicle
-  // file's (a SIL log's own vehicle is its truth); glider-diagnose asks for
+  // (C_D0 (V / V_ref)^-n, model/hydrodynamics.hpp): unset,
   // drag_reynolds_exponent_for(vehicle, nullopt): the file's when it states
-  // one, else the prior kDragReynoldsExponentPrior. 0 switches it off (the
-  // model before it, to the bit). Not fitted: over a log's 0.2-0.5 m/s it is
+  // the key, else the prior kDragReynoldsExponentPrior. 0 switches it off
+  // (the model before it, to the bit). Not fitted: over a log's 0.2-0.5 m/s it is
   // a few % of drag that drag_change and buoyancy_offset would trade for it.
   std::optional<double> drag_reynolds_exponent;
   // Score and fit only samples in this depth window (m), e.g. gliderflight's

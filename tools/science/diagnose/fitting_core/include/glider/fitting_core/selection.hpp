@@ -35,6 +35,22 @@ bool beats(const Score& a, const Score& b, const Margins& margins);
 // margin worse.
 bool indistinguishable(double alternative_heldout_rms, double chosen_heldout_rms, const Margins& margins);
 
+// Two views of a fit's held-out error: the score the selection compares
+// (residuals averaged over blocks of a glide, block_score.hpp; the plain RMS
+// when blocks are off) and the sample-by-sample RMS it reports.
+struct HeldOut {
+  double score = 0.0;
+  double rms = 0.0;
+};
+
+// Identifiability's verdict on two fits of the same data (an alternative
+// in a finding's place): the held-out yos tell them apart only when BOTH
+// views put the alternative beyond a margin. Where either cannot - e.g. the
+// glide-averaged score separates a buoyancy offset from a uniform water
+// velocity while the samples predict within 2 % (comet-2016, blocks of 60
+// s) - the separation rests on a few glide means, and the pair is ambiguous.
+bool indistinguishable(const HeldOut& alternative, const HeldOut& chosen, const Margins& margins);
+
 // Bayesian information criterion of a least-squares fit: n ln(RSS / n) + k ln n.
 double bic(double rss, double n, double parameters);
 
