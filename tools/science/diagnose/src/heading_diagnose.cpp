@@ -289,12 +289,13 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
     at(as_roll, HeadingEffect::kRollOffset) = named_roll->value;
     return innovations_rms(as_fin) < innovations_rms(as_roll);
   };
-  // Alternated: the fin with the rest of the last selection held (its roll
-  // offset, yaw time constant and yaw delay: the fin measured with the yaw's
-  // lag at the vehicle file's 2 s read a fin x1.72 beside a 9.3 s lag as
-  // 1.18, and the reselection made up the rest with a spurious roll offset),
-  // then the selection with that fin held, until neither changes.
-  HeadingValues rest = base;  // the last selection's values, the fin at the vehicle file's
+  // Alternated: the fin with the roll offset of the last selection held,
+  // then the selection with that fin held, until neither changes. (Holding
+  // the selection's yaw time constant and delay too was tried: a fin x1.72
+  // beside a 9.3 s lag read 1.45 instead of 1.18, but the rate error's time
+  // constant reads high, and two fin pairs read within 15 % lost it:
+  // docs/science.md.)
+  HeadingValues rest = base;  // the last selection's roll offset, the rest nominal
   std::vector<HeadingFinding> measured, left_out;
   LinkFit again;
   bool fin_confirmed = false, reselected = false;
@@ -315,8 +316,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
                                    rate_samples, reselect);
     reselected = true;
     const HeadingValues last_rest = rest;
-    rest = again.values;
-    at(rest, HeadingEffect::kFinEffectiveness) = at(base, HeadingEffect::kFinEffectiveness);
+    at(rest, HeadingEffect::kRollOffset) = at(again.values, HeadingEffect::kRollOffset);
     if (rest == last_rest) break;
   }
   const double roll = at(rest, HeadingEffect::kRollOffset);
