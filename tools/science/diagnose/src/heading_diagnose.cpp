@@ -507,7 +507,10 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                                                  std::vector<double>& o) { predict_yaw_rate(track, nominal, v, w, o); },
                                              track.yaw_rate_rad_s);
   d.yaw = run_link(HeadingLink::kVehicle, base, yaw_error, yaw_samples, options);
-  if (options.yaw_noise_model && options.fit_only.empty()) {
+  // Not on a decimated file's log (an .sbd: its heading interpolated
+  // between readings every few seconds, which the innovations' compass-noise
+  // model cannot take).
+  if (options.yaw_noise_model && options.fit_only.empty() && !options.track.fin_stored_on_change) {
     measure_fin_then_reselect(track, nominal, base, yaw_error, yaw_samples, d, options);
   }
 
