@@ -73,3 +73,45 @@ TEST(StoredOnChange, EveryRowStoredIsTheLineAndLongGapsStayEmpty) {
   across[10] = 0.5;
   CHECK(std::isnan(diagnose::fill_stored_on_change(t, across, 30.0)[5]));
 }
+
+// Which Slocum files store on change: the decimated flight and science kinds
+// (either case), not the full-resolution .dbd / .ebd nor a CSV.
+TEST(StoredOnChange, DecimatedFilesByTheirKind) {
+  CHECK(diagnose::decimated_file("a/unit_123-2026-330-0-0.sbd"));
+  CHECK(diagnose::decimated_file("01230000.SCD"));
+  CHECK(diagnose::decimated_file("x.tbd"));
+  CHECK(diagnose::decimated_file("x.mbd"));
+  CHECK_FALSE(diagnose::decimated_file("x.dbd"));
+  CHECK_FALSE(diagnose::decimated_file("x.ebd"));
+  CHECK_FALSE(diagnose::decimated_file("x.csv"));
+  CHECK(diagnose::any_decimated({"x.dbd", "x.sbd"}));
+  CHECK_FALSE(diagnose::any_decimated({"x.dbd", "x.ebd"}));
+}
+
+// An .sbd's log as glider-diagnose reads it: the commands held between their
+// stores (at most the age given), the heading filled on the shorter arc, the
+// depth never held, and m_fin held only when asked (else left as stored, for
+// fill_stored_on_change).
+TEST(StoredOnChange, CommandsHeldTheFinAsStored) {
+  const std::vector<double> t = seconds(8);
+  std::vector<double> command(t.size(), kNaN), fin(t.size(), kNaN), depth(t.size(), kNaN), heading(t.size(), kNaN);
+  command[0] = 1.0;
+  command[6] = 2.0;
+  fin[0] = 0.1;
+  fin[4] = 0.2;
+  depth[0] = 5.0;
+  depth[4] = 9.0;
+  heading[0] = 6.2;
+  heading[2] = 0.2;  // across north: the shorter arc
+  const flightlog::FlightLog log("test", {}, {"m_present_time", "c_heading", "m_fin", "m_depth", "m_heading"},
+                                 {t, command, fin, depth, heading}, 0);
+  const flightlog::FlightLog as_stored = diagnose::hold_stored_columns(log, 3.0, false);
+  DOUBLES_EQUAL(1.0, as_stored.column("c_heading")[3], 1e-12);
+  CHECK(std::isnan(as_stored.column("c_heading")[4]));  // older than 3 s
+  DOUBLES_EQUAL(2.0, as_stored.column("c_heading")[7], 1e-12);
+  CHECK(std::isnan(as_stored.column("m_fin")[2]));
+  CHECK(std::isnan(as_stored.column("m_depth")[2]));
+  const double mid = as_stored.column("m_heading")[1];
+  CHECK(mid > 6.2 || mid < 0.2);
+  DOUBLES_EQUAL(0.1, diagnose::hold_stored_columns(log, 3.0, true).column("m_fin")[2], 1e-12);
+}

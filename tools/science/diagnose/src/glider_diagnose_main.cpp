@@ -17,10 +17,12 @@
 #include "glider/diagnose/diagnosis_json.hpp"
 #include "glider/diagnose/heading_report.hpp"
 #include "glider/diagnose/pitch_calibration.hpp"
+#include "glider/diagnose/stored_on_change.hpp"
 #include "glider/diagnose/tool_inputs.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/report/report.hpp"
+#include "glider/slocum/deployment.hpp"
 #include "glider/slocum/log_loader.hpp"
 #include "glider/units.hpp"
 
@@ -368,7 +370,14 @@ int main(int argc, char** argv) {
       std::optional<glider::diagnose::HeadingDiagnosis> heading;
       ordered_json heading_object;
       if (heading_plane) {
-        glider::diagnose::HeadingPlane h = glider::diagnose::heading_plane(vehicle, log, heading_options);
+        // A decimated file (.sbd, ...) stores the commands and the fin on change: read as health reads it.
+        const bool decimated = glider::slocum::is_binary_log(log_source.inputs) &&
+                               glider::diagnose::any_decimated(glider::slocum::deployment_files(log_source.inputs));
+        heading_options.track.fin_stored_on_change = decimated;
+        glider::diagnose::HeadingPlane h = glider::diagnose::heading_plane(
+            vehicle,
+            decimated ? glider::diagnose::hold_stored_columns(log, glider::diagnose::kStoredHoldMaxAgeS, false) : log,
+            heading_options);
         if (!h.diagnosis) {
           const std::string reason = h.json["reason"].get<std::string>();
           if (!vertical_plane) throw std::runtime_error(reason);

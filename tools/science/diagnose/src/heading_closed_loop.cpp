@@ -125,7 +125,7 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
           const double when = now - autopilot_delay;
           const double read =
               (when <= start ? t.heading_rad[first] : heading.at(when)) + options.heading_noise_rad * noise(random);
-          const double command = command_at(when);
+          const double command = command_at(now);  // only the heading is read late (heading_models.cpp)
           if (!std::isfinite(command)) continue;
           const double previous = autopilot.law.output;
           pending.emplace_back(now + fin_delay, autopilot.cycle(now, read, command));

@@ -185,7 +185,9 @@ const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay)
     while (after < n && time[after] <= when) ++after;
     const std::size_t c = after == 0 ? SIZE_MAX : after - 1;  // row_at_or_before(time, when)
     const double heading = interpolate_from(time, t.row_heading_rad, c, when, true);
-    const double command = c == SIZE_MAX ? kNaN : t.row_command_rad[c];
+    // The command is the current one (the mission sets it, nothing delays
+    // it); only the heading is read late.
+    const double command = c == SIZE_MAX ? kNaN : t.row_command_rad[i];
     if (!std::isfinite(heading) || !std::isfinite(command)) {
       in.kind = Input::kNone;
       continue;

@@ -2,11 +2,15 @@
 #include "glider/diagnose/stored_on_change.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "glider/flightlog/gaps.hpp"
 
 namespace glider::diagnose {
 namespace {
@@ -70,6 +74,48 @@ flightlog::Column fill_stored_on_change(std::span<const double> time, std::span<
     a = b;
   }
   return out;
+}
+
+bool decimated_file(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  static const std::set<std::string, std::less<>> kDecimated{".sbd", ".scd", ".mbd", ".mcd",
+                                                             ".tbd", ".tcd", ".nbd", ".ncd"};
+  return kDecimated.count(ext) != 0;
+}
+
+bool any_decimated(const std::vector<std::filesystem::path>& files) {
+  return std::any_of(files.begin(), files.end(), [](const std::filesystem::path& f) { return decimated_file(f); });
+}
+
+flightlog::FlightLog hold_stored_columns(const flightlog::FlightLog& log, double max_age_s, bool hold_fin) {
+  static const std::set<std::string, std::less<>> kHeld{
+      "c_heading", "c_fin",         "c_ballast_pumped", "c_battpos",
+      "c_pitch",   "m_fin",         "m_roll",           "m_ballast_pumped",
+      "m_battpos", "m_depth_state", "m_battery",        "m_coulomb_amphr_total"};
+  std::vector<flightlog::Column> columns;
+  std::size_t time_index = 0;
+  const auto& names = log.column_names();
+  const flightlog::Column& time = log.time();
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    flightlog::Column column = log.column(names[c]);
+    if (&log.column(names[c]) == &time) time_index = c;
+    if (kHeld.count(names[c]) != 0 && (hold_fin || names[c] != "m_fin")) {
+      double held = kNaN, held_at = 0.0;
+      for (std::size_t i = 0; i < column.size(); ++i) {
+        if (std::isfinite(column[i])) {
+          held = column[i];
+          held_at = time[i];
+        } else if (std::isfinite(held) && time[i] - held_at <= max_age_s) {
+          column[i] = held;
+        }
+      }
+    }
+    // A heading stored every few seconds: the rows between get it on the shorter arc.
+    if (names[c] == "m_heading") column = flightlog::interpolate_angle_rad(time, column, 30.0);
+    columns.push_back(std::move(column));
+  }
+  return flightlog::FlightLog(log.source(), log.metadata(), names, std::move(columns), time_index);
 }
 
 }  // namespace glider::diagnose

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "glider/diagnose/stored_on_change.hpp"
 #include "glider/slocum/deployment.hpp"
 #include "glider/slocum/log_loader.hpp"
 
@@ -133,37 +134,8 @@ LoadedSegment load_segment(const SegmentFiles& files, const std::vector<fs::path
 }
 
 flightlog::FlightLog hold_slow_columns(const flightlog::FlightLog& log, double max_age_s) {
-  // Commands and step-wise readings: a decimated file stores them when they
-  // change, so "not stored" means "unchanged". The depth, pitch and heading
-  // change every cycle and are never held (a held depth would be a false
-  // stair in the depth rate).
-  static const std::set<std::string, std::less<>> kHeld{
-      "c_heading", "c_fin",         "c_ballast_pumped", "c_battpos",
-      "c_pitch",   "m_fin",         "m_roll",           "m_ballast_pumped",
-      "m_battpos", "m_depth_state", "m_battery",        "m_coulomb_amphr_total"};
-  std::vector<flightlog::Column> columns;
-  std::size_t time_index = 0;
-  const auto& names = log.column_names();
-  const flightlog::Column& time = log.time();
-  for (std::size_t c = 0; c < names.size(); ++c) {
-    flightlog::Column column = log.column(names[c]);
-    if (&log.column(names[c]) == &time) time_index = c;
-    if (kHeld.count(names[c]) != 0) {
-      double held = std::nan(""), held_at = 0.0;
-      for (std::size_t i = 0; i < column.size(); ++i) {
-        if (std::isfinite(column[i])) {
-          held = column[i];
-          held_at = time[i];
-        } else if (std::isfinite(held) && time[i] - held_at <= max_age_s) {
-          column[i] = held;
-        }
-      }
-    }
-    // A heading stored every few seconds: the rows between get it on the shorter arc.
-    if (names[c] == "m_heading") column = flightlog::interpolate_angle_rad(time, column, 30.0);
-    columns.push_back(std::move(column));
-  }
-  return flightlog::FlightLog(log.source(), log.metadata(), names, std::move(columns), time_index);
+  // The rule is the diagnosis's (glider-diagnose reads an .sbd the same way).
+  return diagnose::hold_stored_columns(log, max_age_s, true);
 }
 
 }  // namespace glider::health

@@ -13,7 +13,9 @@
 // .sbd the heading plane read the fin's authority 0.85-0.92 for 1 from that
 // lag (docs/science.md "The fin on decimated data"); interpolating straight
 // across every gap makes a long hold a slow ramp.
+#include <filesystem>
 #include <span>
+#include <vector>
 
 #include "glider/flightlog/flight_log.hpp"
 
@@ -33,5 +35,26 @@ double storing_interval_s(std::span<const double> time, std::span<const double> 
 // after the last store. With every row stored this is the straight line
 // between neighbours (flightlog::interpolate_linear).
 flightlog::Column fill_stored_on_change(std::span<const double> time, std::span<const double> values, double max_gap_s);
+
+// A Slocum file that stores its columns on change at most every few
+// seconds (sbdlist / tbdlist / mbdlist decimation): .sbd .scd .mbd .mcd
+// .tbd .tcd .nbd .ncd. A full-resolution .dbd/.ebd stores every cycle.
+bool decimated_file(const std::filesystem::path& file);
+// Any of `files` decimated: the fill below is the straight line wherever a
+// column is stored every row, so a set mixing both kinds loses nothing.
+bool any_decimated(const std::vector<std::filesystem::path>& files);
+
+// How long a stored value is held (health and glider-diagnose): a quarter
+// hour, past any dive's or climb's silence in a column that changes.
+inline constexpr double kStoredHoldMaxAgeS = 900.0;
+
+// A decimated file's log as the planes read it: the commands and the
+// readings that change in steps (c_heading, c_fin, m_roll, m_ballast_pumped,
+// m_depth_state, ...) forward filled between stores, at most `max_age_s`
+// ("not stored" means "unchanged"); m_heading filled between stores on the
+// shorter arc (30 s at most); the depth and pitch never held (a held depth
+// is a false stair in the depth rate). `hold_fin` false leaves m_fin as
+// stored, for fill_stored_on_change (HeadingTrackOptions::fin_stored_on_change).
+flightlog::FlightLog hold_stored_columns(const flightlog::FlightLog& log, double max_age_s, bool hold_fin);
 
 }  // namespace glider::diagnose
