@@ -142,6 +142,7 @@ model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, doub
 std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<double>& z,
                            std::vector<double>* u) const {
   const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
+  dynamics.start_flight();  // a function of (v1, v3) and the run alone, whatever flew before
   Impulse p = dynamics.impulse(v1, v3, in0_);
   double lagged = in0_.pumped_volume_m3;
   z.assign(last - first_ + 1, kNaN);
