@@ -6,6 +6,7 @@
 // over ground, and the start state fitted on the run's spin-up.
 // dynamic_flight_model.cpp decides which runs to fly and what to remember.
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "glider/diagnose/flight_model.hpp"
@@ -124,7 +125,13 @@ class RunFlight {
   // the last sample reached with a finite state. The water's own vertical
   // velocity moves the glider without changing its flight through the
   // water: ground_depth adds it.
-  std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u) const;
+  //
+  // stop_above (finite): the flight stops as soon as the running sum of
+  // its squared depth misfits (depth over ground minus measured, samples
+  // first + 1 on) exceeds it, returning a sample before `last`. Needs the
+  // water's displacement up to `last` kept (ground_depth ran that far).
+  std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
+                  double stop_above = std::numeric_limits<double>::infinity()) const;
 
   // The depth over ground at samples first..flown: the measured first
   // depth, the flight's relative depth `rel` and the water's vertical
