@@ -219,7 +219,14 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       const double w = c_.water_w(0.0);
       for (int s = 0; s < steps; ++s) water += h / 6.0 * (w + 2.0 * w + 2.0 * w + w);
     }
-    for (int s = 0; s < steps && c_.has_profile(); ++s) {
+    const std::uint32_t* bins = c_.has_profile() ? stage_bins(i, steps) : nullptr;
+    for (int s = 0; s < steps && bins != nullptr; ++s) {
+      // VerticalVelocityProfile::at at the stages' depths, their bins looked up once per geometry.
+      const std::vector<double>& w = c_.profile()->w_m_s;
+      const double wa = w[bins[3 * s]], wb = w[bins[3 * s + 1]], wc = w[bins[3 * s + 2]];
+      water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
+    }
+    for (int s = 0; s < steps && c_.has_profile() && bins == nullptr; ++s) {
       const double wa = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s) / steps));
       const double wb = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], (s + 0.5) / steps));
       const double wc = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
@@ -228,6 +235,30 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
     stages_.water.push_back(water);
     z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
   }
+}
+
+const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
+  const VerticalVelocityProfile& profile = *c_.profile();
+  if (profile.w_m_s.empty()) return nullptr;  // no bins: at() is 0
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  if (!same(stages_.bins_first_m, profile.first_m) || !same(stages_.bins_bin_m, profile.bin_m) ||
+      stages_.bins_count != profile.w_m_s.size()) {
+    stages_.bins_first_m = profile.first_m;
+    stages_.bins_bin_m = profile.bin_m;
+    stages_.bins_count = profile.w_m_s.size();
+    stages_.bins_offset.clear();
+    stages_.bins.clear();
+  }
+  const std::size_t interval = i - first_;
+  if (interval < stages_.bins_offset.size()) return &stages_.bins[stages_.bins_offset[interval]];
+  if (interval > stages_.bins_offset.size()) return nullptr;  // filled in order only: looked up directly
+  const Track& t = t_;
+  stages_.bins_offset.push_back(stages_.bins.size());
+  for (int s = 0; s < steps; ++s) {
+    for (const double f : {static_cast<double>(s) / steps, (s + 0.5) / steps, static_cast<double>(s + 1) / steps})
+      stages_.bins.push_back(static_cast<std::uint32_t>(profile.bin(lerp(t.depth_m[i], t.depth_m[i + 1], f))));
+  }
+  return &stages_.bins[stages_.bins_offset[interval]];
 }
 
 void RunFlight::guess_start(double& v1, double& v3) const {
