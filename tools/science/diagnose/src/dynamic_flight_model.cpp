@@ -143,7 +143,7 @@ std::size_t DynamicFlightModel::last_needed(std::size_t end, std::size_t last_re
 // parameters, fitted (Gauss-Newton) to the measured depth over the
 // spin-up, which is never scored. The start state depends on the values
 // (the depth lag aside), the density source and the water's profile only:
-// every one is remembered (a tenth of the start fits of a real log's
+// they are remembered (kStartStates; a tenth of the start fits of a real log's
 // diagnosis repeat one: the Jacobian's depth-lag column, a refit), the
 // same bits.
 void DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& x,
@@ -164,6 +164,8 @@ void DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::s
   v1 = 0.0;
   v3 = 0.0;
   run_flight.fit_start(v1, v3, fit_buffer_, fit_relative_buffer_);
+  if (start_state_count_ >= kStartStates) return;
+  ++start_state_count_;
   starts.emplace(hash, StartState{start_key, use_ctd, profile != nullptr,
                                   profile != nullptr ? *profile : VerticalVelocityProfile{}, v1, v3});
 }

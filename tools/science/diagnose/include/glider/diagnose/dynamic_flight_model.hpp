@@ -89,8 +89,9 @@ class DynamicFlightModel final : public DepthRateModel {
   mutable std::vector<RunRelativeFlights> relative_flights_;
   // Each run's start states (the body velocities fitted on its spin-up) by
   // what they depend on: the values but the depth lag, the density source,
-  // the water's profile. All of them (a few hundred bytes each; a real log's
-  // diagnosis fits ~20000): a start state is a function of that key alone
+  // the water's profile. Up to kStartStates of them (a few hundred bytes
+  // each; comet-2016's diagnosis fits ~20000): a start state is a function
+  // of that key alone
   // (a flight's bits are its question's, run_flight.hpp), so a remembered
   // one is the one the fit would give again. Keyed by a hash of the key's
   // bits, compared bit for bit.
@@ -100,7 +101,9 @@ class DynamicFlightModel final : public DepthRateModel {
     VerticalVelocityProfile profile;
     double v1 = 0.0, v3 = 0.0;
   };
+  static constexpr std::size_t kStartStates = 200000;  // ~40 MB
   mutable std::vector<std::unordered_multimap<std::uint64_t, StartState>> start_states_;
+  mutable std::size_t start_state_count_ = 0;
   mutable std::vector<detail::RunStages> run_stages_;  // per run
   // The flights' answers, by their whole question: a selection asks the same
   // values at the same samples again (a fit's start point, a refit of a set
