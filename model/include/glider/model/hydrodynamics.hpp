@@ -46,12 +46,18 @@ double skin_friction_factor(const Hydrodynamics& h, double speed_m_s);
 // nearly the same speed, so a pow is taken every few steps. Relative error
 // below n(n+1)(n+2)(n+3)(n+4)/120 d^5 at |d| = 0.01: 2.5e-12 for n = 0.1,
 // 2.5e-11 for n = 0.5 (the anchor depends on the speeds asked before: the
-// same sequence gives the same bits).
+// same sequence gives the same bits; restart() forgets them, so a flight
+// restarted at its first stage is a function of its own speeds alone).
 class SkinFrictionFactor {
  public:
   static constexpr double kAnchorSpan = 0.01;
   explicit SkinFrictionFactor(const Hydrodynamics& h);
   double operator()(double speed_m_s) const;
+  // No anchor: the next speed asked becomes one (as right after construction).
+  void restart() const {
+    anchor_inverse_ = 0.0;
+    anchor_factor_ = 1.0;
+  }
 
  private:
   double exponent_ = 0.0, reference_m_s_ = 1.0;

@@ -61,6 +61,13 @@ class PrescribedPitchDynamics {
   // Net weight in water (kg, + heavy) for the inputs.
   double net_buoyancy_kg(const PrescribedPitchInputs& in) const;
 
+  // Call at a flight's first stage: the skin friction's anchors
+  // (SkinFrictionFactor) then come from this flight's own speeds, never from
+  // a flight flown before it with the same object, so a flight's bits are a
+  // function of its start state and inputs alone (a remembered flight and a
+  // recomputed one are the same bits, whatever was flown in between).
+  void start_flight() const { skin_friction_.restart(); }
+
   const GliderDynamics& dynamics() const { return dynamics_; }
 
  private:

@@ -14,6 +14,42 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// FNV-1a over a key's bytes: a memo's bucket; its entries are then compared bit for bit.
+class BitsHash {
+ public:
+  template <typename T>
+  BitsHash& add(std::span<const T> values) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    for (std::size_t k = 0; k < values.size_bytes(); ++k) hash_ = (hash_ ^ bytes[k]) * 1099511628211ULL;
+    return *this;
+  }
+  template <typename T>
+  BitsHash& add(const T& value) {
+    return add(std::span<const T>(&value, 1));
+  }
+  BitsHash& add(const VerticalVelocityProfile* profile) {
+    add(profile != nullptr);
+    if (profile == nullptr) return *this;
+    return add(profile->bin_m).add(profile->first_m).add(std::span<const double>(profile->w_m_s));
+  }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  std::uint64_t hash_ = 14695981039346656037ULL;
+};
+
+// Bit for bit (-0.0 is not +0.0 here): the same question, so the same answer.
+bool same_bits(std::span<const double> a, std::span<const double> b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
+}
+
+bool same_profile(bool has_profile, const VerticalVelocityProfile& kept, const VerticalVelocityProfile* profile) {
+  if (has_profile != (profile != nullptr)) return false;
+  return profile == nullptr || (same_bits(std::span(&kept.bin_m, 1), std::span(&profile->bin_m, 1)) &&
+                                same_bits(std::span(&kept.first_m, 1), std::span(&profile->first_m, 1)) &&
+                                same_bits(kept.w_m_s, profile->w_m_s));
+}
+
 }  // namespace
 
 DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s)
@@ -23,8 +59,7 @@ DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, cons
       stage_pitch_(std::make_unique<detail::StagePitchTable>(track, max_step_s)),
       relative_flights_(track.run_first.size()),
       start_states_(track.run_first.size()),
-      run_stages_(track.run_first.size()),
-      next_start_(track.run_first.size(), 0) {}
+      run_stages_(track.run_first.size()) {}
 
 DynamicFlightModel::~DynamicFlightModel() = default;
 
@@ -42,20 +77,23 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
                              std::vector<double>* depth_rate, std::vector<double>* speed,
                              const VerticalVelocityProfile* profile) const {
   const bool memo = samples.size() <= kFlightMemoSamples;
-  // Bit for bit (-0.0 is not +0.0 here): the same question, so the same answer.
-  auto same_bits = [](std::span<const double> a, std::span<const double> b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
-  };
+  const std::uint64_t hash = memo ? BitsHash()
+                                        .add(std::span<const double>(x))
+                                        .add(use_ctd)
+                                        .add(depth_rate != nullptr)
+                                        .add(speed != nullptr)
+                                        .add(profile)
+                                        .add(samples)
+                                        .value()
+                                  : 0;
   auto same_question = [&](const FlightAnswer& a) {
     return same_bits(a.values, x) && a.use_ctd == use_ctd && a.depth_rate == (depth_rate != nullptr) &&
-           a.speed == (speed != nullptr) && a.has_profile == (profile != nullptr) &&
-           (profile == nullptr || (same_bits(std::span(&a.profile.bin_m, 1), std::span(&profile->bin_m, 1)) &&
-                                   same_bits(std::span(&a.profile.first_m, 1), std::span(&profile->first_m, 1)) &&
-                                   same_bits(a.profile.w_m_s, profile->w_m_s))) &&
+           a.speed == (speed != nullptr) && same_profile(a.has_profile, a.profile, profile) &&
            std::equal(a.samples.begin(), a.samples.end(), samples.begin(), samples.end());
   };
   if (memo) {
-    for (const FlightAnswer& a : answers_) {
+    for (auto [it, end] = answers_.equal_range(hash); it != end; ++it) {
+      const FlightAnswer& a = it->second;
       if (!same_question(a)) continue;
       if (depth_rate != nullptr) *depth_rate = a.depth_rate_out;
       if (speed != nullptr) *speed = a.speed_out;
@@ -63,10 +101,13 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
     }
   }
   fly_uncached(x, use_ctd, samples, depth_rate, speed, profile);
-  if (!memo) return;
-  if (answers_.size() < kFlightMemo) answers_.emplace_back();
-  FlightAnswer& a = answers_[next_answer_];
-  next_answer_ = (next_answer_ + 1) % kFlightMemo;
+  const std::size_t bytes =
+      sizeof(FlightAnswer) + samples.size_bytes() +
+      sizeof(double) * ((depth_rate != nullptr ? samples.size() : 0) + (speed != nullptr ? samples.size() : 0) +
+                        (profile != nullptr ? profile->w_m_s.size() : 0));
+  if (!memo || answer_bytes_ + bytes > kFlightMemoBytes) return;
+  answer_bytes_ += bytes;
+  FlightAnswer& a = answers_.emplace(hash, FlightAnswer{})->second;
   a.values = x;
   a.use_ctd = use_ctd;
   a.depth_rate = depth_rate != nullptr;
@@ -102,36 +143,31 @@ std::size_t DynamicFlightModel::last_needed(std::size_t end, std::size_t last_re
 // parameters, fitted (Gauss-Newton) to the measured depth over the
 // spin-up, which is never scored. The start state depends on the values
 // (the depth lag aside), the density source and the water's profile only:
-// a run's last few are remembered (about a third of the start fits of a
-// real log's diagnosis repeat one: the Jacobian's depth-lag column, a
-// refit), the same bits.
+// they are remembered (kStartStates; a tenth of the start fits of a real log's
+// diagnosis repeat one: the Jacobian's depth-lag column, a refit), the
+// same bits.
 void DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& x,
                                      bool use_ctd, const VerticalVelocityProfile* profile, double& v1,
                                      double& v3) const {
   EffectValues start_key = x;
   start_key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;
-  std::vector<StartState>& starts = start_states_[run];
-  auto same_start = [&](const StartState& s) {
-    return std::memcmp(s.values.data(), start_key.data(), sizeof start_key) == 0 && s.use_ctd == use_ctd &&
-           s.has_profile == (profile != nullptr) &&
-           (profile == nullptr ||
-            (s.profile.bin_m == profile->bin_m && s.profile.first_m == profile->first_m &&
-             s.profile.w_m_s.size() == profile->w_m_s.size() &&
-             std::memcmp(s.profile.w_m_s.data(), profile->w_m_s.data(), sizeof(double) * profile->w_m_s.size()) == 0));
-  };
-  const auto known = std::find_if(starts.begin(), starts.end(), same_start);
-  if (known != starts.end()) {
-    v1 = known->v1;
-    v3 = known->v3;
-    return;
+  const std::uint64_t hash = BitsHash().add(std::span<const double>(start_key)).add(use_ctd).add(profile).value();
+  std::unordered_multimap<std::uint64_t, StartState>& starts = start_states_[run];
+  for (auto [it, end] = starts.equal_range(hash); it != end; ++it) {
+    const StartState& s = it->second;
+    if (same_bits(s.values, start_key) && s.use_ctd == use_ctd && same_profile(s.has_profile, s.profile, profile)) {
+      v1 = s.v1;
+      v3 = s.v3;
+      return;
+    }
   }
   v1 = 0.0;
   v3 = 0.0;
   run_flight.fit_start(v1, v3, fit_buffer_, fit_relative_buffer_);
-  if (starts.size() < kStartStates) starts.emplace_back();
-  StartState& slot = starts[next_start_[run]];
-  next_start_[run] = (next_start_[run] + 1) % kStartStates;
-  slot = {start_key, use_ctd, profile != nullptr, profile != nullptr ? *profile : VerticalVelocityProfile{}, v1, v3};
+  if (start_state_count_ >= kStartStates) return;
+  ++start_state_count_;
+  starts.emplace(hash, StartState{start_key, use_ctd, profile != nullptr,
+                                  profile != nullptr ? *profile : VerticalVelocityProfile{}, v1, v3});
 }
 
 // The run's flight through the water, reused when only the water's
@@ -142,13 +178,18 @@ const DynamicFlightModel::RelativeFlight& DynamicFlightModel::relative_flight(co
                                                                               std::size_t run, const EffectValues& x,
                                                                               bool use_ctd, double v1, double v3,
                                                                               std::size_t last, bool with_speed) const {
-  RelativeFlight& flight = relative_flights_[run];
+  RunRelativeFlights& kept = relative_flights_[run];
   EffectValues key = x;
   key[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)] = 0.0;
   key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;  // the sensor's, not the flight's
-  const bool reuse = flight.valid && flight.key == key && flight.use_ctd == use_ctd && flight.v1 == v1 &&
-                     flight.v3 == v3 && flight.last >= last && (!with_speed || flight.has_speed);
-  if (reuse) return flight;
+  for (const RelativeFlight& flight : kept.flights) {
+    if (flight.valid && flight.key == key && flight.use_ctd == use_ctd && flight.v1 == v1 && flight.v3 == v3 &&
+        flight.last >= last && (!with_speed || flight.has_speed))
+      return flight;
+  }
+  if (kept.flights.size() < kRelativeFlights) kept.flights.emplace_back();
+  RelativeFlight& flight = kept.flights[kept.next];
+  kept.next = (kept.next + 1) % kRelativeFlights;
   flight.flown = run_flight.fly(v1, v3, last, flight.depth, with_speed ? &flight.speed : nullptr);
   flight = {
       true, key, use_ctd, v1, v3, last, flight.flown, with_speed, std::move(flight.depth), std::move(flight.speed)};

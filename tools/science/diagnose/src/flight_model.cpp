@@ -82,9 +82,13 @@ FlightModel::FlightModel(const model::VehicleParams& nominal, const Observations
 
 double VerticalVelocityProfile::at(double depth_m) const {
   if (w_m_s.empty()) return 0.0;
+  return w_m_s[bin(depth_m)];
+}
+
+std::size_t VerticalVelocityProfile::bin(double depth_m) const {
   const double position = (depth_m - first_m) / bin_m;
   const long index = std::clamp(static_cast<long>(std::floor(position)), 0L, static_cast<long>(w_m_s.size()) - 1);
-  return w_m_s[static_cast<std::size_t>(index)];
+  return static_cast<std::size_t>(index);
 }
 
 bool flyable(const EffectValues& x) {

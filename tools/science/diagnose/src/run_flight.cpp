@@ -139,9 +139,12 @@ model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, doub
   return in;
 }
 
-std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<double>& z,
-                           std::vector<double>* u) const {
+std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
+                           double stop_above) const {
+  const bool bounded = stop_above < std::numeric_limits<double>::infinity();
+  double misfit = 0.0;  // the running sum of squares, when bounded
   const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
+  dynamics.start_flight();  // a function of (v1, v3) and the run alone, whatever flew before
   Impulse p = dynamics.impulse(v1, v3, in0_);
   double lagged = in0_.pumped_volume_m3;
   z.assign(last - first_ + 1, kNaN);
@@ -183,6 +186,12 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
     if (!cached) ++stages_.intervals;
     if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
     z[i + 1 - first_] = depth;
+    if (bounded && i - first_ < stages_.water.size()) {
+      // The misfit as fit_start's residual has it (ground_depth's sum, the same expression).
+      const double r = t_.depth_m[first_] + depth + stages_.water[i - first_] - t_.depth_m[i + 1];
+      misfit += r * r;
+      if (misfit > stop_above) return i + 1;  // short of `last`: the caller's "worse"
+    }
     if (u != nullptr)
       (*u)[i + 1 - first_] = dynamics.velocities(p, inputs(i, 2 * steps, steps, lagged, 2 * steps)).norm();
     flown = i + 1;
@@ -210,7 +219,14 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       const double w = c_.water_w(0.0);
       for (int s = 0; s < steps; ++s) water += h / 6.0 * (w + 2.0 * w + 2.0 * w + w);
     }
-    for (int s = 0; s < steps && c_.has_profile(); ++s) {
+    const std::uint32_t* bins = c_.has_profile() ? stage_bins(i, steps) : nullptr;
+    for (int s = 0; s < steps && bins != nullptr; ++s) {
+      // VerticalVelocityProfile::at at the stages' depths, their bins looked up once per geometry.
+      const std::vector<double>& w = c_.profile()->w_m_s;
+      const double wa = w[bins[3 * s]], wb = w[bins[3 * s + 1]], wc = w[bins[3 * s + 2]];
+      water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
+    }
+    for (int s = 0; s < steps && c_.has_profile() && bins == nullptr; ++s) {
       const double wa = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s) / steps));
       const double wb = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], (s + 0.5) / steps));
       const double wc = c_.water_w(lerp(t.depth_m[i], t.depth_m[i + 1], static_cast<double>(s + 1) / steps));
@@ -219,6 +235,30 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
     stages_.water.push_back(water);
     z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
   }
+}
+
+const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
+  const VerticalVelocityProfile& profile = *c_.profile();
+  if (profile.w_m_s.empty()) return nullptr;  // no bins: at() is 0
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  if (!same(stages_.bins_first_m, profile.first_m) || !same(stages_.bins_bin_m, profile.bin_m) ||
+      stages_.bins_count != profile.w_m_s.size()) {
+    stages_.bins_first_m = profile.first_m;
+    stages_.bins_bin_m = profile.bin_m;
+    stages_.bins_count = profile.w_m_s.size();
+    stages_.bins_offset.clear();
+    stages_.bins.clear();
+  }
+  const std::size_t interval = i - first_;
+  if (interval < stages_.bins_offset.size()) return &stages_.bins[stages_.bins_offset[interval]];
+  if (interval > stages_.bins_offset.size()) return nullptr;  // filled in order only: looked up directly
+  const Track& t = t_;
+  stages_.bins_offset.push_back(stages_.bins.size());
+  for (int s = 0; s < steps; ++s) {
+    for (const double f : {static_cast<double>(s) / steps, (s + 0.5) / steps, static_cast<double>(s + 1) / steps})
+      stages_.bins.push_back(static_cast<std::uint32_t>(profile.bin(lerp(t.depth_m[i], t.depth_m[i + 1], f))));
+  }
+  return &stages_.bins[stages_.bins_offset[interval]];
 }
 
 void RunFlight::guess_start(double& v1, double& v3) const {
@@ -243,8 +283,11 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
   const std::size_t fit_last = spin_up_last_;
   if (fit_last < first_ + 3) return;
   const std::size_t n = fit_last - first_;
-  auto misfit = [&](double a, double b, Eigen::VectorXd& r) {
-    if (fly(a, b, fit_last, rel, nullptr) != fit_last) return false;
+  // A trial's flight stops once its misfit is clearly above the one to beat
+  // (bound: see below); the full flights (the guess, the Jacobian) fly on.
+  auto misfit = [&](double a, double b, Eigen::VectorXd& r,
+                    double stop_above = std::numeric_limits<double>::infinity()) {
+    if (fly(a, b, fit_last, rel, nullptr, stop_above) != fit_last) return false;
     // Not through the depth lag: the start state is a nuisance fitted on
     // a part never scored, and without the lag it stays the same for
     // every lag, so a depth_lag fit reuses the flight (only the depth
@@ -269,9 +312,18 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
     Eigen::Vector2d step = solver.solve(-jac.transpose() * r);
     if (!step.allFinite()) break;
     double taken = 0.0;  // length of the step taken (halved until the misfit does not grow)
+    // A trial is taken where its squared norm is <= the current one's. A
+    // running sum over its first samples that already exceeds that by more
+    // than 2 n eps relative decides "not taken" early, and the same as the
+    // whole norm would: a float sum of n non-negative terms, in any order,
+    // is within (n - 1) u of the exact sum (u = eps / 2), so the two
+    // summations differ by less than 2 n eps, and the samples left only add.
+    // (The trials not taken then fly about half the spin-up, comet-2016.)
+    const double stop_above =
+        r.squaredNorm() * (1.0 + 2.0 * static_cast<double>(n) * std::numeric_limits<double>::epsilon());
     for (int halving = 0; halving < 4 && taken == 0.0; ++halving) {
       const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
-      if (misfit(a, b, r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+      if (misfit(a, b, r_trial, stop_above) && r_trial.squaredNorm() <= r.squaredNorm()) {
         v1 = a;
         v3 = b;
         r.swap(r_trial);

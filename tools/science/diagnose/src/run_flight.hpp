@@ -6,6 +6,8 @@
 // over ground, and the start state fitted on the run's spin-up.
 // dynamic_flight_model.cpp decides which runs to fly and what to remember.
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "glider/diagnose/flight_model.hpp"
@@ -63,6 +65,7 @@ class FlightConditions {
   // The water's own vertical velocity at a depth (m/s, + down).
   double water_w(double depth_m) const { return profile_ != nullptr ? profile_->at(depth_m) : constant_w_; }
   bool has_profile() const { return profile_ != nullptr; }
+  const VerticalVelocityProfile* profile() const { return profile_; }
   // The water of these conditions is `profile` (or the constant `w` without
   // one), bit for bit.
   bool same_water(bool has_profile, double w, const VerticalVelocityProfile& profile) const;
@@ -102,6 +105,14 @@ struct RunStages {
   double water_w = 0.0;
   VerticalVelocityProfile water_profile;
   std::vector<double> water;
+  // The profile's bin at each of ground_depth's stages (three a step), for
+  // the profile's geometry (first_m, bin_m, bins; bit for bit): a depth
+  // profile's Jacobian asks one geometry with a new velocity per bin, and
+  // each is integrated over the whole run. Filled in order, per interval.
+  double bins_first_m = 0.0, bins_bin_m = 0.0;
+  std::size_t bins_count = 0;
+  std::vector<std::size_t> bins_offset;  // per interval filled, its first stage in `bins`
+  std::vector<std::uint32_t> bins;
 };
 
 class RunFlight {
@@ -124,7 +135,13 @@ class RunFlight {
   // the last sample reached with a finite state. The water's own vertical
   // velocity moves the glider without changing its flight through the
   // water: ground_depth adds it.
-  std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u) const;
+  //
+  // stop_above (finite): the flight stops as soon as the running sum of
+  // its squared depth misfits (depth over ground minus measured, samples
+  // first + 1 on) exceeds it, returning a sample before `last`. Needs the
+  // water's displacement up to `last` kept (ground_depth ran that far).
+  std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
+                  double stop_above = std::numeric_limits<double>::infinity()) const;
 
   // The depth over ground at samples first..flown: the measured first
   // depth, the flight's relative depth `rel` and the water's vertical
@@ -138,6 +155,9 @@ class RunFlight {
 
  private:
   void guess_start(double& v1, double& v3) const;
+  // The profile's bin at ground_depth's three stages a step of interval i
+  // (RunStages::bins), or nullptr where they are not kept.
+  const std::uint32_t* stage_bins(std::size_t i, int steps) const;
 
   const FlightConditions& c_;
   const Track& t_;

@@ -7,8 +7,10 @@
 // (never scored) closest to the measured depth. It predicts the
 // depth rate of every sample, turns included, which the steady model cannot:
 // that is where a pump lag shows ("the model turns earlier than the glider").
+#include <cstdint>
 #include <memory>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "glider/diagnose/flight_model.hpp"
@@ -64,8 +66,8 @@ class DynamicFlightModel final : public DepthRateModel {
   double max_step_s_;
   std::unique_ptr<const detail::StagePitchTable> stage_pitch_;  // the track's pitch at every stage (run_flight.hpp)
   mutable std::vector<double> depth_buffer_, fit_buffer_, fit_relative_buffer_;  // per run, reused across calls
-  // Each run's last flight through the water (relative depth and speed),
-  // for the effect values but the water's vertical velocity, from (v1, v3).
+  // A run's flight through the water (relative depth and speed), for the
+  // effect values but the water's vertical velocity, from (v1, v3).
   struct RelativeFlight {
     bool valid = false;
     EffectValues key{};
@@ -75,25 +77,39 @@ class DynamicFlightModel final : public DepthRateModel {
     bool has_speed = false;
     std::vector<double> depth, speed;
   };
-  mutable std::vector<RelativeFlight> relative_flights_;
-  // Each run's last start states (the body velocities fitted on its spin-up)
-  // by what they depend on: the values but the depth lag, the density
-  // source, the water's profile.
+  // A run's last kRelativeFlights flights (round robin): an LM Jacobian's
+  // columns alternate between effects that change the flight and ones that
+  // do not (the water's velocity, the depth lag), so the flight of the
+  // column before the last is often the one asked again.
+  static constexpr std::size_t kRelativeFlights = 8;
+  struct RunRelativeFlights {
+    std::vector<RelativeFlight> flights;
+    std::size_t next = 0;  // the slot the next flight replaces
+  };
+  mutable std::vector<RunRelativeFlights> relative_flights_;
+  // Each run's start states (the body velocities fitted on its spin-up) by
+  // what they depend on: the values but the depth lag, the density source,
+  // the water's profile. Up to kStartStates of them (a few hundred bytes
+  // each; comet-2016's diagnosis fits ~20000): a start state is a function
+  // of that key alone
+  // (a flight's bits are its question's, run_flight.hpp), so a remembered
+  // one is the one the fit would give again. Keyed by a hash of the key's
+  // bits, compared bit for bit.
   struct StartState {
     EffectValues values{};
     bool use_ctd = false, has_profile = false;
     VerticalVelocityProfile profile;
     double v1 = 0.0, v3 = 0.0;
   };
-  static constexpr std::size_t kStartStates = 8;
-  mutable std::vector<std::vector<StartState>> start_states_;
+  static constexpr std::size_t kStartStates = 200000;  // ~40 MB
+  mutable std::vector<std::unordered_multimap<std::uint64_t, StartState>> start_states_;
+  mutable std::size_t start_state_count_ = 0;
   mutable std::vector<detail::RunStages> run_stages_;  // per run
-  mutable std::vector<std::size_t> next_start_;
-  // The last flights' answers, by their whole question: a selection asks the
-  // same values at the same samples again (about a quarter of the flights of
-  // a real log's diagnosis: a fit's start point, a refit of a set already
-  // fitted), and a flight is a deterministic function of them, so the answer
-  // is the same bits (docs/science.md, speed). Small: kFlightMemo entries,
+  // The flights' answers, by their whole question: a selection asks the same
+  // values at the same samples again (a fit's start point, a refit of a set
+  // already fitted, an interval's profile), and a flight is a deterministic
+  // function of them, so the answer is the same bits (docs/science.md,
+  // speed). Kept up to kFlightMemoBytes of answers (then no more are added),
   // none for requests of more than kFlightMemoSamples samples.
   struct FlightAnswer {
     EffectValues values{};
@@ -102,9 +118,9 @@ class DynamicFlightModel final : public DepthRateModel {
     std::vector<std::size_t> samples;
     std::vector<double> depth_rate_out, speed_out;
   };
-  static constexpr std::size_t kFlightMemo = 16, kFlightMemoSamples = 20000;
-  mutable std::vector<FlightAnswer> answers_;
-  mutable std::size_t next_answer_ = 0;  // the slot the next answer replaces (round robin)
+  static constexpr std::size_t kFlightMemoBytes = std::size_t{64} << 20, kFlightMemoSamples = 20000;
+  mutable std::unordered_multimap<std::uint64_t, FlightAnswer> answers_;
+  mutable std::size_t answer_bytes_ = 0;
 };
 
 }  // namespace glider::diagnose

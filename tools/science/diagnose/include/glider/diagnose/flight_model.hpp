@@ -55,6 +55,8 @@ struct VerticalVelocityProfile {
   double first_m = 0.0;       // top of the first bin
   std::vector<double> w_m_s;  // per bin, + down
   double at(double depth_m) const;
+  // The bin holding a depth (clamped to the first and last); w_m_s not empty.
+  std::size_t bin(double depth_m) const;
 };
 
 // The nominal vehicle with the vehicle effects applied (buoyancy offset,
