@@ -939,8 +939,12 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
   for (Effect e : pool) {
     if (e != Effect::kWaterDensity) alternatives.push_back(static_cast<int>(e));  // the CTD's, not a fitted number
   }
-  const std::vector<ScreenedPair> pairs =
-      screen_pairs(chosen, alternatives, signature, options.ambiguity_screen_correlation);
+  const std::vector<ScreenedPair> all = pair_correlations(chosen, alternatives, signature);
+  d.screen_correlation = options.ambiguity_screen_correlation;
+  for (const ScreenedPair& pair : all) {
+    d.screen.push_back({current.fitted[pair.finding], static_cast<Effect>(pair.alternative), pair.correlation});
+  }
+  const std::vector<ScreenedPair> pairs = screened(all, options.ambiguity_screen_correlation);
   for (const ScreenedPair& pair : pairs) {
     const std::size_t j = pair.finding;
     const Effect effect = current.fitted[j];

@@ -101,6 +101,14 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
   }
   j["ambiguous"] = ambiguous;
   j["identifiability"] = identifiability;
+  ordered_json screen = ordered_json::array();
+  for (const auto& c : d.screen) {
+    screen.push_back({{"effect", info(c.chosen).id},
+                      {"alternative", info(c.alternative).id},
+                      {"signature_correlation", number_or_null(c.correlation)},
+                      {"judged", c.correlation >= d.screen_correlation}});
+  }
+  j["identifiability_screen"] = {{"screen_correlation", d.screen_correlation}, {"pairs", screen}};
   j["cause"] = d.cause;
   j["extended"] = {{"rms_depth_rate_m_s", number_or_null(d.extended_all.depth_rate_m_s)},
                    {"heldout_rms_depth_rate_m_s", number_or_null(d.extended_heldout_rms_m_s)}};

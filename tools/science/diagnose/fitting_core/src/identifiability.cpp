@@ -25,8 +25,8 @@ Eigen::VectorXd signature_column(const std::vector<double>& stepped, const std::
   return column;
 }
 
-std::vector<ScreenedPair> screen_pairs(const EffectSet& chosen, const std::vector<int>& alternatives,
-                                       const std::function<Eigen::VectorXd(int)>& signature, double screen) {
+std::vector<ScreenedPair> pair_correlations(const EffectSet& chosen, const std::vector<int>& alternatives,
+                                            const std::function<Eigen::VectorXd(int)>& signature) {
   std::vector<ScreenedPair> out;
   std::vector<Eigen::VectorXd> signatures;
   for (int e : chosen) signatures.push_back(signature(e));
@@ -40,11 +40,23 @@ std::vector<ScreenedPair> screen_pairs(const EffectSet& chosen, const std::vecto
     const Eigen::VectorXd a = complement.of(signatures[j]);
     for (int alternative : alternatives) {
       if (std::find(chosen.begin(), chosen.end(), alternative) != chosen.end()) continue;
-      const double correlation = absolute_correlation(a, complement.of(signature(alternative)));
-      if (correlation >= screen) out.push_back({j, alternative, correlation});
+      out.push_back({j, alternative, absolute_correlation(a, complement.of(signature(alternative)))});
     }
   }
   return out;
+}
+
+std::vector<ScreenedPair> screened(const std::vector<ScreenedPair>& all, double screen) {
+  std::vector<ScreenedPair> out;
+  for (const ScreenedPair& pair : all) {
+    if (pair.correlation >= screen) out.push_back(pair);  // NaN: no signature, nothing to judge
+  }
+  return out;
+}
+
+std::vector<ScreenedPair> screen_pairs(const EffectSet& chosen, const std::vector<int>& alternatives,
+                                       const std::function<Eigen::VectorXd(int)>& signature, double screen) {
+  return screened(pair_correlations(chosen, alternatives, signature), screen);
 }
 
 double absolute_correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {

@@ -123,6 +123,15 @@ struct Diagnosis {
   Baseline baseline;
   std::vector<Finding> findings;       // strongest first, significant only
   std::vector<Ambiguity> ambiguities;  // every pair judged (state_identifiability), ambiguous or told apart
+  // Every finding against every candidate not taken: their signatures'
+  // correlation (the identifiability screen's input), judged above
+  // `screen_correlation`, stated below it, so no pair is passed over silently.
+  struct ScreenedCorrelation {
+    Effect chosen = Effect::kBuoyancyOffset, alternative = Effect::kBuoyancyOffset;
+    double correlation = 0.0;
+  };
+  std::vector<ScreenedCorrelation> screen;
+  double screen_correlation = 0.0;
   std::string cause = "none";
   EffectValues extended = nominal_values();
   std::optional<VerticalVelocityProfile> extended_profile;  // when the vertical velocity was fitted

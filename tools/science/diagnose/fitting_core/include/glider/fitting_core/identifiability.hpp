@@ -40,6 +40,17 @@ struct ScreenedPair {
 };
 
 // Every finding of `chosen` against every effect of `alternatives` not
+// chosen: the correlation of their signatures once the other findings'
+// signatures are projected out of both (NaN where either is zero). The
+// screen below keeps the high ones; a plane states the rest too, so a pair
+// not judged says why (its correlation under the screen), never silently.
+std::vector<ScreenedPair> pair_correlations(const EffectSet& chosen, const std::vector<int>& alternatives,
+                                            const std::function<Eigen::VectorXd(int)>& signature);
+
+// The pairs of `all` (pair_correlations) that correlate at least `screen`.
+std::vector<ScreenedPair> screened(const std::vector<ScreenedPair>& all, double screen);
+
+// Every finding of `chosen` against every effect of `alternatives` not
 // chosen whose signatures (`signature(effect)`) correlate at least `screen`
 // once the other findings' signatures are projected out of both: the pairs
 // the data may not separate, for the plane to fit the alternative in the
