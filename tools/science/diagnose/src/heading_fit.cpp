@@ -395,11 +395,10 @@ class HeadingSelection : public SelectionProblem {
 // signature (the change of the training residuals for a tenth of a scale)
 // against every unused candidate's, the other findings' projected out;
 // where they correlate, the candidate is fitted in the finding's place.
-std::vector<HeadingAmbiguity> judge_pairs(const Problem& problem, HeadingSelection& selection, const EffectSet& chosen,
-                                          const std::vector<HeadingEffect>& candidates,
-                                          const HeadingSelectOptions& options) {
-  std::vector<HeadingAmbiguity> out;
-  if (chosen.empty()) return out;
+void judge_pairs(const Problem& problem, HeadingSelection& selection, const EffectSet& chosen,
+                 const std::vector<HeadingEffect>& candidates, const HeadingSelectOptions& options, LinkFit& fit) {
+  std::vector<HeadingAmbiguity>& out = fit.identifiability;
+  if (chosen.empty()) return;
   const Trial final_fit = selection.trial(chosen);
   std::vector<double> base;
   problem.residuals(final_fit.values, problem.samples().train, base);
@@ -414,7 +413,13 @@ std::vector<HeadingAmbiguity> judge_pairs(const Problem& problem, HeadingSelecti
   };
   std::vector<int> alternatives;
   for (HeadingEffect e : candidates) alternatives.push_back(static_cast<int>(e));
-  for (const ScreenedPair& pair : screen_pairs(chosen, alternatives, signature, options.ambiguity_screen_correlation)) {
+  const std::vector<ScreenedPair> all = pair_correlations(chosen, alternatives, signature);
+  fit.screen_correlation = options.ambiguity_screen_correlation;
+  for (const ScreenedPair& pair : all) {
+    fit.screen.push_back({static_cast<HeadingEffect>(chosen[pair.finding]),
+                          static_cast<HeadingEffect>(pair.alternative), pair.correlation});
+  }
+  for (const ScreenedPair& pair : screened(all, options.ambiguity_screen_correlation)) {
     const std::size_t j = pair.finding;
     const auto alternative = static_cast<HeadingEffect>(pair.alternative);
     const double correlation = pair.correlation;
@@ -431,7 +436,6 @@ std::vector<HeadingAmbiguity> judge_pairs(const Problem& problem, HeadingSelecti
     amb.ambiguous = indistinguishable(t.heldout_rms, final_fit.heldout_rms, options.margins);
     out.push_back(amb);
   }
-  return out;
 }
 
 double rms_of(const Problem& problem, const HeadingValues& v, const std::vector<std::size_t>& which) {
@@ -468,7 +472,7 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
     std::vector<int> ids;
     for (HeadingEffect e : candidates) ids.push_back(static_cast<int>(e));
     chosen = backward_eliminate(selection, forward_select(selection, {}, ids, rules), rules, worth);
-    out.identifiability = judge_pairs(problem, selection, chosen, candidates, options);
+    judge_pairs(problem, selection, chosen, candidates, options, out);
   }
   Trial final_fit = selection.trial(chosen);
   profile_delays(problem, final_fit);

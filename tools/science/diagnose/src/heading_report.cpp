@@ -74,6 +74,14 @@ ordered_json link_json(const LinkFit& f) {
                      {"verdict", a.ambiguous ? "ambiguous" : "told apart by the held-out yos"}});
   }
   j["identifiability"] = pairs;
+  ordered_json screen = ordered_json::array();
+  for (const auto& c : f.screen) {
+    screen.push_back({{"chosen", info(c.chosen).id},
+                      {"alternative", info(c.alternative).id},
+                      {"correlation", number_or_null(c.correlation)},
+                      {"judged", c.correlation >= f.screen_correlation}});
+  }
+  j["identifiability_screen"] = {{"screen_correlation", f.screen_correlation}, {"pairs", screen}};
   j["extended"] = {{"rms", number_or_null(f.extended_rms)}, {"heldout_rms", number_or_null(f.extended_heldout_rms)}};
   j["gain"] = number_or_null(f.gain);
   ordered_json candidates = ordered_json::array();

@@ -50,7 +50,15 @@ struct LinkFit {
   std::vector<HeadingFinding> findings;           // strongest first
   std::vector<HeadingFinding> dropped;            // chosen, then refuted (heading_diagnose.hpp yaw_noise_model)
   std::vector<HeadingAmbiguity> identifiability;  // every pair judged (selected links only)
-  HeadingValues values{};                         // nominal with the findings
+  // Every finding against every unused candidate: their signatures'
+  // correlation, judged at or above the screen, stated below it.
+  struct ScreenedCorrelation {
+    HeadingEffect chosen = HeadingEffect::kFinDelay, alternative = HeadingEffect::kFinDelay;
+    double correlation = 0.0;
+  };
+  std::vector<ScreenedCorrelation> screen;
+  double screen_correlation = 0.0;
+  HeadingValues values{};  // nominal with the findings
   double extended_rms = 0.0, extended_heldout_rms = 0.0;
   double gain = 0.0;
 };
