@@ -20,6 +20,8 @@ import random
 import subprocess
 import sys
 
+from screen_checks import stated_under_screen
+
 
 def fresh_seed():
     """A fresh seed (GLIDER_TEST_SEED replays one)."""
@@ -72,13 +74,11 @@ def main(truth, diagnose, vehicle, workdir):
         # Not judged is allowed only where the diagnosis states why: the pair's signatures correlate under
         # the screen (identifiability_screen), with the other findings projected out.
         screen = d.get("identifiability_screen", {})
-        stated_under = [p for p in screen.get("pairs", []) if {p["effect"], p["alternative"]} == pair
-                        and p["signature_correlation"] is not None and not p["judged"]
-                        and p["signature_correlation"] < screen["screen_correlation"]]
-        if not stated_under:
+        under = stated_under_screen(screen, pair, "effect", "signature_correlation")
+        if under is None:
             print("FAIL: the offset/water pair is decided silently: not judged, and no screen correlation stated")
             return 1
-        print(f"NOTE: the pair is not judged: its signatures correlate {stated_under[0]['signature_correlation']:.3f}, "
+        print(f"NOTE: the pair is not judged: its signatures correlate {under:.3f}, "
               f"under the screen {screen['screen_correlation']} (stated in identifiability_screen)")
         print("PASS identifiability judged (stated under the screen)")
         return 0

@@ -17,6 +17,7 @@ import random
 import sys
 
 from check_ambiguity import fly_and_diagnose, fresh_seed  # the same truth-then-diagnose step
+from screen_checks import stated_under_screen
 
 
 def main(truth, diagnose, vehicle, workdir):
@@ -51,13 +52,11 @@ def main(truth, diagnose, vehicle, workdir):
         # Not judged is allowed only where the link states why: the pair's signatures correlate under the
         # screen (identifiability_screen), with the other findings projected out.
         screen = vehicle_link.get("identifiability_screen", {})
-        under = [p for p in screen.get("pairs", []) if {p["chosen"], p["alternative"]} == pair
-                 and p["correlation"] is not None and not p["judged"]
-                 and p["correlation"] < screen["screen_correlation"]]
-        if not under:
+        under = stated_under_screen(screen, pair, "chosen", "correlation")
+        if under is None:
             print("FAIL: the yaw_delay / yaw_time_constant pair is decided silently")
             return 1
-        print(f"NOTE: the pair is not judged: its signatures correlate {under[0]['correlation']:.3f}, under the "
+        print(f"NOTE: the pair is not judged: its signatures correlate {under:.3f}, under the "
               f"screen {screen['screen_correlation']} (stated in identifiability_screen)")
     print("PASS heading identifiability judged")
     return 0
