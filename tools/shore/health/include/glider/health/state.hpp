@@ -17,8 +17,11 @@ namespace glider::health {
 inline constexpr const char* kStateSchema = "glider-health-state/1";
 // Bumped whenever a segment's measurement changes (another fit, another
 // rule for the data): a state measured otherwise is measured again.
-inline constexpr int kMeasurementVersion =
-    3;  // 2: 2 s RK4 steps, the lag floored at the sampling; 3: m_fin of decimated files as stored
+// 2: 2 s RK4 steps, the lag floored at the sampling; 3: m_fin of decimated
+// files as stored; 4: the Reynolds prior for a vehicle file silent on the
+// exponent, the heading command held between stores, a fresh skin-friction
+// anchor per flight (session 34).
+inline constexpr int kMeasurementVersion = 4;
 
 struct HealthState {
   std::string glider;
