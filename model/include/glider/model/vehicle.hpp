@@ -77,6 +77,13 @@ struct Hydrodynamics {
   double wing_oswald_efficiency = 0.0;
 };
 
+// The drag scaled as a whole (the zero-lift and the induced parts together):
+// how fouling, a forecast's drag draw and its speed correction change it.
+inline void scale_drag(Hydrodynamics& hydro, double factor) {
+  hydro.cd0 *= factor;
+  hydro.cd_alpha2 *= factor;
+}
+
 // Heading in the spirit of the vertical-plane model (see dynamics.hpp): the
 // yaw rate relaxes with a time constant toward what the rudder (fin) and the
 // static roll offset ask for, both proportional to the speed.

@@ -371,8 +371,8 @@ void measure_speed(const std::vector<Surfacing>& history, FlightSetup& setup, co
         const double next = std::clamp(best_factor * step, kSpeedDragMin, kSpeedDragMax);
         if (next == factor) break;  // at a limit
         factor = next;
-        setup.vehicle.hydro.cd0 = nominal.cd0 * factor;
-        setup.vehicle.hydro.cd_alpha2 = nominal.cd_alpha2 * factor;
+        setup.vehicle.hydro = nominal;
+        model::scale_drag(setup.vehicle.hydro, factor);
         corrected = still_water_speed(setup, options, corrected_average);
         if (!(corrected > 0.02)) break;  // no glide there: keep the best so far
         ratio = glider / corrected;
@@ -388,8 +388,8 @@ void measure_speed(const std::vector<Surfacing>& history, FlightSetup& setup, co
         last_log_factor = log_factor;
         last_log_speed = log_speed;
       }
-      setup.vehicle.hydro.cd0 = nominal.cd0 * best_factor;
-      setup.vehicle.hydro.cd_alpha2 = nominal.cd_alpha2 * best_factor;
+      setup.vehicle.hydro = nominal;
+      model::scale_drag(setup.vehicle.hydro, best_factor);
       f.speed_drag_factor = best_factor;
       if (best_factor != 1.0) {
         average = best_average;
@@ -474,6 +474,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   if (history.back().water_vx_m_s && history.back().water_vy_m_s) {
     setup.firmware_current = fw::EastNorth{*history.back().water_vx_m_s, *history.back().water_vy_m_s};
   }
+  const model::Hydrodynamics nominal_hydro = setup.vehicle.hydro;  // the baseline's (measure_speed may correct it)
   measure_speed(history, setup, options, f);
   std::vector<DiveMiss> misses;
   if (options.waypoint >= 0 && now.applied.empty()) {
@@ -567,8 +568,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
 
   FlightSetup base = setup;
   base.current = f.baseline_current;
-  base.vehicle.hydro.cd0 /= f.speed_drag_factor;  // the baseline flies the nominal vehicle
-  base.vehicle.hydro.cd_alpha2 /= f.speed_drag_factor;
+  base.vehicle.hydro = nominal_hydro;  // the baseline flies the nominal vehicle
   const std::vector<RunOutcome> baseline = fly_runs(base, options, 1, false);
   if (!baseline.empty() && baseline[0].surfaced && !baseline[0].aborted) {
     f.baseline_ok = true;

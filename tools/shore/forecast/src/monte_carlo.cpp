@@ -30,8 +30,7 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
     east += sign * s.current.sigma_east_m_s * draw.gaussian();
     north += sign * s.current.sigma_north_m_s * draw.gaussian();
     const double drag = std::exp(sign * o.drag_sigma * draw.gaussian());
-    vehicle.hydro.cd0 *= drag;
-    vehicle.hydro.cd_alpha2 *= drag;
+    model::scale_drag(vehicle.hydro, drag);
     vehicle.buoyancy_offset_kg += sign * o.buoyancy_sigma_kg * draw.gaussian();
   }
   sil::ScenarioOptions opt;

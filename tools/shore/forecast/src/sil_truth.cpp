@@ -60,8 +60,7 @@ Truth fly_truth(const TruthOptions& o) {
   // The true vehicle is not the file's.
   model::VehicleParams flown = vehicle;
   const double drag = o.drag_factor * std::exp(o.drag_sigma * draw.gaussian());
-  flown.hydro.cd0 *= drag;
-  flown.hydro.cd_alpha2 *= drag;
+  model::scale_drag(flown.hydro, drag);
   flown.buoyancy_offset_kg += o.buoyancy_sigma_kg * draw.gaussian();
   char text[320];
   std::snprintf(text, sizeof text,
