@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "glider/firmware/geo.hpp"
 
@@ -11,6 +12,18 @@ namespace glider::fw {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The HAL's contract (attitude_sensor.hpp): Euler angles, pitch within +-90 deg,
+// roll within +-180, heading in [0, 360) - what a compass can report. A value
+// outside is a broken driver or sensor, not an attitude (NaN fails every test).
+bool attitude_in_range(const hal::AttitudeSample& a) {
+  constexpr double kRoundOff = 1e-9;  // degrees converted to radians at the edges
+  constexpr double kHalfPi = std::numbers::pi / 2.0 + kRoundOff;
+  constexpr double kPi = std::numbers::pi + kRoundOff;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi + kRoundOff;
+  return a.pitch_rad >= -kHalfPi && a.pitch_rad <= kHalfPi && a.roll_rad >= -kPi && a.roll_rad <= kPi &&
+         a.heading_rad >= -kRoundOff && a.heading_rad < kTwoPi;
+}
 
 bool is_fresh(hal::Micros now_us, hal::Micros sample_us, double timeout_s) {
   return hal::to_seconds(now_us - sample_us) <= timeout_s;
@@ -144,8 +157,7 @@ FlightSoftware::CycleReadings FlightSoftware::read_sensors(hal::Micros now_us) {
     have_depth_ = true;
   }
   in.attitude = hal_.attitude.read();
-  in.attitude_valid = in.attitude.valid && std::isfinite(in.attitude.pitch_rad) &&
-                      std::isfinite(in.attitude.roll_rad) && std::isfinite(in.attitude.heading_rad);
+  in.attitude_valid = in.attitude.valid && attitude_in_range(in.attitude);
   if (in.attitude_valid) {
     attitude_ = in.attitude;
     have_attitude_ = true;

@@ -106,6 +106,7 @@ Json flight_summary(const ScenarioResult& result, const fw::FlightSoftwareConfig
   j["loop_overruns"] = result.executive.overruns;
   j["log_rows"] = result.log_rows;
   j["log_rows_lost"] = result.log_rows_lost;
+  j["glide_warnings"] = context.glide_warnings;
   return j;
 }
 

@@ -24,6 +24,7 @@
 #include "glider/model/environment_file.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/flight_summary.hpp"
+#include "glider/sil/glide_check.hpp"
 #include "glider/sil/launch_time.hpp"
 #include "glider/sil/mission_setup.hpp"
 #include "glider/sil/scenario.hpp"
@@ -302,6 +303,11 @@ int main(int argc, char** argv) {
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 
     if (!result.error.empty()) return tool.fail(glider::cli::kError, result.error);
+    // Even with --quiet: a flight the vehicle cannot make is not a result to use unwarned.
+    const std::vector<std::string> glide_warnings = glider::sil::unflyable_glide_warnings(
+        vehicle.hydro, options.environment.water.at(0.0, 0.0).density_kg_m3, result.stats);
+    for (const std::string& warning : glide_warnings)
+      std::fprintf(stderr, "glider-sil: warning: %s\n", warning.c_str());
     if (!summary_json_path.empty()) {
       glider::sil::SummaryContext context;
       context.mission_file = mission_path;
@@ -309,6 +315,7 @@ int main(int argc, char** argv) {
       context.seed = seed;
       context.wall_time_s = wall_s;
       context.launch = options.peripherals.gps.launch;
+      context.glide_warnings = glide_warnings;
       std::ofstream json(summary_json_path, std::ios::out | std::ios::trunc);
       json << glider::sil::flight_summary(result, config, context).dump(2) << '\n';
       json.close();

@@ -36,11 +36,24 @@ hal::AttitudeSample SimHal::read_attitude() {
   if (faults_.attitude_frozen) return last_attitude_;
   hal::AttitudeSample sample;
   sample.time_us = clock_.now_us();
-  sample.pitch_rad = sim_.state()[model::kTheta] + noise_.pitch_rad * gaussian();
-  sample.roll_rad = sim_.dynamics().vehicle().heading.roll_offset_rad + noise_.roll_rad * gaussian();
+  const double pitch = sim_.state()[model::kTheta] + noise_.pitch_rad * gaussian();
+  double roll = sim_.dynamics().vehicle().heading.roll_offset_rad + noise_.roll_rad * gaussian();
   const double two_pi = 2.0 * std::numbers::pi;
-  const double heading =
+  double heading =
       delayed_heading(hal::to_seconds(sample.time_us), sim_.state()[model::kPsi]) + noise_.heading_rad * gaussian();
+  // The model's pitch angle runs on past +-90 deg when a vehicle somersaults
+  // (a polar with no glide at the mission's pitch); a compass reports Euler
+  // angles (attitude_sensor.hpp): past vertical the pitch comes back and the
+  // roll and heading turn over by 180 deg, as the serial driver's compass does.
+  sample.pitch_rad = pitch;
+  if (std::abs(pitch) > std::numbers::pi / 2.0) {
+    sample.pitch_rad = std::asin(std::sin(pitch));
+    if (std::cos(pitch) < 0.0) {
+      roll += std::numbers::pi;
+      heading += std::numbers::pi;
+    }
+  }
+  sample.roll_rad = std::remainder(roll, two_pi);
   sample.heading_rad = std::fmod(std::fmod(heading, two_pi) + two_pi, two_pi);
   sample.valid = !faults_.attitude_invalid;
   last_attitude_ = sample;

@@ -99,6 +99,38 @@ TEST(FlightSoftware, NonFinitePitchIsInvalid) {
   CHECK(flight.abort_cause() == fw::AbortCause::kAttitudeSensor);
 }
 
+// The HAL contract's Euler ranges (attitude_sensor.hpp): a pitch past vertical,
+// a roll past 180 deg or a heading outside [0, 360) is no attitude; logged as
+// NaN, and held long enough it is the attitude sensor's abort.
+TEST(FlightSoftware, AttitudeOutsideTheEulerRangesIsInvalid) {
+  config.sensor_timeout_s = 2.0;
+  // pitch, roll, heading (rad): each and then the compass's own edges.
+  struct Case {
+    double pitch, roll, heading;
+    bool valid;
+  };
+  const std::array<Case, 6> cases{{{2.0, 0.0, 1.0, false},
+                                   {-204.4, 0.0, 1.0, false},
+                                   {-0.4, 3.3, 1.0, false},
+                                   {-0.4, 0.0, -0.1, false},
+                                   {-0.4, 0.0, 6.3, false},
+                                   {deg_to_rad(-90.0), deg_to_rad(180.0), deg_to_rad(359.9), true}}};
+  for (const Case& c : cases) {
+    FakeHal f;
+    fw::FlightSoftware flight(f.hal(), config);
+    for (int i = 0; i < 4; ++i) {
+      f.sense(5.0 + i, c.pitch);
+      f.attitude.sample.roll_rad = c.roll;
+      f.attitude.sample.heading_rad = c.heading;
+      flight.run(f.now);
+      f.now += 1'000'000;
+      CHECK_EQUAL(c.valid, !std::isnan(f.last_row.m_pitch));
+    }
+    CHECK_EQUAL(!c.valid, flight.phase() == fw::Phase::kAbort);
+    if (!c.valid) CHECK(flight.abort_cause() == fw::AbortCause::kAttitudeSensor);
+  }
+}
+
 TEST(FlightSoftware, ActuatorFaultAborts) {
   fw::FlightSoftware flight(fake.hal(), config);
   fake.sense(5.0, -0.4);

@@ -5,7 +5,9 @@
 namespace glider::hal {
 
 // Slocum conventions: pitch + nose up, roll + starboard wing down,
-// heading true, 0 = north, clockwise, in [0, 2 pi).
+// heading true, 0 = north, clockwise, in [0, 2 pi). Euler angles as a
+// compass gives them: pitch in [-pi/2, pi/2], roll in [-pi, pi]; the
+// firmware takes a sample outside these ranges as invalid.
 struct AttitudeSample {
   double pitch_rad = 0.0;
   double roll_rad = 0.0;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -15,6 +16,9 @@ struct GlideStats {
   double max_pitch_error_rad = 0.0;       // |m_pitch - c_pitch| on settled samples
   std::uint64_t pitch_error_samples = 0;  // settled samples with a pitch target
   double pitch_error_sq_sum_rad2 = 0.0;
+  // Settled samples by pitch, whole degrees -90..90 (index + 90): where the
+  // glides were, for checks that need more than the mean (glide_check.hpp).
+  std::array<std::uint64_t, 181> pitch_histogram_deg{};
   double mean_pitch_rad() const { return samples ? pitch_sum_rad / static_cast<double>(samples) : 0.0; }
   double mean_depth_rate_m_s() const { return samples ? depth_rate_sum_m_s / static_cast<double>(samples) : 0.0; }
   double rms_pitch_error_rad() const {

@@ -5,6 +5,7 @@
 // them; add keys, never rename or drop one without bumping "schema".
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "glider/firmware/flight_software.hpp"
 #include "glider/firmware/geo.hpp"
@@ -19,7 +20,8 @@ struct SummaryContext {
   std::string vehicle_file;
   std::uint64_t seed = 0;
   double wall_time_s = 0.0;
-  fw::LatLon launch{};  // the frame the true waypoint distances are measured in
+  fw::LatLon launch{};                      // the frame the true waypoint distances are measured in
+  std::vector<std::string> glide_warnings;  // unflyable_glide_warnings (glide_check.hpp)
 };
 
 // complete | aborted | stopped (the runner's time limit ended it first).
