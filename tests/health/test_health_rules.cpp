@@ -123,19 +123,20 @@ TEST(HealthRules, AHingeRateIsKnownNoBetterThanItsSegmentsOwnIntervals) {
   CHECK_TEXT(0.5 * (line->high - line->low) >= 0.99 * floor, line->message.c_str());
 }
 
-TEST(HealthRules, AHingeRateReachesOutByThePlanesGainOnTheIncrement) {
-  // The vertical plane reads a drag increment on the 4 s .sbd at 0.986-0.997
-  // of the truth (docs/health.md, "Limits"): a +3 %/day ramp read at 0.986
-  // of it, with a scatter and own intervals (+-0.0005) too small to show
-  // that, has an interval reaching the truth: its high end at least the
-  // reading's over 0.986 (the rule before: [0.0294, 0.0297], missing 0.03).
-  const health::Assessment a = health::assess(drag_ramp(0.986, 0.0005));
+TEST(HealthRules, ADragLineIsNoLongerWidenedForTheDecimationGain) {
+  // Until session 35 the vertical plane read a drag increment on the 4 s .sbd
+  // at 0.986-0.997 of the truth and a drag line's interval reached out by
+  // 1 / 0.986. The dynamic track now reads decimated depth, pitch and ballast
+  // as stored (tests/decimation; docs/health.md, "Limits"): a +3 %/day ramp
+  // read at gain 1 with tight own intervals (+-0.0005) keeps its statistical
+  // interval, which covers the truth, and reaches no further (the rule
+  // before: its high end at the reading over 0.986).
+  const health::Assessment a = health::assess(drag_ramp(1.0, 0.0005));
   const health::Alert* line = drag_line_alert(a);
   CHECK(line != nullptr);
-  DOUBLES_EQUAL(0.986 * 0.03, line->size, 0.0005);
+  DOUBLES_EQUAL(0.03, line->size, 0.0005);
   CHECK_TEXT(line->low <= 0.03 && 0.03 <= line->high, line->message.c_str());
-  CHECK_TEXT(line->high >= line->size / 0.986, line->message.c_str());
-  CHECK_TEXT(line->low <= line->size, line->message.c_str());
+  CHECK_TEXT(line->high < line->size / 0.986, line->message.c_str());
 }
 
 TEST(HealthRules, ALagIsNotKnownFinerThanHalfItsSampleSpacing) {

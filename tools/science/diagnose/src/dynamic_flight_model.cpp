@@ -120,8 +120,9 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
 }
 
 // Fly up to the last requested sample of a run and on through its
-// estimator window (the slope at a sample uses the samples after it), and
-// at least one sample further: a centred difference (no window, or none
+// estimator window (the slope at a sample uses the samples after it), on to
+// the next stored depth (a decimated log's rows between are read as the line
+// to it), and at least one sample further: a centred difference (no window, or none
 // after the sample within it) needs the next sample. A prediction then
 // never depends on which other samples are asked for.
 std::size_t DynamicFlightModel::last_needed(std::size_t end, std::size_t last_requested) const {
@@ -130,6 +131,8 @@ std::size_t DynamicFlightModel::last_needed(std::size_t end, std::size_t last_re
   const double window_end_s = t.time_s[last] + t.rate_half_window_s;
   if (last + 1 < end) ++last;
   while (last + 1 < end && t.time_s[last + 1] <= window_end_s) ++last;
+  // The depth there may be the line to the next stored depth (read_as_stored).
+  while (last + 1 < end && !t.depth_stored[last]) ++last;
   return last;
 }
 
@@ -214,6 +217,9 @@ std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, co
   const std::size_t count = flown - first + 1;
   const std::span<const double> time = std::span(t.time_s).subspan(first, count);
   delay_depth(time, std::span(z).first(count), depth_lag_s);  // as the sensor read it
+  // ... and as the log stored it: between the depths a decimated log kept,
+  // the reader's straight line, as the measured depth between them.
+  read_as_stored(time, std::span(t.depth_stored).subspan(first, count), std::span(z).first(count), t.max_gap_s);
   const std::span<const double> depth = std::span<const double>(z).first(count);
   // The estimator at the requested samples only (a stride of the run's);
   // the whole column where a depth is not finite (its gaps rule differs).

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -11,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "glider/diagnose/log_columns.hpp"
+#include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/gaps.hpp"
 
 namespace glider::diagnose {
@@ -131,7 +133,116 @@ flightlog::Column pchip_slopes(std::span<const double> time, std::span<const dou
   return slope;
 }
 
+// The pitch the model flies, from the samples the log stored (a decimated
+// .sbd stores m_pitch every few seconds and leaves the rows between empty):
+// the stored samples smoothed by local_parabola_value among themselves, and
+// between them the monotone cubic (PCHIP) through them, its value and slope
+// at every row. A straight line between 4 s samples, smoothed and splined as
+// if its rows were measurements, cuts a turn's corners (the model then flies
+// a turn that starts late and ends early); on a log that stores every row
+// this is the rule before, bit for bit.
+struct PitchCurve {
+  flightlog::Column value, slope;
+};
+
+PitchCurve stored_pitch_curve(std::span<const double> time, std::span<const double> stored, double half_window_s,
+                              double max_gap_s) {
+  const std::size_t n = time.size();
+  std::vector<std::size_t> rows;
+  std::vector<double> t, p;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(stored[i])) continue;
+    rows.push_back(i);
+    t.push_back(time[i]);
+    p.push_back(stored[i]);
+  }
+  const flightlog::Column smooth = local_parabola_value(t, p, half_window_s, max_gap_s);
+  const flightlog::Column slope = pchip_slopes(t, smooth, max_gap_s);
+  PitchCurve curve{flightlog::Column(n, std::numeric_limits<double>::quiet_NaN()), flightlog::Column(n, 0.0)};
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    curve.value[rows[k]] = smooth[k];
+    curve.slope[rows[k]] = slope[k];
+    if (k + 1 == rows.size() || rows[k + 1] == rows[k] + 1) continue;
+    const double h = t[k + 1] - t[k];
+    if (!(h > 0.0) || h > max_gap_s) continue;  // a gap: empty, as the reader's fill leaves it
+    for (std::size_t i = rows[k] + 1; i < rows[k + 1]; ++i) {
+      // The cubic Hermite of [k, k + 1] (run_flight.cpp's StagePitchTable flies the same form).
+      const double f = (time[i] - t[k]) / h, f2 = f * f, f3 = f2 * f;
+      curve.value[i] = (2.0 * f3 - 3.0 * f2 + 1.0) * smooth[k] + (f3 - 2.0 * f2 + f) * h * slope[k] +
+                       (-2.0 * f3 + 3.0 * f2) * smooth[k + 1] + (f3 - f2) * h * slope[k + 1];
+      curve.slope[i] = (6.0 * f2 - 6.0 * f) * (smooth[k] - smooth[k + 1]) / h + (3.0 * f2 - 4.0 * f + 1.0) * slope[k] +
+                       (3.0 * f2 - 2.0 * f) * slope[k + 1];
+    }
+  }
+  return curve;
+}
+
+// The ballast between the samples at which its value changed. A stored-on-
+// change ballast (a decimated .sbd's m_ballast_pumped: every 4 s at most, and
+// only when it moved; the reader holds it between) is a staircase on the
+// rows: a stroke read as 4 s of hold and a jump, i.e. ~2 s late on average,
+// which the model flies as pump lag and slower glides. Its measurements are
+// the rows where a value first appears: the ramps (pump_ramps) are built on
+// those alone, and every row gets the ramp's value at its time and the part
+// of the ramp between it and the next row. A log that moves every row
+// (pumping at 1 Hz) keeps its ramps; a constant stretch's repeats are no
+// new measurements in either reading.
+void ramps_between_changes(Track& track) {
+  const std::size_t n = track.size();
+  std::vector<std::size_t> knot;  // rows: each run's first and last, and where the value changes
+  std::vector<std::size_t> knot_run_first;
+  for (std::size_t run = 0; run < track.run_first.size(); ++run) {
+    const std::size_t first = track.run_first[run], end = track.run_end(run);
+    knot_run_first.push_back(knot.size());
+    for (std::size_t i = first; i < end; ++i) {
+      const bool changed = i == first || i + 1 == end ||
+                           std::memcmp(&track.ballast_cc[i], &track.ballast_cc[i - 1], sizeof(double)) != 0;
+      if (changed) knot.push_back(i);
+    }
+  }
+  std::vector<double> kt, kv;
+  for (std::size_t r : knot) {
+    kt.push_back(track.time_s[r]);
+    kv.push_back(track.ballast_cc[r]);
+  }
+  const std::vector<PumpRamp> ramps = pump_ramps(kt, kv, knot_run_first);
+  track.ballast_ramp.assign(n, PumpRamp{});
+  for (std::size_t k = 0; k + 1 < knot.size(); ++k) {
+    const std::size_t a = knot[k], b = knot[k + 1];
+    if (b == a + 1) {
+      track.ballast_ramp[a] = ramps[k];
+      continue;
+    }
+    if (std::find(knot_run_first.begin(), knot_run_first.end(), k + 1) != knot_run_first.end()) continue;
+    const double span_s = kt[k + 1] - kt[k];
+    const PumpRamp& ramp = ramps[k];
+    auto fraction = [&](std::size_t i) { return (track.time_s[i] - kt[k]) / span_s; };
+    for (std::size_t i = a + 1; i < b; ++i) track.ballast_cc[i] = ramp_value(kv[k], kv[k + 1], ramp, fraction(i));
+    for (std::size_t i = a; i < b; ++i) {
+      // Row i to i + 1 is [f0, f1] of the knots' interval: the ramp's corners
+      // there, as fractions of the row's own interval.
+      const double f0 = fraction(i), f1 = fraction(i + 1), width = f1 - f0;
+      track.ballast_ramp[i] = {std::clamp((ramp.start - f0) / width, 0.0, 1.0),
+                               std::clamp((ramp.end - f0) / width, 0.0, 1.0)};
+    }
+  }
+}
+
 }  // namespace
+
+void read_as_stored(std::span<const double> time, std::span<const char> stored, std::span<double> depth,
+                    double max_gap_s) {
+  const std::size_t n = depth.size();
+  std::size_t a = n;  // the last stored sample so far
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!stored[i]) continue;
+    if (a < n && i > a + 1 && time[i] - time[a] <= max_gap_s) {
+      const double span_s = time[i] - time[a];
+      for (std::size_t j = a + 1; j < i; ++j) depth[j] = std::lerp(depth[a], depth[i], (time[j] - time[a]) / span_s);
+    }
+    a = i;
+  }
+}
 
 flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<const double> depth, double half_window_s,
                                       double max_gap_s) {
@@ -167,8 +278,16 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
   track.spin_up_s = options.spin_up_s;
   // The pitch is the model's input: its sensor noise (and wave-driven
   // wobble) would add angle of attack, i.e. drag, that the glider never had.
-  const flightlog::Column pitch = local_parabola_value(time, c.pitch_rad, options.pitch_half_window_s, gap);
-  const flightlog::Column pitch_slope = pchip_slopes(time, pitch, gap);
+  const flightlog::Column* logged_pitch = log.find("m_pitch");
+  const bool as_stored = options.as_stored && logged_pitch != nullptr;
+  const PitchCurve pitch_curve =
+      stored_pitch_curve(time, as_stored ? *logged_pitch : c.pitch_rad, options.pitch_half_window_s, gap);
+  const flightlog::Column& pitch = pitch_curve.value;
+  const flightlog::Column& pitch_slope = pitch_curve.slope;
+  // Where the log stored the depth: the rows between hold the reader's line
+  // between stored neighbours, and the model's depth is read the same way
+  // (read_as_stored) before both go through the rate estimator.
+  const auto logged_depth = flightlog::depth_series(log);
   const flightlog::Column* logged_speed = log.find("sci_speed_through_water");
   const flightlog::Column speed = logged_speed != nullptr ? flightlog::interpolate_linear(time, *logged_speed, 5.0)
                                                           : flightlog::Column(time.size(), NAN);
@@ -192,6 +311,7 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
     const std::size_t k = track.size();
     track.time_s.push_back(time[i]);
     track.depth_m.push_back(depth[i]);
+    track.depth_stored.push_back(!options.as_stored || std::isfinite(logged_depth->depth_m[i]) ? 1 : 0);
     track.depth_rate_m_s.push_back(rate[i]);
     track.pitch_rad.push_back(pitch[i]);
     track.pitch_slope_rad_s.push_back(pitch_slope[i]);
@@ -209,7 +329,11 @@ Track prepare_track(const flightlog::FlightLog& log, const TrackOptions& options
       track.scored.push_back(k);
     }
   }
-  track.ballast_ramp = pump_ramps(track.time_s, track.ballast_cc, track.run_first);
+  if (options.as_stored) {
+    ramps_between_changes(track);
+  } else {
+    track.ballast_ramp = pump_ramps(track.time_s, track.ballast_cc, track.run_first);
+  }
   std::vector<double> temperatures;
   for (double t : track.temperature_c) {
     if (std::isfinite(t)) temperatures.push_back(t);

@@ -17,7 +17,12 @@ namespace glider::diagnose {
 struct Track {
   // One entry per sample of a run (samples outside runs are dropped).
   std::vector<double> time_s, depth_m, depth_rate_m_s, pitch_rad, ballast_cc, battpos_in;
-  std::vector<double> pitch_slope_rad_s;             // the pitch between samples is a monotone cubic with these slopes
+  std::vector<double> pitch_slope_rad_s;  // the pitch between samples is a monotone cubic with these slopes
+  // 1 where the log stored the depth at this sample; elsewhere depth_m is the
+  // reader's straight line between stored neighbours (a decimated .sbd), and
+  // the model's depth is read the same way (read_as_stored) before the rate
+  // estimator: a line between 4 s samples of a curved trace is not the trace.
+  std::vector<char> depth_stored;
   std::vector<PumpRamp> ballast_ramp;                // the ballast from each sample to the next (pump_ramp.hpp)
   std::vector<double> temperature_c, density_kg_m3;  // NaN where the log has none
   std::vector<double> speed_through_water_m_s;       // measured (a DVL's), NaN where none
@@ -46,6 +51,12 @@ struct TrackOptions {
   // The measured pitch (the model's input) is smoothed by a parabola over +-this.
   double pitch_half_window_s = 5.0;
   double spin_up_s = 60.0;  // not scored after a run starts: the model's start state is fitted there
+  // Depth and pitch read as the log stored them (docs/science.md, "Decimated
+  // depth and pitch"): the pitch a cubic through its stored samples, the
+  // model's depth read as the measured one between stored depths. false: the
+  // rule before, every row's filled value taken as a measurement (kept to
+  // measure the difference: tests/decimation).
+  bool as_stored = true;
 };
 
 // The depth rate estimator used for the measured depth (and for the
@@ -59,6 +70,14 @@ flightlog::Column depth_rate_estimate(std::span<const double> time, std::span<co
 // one finite): what a model's flight needs at the few samples it is scored on.
 double depth_rate_estimate_at(std::span<const double> time, std::span<const double> depth, std::size_t i,
                               double half_window_s, double max_gap_s);
+
+// The depth as a log that stored it only where `stored` is 1 is read: the
+// samples between two stored ones no more than max_gap_s apart become the
+// straight line between them (flightlog::interpolate_linear's rule), the
+// others are kept. The model's depth goes through this before the rate
+// estimator, as the measured depth went through the reader's fill.
+void read_as_stored(std::span<const double> time, std::span<const char> stored, std::span<double> depth,
+                    double max_gap_s);
 
 // Runs need pitch, ballast and depth; battery, temperature and CTD density
 // are used where the log has them. Two optional columns beyond Slocum's:

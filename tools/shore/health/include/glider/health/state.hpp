@@ -20,8 +20,9 @@ inline constexpr const char* kStateSchema = "glider-health-state/1";
 // 2: 2 s RK4 steps, the lag floored at the sampling; 3: m_fin of decimated
 // files as stored; 4: the Reynolds prior for a vehicle file silent on the
 // exponent, the heading command held between stores, a fresh skin-friction
-// anchor per flight (session 34).
-inline constexpr int kMeasurementVersion = 4;
+// anchor per flight (session 34); 5: the dynamic track reads a decimated
+// file's depth, pitch and ballast as stored (diagnose's track.cpp, session 35).
+inline constexpr int kMeasurementVersion = 5;
 
 struct HealthState {
   std::string glider;
