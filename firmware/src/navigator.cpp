@@ -125,7 +125,10 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
     if (in.segment_complete || in.phase == Phase::kSurface) {
       state_ = State::kSurface;
       surfaced_us_ = in.now_us;
-      last_surfacing_us_ = in.now_us;
+      // A surfacing by the when_secs clock restarted that clock when it
+      // fired (below); any other restarts it at the arrival.
+      if (!when_secs_fired_) last_surfacing_us_ = in.now_us;
+      when_secs_fired_ = false;
       if (!comms_reported_) last_comms_us_ = in.now_us;
       fix_this_surfacing_ = false;
       dr_error_pending_ = have_origin_;
@@ -147,10 +150,20 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
       } else if (std::isfinite(plan_.heading_rad)) {
         out.heading_target_rad = plan_.heading_rad;
       }
-      if (plan_.surface_interval_s > 0.0 &&
-          hal::to_seconds(in.now_us - last_surfacing_us_) >= plan_.surface_interval_s) {
+      if (when_secs_fired_) {
+        out.surface_requested = true;  // fired this dive: climbing to the surface
+      } else if (plan_.surface_interval_s > 0.0 &&
+                 hal::to_seconds(in.now_us - last_surfacing_us_) >= plan_.surface_interval_s) {
+        // Slocum's start_when 9 is periodic: the next when_secs counts from
+        // this firing (the surface behaviour's activation), not from the
+        // arrival a climb later. comet-2019's x_surface_active went to 4 at
+        // 1566405473.1 (dive 154, at 17.6 m) and 1566416282.1 (dive 156, at
+        // 4.0 m): 10809 s apart for when_secs 10800 (a 4.5 s log cycle),
+        // while the arrivals at 1 m were 10700 s apart (docs/comms.md).
         out.surface_requested = true;
         surfaced_by_start_when_ = 9;
+        when_secs_fired_ = true;
+        last_surfacing_us_ = in.now_us;
       } else if (plan_.no_comms_interval_s > 0.0 &&
                  hal::to_seconds(in.now_us - last_comms_us_) >= plan_.no_comms_interval_s) {
         out.surface_requested = true;
@@ -186,6 +199,7 @@ NavigatorOutputs Navigator::update(const NavigatorInputs& in) {
   dr_.reset(position_);
   dive_us_ = in.now_us;
   state_ = State::kUnderWater;
+  surfaced_by_start_when_ = 0;  // this segment's end is not said yet
   ++segments_;
   out.start_segment = true;
   return out;

@@ -169,9 +169,10 @@ TEST(CommsSil, LinkDownForThreeSurfacingsKeepsTheMissionAndItsNoCommsLimit) {
 
 namespace {
 
-// Arrivals at the surface (the comms task leaves idle) and call starts, in simulated seconds.
+// Arrivals at the surface (the comms task leaves idle), call starts and the
+// when_secs clock's firings (the navigator asks for the surface by start_when 9), in simulated seconds.
 struct SurfacingTimes {
-  std::vector<double> arrivals, connects, dives;
+  std::vector<double> arrivals, connects, dives, firings;
 };
 
 SurfacingTimes fly_and_time(const model::VehicleParams& vehicle, const fw::FlightSoftwareConfig& config,
@@ -187,6 +188,13 @@ SurfacingTimes fly_and_time(const model::VehicleParams& vehicle, const fw::Fligh
     calls = c.stats().calls_connected;
     was_idle = idle;
   };
+  int fired_before = 0;
+  options.stop_when = [&](double t, const fw::FlightSoftware& flight, const model::Truth&) {
+    const int fired = flight.navigator().surfaced_by_start_when();
+    if (fired == 9 && fired_before != 9) times.firings.push_back(t);
+    fired_before = fired;
+    return false;
+  };
   const sil::ScenarioResult r = sil::run_scenario(vehicle, config, options);
   STRCMP_EQUAL("", r.error.c_str());
   return times;
@@ -194,32 +202,46 @@ SurfacingTimes fly_and_time(const model::VehicleParams& vehicle, const fw::Fligh
 
 }  // namespace
 
-// Slocum's surface behaviour, start_when 9 (every when_secs): the clock runs
-// from the previous surfacing, the time at the surface included (a real
-// Slocum with when_secs 10800 and ~18 min at the surface dived 2.7 h: the
-// forecast on comet-2019 was 18 min off while this firmware counted from the
-// dive). Here: 1200 s, about 400 s at the surface (300 s keystroke wait).
-TEST(CommsSil, EveryWhenSecsCountsFromThePreviousSurfacing) {
+// Slocum's surface behaviour, start_when 9 (every when_secs): periodic, the
+// clock runs from its own previous firing (the time at the surface and the
+// climb after the firing included; from launch the first time). Real comet-2019
+// (when_secs 10800): x_surface_active went to 4 10809 s apart (a 4.5 s log
+// cycle) at 17.6 m and 4.0 m, the arrivals at 1 m 10700 s apart - counted
+// from the arrival they would be at least 10800 s plus a climb (and from the
+// dive, this firmware's first clock, 18 min late). Here: 1200 s, about 400 s
+// at the surface (300 s keystroke wait).
+TEST(CommsSil, EveryWhenSecsCountsFromItsPreviousFiring) {
   options.max_sim_time_s = 4000.0;
   sil::FakeShore shore;
   shore.script = {{15.0, "whoru\r"}};
   options.comms = comms(&shore);
   const SurfacingTimes t = fly_and_time(vehicle, mission(), options);
-  CHECK(t.arrivals.size() >= 3);
+  std::printf("\n%zu arrivals, %zu firings", t.arrivals.size(), t.firings.size());
+  CHECK(t.arrivals.size() >= 3 && t.firings.size() >= t.arrivals.size() - 1);
+  // The first from launch (simulated time 0).
+  CHECK_TEXT(std::fabs(t.firings[0] - 1200.0) <= 1.0, std::to_string(t.firings[0]).c_str());
   for (std::size_t i = 1; i < t.arrivals.size(); ++i) {
     const double period = t.arrivals[i] - t.arrivals[i - 1];
     const double at_surface = t.dives[i - 1] - t.arrivals[i - 1];
-    std::printf("\nsurfacing %zu: %.0f s after the previous one, which stayed up %.0f s", i, period, at_surface);
+    const double climb = t.arrivals[i] - t.firings[i - 1];
+    std::printf("\nsurfacing %zu: %.0f s after the previous one, which stayed up %.0f s; fired %.0f s before", i,
+                period, at_surface, climb);
     CHECK_TEXT(at_surface >= 300.0, "the test's premise: the time at the surface is long");
-    // when_secs from the previous arrival, plus the climb from 30 m (<= 200 s);
-    // counted from the dive it would be at least when_secs + the time up.
-    CHECK_TEXT(period >= 1200.0 && period <= 1200.0 + 200.0, std::to_string(period).c_str());
+    // The climb from where it fired (<= 30 m at >= 0.15 m/s: 200 s).
+    CHECK_TEXT(climb >= 0.0 && climb <= 200.0, std::to_string(climb).c_str());
+    if (i < t.firings.size()) {
+      // when_secs from the previous firing (one control cycle either way);
+      // counted from the arrival it would be when_secs + that climb.
+      const double fired = t.firings[i] - t.firings[i - 1];
+      CHECK_TEXT(std::fabs(fired - 1200.0) <= 1.0, std::to_string(fired).c_str());
+    }
   }
 }
 
 // A flight resumed mid-mission (the forecast starts at the dive) carries the
-// clocks over: arrived and called 500 s before this start, when_secs 1200 ends
-// the first dive ~700 s after launch (plus the climb), the later ones as usual.
+// clocks over: the when_secs clock started and the call connected 500 s
+// before this start, so when_secs 1200 fires ~700 s after launch, the later
+// firings every 1200 s.
 TEST(CommsSil, SeededClocksCountFromBeforeTheStart) {
   options.max_sim_time_s = 3000.0;
   sil::FakeShore shore;
@@ -227,13 +249,14 @@ TEST(CommsSil, SeededClocksCountFromBeforeTheStart) {
   options.comms = comms(&shore);
   options.before_launch = [](fw::FlightSoftware& flight) { flight.seed_clocks(500.0, 500.0); };
   const SurfacingTimes t = fly_and_time(vehicle, mission(), options);
-  CHECK(t.arrivals.size() >= 3);
-  std::printf("\nseeded 500 s: launch at %.0f s, surfacings at %.0f and %.0f s", t.arrivals[0], t.arrivals[1],
-              t.arrivals[2]);
-  CHECK_TEXT(t.arrivals[1] - t.arrivals[0] >= 700.0 && t.arrivals[1] - t.arrivals[0] <= 700.0 + 200.0,
-             std::to_string(t.arrivals[1] - t.arrivals[0]).c_str());
-  const double period = t.arrivals[2] - t.arrivals[1];
-  CHECK_TEXT(period >= 1200.0 && period <= 1200.0 + 200.0, std::to_string(period).c_str());
+  CHECK(t.arrivals.size() >= 3 && t.firings.size() >= 2);
+  std::printf("\nseeded 500 s: fired at %.1f and %.1f s, surfacings at %.0f and %.0f s", t.firings[0], t.firings[1],
+              t.arrivals[1], t.arrivals[2]);
+  CHECK_TEXT(std::fabs(t.firings[0] - 700.0) <= 1.0, std::to_string(t.firings[0]).c_str());
+  CHECK_TEXT(t.arrivals[1] - t.firings[0] >= 0.0 && t.arrivals[1] - t.firings[0] <= 200.0,
+             std::to_string(t.arrivals[1] - t.firings[0]).c_str());
+  const double period = t.firings[1] - t.firings[0];
+  CHECK_TEXT(std::fabs(period - 1200.0) <= 1.0, std::to_string(period).c_str());
 }
 
 // start_when 12 (no comms for when_secs): the clock runs from the last call

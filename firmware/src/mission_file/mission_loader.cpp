@@ -244,7 +244,7 @@ void Loader::read_surface(const MiBehavior& b) {
   switch (start_when) {
     case 1:  // stack idle: when the yos (or the list) are done: a segment's end
       break;
-    case 9:   // every when_secs, counted from the previous surfacing
+    case 9:   // every when_secs, counted from its previous firing (navigator.cpp)
     case 12:  // no comms for when_secs, counted from the last call connected
     {
       if (!(when_secs > 0.0)) {

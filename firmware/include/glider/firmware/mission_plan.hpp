@@ -25,8 +25,8 @@ struct MissionPlan {
   std::int32_t legs_to_run = kLegsOnce;
   // Segment: dive from the surface, yos, surface. It ends after
   // `yos_per_segment` yos, or when `surface_interval_s` has passed since the
-  // previous surfacing (surface start_when 9, every when_secs: Slocum counts
-  // from the surfacing, not the dive), or `no_comms_interval_s` since the last
+  // previous such end (surface start_when 9, every when_secs: Slocum counts
+  // from its previous firing, not the arrival nor the dive), or `no_comms_interval_s` since the last
   // call connected (start_when 12), whichever first; <= 0 = no limit.
   double surface_interval_s = 0.0;
   double no_comms_interval_s = 0.0;

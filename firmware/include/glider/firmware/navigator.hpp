@@ -79,7 +79,7 @@ class Navigator {
     comms_reported_ = true;
   }
   // Why the last segment ended by time: 9 (every when_secs, from the previous
-  // surfacing), 12 (no comms for when_secs), 0 (not by time).
+  // firing), 12 (no comms for when_secs), 0 (not by time).
   int surfaced_by_start_when() const { return surfaced_by_start_when_; }
   // A re-read mission (Control-F, validated): fly its waypoints from the first.
   void replace_plan(const MissionPlan& plan);
@@ -102,11 +102,12 @@ class Navigator {
     glided_s_ = glided_s;
     return true;
   }
-  // The when_secs clocks carried over the same way: the glider arrived at the
-  // surface `since_surfacing_s` and its last call connected `since_comms_s`
-  // before this start (a forecast starts at the dive, after the glider's time
-  // at the surface; a Slocum counts when_secs from the arrival). Applied at
-  // launch; negative or non-finite values are ignored (the launch counts).
+  // The when_secs clocks carried over the same way: the start_when 9 clock
+  // last started `since_surfacing_s` (its firing before the last surfacing,
+  // else the arrival) and the last call connected `since_comms_s` before this
+  // start (a forecast starts at the dive, after the glider's time at the
+  // surface). Applied at launch; negative or non-finite values are ignored
+  // (the launch counts).
   void seed_clocks(double since_surfacing_s, double since_comms_s) {
     seeded_since_surfacing_us_ = clock_age_us(since_surfacing_s);
     seeded_since_comms_us_ = clock_age_us(since_comms_s);
@@ -134,15 +135,17 @@ class Navigator {
   hal::Micros surfaced_us_ = 0;
   hal::Micros dive_us_ = 0;
   hal::Micros last_us_ = 0;
-  // when_secs clocks (Slocum's surface behaviour): start_when 9 counts from the
-  // previous surfacing (the arrival at the surface, launch first), start_when 12
-  // from the last call connected (launch first), not from the dive.
-  hal::Micros last_surfacing_us_ = 0;  // surfaced_us_, but launch is the first (HAL time need not start at 0)
+  // when_secs clocks (Slocum's surface behaviour): start_when 9 counts from its
+  // own previous firing (periodic; after another surfacing from the arrival,
+  // launch first), start_when 12 from the last call connected (launch first),
+  // not from the dive.
+  hal::Micros last_surfacing_us_ = 0;  // the start_when 9 clock's start (HAL time need not start at 0)
   hal::Micros last_comms_us_ = 0;
   hal::Micros seeded_since_surfacing_us_ = 0;  // seed_clocks: ages at launch
   hal::Micros seeded_since_comms_us_ = 0;
   bool comms_reported_ = false;  // a comms task has called note_comms
   int surfaced_by_start_when_ = 0;
+  bool when_secs_fired_ = false;  // the start_when 9 clock fired this dive (cleared on arrival)
   bool fix_this_surfacing_ = false;
   bool dr_error_pending_ = false;
   EastNorth position_{};  // last known (fix or DR)

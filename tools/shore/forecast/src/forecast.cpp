@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "glider/cli/tool.hpp"
@@ -247,6 +248,25 @@ void advance(MissionNow& now, std::int32_t count) {
 // that segment, its navigator's belief from the dive) and the waypoints the
 // firmware counted are counted; at each fix, its surface test (the fix
 // within the radius) too.
+// Slocum's start_when 9 is periodic (firmware navigator.cpp): the clock that
+// ended a dive restarted when it fired, somewhere in the glider's last yo,
+// and the glider climbed on to the surface from there. The longest such climb
+// is from the bottom of a yo: a yo's climb (inflection to climb_to_m, from
+// one still-water flight of the plan's first hour) and on to the surface.
+// 0 when the plan has no when_secs clock or the flight no yo.
+double longest_climb_left_s(const FlightSetup& setup, const ForecastOptions& options) {
+  if (!(setup.config.plan.surface_interval_s > 0.0)) return 0.0;
+  FlightSetup still = setup;
+  still.current = CurrentEstimate{};
+  ForecastOptions one = options;
+  one.threads = 1;
+  one.max_dive_s = 3600.0;
+  const double yo_climb_s = fly_runs(still, one, 1, false).at(0).yo_climb_s;
+  const fw::YoMissionConfig& m = setup.config.mission;
+  const double span = m.dive_to_m - m.climb_to_m;
+  return span > 0.0 ? yo_climb_s * m.dive_to_m / span : yo_climb_s;
+}
+
 // A dive the replay flew again: the fix less where the model put it (m).
 struct DiveMiss {
   double utc_s = 0.0;
@@ -254,7 +274,7 @@ struct DiveMiss {
 };
 
 void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, const FlightSetup& base,
-                      const ForecastOptions& options, std::vector<DiveMiss>& misses) {
+                      const ForecastOptions& options, double longest_climb_s, std::vector<DiveMiss>& misses) {
   const fw::MissionPlan& plan = now.config.plan;
   if (plan.waypoint_count == 0) return;
   const Surfacing* previous = nullptr;
@@ -265,6 +285,7 @@ void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, co
       segment.config.plan = remaining_plan(now);
       segment.fix = {*previous->lat_deg, *previous->lon_deg};
       segment.surface_time_s = std::max(0.0, previous->call_end_utc_s - previous->call_start_utc_s);
+      segment.clock_fired_before_s = climb_left_at_firing_s(history, i - 1, plan, longest_climb_s);
       const bool measured = s.water_vx_m_s && s.water_vy_m_s;
       segment.current.east_m_s = measured ? *s.water_vx_m_s : previous->water_vx_m_s.value_or(0.0);
       segment.current.north_m_s = measured ? *s.water_vy_m_s : previous->water_vy_m_s.value_or(0.0);
@@ -477,6 +498,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   const model::Hydrodynamics nominal_hydro = setup.vehicle.hydro;  // the baseline's (measure_speed may correct it)
   measure_speed(history, setup, options, f);
   std::vector<DiveMiss> misses;
+  const double longest_climb_s = longest_climb_left_s(setup, options);
   if (options.waypoint >= 0 && now.applied.empty()) {
     if (options.waypoint >= now.config.plan.waypoint_count) {
       throw std::runtime_error("--waypoint " + std::to_string(options.waypoint) + ": the mission has " +
@@ -485,7 +507,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     now.active_waypoint = options.waypoint;
     f.notes.push_back("active waypoint given (--waypoint), not replayed");
   } else {
-    replay_waypoints(now, history, setup, options, misses);
+    replay_waypoints(now, history, setup, options, longest_climb_s, misses);
   }
   // Only the last day's dives: older water and older trim are other ones.
   {
@@ -509,6 +531,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   }
   setup.config.plan = remaining_plan(now);
   setup.surface_time_s = std::max(0.0, f.dive_utc_s - history.back().call_start_utc_s);
+  setup.clock_fired_before_s = climb_left_at_firing_s(history, history.size() - 1, now.config.plan, longest_climb_s);
   if (history.back().mission_time_s >= 0.0 && std::isfinite(now.config.mission.max_duration_s)) {
     const double mt_at_dive = history.back().mission_time_s + (f.dive_utc_s - history.back().call_start_utc_s);
     setup.overtime_left_s = now.config.mission.max_duration_s - mt_at_dive;
@@ -532,7 +555,8 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double dr = std::hypot(r.dr_east_m, r.dr_north_m), truth = std::hypot(r.east_m, r.north_m);
     if (r.surfaced && !r.aborted && dr > 100.0 && truth / dr > 0.5 && truth / dr < 2.0) f.dr_speed_ratio = truth / dr;
   }
-  // when_secs counts from the arrival at the surface: the dive is shorter by the time spent up.
+  // when_secs counts from its firing, a climb before the arrival: the dive is shorter by the time
+  // spent up (the climb left then and the coming one's are alike on average: climb_left_at_firing_s).
   double expected_s = now.config.plan.surface_interval_s > 0.0
                           ? std::max(60.0, now.config.plan.surface_interval_s - setup.surface_time_s)
                           : 3600.0;
@@ -784,6 +808,60 @@ std::string forecast_after_surfacing(const fs::path& glider_dir) {
     }
     return message;
   }
+}
+
+// Whether the surfacing `s` was the when_secs clock's (its Because: lines say
+// "Every when secs"; an event that says nothing is taken as one when the plan
+// has that clock: the SIL truths' and the real benchmark's events).
+bool surfaced_by_when_secs(const Surfacing& s, const fw::MissionPlan& plan) {
+  if (!(plan.surface_interval_s > 0.0)) return false;
+  if (s.reasons.empty()) return true;
+  std::string text = s.reasons;
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text.find("every when secs") != std::string::npos;
+}
+
+// How long before surfacing `last` (an index into `history`) its when_secs
+// clock fired: the climb left then, tau. The clock is periodic, so two
+// consecutive surfacings arrive when_secs + tau_j - tau_(j-1) apart: the
+// history fixes every tau of the chain up to one constant, and each lies in
+// [0, longest]; the middle of the constant's feasible interval (the chain has
+// no age limit: the clock is the firmware's, not the water). A surfacing that
+// restarted the clock at its arrival (another reason in its Because: lines:
+// tau 0) or before the clock's first firing (mission time under when_secs:
+// the clock started with the mission, tau is that mission time) anchors the
+// chain exactly. With no chain (one such surfacing) that is half the longest
+// climb - the mean over a firing uniform in the yo (at u of a dive the climb
+// from that depth is u of a climb, at u of a climb 1 - u of it); a history
+// the rule does not fit (an empty interval) gets the same half.
+double climb_left_at_firing_s(const std::vector<Surfacing>& history, std::size_t last, const fw::MissionPlan& plan,
+                              double longest_s) {
+  if (!(plan.surface_interval_s > 0.0) || last >= history.size()) return 0.0;
+  const double period = plan.surface_interval_s;
+  // The tau a surfacing is known to have, if it is one the chain cannot pass.
+  auto anchored = [&](const Surfacing& s) -> std::optional<double> {
+    if (!surfaced_by_when_secs(s, plan)) return 0.0;
+    if (s.mission_time_s >= 0.0 && s.mission_time_s < period) return s.mission_time_s;
+    return std::nullopt;
+  };
+  if (const std::optional<double> tau = anchored(history[last])) return *tau;
+  if (!(longest_s > 0.0)) return 0.0;
+  // tau_j = tau_last + d_j; the feasible tau_last: lo..hi.
+  double d = 0.0, lo = 0.0, hi = longest_s;
+  for (std::size_t j = last; j > 0; --j) {
+    const Surfacing& now = history[j];
+    const Surfacing& before = history[j - 1];
+    const std::optional<double> tau = anchored(before);
+    const double between = now.call_start_utc_s - before.call_start_utc_s;
+    // A dive between them that the clock ended (not a call dropped and redialled).
+    if (!(before.call_end_utc_s < now.call_start_utc_s) || between > period + longest_s) break;
+    if (!tau && between < 0.5 * period) break;
+    d -= between - period;
+    if (tau) return std::clamp(*tau - d, lo, std::max(lo, hi));
+    lo = std::max(lo, -d);
+    hi = std::min(hi, longest_s - d);
+  }
+  return lo <= hi ? 0.5 * (lo + hi) : 0.5 * longest_s;
 }
 
 }  // namespace glider::forecast

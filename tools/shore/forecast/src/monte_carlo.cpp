@@ -61,11 +61,11 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
   // m_water_vx/vy at the dive), not with the forecast's own estimate of the
   // water: the two differ whenever the forecast expects the current to change.
   const std::optional<fw::EastNorth> belief = s.firmware_current;
-  const double up_s = s.surface_time_s;
+  const double up_s = s.surface_time_s, fired_s = s.surface_time_s + s.clock_fired_before_s;
   const double speed = s.average_speed_m_s, weight = s.average_weight_s;
-  opt.before_launch = [belief, up_s, speed, weight](fw::FlightSoftware& flight) {
+  opt.before_launch = [belief, up_s, fired_s, speed, weight](fw::FlightSoftware& flight) {
     if (belief) flight.seed_current(*belief);
-    flight.seed_clocks(up_s, up_s);
+    flight.seed_clocks(fired_s, up_s);
     if (speed > 0.0) flight.seed_average_speed(speed, weight);
   };
   RunOutcome out;
@@ -83,8 +83,22 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
     out.east_m = truth.east_m;
     out.north_m = truth.north_m;
   };
+  // The yos' climbs (a climb that a dive ends, not the final one): their
+  // mean length says how long the climb left is when the surface clock fires.
+  fw::Phase phase_before = fw::Phase::kSurface;
+  double climb_from = -1.0, climbs_s = 0.0;
+  int climbs = 0;
   opt.stop_when = [&](double t, const fw::FlightSoftware& flight, const model::Truth& truth) {
     out.waypoints_reached = flight.navigator().waypoints_reached();
+    const fw::Phase phase = flight.phase();
+    if (phase != phase_before) {
+      if (phase == fw::Phase::kClimb) climb_from = t;
+      if (phase == fw::Phase::kDive && phase_before == fw::Phase::kClimb && climb_from >= 0.0) {
+        climbs_s += t - climb_from;
+        out.yo_climb_s = climbs_s / ++climbs;
+      }
+      phase_before = phase;
+    }
     if (dive_s < 0.0 && !flight.navigator().at_surface()) dive_s = t;
     if (flight.phase() == fw::Phase::kAbort) {
       if (!out.aborted) {

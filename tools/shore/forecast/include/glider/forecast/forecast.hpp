@@ -51,6 +51,7 @@ struct RunOutcome {
   std::int32_t waypoints_reached = 0;        // counted by the firmware in this run
   double dr_east_m = 0.0, dr_north_m = 0.0;  // the firmware's dead-reckoned position on surfacing
   double average_speed_m_s = 0.0;            // the navigator's mean glide speed then (m_avg_speed)
+  double yo_climb_s = 0.0;                   // mean length of the yos' climbs (inflection to the next dive; 0: none)
 };
 
 struct Ellipse {
@@ -117,9 +118,12 @@ struct FlightSetup {
   std::optional<fw::EastNorth> firmware_current;
   double overtime_left_s = 0.0;  // the mission's overtime limit minus the mission time at the fix (0: none)
   // How long the glider had been at the surface when it dived (the call's
-  // start to its end): a Slocum's when_secs counts from the arrival at the
-  // surface and from the call, not from the dive (FlightSoftware::seed_clocks).
+  // start to its end): start_when 12 counts from the call, not from the dive
+  // (FlightSoftware::seed_clocks).
   double surface_time_s = 0.0;
+  // start_when 9 counts from its previous firing: that was this long before
+  // the arrival (the climb left then; forecast.cpp climb_left_at_firing_s).
+  double clock_fired_before_s = 0.0;
   // The glider's mean glide speed at the dive (its m_avg_speed, else the
   // model's), carried over as if glided for `average_weight_s`: the runs
   // steer Slocum's law at that speed from the first moment (0: none).
@@ -127,6 +131,16 @@ struct FlightSetup {
   double average_weight_s = 0.0;
 };
 std::vector<RunOutcome> fly_runs(const FlightSetup& setup, const ForecastOptions& options, int n, bool vary);
+
+// The surfacing clock (docs/forecast.md "The surfacing clock"): whether
+// surfacing `s` was the when_secs clock's (its Because: lines say "Every when
+// secs"; one that says nothing counts when the plan has that clock), and how
+// long before surfacing history[last] that clock fired (the climb left then,
+// from the chain of arrivals; `longest_s` the longest such climb; 0 when the
+// plan has no such clock).
+bool surfaced_by_when_secs(const Surfacing& s, const fw::MissionPlan& plan);
+double climb_left_at_firing_s(const std::vector<Surfacing>& history, std::size_t last, const fw::MissionPlan& plan,
+                              double longest_s);
 
 nlohmann::json forecast_json(const Forecast& f);
 std::string forecast_text(const Forecast& f);
