@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
     command->add_flag(
         "--speed-correction", options.speed_correction,
         "scale the model's drag to the glider's dead-reckoned speed through the water (docs/forecast.md)");
+    command->add_flag("!--no-pitch-calibration", options.pitch_calibration,
+                      "take the glider's dead-reckoned speed as counted, not calibrated for its pitch sensor's scale "
+                      "read from from-glider/ (docs/forecast.md)");
     command
         ->add_option("--current-prior", prior_mode,
                      "the current's prior: evidence (the estimates weigh its widths), fixed or off (persistence); "
