@@ -19,7 +19,8 @@ Each forecast's position error is split into terms (docs/forecast.md, "Where the
 With --check (CTest forecast.real_comet_2019) it exits 1 unless each forecast's current is nearer the one
 the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two estimates).
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
-       [--current-prior evidence|fixed|off] [--speed-correction] [--no-pitch-calibration] [--from-glider]
+       [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--no-pitch-calibration]
+       [--from-glider]
        [--check]
 """
 import argparse
@@ -165,6 +166,7 @@ def main():
     p.add_argument("--waypoint", type=int, default=None, help="force this active waypoint for every forecast")
     p.add_argument("--current-prior", default=None, help="glider-forecast's --current-prior (evidence, fixed, off)")
     p.add_argument("--speed-correction", action="store_true", help="glider-forecast's --speed-correction")
+    p.add_argument("--no-speed-correction", action="store_true", help="glider-forecast's --no-speed-correction")
     p.add_argument("--no-pitch-calibration", action="store_true", help="glider-forecast's --no-pitch-calibration")
     p.add_argument("--from-glider", action="store_true",
                    help="put the dives' m_depth and m_pitch the shore had by each call (4.5 s rows, as an .sbd "
@@ -221,6 +223,7 @@ def main():
                               "--waypoint", str(wpts[k]), "--json"] +
                              (["--current-prior", a.current_prior] if a.current_prior else []) +
                              (["--speed-correction"] if a.speed_correction else []) +
+                             (["--no-speed-correction"] if a.no_speed_correction else []) +
                              (["--no-pitch-calibration"] if a.no_pitch_calibration else []),
                              capture_output=True, text=True)
         if run.returncode != 0:

@@ -423,7 +423,9 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double last_dive = history.back().call_start_utc_s - history[history.size() - 2].call_end_utc_s;
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);
   }
-  const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio, expected_s);
+  // The glider's DR speed error holds its pitch sensor's too (speed_term.hpp): its share of each estimate out.
+  const double glider_dr_ratio = f.dr_speed_ratio * (options.pitch_calibration ? f.pitch_dr_speed_factor : 1.0);
+  const std::vector<CurrentSample> samples = current_samples(history, glider_dr_ratio, expected_s);
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior);
   f.favoured = favoured_prior(samples, f.dive_utc_s, f.prior);
   if (f.prior.mode == PriorMode::kEvidence && !samples.empty()) {

@@ -216,7 +216,8 @@ SpeedMatch match_speed(double target_m_s, const SpeedFlight& at_one, const std::
 // sensor, whose scale the steady glides it sent home give against the
 // model's (estimate_pitch_calibration): the glider's speed is calibrated by
 // it before the two are compared (options.pitch_calibration). Said (notes,
-// JSON); with options.speed_correction also applied: the vehicle's drag
+// JSON); applied when calibrated (options.speed_correction_calibrated, the
+// default) or always (options.speed_correction): the vehicle's drag
 // (cd0 and cd_alpha2, as the runs' draws scale it) is scaled until the
 // model's speed is the glider's. The speed falls smoothly with drag, about
 // as drag^-1/2, since slocum_comet.toml flies the comet's own polar
@@ -268,6 +269,10 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
   }
   const bool calibrate = options.pitch_calibration && calibration.have;
   const double k = calibrate ? dr_calibration.factor : 1.0;
+  // Uncalibrated, a sensor's scale would be read as drag (the comet's ~15 %
+  // low DR speed as drag x1.41): by default the drag follows only a
+  // calibrated speed.
+  const bool correct = options.speed_correction || (options.speed_correction_calibrated && calibrate);
 
   if (!glider_speeds.empty() && model > 0.02) {
     std::sort(glider_speeds.begin(), glider_speeds.end());
@@ -279,9 +284,11 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
                   "speed through the water by dead reckoning: the glider's %.3f m/s over %zu recent dives%s, the "
                   "model's %.3f (%s)",
                   glider, glider_speeds.size(), calibrate ? " (pitch calibrated)" : "", model,
-                  options.speed_correction ? "corrected below" : "said, not applied");
+                  correct                                             ? "corrected below"
+                  : options.speed_correction_calibrated && !calibrate ? "not corrected: no pitch calibration"
+                                                                      : "said, not applied");
     f.notes.push_back(text);
-    if (options.speed_correction) {
+    if (correct) {
       const model::Hydrodynamics nominal_hydro = setup.vehicle.hydro;
       const SpeedMatch m = match_speed(glider, nominal, [&](double factor) {
         setup.vehicle.hydro = nominal_hydro;

@@ -38,9 +38,12 @@ struct ForecastOptions {
   bool include_queue = true;
   bool write = true;     // write forecast/forecast.json
   PriorOverrides prior;  // the command line's; GLIDER/forecast.toml's otherwise (forecast_settings.hpp)
-  // --speed-correction: the model's drag scaled until its dead-reckoned
-  // speed through the water is the glider's (docs/forecast.md, speed term).
+  // The model's drag scaled until its dead-reckoned speed through the water
+  // is the glider's (docs/forecast.md, speed term): by default only when the
+  // glider's DR speed is calibrated for its pitch sensor (speed_term.hpp),
+  // --speed-correction: always, --no-speed-correction: never.
   bool speed_correction = false;
+  bool speed_correction_calibrated = true;
   // The glider's dead-reckoned speed calibrated for its pitch sensor's scale,
   // read from the steady glides it sent home (speed_term.hpp; off: --no-pitch-calibration).
   bool pitch_calibration = true;

@@ -95,9 +95,9 @@ inline constexpr double kSpeedDragMin = 0.5, kSpeedDragMax = 2.5;  // beyond: a 
 SpeedMatch match_speed(double target_m_s, const SpeedFlight& at_one, const std::function<SpeedFlight(double)>& fly);
 
 // The speed term of make_forecast: measures the glider's speed (notes, JSON
-// current.glider_speed_ratio, pitch_scale, ...), with
-// options.speed_correction scales setup.vehicle's drag, and seeds the runs'
-// mean glide speed.
+// current.glider_speed_ratio, pitch_scale, ...), scales setup.vehicle's
+// drag when the options say so (forecast.hpp), and seeds the runs' mean
+// glide speed.
 void measure_speed(const std::vector<Surfacing>& history, const std::filesystem::path& glider_dir, FlightSetup& setup,
                    const ForecastOptions& options, Forecast& f);
 
