@@ -142,12 +142,13 @@ TEST(ForecastSpeedTerm, LoggedGlidesAreReadFromTheGlidersFiles) {
       if (z > 50.0 || z < 3.5) dir_sign = -dir_sign;
     }
   }
-  { std::ofstream(dir / "from-glider" / "broken.csv") << "m_present_time,m_depth\n1,2\n"; }
+  { std::ofstream(dir / "from-glider" / "broken.csv") << "m_present_time,m_depth,m_pitch\n1,2\n"; }
+  { std::ofstream(dir / "from-glider" / "science.tbd.csv") << "m_present_time,sci_water_temp\n1,12\n"; }
   std::vector<std::string> notes;
   int files = 0;
   const fc::GlidePitch g = fc::logged_glide_pitch(dir, 0.0, notes, files);
   LONGS_EQUAL(1, files);
-  LONGS_EQUAL(1, static_cast<long>(notes.size()));  // the broken file, named
+  LONGS_EQUAL(1, static_cast<long>(notes.size()));  // the broken file, named; the science file passed over
   CHECK(notes[0].find("broken.csv") != std::string::npos);
   CHECK(g.dive_n > 800 && g.climb_n > 800);
   DOUBLES_EQUAL(25.0 * kDeg, g.dive_rad(), 1e-6);  // the file's 6 digits

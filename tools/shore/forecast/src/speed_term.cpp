@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "glider/firmware/geo.hpp"
 #include "glider/flightlog/flight_log.hpp"
@@ -79,6 +81,24 @@ SpeedFlight still_water_flight(const FlightSetup& setup, const ForecastOptions& 
   return out;
 }
 
+// The header (the first line not a `#` comment) names m_depth and m_pitch.
+bool has_glide_columns(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    bool depth = false, pitch = false;
+    std::stringstream names(line);
+    std::string name;
+    while (std::getline(names, name, ',')) {
+      depth = depth || name == "m_depth";
+      pitch = pitch || name == "m_pitch";
+    }
+    return depth && pitch;
+  }
+  return false;
+}
+
 }  // namespace
 
 PitchCalibrationEstimate estimate_pitch_calibration(const GlidePitch& glider, const GlidePitch& model) {
@@ -152,6 +172,7 @@ GlidePitch logged_glide_pitch(const fs::path& glider_dir, double since_utc_s, st
   read.required = {{"m_depth"}, {"m_pitch"}};
   read.columns = {"m_depth", "m_pitch"};
   for (const fs::path& path : paths) {
+    if (!has_glide_columns(path)) continue;  // a science (.tbd/.ebd) file: no pitch to read, nothing wrong
     try {
       const flightlog::FlightLog log = flightlog::read_flight_log(path, read);
       const flightlog::Column& t = log.time();

@@ -69,8 +69,9 @@ fw::DeadReckoningConfig biased_pitch_dead_reckoning(const fw::DeadReckoningConfi
 // The steady glides in the glider's files sent home since `since_utc_s`:
 // GLIDER_DIR/from-glider/*.csv (glider-convert's conversions of the .sbd /
 // .dbd, m_present_time, m_depth, m_pitch; 4 s or coarser), depth rate and
-// pitch rate by differences over samples at most 30 s apart. A file that is
-// not a readable log is skipped and named in `notes`.
+// pitch rate by differences over samples at most 30 s apart. A file whose
+// header has no m_depth or m_pitch (science data) is passed over; one that
+// names them but is not a readable log is skipped and named in `notes`.
 GlidePitch logged_glide_pitch(const std::filesystem::path& glider_dir, double since_utc_s,
                               std::vector<std::string>& notes, int& files);
 
