@@ -33,8 +33,8 @@ bool direction_scale(double glider_mean, double glider_sd, int glider_n, double 
   return std::isfinite(scale);
 }
 
-// The glider's counted over its calibrated dead-reckoned speed at one pitch.
-double counted_over_true(const fw::DeadReckoning& dr, double logged_pitch_rad, double scale) {
+// The glider's calibrated (true) over its counted dead-reckoned speed at one logged pitch.
+double true_over_counted(const fw::DeadReckoning& dr, double logged_pitch_rad, double scale) {
   const double w = logged_pitch_rad < 0.0 ? 0.1 : -0.1;  // the ratio does not depend on the depth rate
   const double counted = dr.horizontal_speed(logged_pitch_rad, w);
   const double calibrated = dr.horizontal_speed(scale * logged_pitch_rad, w);
@@ -44,14 +44,14 @@ double counted_over_true(const fw::DeadReckoning& dr, double logged_pitch_rad, d
 double speed_factor(const fw::DeadReckoning& dr, const GlidePitch& g, double dive_scale, double climb_scale) {
   double sum = 0.0, weight = 0.0;
   if (g.dive_n > 0) {
-    const double k = counted_over_true(dr, -g.dive_rad(), dive_scale);
+    const double k = true_over_counted(dr, -g.dive_rad(), dive_scale);
     if (std::isfinite(k)) {
       sum += g.dive_n * k;
       weight += g.dive_n;
     }
   }
   if (g.climb_n > 0) {
-    const double k = counted_over_true(dr, g.climb_rad(), climb_scale);
+    const double k = true_over_counted(dr, g.climb_rad(), climb_scale);
     if (std::isfinite(k)) {
       sum += g.climb_n * k;
       weight += g.climb_n;
