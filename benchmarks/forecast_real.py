@@ -20,7 +20,9 @@ With --check (CTest forecast.real_comet_2019) it exits 1 unless each forecast's 
 the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two estimates),
 and each forecast's time within 5 min of the glider's (the issue's time goal).
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
-       [--current-prior evidence|fixed|off] [--check]
+       [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--no-pitch-calibration]
+       [--from-glider]
+       [--check]
 """
 import argparse
 import csv
@@ -178,6 +180,11 @@ def main():
     p.add_argument("--waypoint", type=int, default=None, help="force this active waypoint for every forecast")
     p.add_argument("--current-prior", default=None, help="glider-forecast's --current-prior (evidence, fixed, off)")
     p.add_argument("--speed-correction", action="store_true", help="glider-forecast's --speed-correction")
+    p.add_argument("--no-speed-correction", action="store_true", help="glider-forecast's --no-speed-correction")
+    p.add_argument("--no-pitch-calibration", action="store_true", help="glider-forecast's --no-pitch-calibration")
+    p.add_argument("--from-glider", action="store_true",
+                   help="put the dives' m_depth and m_pitch the shore had by each call (4.5 s rows, as an .sbd "
+                        "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
     p.add_argument("--check", action="store_true", help="test mode: the current checks above, PASS/FAIL line")
     a = p.parse_args()
     out = a.out or os.path.join(a.build, "benchmark", "forecast_real")
@@ -219,13 +226,24 @@ def main():
         for i, e in enumerate(events[:k + 1]):
             with open(os.path.join(d, "logs", "2019082%d_%04d.surfacing.json" % (i, i + 1)), "w") as f:
                 json.dump(e, f, indent=2)
+        if a.from_glider:
+            # The dives before this call: file 154's by surfacing 1 (none before surfacing 0).
+            os.makedirs(os.path.join(d, "from-glider"))
+            for logged, until, name in ((files[0], up1, "comet-2019-222-02-154"),)[:k]:
+                with open(os.path.join(d, "from-glider", name + ".sbd.csv"), "w") as f:
+                    f.write("m_present_time,m_depth,m_pitch\n")
+                    for r in logged:
+                        if r["m_present_time"] <= until and r["m_depth"] is not None and r["m_pitch"] is not None:
+                            f.write("%.3f,%.3f,%.5f\n" % (r["m_present_time"], r["m_depth"], r["m_pitch"]))
         # The history holds no fix of an earlier arrival: the waypoint is the glider's own (its .dbd's
         # c_wpt: dive 154 flew to waypoint 1, 54.30 N 7.43 E, reached by DR 6918 s in, then waypoint 0;
         # dive 156 to waypoint 0, 54.558 N 7.217 E).
         run = subprocess.run([forecast, "--glider-dir", d, "--vehicle", vehicle, "--runs", str(a.runs),
                               "--waypoint", str(wpts[k]), "--json"] +
                              (["--current-prior", a.current_prior] if a.current_prior else []) +
-                             (["--speed-correction"] if a.speed_correction else []),
+                             (["--speed-correction"] if a.speed_correction else []) +
+                             (["--no-speed-correction"] if a.no_speed_correction else []) +
+                             (["--no-pitch-calibration"] if a.no_pitch_calibration else []),
                              capture_output=True, text=True)
         if run.returncode != 0:
             print(run.stdout, run.stderr)

@@ -5,7 +5,7 @@
 An nsb3.mi SIL truth on slocum_comet.toml with its drag x1.4 (--truth-drag 1.4,
 times the drawn 5 %), forecast from its 3rd surfacing with --speed-correction:
 the JSON's current.speed_drag_factor is within 15 % of the truth's drawn drag
-(the DR speed's own spread over 3 dives), and without the option it is 1.
+(the DR speed's own spread over 3 dives), and with --no-speed-correction it is 1.
 Usage: check_speed_correction.py GLIDER_FORECAST_BENCH OUT_DIR
 """
 import json
@@ -40,7 +40,7 @@ def main():
         return 2
     bench, source, out = sys.argv[1:]
     truth, on = forecast(bench, source, os.path.join(out, "on"), ["--speed-correction"])
-    _, off = forecast(bench, source, os.path.join(out, "off"), [])
+    _, off = forecast(bench, source, os.path.join(out, "off"), ["--no-speed-correction"])
     print("truth drag x%.3f; corrected x%.3f over %d dives (ratio before %.3f); without the option x%.3f" %
           (truth, on["speed_drag_factor"], on["speed_dives"], on["glider_speed_ratio"], off["speed_drag_factor"]))
     if on["speed_dives"] < 2:
@@ -48,7 +48,7 @@ def main():
     if abs(on["speed_drag_factor"] / truth - 1.0) > 0.15:
         fail("corrected drag x%.3f, the truth's x%.3f" % (on["speed_drag_factor"], truth))
     if off["speed_drag_factor"] != 1.0:
-        fail("a drag factor applied without --speed-correction")
+        fail("a drag factor applied with --no-speed-correction")
     print("PASS speed_correction")
     return 0
 

@@ -15,6 +15,7 @@
 #include "glider/cli/tool.hpp"
 #include "glider/config/value_limits.hpp"
 #include "glider/firmware/geo.hpp"
+#include "glider/forecast/speed_term.hpp"
 #include "glider/forecast/tidal_prior.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/sil/mission_setup.hpp"
@@ -312,124 +313,6 @@ void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, co
   }
 }
 
-// The glider's own speed through the water, as its dead reckoning counts
-// it, against the model's: over each recent dive of the last day the DR's
-// track less the current it carried ((DR position on surfacing - the fix it
-// dived from) / time - its m_water_vx/vy then), against one still-water
-// flight of the model (whose DR is its track through the water). Both count
-// speed from the depth rate and pitch the same way. Said (a note, JSON
-// current.glider_speed_ratio); with options.speed_correction also applied:
-// the vehicle's drag (cd0 and cd_alpha2, as the runs' draws scale it) is
-// scaled until the model's speed is the glider's. The speed falls smoothly
-// with drag, about as drag^-1/2, since slocum_comet.toml flies the comet's
-// own polar (model.comet_drag_sweep), so secant steps settle it in a few
-// flights. Also the mean glide speed the runs start with
-// (the model's).
-constexpr double kSpeedDragMin = 0.5, kSpeedDragMax = 2.5;  // beyond: a wrong trim, not drag
-constexpr int kSpeedPasses = 6;
-constexpr double kSpeedStepMax = 1.3;     // per pass: the slope is the comet polar's only near the last flight
-constexpr double kSpeedTolerance = 0.01;  // of the ratio: below the DR's own spread
-
-double still_water_speed(const FlightSetup& setup, const ForecastOptions& options, double& average) {
-  FlightSetup still = setup;
-  still.current = CurrentEstimate{};
-  still.firmware_current.reset();
-  // Straight toward the active waypoint, not through it: a flight that
-  // reaches it and turns back covers less ground than it glides.
-  fw::MissionPlan& plan = still.config.plan;
-  if (plan.waypoint_count > 0) {
-    const fw::EastNorth w = fw::LocalFrame(still.fix).to_local(plan.waypoints[0]);
-    plan.heading_rad = std::atan2(w.east_m, w.north_m);
-    plan.waypoint_count = 0;
-  }
-  const RunOutcome r = fly_runs(still, options, 1, false).at(0);
-  average = r.average_speed_m_s;
-  return r.surfaced && !r.aborted && r.time_s > 600.0 ? std::hypot(r.dr_east_m, r.dr_north_m) / r.time_s : 0.0;
-}
-
-void measure_speed(const std::vector<Surfacing>& history, FlightSetup& setup, const ForecastOptions& options,
-                   Forecast& f) {
-  std::vector<double> glider_speeds;
-  for (std::size_t i = 1; i < history.size(); ++i) {
-    const Surfacing& s = history[i];
-    const Surfacing& before = history[i - 1];
-    if (s.call_start_utc_s <= f.fix_utc_s - 86400.0) continue;  // the last day's dives: today's trim
-    if (!before.has_fix() || !s.dr_lat_deg || !s.dr_lon_deg) continue;
-    const double under_s = s.call_start_utc_s - before.call_end_utc_s;
-    if (!(under_s >= 1800.0)) continue;  // a short dive's speed is mostly its turns
-    const fw::EastNorth dr =
-        fw::LocalFrame({*before.lat_deg, *before.lon_deg}).to_local({*s.dr_lat_deg, *s.dr_lon_deg});
-    const double ce = before.water_vx_m_s.value_or(0.0), cn = before.water_vy_m_s.value_or(0.0);
-    const double speed = std::hypot(dr.east_m / under_s - ce, dr.north_m / under_s - cn);
-    if (std::isfinite(speed) && speed > 0.02) glider_speeds.push_back(speed);
-  }
-  double average = 0.0;
-  const double model = still_water_speed(setup, options, average);
-  if (!glider_speeds.empty() && model > 0.02) {
-    std::sort(glider_speeds.begin(), glider_speeds.end());
-    const double glider = glider_speeds[glider_speeds.size() / 2];
-    f.glider_speed_ratio = glider / model;
-    f.speed_dives = static_cast<int>(glider_speeds.size());
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "speed through the water by dead reckoning: the glider's %.3f m/s over %zu recent dives, the "
-                  "model's %.3f (%s)",
-                  glider, glider_speeds.size(), model,
-                  options.speed_correction ? "corrected below" : "said, not applied");
-    f.notes.push_back(text);
-    if (options.speed_correction) {
-      const model::Hydrodynamics nominal = setup.vehicle.hydro;
-      // Secant steps on log speed against log drag, the first at drag^-1/2
-      // (the horizontal speed falls faster, ~drag^-0.7..-1, as the angle of
-      // attack grows).
-      double factor = 1.0, ratio = f.glider_speed_ratio, corrected = model, corrected_average = average;
-      double slope = -0.5, last_log_factor = 0.0, last_log_speed = std::log(model);
-      // The flights' speed is smooth in drag only to a few per cent (where
-      // each yo ends): the best pass is kept, not the last.
-      double best_factor = 1.0, best_ratio = ratio, best_speed = model, best_average = average;
-      for (int pass = 0; pass < kSpeedPasses && std::abs(best_ratio - 1.0) > kSpeedTolerance; ++pass) {
-        const double step = std::clamp(std::exp(std::log(best_ratio) / slope), 1.0 / kSpeedStepMax, kSpeedStepMax);
-        const double next = std::clamp(best_factor * step, kSpeedDragMin, kSpeedDragMax);
-        if (next == factor) break;  // at a limit
-        factor = next;
-        setup.vehicle.hydro = nominal;
-        model::scale_drag(setup.vehicle.hydro, factor);
-        corrected = still_water_speed(setup, options, corrected_average);
-        if (!(corrected > 0.02)) break;  // no glide there: keep the best so far
-        ratio = glider / corrected;
-        if (std::abs(ratio - 1.0) < std::abs(best_ratio - 1.0)) {
-          best_factor = factor;
-          best_ratio = ratio;
-          best_speed = corrected;
-          best_average = corrected_average;
-        }
-        const double log_factor = std::log(factor), log_speed = std::log(corrected);
-        const double secant = (log_speed - last_log_speed) / (log_factor - last_log_factor);
-        if (std::isfinite(secant) && secant < -0.1 && secant > -3.0) slope = secant;  // else keep the last
-        last_log_factor = log_factor;
-        last_log_speed = log_speed;
-      }
-      setup.vehicle.hydro = nominal;
-      model::scale_drag(setup.vehicle.hydro, best_factor);
-      f.speed_drag_factor = best_factor;
-      if (best_factor != 1.0) {
-        average = best_average;
-        std::snprintf(text, sizeof text, "the model's drag x%.3f: its dead-reckoned speed %.3f m/s (ratio %.3f)",
-                      best_factor, best_speed, best_ratio);
-      } else {
-        setup.vehicle.hydro = nominal;
-        std::snprintf(text, sizeof text, "the model's drag not corrected: no factor in [%.1f, %.1f] brought it nearer",
-                      kSpeedDragMin, kSpeedDragMax);
-      }
-      f.notes.push_back(text);
-    }
-  }
-  if (std::isfinite(average) && average > 0.0) {
-    setup.average_speed_m_s = average;
-    setup.average_weight_s = 3600.0;
-  }
-}
-
 }  // namespace
 
 Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& options) {
@@ -496,7 +379,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     setup.firmware_current = fw::EastNorth{*history.back().water_vx_m_s, *history.back().water_vy_m_s};
   }
   const model::Hydrodynamics nominal_hydro = setup.vehicle.hydro;  // the baseline's (measure_speed may correct it)
-  measure_speed(history, setup, options, f);
+  measure_speed(history, glider_dir, setup, options, f);
   std::vector<DiveMiss> misses;
   const double longest_climb_s = longest_climb_left_s(setup, options);
   if (options.waypoint >= 0 && now.applied.empty()) {
@@ -564,7 +447,9 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double last_dive = history.back().call_start_utc_s - history[history.size() - 2].call_end_utc_s;
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);
   }
-  const std::vector<CurrentSample> samples = current_samples(history, f.dr_speed_ratio, expected_s);
+  // The glider's DR speed error holds its pitch sensor's too (speed_term.hpp): its share of each estimate out.
+  const double glider_dr_ratio = f.dr_speed_ratio * (options.pitch_calibration ? f.pitch_dr_speed_factor : 1.0);
+  const std::vector<CurrentSample> samples = current_samples(history, glider_dr_ratio, expected_s);
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior);
   f.favoured = favoured_prior(samples, f.dive_utc_s, f.prior);
   if (f.prior.mode == PriorMode::kEvidence && !samples.empty()) {
@@ -586,6 +471,8 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   // flew the nominal one): with it, the vehicle is not drawn as well.
   ForecastOptions drawn = options;
   if (f.model_miss_dives > 0) drawn.drag_sigma = drawn.buoyancy_sigma_kg = 0.0;
+  // The speed term's drag sigma (its pitch calibration's; speed_term.cpp) on top of the drawn drag's.
+  if (f.model_miss_dives == 0) drawn.drag_sigma = std::hypot(drawn.drag_sigma, f.speed_drag_sigma);
   std::vector<RunOutcome> runs = fly_runs(setup, drawn, options.runs, true);
   add_model_miss(f, options, runs);
   summarise(runs, setup.fix, f);
@@ -643,6 +530,11 @@ nlohmann::json forecast_json(const Forecast& f) {
                     {"glider_speed_ratio", f.glider_speed_ratio},
                     {"speed_drag_factor", f.speed_drag_factor},
                     {"speed_dives", f.speed_dives},
+                    {"speed_drag_sigma", f.speed_drag_sigma},
+                    {"pitch_scale", f.pitch_scale},
+                    {"pitch_scale_sigma", f.pitch_scale_sigma},
+                    {"pitch_samples", f.pitch_samples},
+                    {"pitch_dr_speed_factor", f.pitch_dr_speed_factor},
                     {"prior",
                      {{"mode", to_string(f.prior.mode)},
                       {"mean_sigma_m_s", f.prior.mean_sigma_m_s},

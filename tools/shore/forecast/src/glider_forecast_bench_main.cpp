@@ -163,7 +163,15 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"evidence", "fixed", "off"}))
       ->capture_default_str();
   app.add_flag("--speed-correction", options.speed_correction,
-               "the forecasts scale the model's drag to the glider's dead-reckoned speed (docs/forecast.md)");
+               "the forecasts scale the model's drag to the glider's dead-reckoned speed, calibrated or not "
+               "(default: only calibrated for its pitch sensor; docs/forecast.md)");
+  app.add_flag("!--no-speed-correction", options.speed_correction_calibrated,
+               "the forecasts never scale the model's drag");
+  app.add_flag("!--no-pitch-calibration", options.pitch_calibration,
+               "the forecasts take the glider's dead-reckoned speed as counted (no pitch sensor calibration)");
+  tool.add_number("--truth-pitch-bias", truth_options.pitch_bias_max, {0.0, 0.5, ""},
+                  "the truths' pitch sensor reads (1 + b) x the hull's pitch, b drawn uniform in [-this, this]")
+      ->capture_default_str();
   tool.add_number("--truth-drag-sigma", truth_options.drag_sigma, {0.0, 1.0, ""},
                   "the true vehicle's drag off the file's, 1 sigma of its log")
       ->capture_default_str();

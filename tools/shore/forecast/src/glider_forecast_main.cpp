@@ -39,7 +39,13 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     command->add_flag(
         "--speed-correction", options.speed_correction,
-        "scale the model's drag to the glider's dead-reckoned speed through the water (docs/forecast.md)");
+        "scale the model's drag to the glider's dead-reckoned speed through the water even without its pitch "
+        "sensor's calibration (default: only with it; docs/forecast.md)");
+    command->add_flag("!--no-speed-correction", options.speed_correction_calibrated,
+                      "never scale the model's drag to the glider's speed");
+    command->add_flag("!--no-pitch-calibration", options.pitch_calibration,
+                      "take the glider's dead-reckoned speed as counted, not calibrated for its pitch sensor's scale "
+                      "read from from-glider/ (docs/forecast.md)");
     command
         ->add_option("--current-prior", prior_mode,
                      "the current's prior: evidence (the estimates weigh its widths), fixed or off (persistence); "

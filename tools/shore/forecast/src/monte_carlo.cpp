@@ -99,6 +99,7 @@ RunOutcome fly_one(const FlightSetup& s, const ForecastOptions& o, std::uint64_t
       }
       phase_before = phase;
     }
+    out.glide_pitch.add(truth.depth_m, truth.depth_rate_m_s, truth.pitch_rad, truth.pitch_rate_rad_s);
     if (dive_s < 0.0 && !flight.navigator().at_surface()) dive_s = t;
     if (flight.phase() == fw::Phase::kAbort) {
       if (!out.aborted) {

@@ -11,6 +11,7 @@
 #include "glider/config/value_limits.hpp"
 #include "glider/firmware/app/mission_setup.hpp"
 #include "glider/forecast/forecast.hpp"
+#include "glider/forecast/speed_term.hpp"
 #include "glider/forecast/surfacing_history.hpp"
 #include "glider/forecast/tidal_prior.hpp"
 #include "glider/model/vehicle_file.hpp"
@@ -62,13 +63,16 @@ Truth fly_truth(const TruthOptions& o) {
   const double drag = o.drag_factor * std::exp(o.drag_sigma * draw.gaussian());
   model::scale_drag(flown.hydro, drag);
   flown.buoyancy_offset_kg += o.buoyancy_sigma_kg * draw.gaussian();
-  char text[320];
+  const double sensor_scale = o.pitch_bias_max > 0.0 ? 1.0 + o.pitch_bias_max * (2.0 * draw.uniform() - 1.0) : 1.0;
+  fw::FlightSoftwareConfig config = *prepared.config;
+  config.dead_reckoning = biased_pitch_dead_reckoning(config.dead_reckoning, sensor_scale);
+  char text[360];
   std::snprintf(text, sizeof text,
                 "seed %llu: mean current %.3f E %.3f N m/s, M2 tide %.3f m/s toward %.0f deg (phase %.0f deg), drag "
-                "x%.3f, buoyancy %+.0f g",
+                "x%.3f, buoyancy %+.0f g, pitch sensor x%.3f",
                 static_cast<unsigned long long>(o.seed), water.current_east_m_s, water.current_north_m_s, tide,
                 tide_dir * 180.0 / std::numbers::pi, tide_phase * 180.0 / std::numbers::pi, drag,
-                1000.0 * (flown.buoyancy_offset_kg - vehicle.buoyancy_offset_kg));
+                1000.0 * (flown.buoyancy_offset_kg - vehicle.buoyancy_offset_kg), sensor_scale);
   truth.description = text;
 
   sil::ScenarioOptions opt;
@@ -85,6 +89,9 @@ Truth fly_truth(const TruthOptions& o) {
   opt.stop_when = [&](double t, const fw::FlightSoftware& flight, const model::Truth& now) {
     const fw::Navigator& nav = flight.navigator();
     if (flight.phase() == fw::Phase::kAbort) return true;  // a truth that aborts ends there
+    if (truth.logged.empty() || t + o.utc_launch_s >= truth.logged.back()[0] + 4.0) {
+      truth.logged.push_back({o.utc_launch_s + t, now.depth_m, sensor_scale * now.pitch_rad});
+    }
     if (!under && !nav.at_surface()) {
       // Dived: the call before it is over; the fix it dived from is the DR's origin.
       under = true;
@@ -115,7 +122,7 @@ Truth fly_truth(const TruthOptions& o) {
     if (flight.complete()) return true;
     return false;
   };
-  const sil::ScenarioResult result = sil::run_scenario(flown, *prepared.config, opt);
+  const sil::ScenarioResult result = sil::run_scenario(flown, config, opt);
   if (!result.error.empty()) throw std::runtime_error("truth flight: " + result.error);
   // The last surfacing (no dive after it): the fix is where it is.
   if (!under && truth.surfacings.size() <= static_cast<std::size_t>(o.surfacings) && pending.have_dr) {
@@ -164,6 +171,17 @@ void write_glider_folder(const Truth& truth, const TruthOptions& o, const std::s
     std::snprintf(name, sizeof name, "%s_%04zu.surfacing.json", format_utc(s.surfaced_utc_s).substr(0, 10).c_str(),
                   i + 1);
     write_atomically(dir / "logs" / name, event.dump(2) + "\n");
+  }
+  if (upto < truth.surfacings.size()) {
+    const double until = truth.surfacings[upto].surfaced_utc_s;
+    std::string csv = "m_present_time,m_depth,m_pitch\n";
+    char row[96];
+    for (const auto& [t, depth, pitch] : truth.logged) {
+      if (t < until - 86400.0 || t > until) continue;
+      std::snprintf(row, sizeof row, "%.1f,%.3f,%.5f\n", t, depth, pitch);
+      csv += row;
+    }
+    write_atomically(dir / "from-glider" / (glider + ".csv"), csv);
   }
 }
 

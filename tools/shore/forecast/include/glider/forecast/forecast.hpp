@@ -16,6 +16,7 @@
 
 #include "glider/forecast/current_estimate.hpp"
 #include "glider/forecast/forecast_settings.hpp"
+#include "glider/forecast/glide_pitch.hpp"
 #include "glider/forecast/mission_now.hpp"
 #include "glider/model/vehicle.hpp"
 
@@ -37,9 +38,15 @@ struct ForecastOptions {
   bool include_queue = true;
   bool write = true;     // write forecast/forecast.json
   PriorOverrides prior;  // the command line's; GLIDER/forecast.toml's otherwise (forecast_settings.hpp)
-  // --speed-correction: the model's drag scaled until its dead-reckoned
-  // speed through the water is the glider's (docs/forecast.md, speed term).
+  // The model's drag scaled until its dead-reckoned speed through the water
+  // is the glider's (docs/forecast.md, speed term): by default only when the
+  // glider's DR speed is calibrated for its pitch sensor (speed_term.hpp),
+  // --speed-correction: always, --no-speed-correction: never.
   bool speed_correction = false;
+  bool speed_correction_calibrated = true;
+  // The glider's dead-reckoned speed calibrated for its pitch sensor's scale,
+  // read from the steady glides it sent home (speed_term.hpp; off: --no-pitch-calibration).
+  bool pitch_calibration = true;
 };
 
 struct RunOutcome {
@@ -52,6 +59,7 @@ struct RunOutcome {
   double dr_east_m = 0.0, dr_north_m = 0.0;  // the firmware's dead-reckoned position on surfacing
   double average_speed_m_s = 0.0;            // the navigator's mean glide speed then (m_avg_speed)
   double yo_climb_s = 0.0;                   // mean length of the yos' climbs (inflection to the next dive; 0: none)
+  GlidePitch glide_pitch;                    // the steady glides' pitch (the speed term's pitch calibration)
 };
 
 struct Ellipse {
@@ -85,6 +93,12 @@ struct Forecast {
   double glider_speed_ratio = 1.0;
   int speed_dives = 0;
   double speed_drag_factor = 1.0;  // the drag factor applied to the vehicle (--speed-correction; 1: none)
+  double speed_drag_sigma = 0.0;   // its 1-sigma (relative) from the pitch calibration, drawn in the runs
+  // The glider's pitch sensor: hull pitch = pitch_scale x m_pitch from its
+  // steady glides against the model's (1, 0 samples: not read), and the
+  // factor its dead-reckoned speed is low by for it (speed_term.hpp).
+  double pitch_scale = 1.0, pitch_scale_sigma = 0.0, pitch_dr_speed_factor = 1.0;
+  int pitch_samples = 0;
   // The model's own miss on the glider's recent dives, flown again with the
   // current each one measured (the waypoint replay's flights): RMS east and
   // north and their correlation, over `model_miss_dives` dives of the last

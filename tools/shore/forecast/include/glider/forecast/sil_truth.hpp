@@ -7,6 +7,7 @@
 // fix, dead-reckoned position, m_water_vx/vy, times) in a glider folder, as
 // the shore would have written it, and the true position and time of every
 // surfacing are kept to score forecasts against.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -28,6 +29,10 @@ struct TruthOptions {
   double drag_sigma = 0.05;              // the true vehicle's drag against the file's
   double drag_factor = 1.0;              // and a fixed factor on it (a fouled or cleaner glider)
   double buoyancy_sigma_kg = 0.010;
+  // The pitch sensor reads (1 + b) x the hull's pitch, b drawn uniform in
+  // [-max, max] (0: a true sensor, nothing drawn): its dead reckoning and the
+  // m_pitch it sends home (from-glider/) are the biased sensor's.
+  double pitch_bias_max = 0.0;
   double max_working_depth_m = 100.0;
 };
 
@@ -45,13 +50,17 @@ struct TruthSurfacing {
 
 struct Truth {
   std::vector<TruthSurfacing> surfacings;  // [0] is the launch
-  std::string description;                 // the drawn current and vehicle
+  // What the glider logs and sends home every 4 s (from-glider/ GLIDER.csv):
+  // UTC, m_depth, m_pitch (its sensor's).
+  std::vector<std::array<double, 3>> logged;
+  std::string description;  // the drawn current and vehicle
 };
 
 Truth fly_truth(const TruthOptions& options);
 
 // Writes a glider folder: mission/ (the .mi and its .ma files), logs/ with
-// the events of surfacings [0, upto], named `glider`.
+// the events of surfacings [0, upto], named `glider`, and from-glider/ with
+// the last day of what it logged until surfacing `upto`.
 void write_glider_folder(const Truth& truth, const TruthOptions& options, const std::string& glider, std::size_t upto,
                          const std::filesystem::path& glider_dir);
 

@@ -1,0 +1,345 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "glider/forecast/speed_term.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "glider/firmware/geo.hpp"
+#include "glider/flightlog/flight_log.hpp"
+
+namespace glider::forecast {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMinGlideSamples = 20;             // per direction, to read a scale from
+constexpr double kSamplesPerIndependent = 15.0;  // 4 s samples of one glide: about one independent a minute
+constexpr double kMaxSampleGapS = 30.0;
+constexpr int kSpeedPasses = 6;
+constexpr double kSpeedStepMax = 1.3;     // per pass: the slope is the comet polar's only near the last flight
+constexpr double kSpeedTolerance = 0.01;  // of the ratio: below the DR's own spread
+
+// One direction's scale (model / glider mean |pitch|) and its sampling sigma.
+bool direction_scale(double glider_mean, double glider_sd, int glider_n, double model_mean, int model_n, double& scale,
+                     double& sigma) {
+  if (glider_n < kMinGlideSamples || model_n < kMinGlideSamples) return false;
+  if (!(glider_mean > 0.0) || !(model_mean > 0.0)) return false;
+  scale = model_mean / glider_mean;
+  const double independent = std::max(1.0, glider_n / kSamplesPerIndependent);
+  sigma = scale * (std::isfinite(glider_sd) ? glider_sd / glider_mean : 0.0) / std::sqrt(independent);
+  return std::isfinite(scale);
+}
+
+// The glider's calibrated (true) over its counted dead-reckoned speed at one logged pitch.
+double true_over_counted(const fw::DeadReckoning& dr, double logged_pitch_rad, double scale) {
+  const double w = logged_pitch_rad < 0.0 ? 0.1 : -0.1;  // the ratio does not depend on the depth rate
+  const double counted = dr.horizontal_speed(logged_pitch_rad, w);
+  const double calibrated = dr.horizontal_speed(scale * logged_pitch_rad, w);
+  return counted > 0.0 && calibrated > 0.0 ? calibrated / counted : std::nan("");
+}
+
+double speed_factor(const fw::DeadReckoning& dr, const GlidePitch& g, double dive_scale, double climb_scale) {
+  double sum = 0.0, weight = 0.0;
+  if (g.dive_n > 0) {
+    const double k = true_over_counted(dr, -g.dive_rad(), dive_scale);
+    if (std::isfinite(k)) {
+      sum += g.dive_n * k;
+      weight += g.dive_n;
+    }
+  }
+  if (g.climb_n > 0) {
+    const double k = true_over_counted(dr, g.climb_rad(), climb_scale);
+    if (std::isfinite(k)) {
+      sum += g.climb_n * k;
+      weight += g.climb_n;
+    }
+  }
+  return weight > 0.0 ? sum / weight : std::nan("");
+}
+
+// One still-water flight of the coming dive straight toward the active
+// waypoint, not through it: a flight that reaches it and turns back covers
+// less ground than it glides. Its steady glides' pitch into `pitch`.
+SpeedFlight still_water_flight(const FlightSetup& setup, const ForecastOptions& options, GlidePitch* pitch) {
+  FlightSetup still = setup;
+  still.current = CurrentEstimate{};
+  still.firmware_current.reset();
+  fw::MissionPlan& plan = still.config.plan;
+  if (plan.waypoint_count > 0) {
+    const fw::EastNorth w = fw::LocalFrame(still.fix).to_local(plan.waypoints[0]);
+    plan.heading_rad = std::atan2(w.east_m, w.north_m);
+    plan.waypoint_count = 0;
+  }
+  const RunOutcome r = fly_runs(still, options, 1, false).at(0);
+  if (pitch != nullptr) *pitch = r.glide_pitch;
+  SpeedFlight out;
+  out.average_m_s = r.average_speed_m_s;
+  out.speed_m_s = r.surfaced && !r.aborted && r.time_s > 600.0 ? std::hypot(r.dr_east_m, r.dr_north_m) / r.time_s : 0.0;
+  return out;
+}
+
+// The header (the first line not a `#` comment) names m_depth and m_pitch.
+bool has_glide_columns(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    bool depth = false, pitch = false;
+    std::stringstream names(line);
+    std::string name;
+    while (std::getline(names, name, ',')) {
+      depth = depth || name == "m_depth";
+      pitch = pitch || name == "m_pitch";
+    }
+    return depth && pitch;
+  }
+  return false;
+}
+
+}  // namespace
+
+PitchCalibrationEstimate estimate_pitch_calibration(const GlidePitch& glider, const GlidePitch& model) {
+  PitchCalibrationEstimate e;
+  double ds = 1.0, dsig = 0.0, cs = 1.0, csig = 0.0;
+  const bool dive =
+      direction_scale(glider.dive_rad(), glider.dive_sd_rad(), glider.dive_n, model.dive_rad(), model.dive_n, ds, dsig);
+  const bool climb = direction_scale(glider.climb_rad(), glider.climb_sd_rad(), glider.climb_n, model.climb_rad(),
+                                     model.climb_n, cs, csig);
+  if (!dive && !climb) return e;
+  const int nd = dive ? glider.dive_n : 0, nc = climb ? glider.climb_n : 0;
+  e.glider_samples = nd + nc;
+  // One direction alone stands for both.
+  e.dive_scale = dive ? ds : cs;
+  e.climb_scale = climb ? cs : ds;
+  e.scale = (nd * (dive ? ds : 0.0) + nc * (climb ? cs : 0.0)) / (nd + nc);
+  if (!(e.scale >= kPitchScaleMin && e.scale <= kPitchScaleMax)) return PitchCalibrationEstimate{};
+  const double sampling = (nd * dsig + nc * csig) / (nd + nc);
+  const double disagreement = dive && climb ? 0.5 * std::fabs(ds - cs) : 0.0;
+  e.scale_sigma =
+      std::sqrt(sampling * sampling + disagreement * disagreement + kPitchScaleSigmaFloor * kPitchScaleSigmaFloor);
+  e.have = true;
+  return e;
+}
+
+DrSpeedCalibration dr_speed_calibration(const fw::DeadReckoningConfig& config, const GlidePitch& glider,
+                                        const PitchCalibrationEstimate& c) {
+  DrSpeedCalibration out;
+  if (!c.have) return out;
+  const fw::DeadReckoning dr(config);
+  const double k = speed_factor(dr, glider, c.dive_scale, c.climb_scale);
+  if (!std::isfinite(k) || !(k > 0.0)) return out;
+  // The sigma: the scale moved by its sigma in both directions at once.
+  const double up = speed_factor(dr, glider, c.dive_scale + c.scale_sigma, c.climb_scale + c.scale_sigma);
+  const double down = speed_factor(dr, glider, c.dive_scale - c.scale_sigma, c.climb_scale - c.scale_sigma);
+  out.factor = k;
+  out.sigma = std::isfinite(up) && std::isfinite(down) ? 0.5 * std::fabs(up - down) : 0.0;
+  return out;
+}
+
+fw::DeadReckoningConfig biased_pitch_dead_reckoning(const fw::DeadReckoningConfig& config, double sensor_scale) {
+  if (sensor_scale == 1.0) return config;
+  const fw::DeadReckoning given(config);
+  fw::DeadReckoningConfig out = config;
+  out.method = fw::DrMethod::kFlightModel;
+  // The assumed-alpha method infers no speed through an inflection: coast
+  // over no time there too.
+  if (config.method == fw::DrMethod::kAssumedAlpha) out.coast_time_constant_s = 1e-3;
+  out.min_pitch_rad = config.min_pitch_rad / sensor_scale;
+  for (std::size_t i = 0; i < fw::DeadReckoningConfig::kTableSize; ++i) {
+    const double p = out.table_first_pitch_rad + static_cast<double>(i) * out.table_step_rad;
+    // glide path' (p) = p + alpha'(p) = sensor_scale p + alpha(sensor_scale p)
+    out.dive_alpha_rad[i] = (sensor_scale - 1.0) * p + given.alpha_for(-sensor_scale * p);
+    out.climb_alpha_rad[i] = (sensor_scale - 1.0) * p + given.alpha_for(sensor_scale * p);
+  }
+  return out;
+}
+
+GlidePitch logged_glide_pitch(const fs::path& glider_dir, double since_utc_s, std::vector<std::string>& notes,
+                              int& files) {
+  GlidePitch g;
+  files = 0;
+  const fs::path from = glider_dir / "from-glider";
+  if (!fs::is_directory(from)) return g;
+  std::vector<fs::path> paths;
+  for (const fs::directory_entry& e : fs::directory_iterator(from)) {
+    if (e.is_regular_file() && e.path().extension() == ".csv") paths.push_back(e.path());
+  }
+  std::sort(paths.begin(), paths.end());
+  flightlog::ReadOptions read;
+  read.required = {{"m_depth"}, {"m_pitch"}};
+  read.columns = {"m_depth", "m_pitch"};
+  for (const fs::path& path : paths) {
+    if (!has_glide_columns(path)) continue;  // a science (.tbd/.ebd) file: no pitch to read, nothing wrong
+    try {
+      const flightlog::FlightLog log = flightlog::read_flight_log(path, read);
+      const flightlog::Column& t = log.time();
+      const flightlog::Column& depth = log.column("m_depth");
+      const flightlog::Column& pitch = log.column("m_pitch");
+      ++files;
+      std::size_t last = t.size();
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        if (!std::isfinite(depth[i]) || !std::isfinite(pitch[i]) || !(t[i] >= since_utc_s)) continue;
+        if (last < t.size() && t[i] - t[last] <= kMaxSampleGapS) {
+          const double dt = t[i] - t[last];
+          g.add(0.5 * (depth[i] + depth[last]), (depth[i] - depth[last]) / dt, 0.5 * (pitch[i] + pitch[last]),
+                (pitch[i] - pitch[last]) / dt);
+        }
+        last = i;
+      }
+    } catch (const std::exception& e) {
+      notes.push_back("from-glider: " + path.filename().string() + " not read for the pitch: " + e.what());
+    }
+  }
+  return g;
+}
+
+SpeedMatch match_speed(double target_m_s, const SpeedFlight& at_one, const std::function<SpeedFlight(double)>& fly) {
+  SpeedMatch best;
+  best.flight = at_one;
+  best.ratio = target_m_s / at_one.speed_m_s;
+  double factor = 1.0, slope = -0.5, last_log_factor = 0.0, last_log_speed = std::log(at_one.speed_m_s);
+  for (int pass = 0; pass < kSpeedPasses && std::abs(best.ratio - 1.0) > kSpeedTolerance; ++pass) {
+    // Secant steps on log speed against log drag, the first at drag^-1/2
+    // (the horizontal speed falls faster, ~drag^-0.7..-1, as the angle of
+    // attack grows).
+    const double step = std::clamp(std::exp(std::log(best.ratio) / slope), 1.0 / kSpeedStepMax, kSpeedStepMax);
+    const double next = std::clamp(best.factor * step, kSpeedDragMin, kSpeedDragMax);
+    if (next == factor) break;  // at a limit
+    factor = next;
+    const SpeedFlight flight = fly(factor);
+    ++best.flights;
+    if (!(flight.speed_m_s > 0.02)) break;  // no glide there: keep the best so far
+    const double ratio = target_m_s / flight.speed_m_s;
+    if (std::abs(ratio - 1.0) < std::abs(best.ratio - 1.0)) {
+      best.factor = factor;
+      best.ratio = ratio;
+      best.flight = flight;
+    }
+    const double log_factor = std::log(factor), log_speed = std::log(flight.speed_m_s);
+    const double secant = (log_speed - last_log_speed) / (log_factor - last_log_factor);
+    if (std::isfinite(secant) && secant < -0.1 && secant > -3.0) slope = secant;  // else keep the last
+    last_log_factor = log_factor;
+    last_log_speed = log_speed;
+  }
+  best.slope = slope;
+  return best;
+}
+
+// The glider's own speed through the water, as its dead reckoning counts
+// it, against the model's: over each recent dive of the last day the DR's
+// track less the current it carried ((DR position on surfacing - the fix it
+// dived from) / time - its m_water_vx/vy then), against one still-water
+// flight of the model (whose DR is its track through the water). Both count
+// speed from the depth rate and pitch; the glider's pitch through its
+// sensor, whose scale the steady glides it sent home give against the
+// model's (estimate_pitch_calibration): the glider's speed is calibrated by
+// it before the two are compared (options.pitch_calibration). Said (notes,
+// JSON); applied when calibrated (options.speed_correction_calibrated, the
+// default) or always (options.speed_correction): the vehicle's drag
+// (cd0 and cd_alpha2, as the runs' draws scale it) is scaled until the
+// model's speed is the glider's. The speed falls smoothly with drag, about
+// as drag^-1/2, since slocum_comet.toml flies the comet's own polar
+// (model.comet_drag_sweep), so secant steps settle it in a few flights.
+// Also the mean glide speed the runs start with (the model's).
+void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider_dir, FlightSetup& setup,
+                   const ForecastOptions& options, Forecast& f) {
+  std::vector<double> glider_speeds;
+  for (std::size_t i = 1; i < history.size(); ++i) {
+    const Surfacing& s = history[i];
+    const Surfacing& before = history[i - 1];
+    if (s.call_start_utc_s <= f.fix_utc_s - 86400.0) continue;  // the last day's dives: today's trim
+    if (!before.has_fix() || !s.dr_lat_deg || !s.dr_lon_deg) continue;
+    const double under_s = s.call_start_utc_s - before.call_end_utc_s;
+    if (!(under_s >= 1800.0)) continue;  // a short dive's speed is mostly its turns
+    const fw::EastNorth dr =
+        fw::LocalFrame({*before.lat_deg, *before.lon_deg}).to_local({*s.dr_lat_deg, *s.dr_lon_deg});
+    const double ce = before.water_vx_m_s.value_or(0.0), cn = before.water_vy_m_s.value_or(0.0);
+    const double speed = std::hypot(dr.east_m / under_s - ce, dr.north_m / under_s - cn);
+    if (std::isfinite(speed) && speed > 0.02) glider_speeds.push_back(speed);
+  }
+  GlidePitch model_pitch;
+  const SpeedFlight nominal = still_water_flight(setup, options, &model_pitch);
+  double average = nominal.average_m_s;
+  const double model = nominal.speed_m_s;
+
+  // The pitch sensor's scale, from the steady glides sent home in the last day.
+  int files = 0;
+  const GlidePitch logged = logged_glide_pitch(glider_dir, f.fix_utc_s - 86400.0, f.notes, files);
+  const PitchCalibrationEstimate calibration = estimate_pitch_calibration(logged, model_pitch);
+  const DrSpeedCalibration dr_calibration = dr_speed_calibration(setup.config.dead_reckoning, logged, calibration);
+  char text[320];
+  if (calibration.have) {
+    f.pitch_scale = calibration.scale;
+    f.pitch_scale_sigma = calibration.scale_sigma;
+    f.pitch_samples = calibration.glider_samples;
+    f.pitch_dr_speed_factor = dr_calibration.factor;
+    std::snprintf(text, sizeof text,
+                  "pitch sensor: the glider's steady glides (%d samples in %d file(s) of from-glider/) over the "
+                  "model's give hull pitch = %.3f +- %.3f x m_pitch (dives %.3f, climbs %.3f): its dead-reckoned "
+                  "speed is x%.3f +- %.3f of the true (%s)",
+                  calibration.glider_samples, files, calibration.scale, calibration.scale_sigma, calibration.dive_scale,
+                  calibration.climb_scale, 1.0 / dr_calibration.factor,
+                  dr_calibration.sigma / (dr_calibration.factor * dr_calibration.factor),
+                  options.pitch_calibration ? "calibrated below" : "said, not applied");
+    f.notes.push_back(text);
+  } else if (files > 0) {
+    f.notes.push_back("pitch sensor: too few steady glides in from-glider/ over the last day to read its scale");
+  }
+  const bool calibrate = options.pitch_calibration && calibration.have;
+  const double k = calibrate ? dr_calibration.factor : 1.0;
+  // Uncalibrated, a sensor's scale would be read as drag (the comet's ~15 %
+  // low DR speed as drag x1.41): by default the drag follows only a
+  // calibrated speed.
+  const bool correct = options.speed_correction || (options.speed_correction_calibrated && calibrate);
+
+  if (!glider_speeds.empty() && model > 0.02) {
+    std::sort(glider_speeds.begin(), glider_speeds.end());
+    const double counted = glider_speeds[glider_speeds.size() / 2];
+    const double glider = counted * k;
+    f.glider_speed_ratio = glider / model;
+    f.speed_dives = static_cast<int>(glider_speeds.size());
+    std::snprintf(text, sizeof text,
+                  "speed through the water by dead reckoning: the glider's %.3f m/s over %zu recent dives%s, the "
+                  "model's %.3f (%s)",
+                  glider, glider_speeds.size(), calibrate ? " (pitch calibrated)" : "", model,
+                  correct                                             ? "corrected below"
+                  : options.speed_correction_calibrated && !calibrate ? "not corrected: no pitch calibration"
+                                                                      : "said, not applied");
+    f.notes.push_back(text);
+    if (correct) {
+      const model::Hydrodynamics nominal_hydro = setup.vehicle.hydro;
+      const SpeedMatch m = match_speed(glider, nominal, [&](double factor) {
+        setup.vehicle.hydro = nominal_hydro;
+        model::scale_drag(setup.vehicle.hydro, factor);
+        return still_water_flight(setup, options, nullptr);
+      });
+      setup.vehicle.hydro = nominal_hydro;
+      model::scale_drag(setup.vehicle.hydro, m.factor);
+      f.speed_drag_factor = m.factor;
+      if (m.factor != 1.0) {
+        average = m.flight.average_m_s;
+        // The drag's own uncertainty from the calibration's: d log drag =
+        // d log speed / slope (the runs draw it on top of their own).
+        const double relative = calibrate ? dr_calibration.sigma / dr_calibration.factor : 0.0;
+        f.speed_drag_sigma = relative / std::fabs(m.slope);
+        std::snprintf(text, sizeof text,
+                      "the model's drag x%.3f (+- %.1f %% from the pitch calibration): its dead-reckoned speed %.3f "
+                      "m/s (ratio %.3f)",
+                      m.factor, 100.0 * f.speed_drag_sigma, m.flight.speed_m_s, m.ratio);
+      } else {
+        std::snprintf(text, sizeof text, "the model's drag not corrected: no factor in [%.1f, %.1f] brought it nearer",
+                      kSpeedDragMin, kSpeedDragMax);
+      }
+      f.notes.push_back(text);
+    }
+  }
+  if (std::isfinite(average) && average > 0.0) {
+    setup.average_speed_m_s = average;
+    setup.average_weight_s = 3600.0;
+  }
+}
+
+}  // namespace glider::forecast
