@@ -5,6 +5,7 @@
 // samples, the RK4 integration of the prescribed-pitch dynamics, the depth
 // over ground, and the start state fitted on the run's spin-up.
 // dynamic_flight_model.cpp decides which runs to fly and what to remember.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -143,6 +144,16 @@ class RunFlight {
   std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
                   double stop_above = std::numeric_limits<double>::infinity()) const;
 
+  // N flights of fly() side by side through the same stages (each its own
+  // start, z and stop_above; no speeds), each the same bits as flown alone:
+  // a stage is a chain of dependent operations (a division, a square root,
+  // the skin friction's series, atan2) that leaves the core mostly idle, and
+  // independent flights fill it. Returns each flight's last sample reached.
+  template <std::size_t N>
+  std::array<std::size_t, N> fly_together(const std::array<double, N>& v1, const std::array<double, N>& v3,
+                                          std::size_t last, const std::array<std::vector<double>*, N>& z,
+                                          const std::array<double, N>& stop_above) const;
+
   // The depth over ground at samples first..flown: the measured first
   // depth, the flight's relative depth `rel` and the water's vertical
   // velocity integrated with the same RK4 weights at the same stages.
@@ -155,6 +166,10 @@ class RunFlight {
 
  private:
   void guess_start(double& v1, double& v3) const;
+  template <std::size_t N>
+  std::array<std::size_t, N> fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3, std::size_t last,
+                                   const std::array<std::vector<double>*, N>& z, std::vector<double>* u,
+                                   const std::array<double, N>& stop_above) const;
   // The profile's bin at ground_depth's three stages a step of interval i
   // (RunStages::bins), or nullptr where they are not kept.
   const std::uint32_t* stage_bins(std::size_t i, int steps) const;
