@@ -18,6 +18,11 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// The start-state fit's step halvings, and how many of their trials fly
+// side by side (RunFlight::fit_start).
+constexpr std::size_t kHalvings = 4;
+constexpr std::size_t kTrialsTogether = 2;
+
 double lerp(double a, double b, double f) { return a + (b - a) * f; }
 
 using Impulse = model::PrescribedPitchDynamics::Impulse;  // not auto: Eigen expressions would dangle
@@ -239,21 +244,6 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
   return flown;
 }
 
-template <std::size_t N>
-std::array<std::size_t, N> RunFlight::fly_together(const std::array<double, N>& v1, const std::array<double, N>& v3,
-                                                   std::size_t last, const std::array<std::vector<double>*, N>& z,
-                                                   const std::array<double, N>& stop_above) const {
-  return fly_n<N>(v1, v3, last, z, nullptr, stop_above);
-}
-template std::array<std::size_t, 2> RunFlight::fly_together<2>(const std::array<double, 2>&,
-                                                               const std::array<double, 2>&, std::size_t,
-                                                               const std::array<std::vector<double>*, 2>&,
-                                                               const std::array<double, 2>&) const;
-template std::array<std::size_t, 3> RunFlight::fly_together<3>(const std::array<double, 3>&,
-                                                               const std::array<double, 3>&, std::size_t,
-                                                               const std::array<std::vector<double>*, 3>&,
-                                                               const std::array<double, 3>&) const;
-
 void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {
   const Track& t = t_;
   z.assign(rel.size(), kNaN);
@@ -349,11 +339,6 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
     for (std::size_t k = 1; k <= n; ++k) out[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first_ + k];
     return true;
   };
-  // A trial's flight stops once its misfit is clearly above the one to beat
-  // (bound: see below); the full flights (the guess, the Jacobian) fly on.
-  auto misfit = [&](double a, double b, Eigen::VectorXd& r, double stop_above) {
-    return residual(fly(a, b, fit_last, rel, nullptr, stop_above), rel, r);
-  };
   // Chord method: the depth over half a minute is nearly linear in the
   // start velocities, so the Jacobian at the guess serves every step
   // (each step then costs one flight of the spin-up, not three).
@@ -362,9 +347,12 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
   // The guess and its two finite differences, flown side by side (the same
   // bits as one after the other).
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::vector<double> rel_a, rel_b;
-  const std::array<std::size_t, 3> flown = fly_together<3>({v1, v1 + kDelta, v1}, {v3, v3, v3 + kDelta}, fit_last,
-                                                           {&rel, &rel_a, &rel_b}, {kInf, kInf, kInf});
+  std::vector<double> rel_a, rel_b, rel_c;
+  std::vector<double>* const trial_flights_all[] = {&rel, &rel_a, &rel_b, &rel_c};
+  std::array<std::vector<double>*, kTrialsTogether> trial_flights;
+  std::copy_n(std::begin(trial_flights_all), kTrialsTogether, trial_flights.begin());
+  const std::array<std::size_t, 3> flown = fly_n<3>({v1, v1 + kDelta, v1}, {v3, v3, v3 + kDelta}, fit_last,
+                                                    {&rel, &rel_a, &rel_b}, nullptr, {kInf, kInf, kInf});
   if (!(residual(flown[0], rel, r) && residual(flown[1], rel_a, r_a) && residual(flown[2], rel_b, r_b))) return;
   Eigen::MatrixXd jac(r.size(), 2);
   jac.col(0) = (r_a - r) / kDelta;
@@ -384,15 +372,31 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
     // (The trials not taken then fly about half the spin-up, comet-2016.)
     const double stop_above =
         r.squaredNorm() * (1.0 + 2.0 * static_cast<double>(n) * std::numeric_limits<double>::epsilon());
-    for (int halving = 0; halving < 4 && taken == 0.0; ++halving) {
-      const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
-      if (misfit(a, b, r_trial, stop_above) && r_trial.squaredNorm() <= r.squaredNorm()) {
-        v1 = a;
-        v3 = b;
-        r.swap(r_trial);
-        taken = step.norm() + 1e-300;
+    // The halvings' trials (the step, a half, a quarter, an eighth) flown
+    // kTrialsTogether side by side (each the same bits as alone): the first
+    // taken is taken, as when they were flown one after the other, and the
+    // ones after it beside it cost little (the core was idle).
+    for (std::size_t round = 0; round < kHalvings / kTrialsTogether && taken == 0.0; ++round) {
+      std::array<double, kTrialsTogether> a{}, b{};
+      std::array<Eigen::Vector2d, kTrialsTogether> steps;
+      for (std::size_t k = 0; k < kTrialsTogether; ++k) {
+        a[k] = std::clamp(v1 + step[0], -1.5, 1.5);
+        b[k] = std::clamp(v3 + step[1], -1.5, 1.5);
+        steps[k] = step;
+        step *= 0.5;
       }
-      step *= 0.5;
+      std::array<double, kTrialsTogether> bound;
+      bound.fill(stop_above);
+      const auto reached = fly_n<kTrialsTogether>(a, b, fit_last, trial_flights, nullptr, bound);
+      for (std::size_t k = 0; k < kTrialsTogether; ++k) {
+        if (residual(reached[k], *trial_flights[k], r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+          v1 = a[k];
+          v3 = b[k];
+          r.swap(r_trial);
+          taken = steps[k].norm() + 1e-300;
+          break;
+        }
+      }
     }
     if (taken < 1e-6) break;  // converged, or no step helps
   }

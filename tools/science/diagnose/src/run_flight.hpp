@@ -144,16 +144,6 @@ class RunFlight {
   std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
                   double stop_above = std::numeric_limits<double>::infinity()) const;
 
-  // N flights of fly() side by side through the same stages (each its own
-  // start, z and stop_above; no speeds), each the same bits as flown alone:
-  // a stage is a chain of dependent operations (a division, a square root,
-  // the skin friction's series, atan2) that leaves the core mostly idle, and
-  // independent flights fill it. Returns each flight's last sample reached.
-  template <std::size_t N>
-  std::array<std::size_t, N> fly_together(const std::array<double, N>& v1, const std::array<double, N>& v3,
-                                          std::size_t last, const std::array<std::vector<double>*, N>& z,
-                                          const std::array<double, N>& stop_above) const;
-
   // The depth over ground at samples first..flown: the measured first
   // depth, the flight's relative depth `rel` and the water's vertical
   // velocity integrated with the same RK4 weights at the same stages.
@@ -166,6 +156,12 @@ class RunFlight {
 
  private:
   void guess_start(double& v1, double& v3) const;
+  // N flights of fly() side by side through the same stages (each its own
+  // start, z and stop_above; speeds u of the first only), each the same bits
+  // as flown alone: a stage is a chain of dependent operations (a division,
+  // a square root, the skin friction's series, atan2) that leaves the core
+  // mostly idle, and independent flights fill it. Returns each flight's
+  // last sample reached.
   template <std::size_t N>
   std::array<std::size_t, N> fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3, std::size_t last,
                                    const std::array<std::vector<double>*, N>& z, std::vector<double>* u,
