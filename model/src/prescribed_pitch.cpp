@@ -59,6 +59,12 @@ double PrescribedPitchDynamics::net_buoyancy_kg(const PrescribedPitchInputs& in)
 
 PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p,
                                                                         const PrescribedPitchInputs& in) const {
+  return derivative(p, in, skin_friction_);
+}
+
+PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p,
+                                                                        const PrescribedPitchInputs& in,
+                                                                        const SkinFrictionFactor& friction) const {
   const PrescribedPitchInputs& k = stage_.in;
   // NaN (a log without temperature) matches NaN: the stage computes the same from either.
   auto eq = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
@@ -87,7 +93,7 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
   const double net_kg = stage_.net_kg;
   const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
   const FlowForces flow = flow_forces_at_speed(dynamics_.vehicle().hydro, slopes_, in.density_kg_m3, v[0], v[1], speed,
-                                               false, skin_friction_(speed));
+                                               false, friction(speed));
   const double g = dynamics_.environment().gravity_m_s2;
   const double sin_theta = pitch_.sin_theta, cos_theta = pitch_.cos_theta;
   const double f1 = -net_kg * g * sin_theta + flow.f1;

@@ -50,6 +50,18 @@ class PrescribedPitchDynamics {
     double depth_rate_m_s = 0.0;
   };
   Derivative derivative(const Impulse& p, const PrescribedPitchInputs& in) const;
+  // The same stage for a flight that keeps its own skin-friction anchors
+  // (`friction`, from skin_friction()): several flights flown side by side
+  // through the same stages, each the same bits as flown alone (their
+  // stages' independent chains of operations then overlap in the core).
+  Derivative derivative(const Impulse& p, const PrescribedPitchInputs& in, const SkinFrictionFactor& friction) const;
+  // A skin-friction state for one flight, without anchors (as start_flight()
+  // leaves this object's own).
+  SkinFrictionFactor skin_friction() const {
+    SkinFrictionFactor fresh = skin_friction_;
+    fresh.restart();
+    return fresh;
+  }
 
   // Body-frame velocities relative to the water (v1, v3) from the impulses.
   Eigen::Vector2d velocities(const Impulse& p, const PrescribedPitchInputs& in) const;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Dense>
 
@@ -16,6 +17,11 @@ namespace glider::diagnose::detail {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The start-state fit's step halvings, and how many of their trials fly
+// side by side (RunFlight::fit_start).
+constexpr std::size_t kHalvings = 4;
+constexpr std::size_t kTrialsTogether = 2;
 
 double lerp(double a, double b, double f) { return a + (b - a) * f; }
 
@@ -141,23 +147,43 @@ model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, doub
 
 std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
                            double stop_above) const {
-  const bool bounded = stop_above < std::numeric_limits<double>::infinity();
-  double misfit = 0.0;  // the running sum of squares, when bounded
+  return fly_n<1>({v1}, {v3}, last, {&z}, u, {stop_above})[0];
+}
+
+template <std::size_t N>
+std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3,
+                                            std::size_t last, const std::array<std::vector<double>*, N>& z,
+                                            std::vector<double>* u, const std::array<double, N>& stop_above) const {
   const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
-  dynamics.start_flight();  // a function of (v1, v3) and the run alone, whatever flew before
-  Impulse p = dynamics.impulse(v1, v3, in0_);
-  double lagged = in0_.pumped_volume_m3;
-  z.assign(last - first_ + 1, kNaN);
+  // Each flight's own skin-friction anchors, fresh: a function of its (v1, v3) and the run alone, whatever flew
+  // before or beside it.
+  const auto friction = [&]<std::size_t... K>(std::index_sequence<K...>) {
+    return std::array<model::SkinFrictionFactor, N>{((void)K, dynamics.skin_friction())...};
+  }
+  (std::make_index_sequence<N>{});
+  std::array<Impulse, N> p;
+  std::array<double, N> depth{}, misfit{};  // misfit: the running sum of squares, when bounded
+  std::array<bool, N> flying{}, bounded{};
+  std::array<std::size_t, N> flown{};
+  for (std::size_t k = 0; k < N; ++k) {
+    p[k] = dynamics.impulse(v1[k], v3[k], in0_);
+    z[k]->assign(last - first_ + 1, kNaN);
+    (*z[k])[0] = 0.0;
+    flying[k] = true;
+    bounded[k] = stop_above[k] < std::numeric_limits<double>::infinity();
+    flown[k] = first_;
+  }
   if (u != nullptr) u->assign(last - first_ + 1, kNaN);
-  z[0] = 0.0;
-  if (u != nullptr) (*u)[0] = dynamics.velocities(p, in0_).norm();
-  std::size_t flown = first_;
-  std::size_t stage = 0;  // next of stages_.stages
+  if (u != nullptr) (*u)[0] = dynamics.velocities(p[0], in0_).norm();
+  double lagged = in0_.pumped_volume_m3;
+  std::size_t stage = 0;                         // next of stages_.stages
+  const Derivative kIdle{Impulse::Zero(), 0.0};  // a flight that stopped
   for (std::size_t i = first_; i < last; ++i) {
+    if (std::none_of(flying.begin(), flying.end(), [](bool f) { return f; })) break;
     const double dt = t_.time_s[i + 1] - t_.time_s[i];
     const int steps = rk4_steps(dt, c_.max_step_s);
     const double h = dt / steps;
-    double depth = z[i - first_];
+    for (std::size_t k = 0; k < N; ++k) depth[k] = (*z[k])[i - first_];
     // The intervals are cached in order: the first not cached is the next to cache.
     const bool cached = i - first_ < stages_.intervals;
     for (int s = 0; s < steps; ++s) {
@@ -172,29 +198,48 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
       const model::PrescribedPitchInputs& a = stages[0];
       const model::PrescribedPitchInputs& b = stages[1];
       const model::PrescribedPitchInputs& c = stages[2];
-      const Derivative d1 = dynamics.derivative(p, a);
-      const Impulse p2 = p + 0.5 * h * d1.p_dot;
-      const Derivative d2 = dynamics.derivative(p2, b);
-      const Impulse p3 = p + 0.5 * h * d2.p_dot;
-      const Derivative d3 = dynamics.derivative(p3, b);
-      const Impulse p4 = p + h * d3.p_dot;
-      const Derivative d4 = dynamics.derivative(p4, c);
-      depth += h / 6.0 * (d1.depth_rate_m_s + 2.0 * d2.depth_rate_m_s + 2.0 * d3.depth_rate_m_s + d4.depth_rate_m_s);
-      p += h / 6.0 * (d1.p_dot + 2.0 * d2.p_dot + 2.0 * d3.p_dot + d4.p_dot);
+      // RK4, stage by stage across the flights (the masses of a stage's
+      // inputs are computed once for them all: PrescribedPitchDynamics
+      // keeps the last inputs').
+      std::array<Derivative, N> d1, d2, d3, d4;
+      for (std::size_t k = 0; k < N; ++k) d1[k] = flying[k] ? dynamics.derivative(p[k], a, friction[k]) : kIdle;
+      for (std::size_t k = 0; k < N; ++k)
+        d2[k] = flying[k] ? dynamics.derivative(Impulse(p[k] + 0.5 * h * d1[k].p_dot), b, friction[k]) : kIdle;
+      for (std::size_t k = 0; k < N; ++k)
+        d3[k] = flying[k] ? dynamics.derivative(Impulse(p[k] + 0.5 * h * d2[k].p_dot), b, friction[k]) : kIdle;
+      for (std::size_t k = 0; k < N; ++k)
+        d4[k] = flying[k] ? dynamics.derivative(Impulse(p[k] + h * d3[k].p_dot), c, friction[k]) : kIdle;
+      for (std::size_t k = 0; k < N; ++k) {
+        if (!flying[k]) continue;
+        depth[k] +=
+            h / 6.0 *
+            (d1[k].depth_rate_m_s + 2.0 * d2[k].depth_rate_m_s + 2.0 * d3[k].depth_rate_m_s + d4[k].depth_rate_m_s);
+        p[k] += h / 6.0 * (d1[k].p_dot + 2.0 * d2[k].p_dot + 2.0 * d3[k].p_dot + d4[k].p_dot);
+      }
       lagged = c.pumped_volume_m3;
     }
     if (!cached) ++stages_.intervals;
-    if (!p.allFinite() || !std::isfinite(depth)) break;  // the rest of the run stays NaN: unflyable
-    z[i + 1 - first_] = depth;
-    if (bounded && i - first_ < stages_.water.size()) {
-      // The misfit as fit_start's residual has it (ground_depth's sum, the same expression).
-      const double r = t_.depth_m[first_] + depth + stages_.water[i - first_] - t_.depth_m[i + 1];
-      misfit += r * r;
-      if (misfit > stop_above) return i + 1;  // short of `last`: the caller's "worse"
+    for (std::size_t k = 0; k < N; ++k) {
+      if (!flying[k]) continue;
+      if (!p[k].allFinite() || !std::isfinite(depth[k])) {  // the rest of the run stays NaN: unflyable
+        flying[k] = false;
+        continue;
+      }
+      (*z[k])[i + 1 - first_] = depth[k];
+      if (bounded[k] && i - first_ < stages_.water.size()) {
+        // The misfit as fit_start's residual has it (ground_depth's sum, the same expression).
+        const double r = t_.depth_m[first_] + depth[k] + stages_.water[i - first_] - t_.depth_m[i + 1];
+        misfit[k] += r * r;
+        if (misfit[k] > stop_above[k]) {  // short of `last`: the caller's "worse"
+          flown[k] = i + 1;
+          flying[k] = false;
+          continue;
+        }
+      }
+      flown[k] = i + 1;
     }
-    if (u != nullptr)
-      (*u)[i + 1 - first_] = dynamics.velocities(p, inputs(i, 2 * steps, steps, lagged, 2 * steps)).norm();
-    flown = i + 1;
+    if (u != nullptr && flying[0])
+      (*u)[i + 1 - first_] = dynamics.velocities(p[0], inputs(i, 2 * steps, steps, lagged, 2 * steps)).norm();
   }
   return flown;
 }
@@ -283,18 +328,15 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
   const std::size_t fit_last = spin_up_last_;
   if (fit_last < first_ + 3) return;
   const std::size_t n = fit_last - first_;
-  // A trial's flight stops once its misfit is clearly above the one to beat
-  // (bound: see below); the full flights (the guess, the Jacobian) fly on.
-  auto misfit = [&](double a, double b, Eigen::VectorXd& r,
-                    double stop_above = std::numeric_limits<double>::infinity()) {
-    if (fly(a, b, fit_last, rel, nullptr, stop_above) != fit_last) return false;
-    // Not through the depth lag: the start state is a nuisance fitted on
-    // a part never scored, and without the lag it stays the same for
-    // every lag, so a depth_lag fit reuses the flight (only the depth
-    // over ground is read late again).
-    ground_depth(fit_last, rel, zf);
-    r.resize(static_cast<Eigen::Index>(n));
-    for (std::size_t k = 1; k <= n; ++k) r[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first_ + k];
+  // The residual of a flight that reached fit_last. Not through the depth
+  // lag: the start state is a nuisance fitted on a part never scored, and
+  // without the lag it stays the same for every lag, so a depth_lag fit
+  // reuses the flight (only the depth over ground is read late again).
+  auto residual = [&](std::size_t reached, const std::vector<double>& flight, Eigen::VectorXd& out) {
+    if (reached != fit_last) return false;
+    ground_depth(fit_last, flight, zf);
+    out.resize(static_cast<Eigen::Index>(n));
+    for (std::size_t k = 1; k <= n; ++k) out[static_cast<Eigen::Index>(k - 1)] = zf[k] - t.depth_m[first_ + k];
     return true;
   };
   // Chord method: the depth over half a minute is nearly linear in the
@@ -302,7 +344,16 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
   // (each step then costs one flight of the spin-up, not three).
   Eigen::VectorXd r, r_trial, r_a, r_b;
   constexpr double kDelta = 1e-4;  // m/s, finite-difference step
-  if (!(misfit(v1, v3, r) && misfit(v1 + kDelta, v3, r_a) && misfit(v1, v3 + kDelta, r_b))) return;
+  // The guess and its two finite differences, flown side by side (the same
+  // bits as one after the other).
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<double> rel_a, rel_b, rel_c;
+  std::vector<double>* const trial_flights_all[] = {&rel, &rel_a, &rel_b, &rel_c};
+  std::array<std::vector<double>*, kTrialsTogether> trial_flights;
+  std::copy_n(std::begin(trial_flights_all), kTrialsTogether, trial_flights.begin());
+  const std::array<std::size_t, 3> flown = fly_n<3>({v1, v1 + kDelta, v1}, {v3, v3, v3 + kDelta}, fit_last,
+                                                    {&rel, &rel_a, &rel_b}, nullptr, {kInf, kInf, kInf});
+  if (!(residual(flown[0], rel, r) && residual(flown[1], rel_a, r_a) && residual(flown[2], rel_b, r_b))) return;
   Eigen::MatrixXd jac(r.size(), 2);
   jac.col(0) = (r_a - r) / kDelta;
   jac.col(1) = (r_b - r) / kDelta;
@@ -321,15 +372,31 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
     // (The trials not taken then fly about half the spin-up, comet-2016.)
     const double stop_above =
         r.squaredNorm() * (1.0 + 2.0 * static_cast<double>(n) * std::numeric_limits<double>::epsilon());
-    for (int halving = 0; halving < 4 && taken == 0.0; ++halving) {
-      const double a = std::clamp(v1 + step[0], -1.5, 1.5), b = std::clamp(v3 + step[1], -1.5, 1.5);
-      if (misfit(a, b, r_trial, stop_above) && r_trial.squaredNorm() <= r.squaredNorm()) {
-        v1 = a;
-        v3 = b;
-        r.swap(r_trial);
-        taken = step.norm() + 1e-300;
+    // The halvings' trials (the step, a half, a quarter, an eighth) flown
+    // kTrialsTogether side by side (each the same bits as alone): the first
+    // taken is taken, as when they were flown one after the other, and the
+    // ones after it beside it cost little (the core was idle).
+    for (std::size_t round = 0; round < kHalvings / kTrialsTogether && taken == 0.0; ++round) {
+      std::array<double, kTrialsTogether> a{}, b{};
+      std::array<Eigen::Vector2d, kTrialsTogether> steps;
+      for (std::size_t k = 0; k < kTrialsTogether; ++k) {
+        a[k] = std::clamp(v1 + step[0], -1.5, 1.5);
+        b[k] = std::clamp(v3 + step[1], -1.5, 1.5);
+        steps[k] = step;
+        step *= 0.5;
       }
-      step *= 0.5;
+      std::array<double, kTrialsTogether> bound;
+      bound.fill(stop_above);
+      const auto reached = fly_n<kTrialsTogether>(a, b, fit_last, trial_flights, nullptr, bound);
+      for (std::size_t k = 0; k < kTrialsTogether; ++k) {
+        if (residual(reached[k], *trial_flights[k], r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+          v1 = a[k];
+          v3 = b[k];
+          r.swap(r_trial);
+          taken = steps[k].norm() + 1e-300;
+          break;
+        }
+      }
     }
     if (taken < 1e-6) break;  // converged, or no step helps
   }

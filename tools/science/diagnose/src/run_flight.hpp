@@ -5,6 +5,7 @@
 // samples, the RK4 integration of the prescribed-pitch dynamics, the depth
 // over ground, and the start state fitted on the run's spin-up.
 // dynamic_flight_model.cpp decides which runs to fly and what to remember.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -155,6 +156,16 @@ class RunFlight {
 
  private:
   void guess_start(double& v1, double& v3) const;
+  // N flights of fly() side by side through the same stages (each its own
+  // start, z and stop_above; speeds u of the first only), each the same bits
+  // as flown alone: a stage is a chain of dependent operations (a division,
+  // a square root, the skin friction's series, atan2) that leaves the core
+  // mostly idle, and independent flights fill it. Returns each flight's
+  // last sample reached.
+  template <std::size_t N>
+  std::array<std::size_t, N> fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3, std::size_t last,
+                                   const std::array<std::vector<double>*, N>& z, std::vector<double>* u,
+                                   const std::array<double, N>& stop_above) const;
   // The profile's bin at ground_depth's three stages a step of interval i
   // (RunStages::bins), or nullptr where they are not kept.
   const std::uint32_t* stage_bins(std::size_t i, int steps) const;
