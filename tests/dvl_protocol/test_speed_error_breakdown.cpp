@@ -107,6 +107,13 @@ TEST(SpeedErrorBreakdown, YoMeansRemovedLeavesTheWithinYoStructure) {
   CHECK(row(rows, "yo means removed").rms_m_s[0] > 0.01);  // model 0's error is within its yos
 }
 
+TEST(SpeedErrorBreakdown, ImpliedAngleOfAttack) {
+  DOUBLES_EQUAL(3.0, glider::science::implied_alpha_deg(0.3, -0.3 * std::sin(-kPitch + kAlpha), -kPitch), 1e-9);
+  CHECK(std::isnan(glider::science::implied_alpha_deg(0.1, 0.2, kPitch)));  // no path climbs faster than it flies
+  CHECK(std::isnan(glider::science::implied_alpha_deg(0.0, 0.0, kPitch)));
+  CHECK(std::isnan(glider::science::implied_alpha_deg(std::nan(""), 0.1, kPitch)));
+}
+
 TEST(SpeedErrorBreakdown, OnlyUsedFiniteSamplesCount) {
   auto samples = two_dives();
   std::vector<bool> use(samples.size(), true);

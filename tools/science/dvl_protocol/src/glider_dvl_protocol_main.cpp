@@ -323,6 +323,26 @@ int main(int argc, char** argv) {
                   samples_text, 100.0 * b.rms_m_s[0], 100.0 * b.mean_m_s[0], b.share[0], 100.0 * b.rms_m_s[1],
                   100.0 * b.mean_m_s[1], b.share[1], b.alpha_measured_deg, b.alpha_model_deg[0], b.alpha_model_deg[1]);
     }
+    // The part no flight model can take: samples whose DVL speed implies no
+    // angle of attack (and, with every yo, the excluded yos). A model exact
+    // everywhere else and as wrong as glider-diagnose there scores this.
+    auto bound = [&](const std::vector<bool>& use) {
+      double kept = 0.0, reference = 0.0;
+      for (std::size_t i = 0; i < scored.size(); ++i) {
+        if (!use[i]) continue;
+        const auto& s = scored[i];
+        const double e = s.model_m_s[0] - s.measured_m_s, g = s.model_m_s[1] - s.measured_m_s;
+        if (!std::isfinite(e + g)) continue;
+        reference += g * g;
+        const double alpha = glider::science::implied_alpha_deg(s.measured_m_s, s.depth_rate_measured_m_s, s.pitch_rad);
+        if (excluded.count(s.yo) > 0 || !(alpha >= glider::science::kNoLiftAlphaDeg)) kept += e * e;
+      }
+      return std::sqrt(kept / reference);
+    };
+    std::printf(
+        "\nA model exact wherever the DVL implies an angle of attack >= %.0f deg (outside the excluded yos), as wrong "
+        "as glider-diagnose elsewhere: %.3f of gliderflight dynamic every yo, %.3f without the excluded yos\n",
+        glider::science::kNoLiftAlphaDeg, bound(held), bound(held_kept));
     return static_cast<int>(glider::cli::kOk);
   });
 }

@@ -13,15 +13,6 @@ namespace {
 
 constexpr double kDegPerRad = 57.29577951308232;
 
-// The angle of attack a speed and a depth rate imply along a pitch: the
-// glide path's angle less the pitch's, both as magnitudes.
-double implied_alpha_deg(double speed_m_s, double depth_rate_m_s, double pitch_rad) {
-  if (!(speed_m_s > 0.0)) return std::nan("");
-  const double s = std::abs(depth_rate_m_s) / speed_m_s;
-  if (!(s <= 1.0)) return std::nan("");
-  return kDegPerRad * (std::asin(s) - std::abs(pitch_rad));
-}
-
 bool usable(const ScoredSpeedSample& s) {
   return std::isfinite(s.time_s + s.depth_m + s.measured_m_s + s.model_m_s[0] + s.model_m_s[1] + s.pitch_rad +
                        s.depth_rate_measured_m_s + s.depth_rate_model_m_s[0] + s.depth_rate_model_m_s[1]);
@@ -84,6 +75,13 @@ class RowBuilder {
 };
 
 }  // namespace
+
+double implied_alpha_deg(double speed_m_s, double depth_rate_m_s, double pitch_rad) {
+  if (!(speed_m_s > 0.0)) return std::nan("");
+  const double s = std::abs(depth_rate_m_s) / speed_m_s;
+  if (!(s <= 1.0)) return std::nan("");
+  return kDegPerRad * (std::asin(s) - std::abs(pitch_rad));
+}
 
 std::vector<BreakdownRow> speed_error_breakdown(const std::vector<ScoredSpeedSample>& samples,
                                                 const std::vector<bool>& use, const BreakdownOptions& options) {
@@ -169,7 +167,7 @@ std::vector<BreakdownRow> speed_error_breakdown(const std::vector<ScoredSpeedSam
     return implied_alpha_deg(s.measured_m_s, s.depth_rate_measured_m_s, s.pitch_rad);
   };
   const std::array<std::pair<double, double>, 5> alpha_bins{
-      {{-90.0, 1.0}, {1.0, 2.0}, {2.0, 3.0}, {3.0, 4.0}, {4.0, 90.0}}};
+      {{-90.0, kNoLiftAlphaDeg}, {kNoLiftAlphaDeg, 2.0}, {2.0, 3.0}, {3.0, 4.0}, {4.0, 90.0}}};
   const std::array<const char*, 5> alpha_names{{"measured alpha < 1 deg", "measured alpha 1-2 deg",
                                                 "measured alpha 2-3 deg", "measured alpha 3-4 deg",
                                                 "measured alpha >= 4 deg"}};

@@ -45,6 +45,15 @@ struct BreakdownOptions {
   double depth_bin_m = 10.0;
 };
 
+// The angle of attack (deg) a speed through water and a depth rate imply
+// along a pitch: the glide path's angle less the pitch's, as magnitudes; NaN
+// where no path has them (speed <= 0, |w| > U).
+double implied_alpha_deg(double speed_m_s, double depth_rate_m_s, double pitch_rad);
+
+// Below this implied angle of attack (deg) a measured speed is one no
+// flight model with lift can fly at the measured depth rate and pitch.
+constexpr double kNoLiftAlphaDeg = 1.0;
+
 // The rows, in groups: "all", "yo means removed" (the within-yo structure),
 // phase, depth, sign, size (|e| < 1, 1-3, > 3 cm/s), angle of attack
 // implied by the measurement (< 1, 1-2, 2-3, 3-4, >= 4 deg). Only samples
