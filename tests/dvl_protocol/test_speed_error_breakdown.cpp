@@ -87,8 +87,8 @@ TEST(SpeedErrorBreakdown, PartsOfAKnownError) {
   UNSIGNED_LONGS_EQUAL(60, slow.samples[0]);
   UNSIGNED_LONGS_EQUAL(600, slow.samples[1]);  // an error of 0 counts as slow
   DOUBLES_EQUAL(60 * 25e-4 / total_sq, slow.share[0], 1e-12);
-  UNSIGNED_LONGS_EQUAL(60, row(rows, "size: |error| > 3 cm/s").samples[0]);
-  UNSIGNED_LONGS_EQUAL(540, row(rows, "size: |error| 1-3 cm/s").samples[0]);
+  UNSIGNED_LONGS_EQUAL(60, row(rows, "size: error beyond 3 cm/s").samples[0]);
+  UNSIGNED_LONGS_EQUAL(540, row(rows, "size: error 1-3 cm/s either way").samples[0]);
   // Depth bins of 10 m: 10-20 m holds 12.0-19.9 m (80 samples a dive).
   UNSIGNED_LONGS_EQUAL(160, row(rows, "depth 10-20 m").samples[0]);
   // The angle of attack: 3 deg measured and for both models (each flies along its own path).

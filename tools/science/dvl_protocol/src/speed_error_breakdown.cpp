@@ -157,10 +157,10 @@ std::vector<BreakdownRow> speed_error_breakdown(const std::vector<ScoredSpeedSam
   auto error = [&](std::size_t i, int k) { return samples[i].model_m_s[k] - samples[i].measured_m_s; };
   b.add(rows, "sign: model fast", [&](std::size_t i, int k) { return error(i, k) > 0.0; });
   b.add(rows, "sign: model slow", [&](std::size_t i, int k) { return error(i, k) <= 0.0; });
-  b.add(rows, "size: |error| < 1 cm/s", [&](std::size_t i, int k) { return std::abs(error(i, k)) < 0.01; });
-  b.add(rows, "size: |error| 1-3 cm/s",
+  b.add(rows, "size: error within 1 cm/s", [&](std::size_t i, int k) { return std::abs(error(i, k)) < 0.01; });
+  b.add(rows, "size: error 1-3 cm/s either way",
         [&](std::size_t i, int k) { return std::abs(error(i, k)) >= 0.01 && std::abs(error(i, k)) <= 0.03; });
-  b.add(rows, "size: |error| > 3 cm/s", [&](std::size_t i, int k) { return std::abs(error(i, k)) > 0.03; });
+  b.add(rows, "size: error beyond 3 cm/s", [&](std::size_t i, int k) { return std::abs(error(i, k)) > 0.03; });
 
   auto measured_alpha = [&](std::size_t i) {
     const ScoredSpeedSample& s = samples[i];

@@ -55,7 +55,7 @@ double implied_alpha_deg(double speed_m_s, double depth_rate_m_s, double pitch_r
 constexpr double kNoLiftAlphaDeg = 1.0;
 
 // The rows, in groups: "all", "yo means removed" (the within-yo structure),
-// phase, depth, sign, size (|e| < 1, 1-3, > 3 cm/s), angle of attack
+// phase, depth, sign, size (error within 1, 1-3, beyond 3 cm/s), angle of attack
 // implied by the measurement (< 1, 1-2, 2-3, 3-4, >= 4 deg). Only samples
 // with use[i] true and every value finite count; groups of one model's own
 // split (sign, size) count that model's samples. A part with no sample is
