@@ -30,6 +30,7 @@
 #include "glider/diagnose/tool_inputs.hpp"
 #include "glider/model/vehicle_file.hpp"
 #include "glider/science/gliderflight_model.hpp"
+#include "glider/science/speed_error_breakdown.hpp"
 #include "glider/slocum/log_loader.hpp"
 
 namespace {
@@ -94,7 +95,8 @@ int main(int argc, char** argv) {
   std::string samples_path;
   app.add_option("--samples", samples_path,
                  "write every scored sample here: time, depth, yo, measured, glider-diagnose, gliderflight dynamic, "
-                 "steady (m/s)");
+                 "steady (m/s), pitch (rad), depth rate measured, glider-diagnose's, gliderflight dynamic's (m/s, + "
+                 "down)");
   app.add_option("--fit", fit_only, "glider-diagnose fits exactly these effects (default: its free selection)")
       ->delimiter(',');
   // The pitch calibration (glider-diagnose's): applied to the log, so both models fly the same pitch.
@@ -110,6 +112,10 @@ int main(int argc, char** argv) {
       tool.add_number("--drag-reynolds-exponent", drag_reynolds_exponent, {0.0, 0.5, ""},
                       "glider-diagnose's skin-friction Reynolds exponent (as glider-diagnose: the vehicle file's if it "
                       "states one, else the prior 0.1; 0: off)");
+  bool gliderflight_epsilon = false;
+  app.add_flag("--gliderflight-epsilon", gliderflight_epsilon,
+               "the protocol's gliderflight fits also fit its hull compressibility epsilon (as gliderflight's "
+               "calibrate can; for comparisons where glider-diagnose fits hull_compressibility)");
   double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
   tool.add_number("--score-block", score_block_s, {0.0, 600.0, "s"},
                   "glider-diagnose's selection score: held-out residuals averaged over blocks of a glide this long "
@@ -179,17 +185,23 @@ int main(int argc, char** argv) {
     }
 
     // 2. The protocol.
-    std::vector<double> gf_speed[2];
+    std::vector<double> gf_speed[2], gf_dynamic_w;
     for (int k = 0; k < 2; ++k) {
       const auto kind = k == 0 ? GliderflightKind::kDynamic : GliderflightKind::kSteady;
-      fitted[k] = glider::science::gliderflight_calibrate(kind, {}, in, fit_even);
-      gf_speed[k] = glider::science::gliderflight_solve(kind, fitted[k], in).speed_m_s;
+      fitted[k] = glider::science::gliderflight_calibrate(kind, {}, in, fit_even, nullptr,
+                                                          gliderflight_epsilon
+                                                              ? glider::science::GliderflightFit::kCd0MassEpsilon
+                                                              : glider::science::GliderflightFit::kCd0Mass);
+      const auto solved = glider::science::gliderflight_solve(kind, fitted[k], in);
+      gf_speed[k] = solved.speed_m_s;
+      if (k == 0) gf_dynamic_w = solved.w_m_s;
     }
     std::map<double, std::size_t> record_at;
     for (std::size_t i = 0; i < n; ++i) record_at[in.time_s[i]] = i;
     // The scored samples: the diagnosis's, with a DVL speed and a gliderflight record.
     std::vector<double> measured, ours, gf[2];
     std::vector<int> yo;
+    std::vector<glider::science::ScoredSpeedSample> scored;
     for (std::size_t i = 0; i < pred.time_s.size(); ++i) {
       const auto r = record_at.find(pred.time_s[i]);
       const auto y = yo_at.find(pred.time_s[i]);
@@ -199,21 +211,34 @@ int main(int argc, char** argv) {
       gf[0].push_back(gf_speed[0][r->second]);
       gf[1].push_back(gf_speed[1][r->second]);
       yo.push_back(y->second);
+      glider::science::ScoredSpeedSample s;
+      s.time_s = pred.time_s[i];
+      s.depth_m = pred.depth_m[i];
+      s.yo = y->second;
+      s.measured_m_s = measured.back();
+      s.model_m_s = {ours.back(), gf[0].back()};
+      s.pitch_rad = in.pitch_rad[r->second];
+      s.depth_rate_measured_m_s = pred.measured_m_s[i];
+      s.depth_rate_model_m_s = {pred.extended_m_s[i], -gf_dynamic_w[r->second]};
+      scored.push_back(s);
     }
     if (!samples_path.empty()) {
       std::FILE* f = std::fopen(samples_path.c_str(), "w");
       if (f == nullptr) throw std::runtime_error("cannot write " + samples_path);
       std::fprintf(f,
                    "# time_s depth_m yo measured_m_s glider_diagnose_m_s gliderflight_dynamic_m_s "
-                   "gliderflight_steady_m_s\n");
+                   "gliderflight_steady_m_s pitch_rad depth_rate_measured_m_s depth_rate_glider_diagnose_m_s "
+                   "depth_rate_gliderflight_dynamic_m_s\n");
       std::size_t k = 0;
       for (std::size_t i = 0; i < pred.time_s.size(); ++i) {
         if (record_at.count(pred.time_s[i]) == 0 || yo_at.count(pred.time_s[i]) == 0 ||
             !std::isfinite(pred.speed_measured_m_s[i])) {
           continue;
         }
-        std::fprintf(f, "%.3f %.3f %d %.5f %.5f %.5f %.5f\n", pred.time_s[i], pred.depth_m[i], yo[k], measured[k],
-                     ours[k], gf[0][k], gf[1][k]);
+        const auto& s = scored[k];
+        std::fprintf(f, "%.3f %.3f %d %.5f %.5f %.5f %.5f %.5f %.5f %.5f %.5f\n", s.time_s, s.depth_m, s.yo,
+                     s.measured_m_s, s.model_m_s[0], s.model_m_s[1], gf[1][k], s.pitch_rad, s.depth_rate_measured_m_s,
+                     s.depth_rate_model_m_s[0], s.depth_rate_model_m_s[1]);
         ++k;
       }
       if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + samples_path);
@@ -263,11 +288,16 @@ int main(int argc, char** argv) {
             (options.fit_only.empty() ? "free selection: " : "fitted: ") + findings + ")",
         ours);
     char name[160];
-    std::snprintf(name, sizeof name, "gliderflight dynamic (C_D0 %.4f, m_g %.3f kg; 10-35 dbar)", fitted[0].cd0,
-                  fitted[0].mass_kg);
+    auto epsilon_text = [&](const GliderflightParameters& p) {
+      char text[48] = "";
+      if (gliderflight_epsilon) std::snprintf(text, sizeof text, ", eps %.3g /Pa", p.epsilon_per_pa);
+      return std::string(text);
+    };
+    std::snprintf(name, sizeof name, "gliderflight dynamic (C_D0 %.4f, m_g %.3f kg%s; 10-35 dbar)", fitted[0].cd0,
+                  fitted[0].mass_kg, epsilon_text(fitted[0]).c_str());
     row(name, gf[0]);
-    std::snprintf(name, sizeof name, "gliderflight steady (C_D0 %.4f, m_g %.3f kg; 10-35 dbar)", fitted[1].cd0,
-                  fitted[1].mass_kg);
+    std::snprintf(name, sizeof name, "gliderflight steady (C_D0 %.4f, m_g %.3f kg%s; 10-35 dbar)", fitted[1].cd0,
+                  fitted[1].mass_kg, epsilon_text(fitted[1]).c_str());
     row(name, gf[1]);
     const double r_every = rms(ours, measured, held) / rms(gf[0], measured, held);
     const double r_kept = rms(ours, measured, held_kept) / rms(gf[0], measured, held_kept);
@@ -275,6 +305,44 @@ int main(int argc, char** argv) {
         "\nheld-out ratio glider-diagnose / gliderflight dynamic: %.3f every yo, %.3f without the excluded yos "
         "(goal <= 0.8)\n",
         r_every, r_kept);
+    // Where the held-out error comes from, both models on the same samples.
+    std::printf(
+        "\nWhere the held-out error comes from (odd yos without the excluded; error = model - measured, cm/s;\n"
+        "share = of the model's squared error; alpha = mean angle of attack, deg: implied by the measured speed and\n"
+        "depth rate, asin(w/U) - |pitch|, and each model's own):\n\n"
+        "| part | samples | glider-diagnose RMS / mean / share | gliderflight dynamic RMS / mean / share | alpha "
+        "measured / glider-diagnose / gliderflight |\n|---|---|---|---|---|\n");
+    for (const auto& b : glider::science::speed_error_breakdown(scored, held_kept)) {
+      char samples_text[48];
+      if (b.samples[0] == b.samples[1]) {
+        std::snprintf(samples_text, sizeof samples_text, "%zu", b.samples[0]);
+      } else {
+        std::snprintf(samples_text, sizeof samples_text, "%zu / %zu", b.samples[0], b.samples[1]);
+      }
+      std::printf("| %s | %s | %.2f / %+.2f / %.2f | %.2f / %+.2f / %.2f | %.1f / %.1f / %.1f |\n", b.part.c_str(),
+                  samples_text, 100.0 * b.rms_m_s[0], 100.0 * b.mean_m_s[0], b.share[0], 100.0 * b.rms_m_s[1],
+                  100.0 * b.mean_m_s[1], b.share[1], b.alpha_measured_deg, b.alpha_model_deg[0], b.alpha_model_deg[1]);
+    }
+    // The part no flight model can take: samples whose DVL speed implies no
+    // angle of attack (and, with every yo, the excluded yos). A model exact
+    // everywhere else and as wrong as glider-diagnose there scores this.
+    auto bound = [&](const std::vector<bool>& use) {
+      double kept = 0.0, reference = 0.0;
+      for (std::size_t i = 0; i < scored.size(); ++i) {
+        if (!use[i]) continue;
+        const auto& s = scored[i];
+        const double e = s.model_m_s[0] - s.measured_m_s, g = s.model_m_s[1] - s.measured_m_s;
+        if (!std::isfinite(e + g)) continue;
+        reference += g * g;
+        const double alpha = glider::science::implied_alpha_deg(s.measured_m_s, s.depth_rate_measured_m_s, s.pitch_rad);
+        if (excluded.count(s.yo) > 0 || !(alpha >= glider::science::kNoLiftAlphaDeg)) kept += e * e;
+      }
+      return std::sqrt(kept / reference);
+    };
+    std::printf(
+        "\nA model exact wherever the DVL implies an angle of attack >= %.0f deg (outside the excluded yos), as wrong "
+        "as glider-diagnose elsewhere: %.3f of gliderflight dynamic every yo, %.3f without the excluded yos\n",
+        glider::science::kNoLiftAlphaDeg, bound(held), bound(held_kept));
     return static_cast<int>(glider::cli::kOk);
   });
 }

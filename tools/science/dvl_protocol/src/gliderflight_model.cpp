@@ -208,14 +208,23 @@ GliderflightResult gliderflight_solve(GliderflightKind kind, const GliderflightP
 
 GliderflightParameters gliderflight_calibrate(GliderflightKind kind, GliderflightParameters p,
                                               const GliderflightInput& in, const std::vector<bool>& fit,
-                                              double* rms_m_s) {
+                                              double* rms_m_s, GliderflightFit what) {
   check(in);
   if (fit.size() != in.time_s.size()) throw std::invalid_argument("gliderflight calibration: mask length");
   const std::vector<double> dhdt = gliderflight_depth_rate(in, p.rho0_kg_m3);
-  auto cost = [&](const std::array<double, 2>& x) {
+  // The fitted parameters, in order, and the scales of the stopping rule.
+  const std::size_t dims = what == GliderflightFit::kCd0MassEpsilon ? 3 : 2;
+  using Point = std::vector<double>;
+  const Point scale{0.15, 70.0, 5e-10};
+  auto with = [&](const Point& x) {
     GliderflightParameters q = p;
     q.cd0 = x[0];
     q.mass_kg = x[1];
+    if (dims == 3) q.epsilon_per_pa = x[2];
+    return q;
+  };
+  auto cost = [&](const Point& x) {
+    const GliderflightParameters q = with(x);
     if (!(q.cd0 > 0.0)) return std::numeric_limits<double>::infinity();
     const GliderflightResult r = kind == GliderflightKind::kSteady ? solve_steady(q, in) : solve_dynamic(q, in);
     double sum = 0.0;
@@ -231,54 +240,74 @@ GliderflightParameters gliderflight_calibrate(GliderflightKind kind, Gliderfligh
   };
   // Nelder-Mead (reflection 1, expansion 2, contraction 1/2, shrink 1/2),
   // the start simplex as scipy's fmin: each coordinate moved by 5 %.
-  std::array<std::array<double, 2>, 3> x{{{p.cd0, p.mass_kg}, {1.05 * p.cd0, p.mass_kg}, {p.cd0, 1.05 * p.mass_kg}}};
-  std::array<double, 3> f{cost(x[0]), cost(x[1]), cost(x[2])};
-  for (int iteration = 0; iteration < 4000; ++iteration) {
-    std::array<int, 3> order{0, 1, 2};
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return f[a] < f[b]; });
-    const auto best = x[order[0]], mid = x[order[1]], worst = x[order[2]];
-    const double fb = f[order[0]], fm = f[order[1]], fw = f[order[2]];
-    x = {best, mid, worst};
-    f = {fb, fm, fw};
-    const double size = std::max({std::abs(mid[0] - best[0]) / 0.15, std::abs(worst[0] - best[0]) / 0.15,
-                                  std::abs(mid[1] - best[1]) / 70.0, std::abs(worst[1] - best[1]) / 70.0});
+  Point start{p.cd0, p.mass_kg};
+  if (dims == 3) start.push_back(p.epsilon_per_pa);
+  std::vector<Point> x(dims + 1, start);
+  for (std::size_t j = 0; j < dims; ++j) x[j + 1][j] = 1.05 * start[j];
+  std::vector<double> f(dims + 1);
+  for (std::size_t k = 0; k <= dims; ++k) f[k] = cost(x[k]);
+  for (int iteration = 0; iteration < 4000 * static_cast<int>(dims - 1); ++iteration) {
+    std::vector<std::size_t> order(dims + 1);
+    for (std::size_t k = 0; k <= dims; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return f[a] < f[b]; });
+    std::vector<Point> sorted_x(dims + 1);
+    std::vector<double> sorted_f(dims + 1);
+    for (std::size_t k = 0; k <= dims; ++k) {
+      sorted_x[k] = x[order[k]];
+      sorted_f[k] = f[order[k]];
+    }
+    x = std::move(sorted_x);
+    f = std::move(sorted_f);
+    const Point& best = x[0];
+    const Point worst = x[dims];
+    const double fb = f[0], fm = f[dims - 1], fw = f[dims];
+    double size = 0.0;
+    for (std::size_t k = 1; k <= dims; ++k) {
+      for (std::size_t j = 0; j < dims; ++j) size = std::max(size, std::abs(x[k][j] - best[j]) / scale[j]);
+    }
     if (size < 1e-9 && fw - fb <= 1e-16) break;
-    const std::array<double, 2> centre{0.5 * (best[0] + mid[0]), 0.5 * (best[1] + mid[1])};
+    Point centre(dims, 0.0);
+    for (std::size_t j = 0; j < dims; ++j) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k < dims; ++k) sum += x[k][j];
+      centre[j] = (1.0 / static_cast<double>(dims)) * sum;
+    }
     auto along = [&](double t) {
-      return std::array<double, 2>{centre[0] + t * (worst[0] - centre[0]), centre[1] + t * (worst[1] - centre[1])};
+      Point out(dims);
+      for (std::size_t j = 0; j < dims; ++j) out[j] = centre[j] + t * (worst[j] - centre[j]);
+      return out;
     };
-    const auto xr = along(-1.0);
+    const Point xr = along(-1.0);
     const double fr = cost(xr);
     if (fr < fb) {
-      const auto xe = along(-2.0);
+      const Point xe = along(-2.0);
       const double fe = cost(xe);
       if (fe < fr) {
-        x[2] = xe;
-        f[2] = fe;
+        x[dims] = xe;
+        f[dims] = fe;
       } else {
-        x[2] = xr;
-        f[2] = fr;
+        x[dims] = xr;
+        f[dims] = fr;
       }
     } else if (fr < fm) {
-      x[2] = xr;
-      f[2] = fr;
+      x[dims] = xr;
+      f[dims] = fr;
     } else {
-      const auto xc = fr < fw ? along(-0.5) : along(0.5);
+      const Point xc = fr < fw ? along(-0.5) : along(0.5);
       const double fc = cost(xc);
       if (fc < std::min(fr, fw)) {
-        x[2] = xc;
-        f[2] = fc;
+        x[dims] = xc;
+        f[dims] = fc;
       } else {
-        for (int k = 1; k < 3; ++k) {
-          x[k] = {best[0] + 0.5 * (x[k][0] - best[0]), best[1] + 0.5 * (x[k][1] - best[1])};
+        for (std::size_t k = 1; k <= dims; ++k) {
+          for (std::size_t j = 0; j < dims; ++j) x[k][j] = x[0][j] + 0.5 * (x[k][j] - x[0][j]);
           f[k] = cost(x[k]);
         }
       }
     }
   }
-  const int b = static_cast<int>(std::min_element(f.begin(), f.end()) - f.begin());
-  p.cd0 = x[b][0];
-  p.mass_kg = x[b][1];
+  const std::size_t b = static_cast<std::size_t>(std::min_element(f.begin(), f.end()) - f.begin());
+  p = with(x[b]);
   if (rms_m_s != nullptr) *rms_m_s = std::sqrt(f[b]);
   return p;
 }

@@ -63,13 +63,19 @@ std::vector<double> gliderflight_depth_rate(const GliderflightInput& in, double 
 GliderflightResult gliderflight_solve(GliderflightKind kind, const GliderflightParameters& p,
                                       const GliderflightInput& in);
 
+// What a calibration fits: gliderflight's example's two, or with its hull
+// compressibility epsilon as a third (gliderflight's calibrate takes any of
+// its parameters; the protocol gives it the one glider-diagnose may fit).
+enum class GliderflightFit { kCd0Mass, kCd0MassEpsilon };
+
 // Calibrates C_D0 and m_g (gliderflight's example: calibrate("Cd0", "mg"))
 // on the records where `fit` is true: the least mean square of w - dh/dt
 // (Nelder-Mead from p's values, converged tighter than scipy's fmin
 // defaults, so the minimum is the model's, not the stopping rule's).
-// Returns p with the two fitted; *rms_m_s (if given) the fit's RMS.
+// Returns p with those fitted; *rms_m_s (if given) the fit's RMS.
 GliderflightParameters gliderflight_calibrate(GliderflightKind kind, GliderflightParameters p,
                                               const GliderflightInput& in, const std::vector<bool>& fit,
-                                              double* rms_m_s = nullptr);
+                                              double* rms_m_s = nullptr,
+                                              GliderflightFit what = GliderflightFit::kCd0Mass);
 
 }  // namespace glider::science
