@@ -19,9 +19,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_fin_or_roll import check, diagnose  # noqa: E402
-
-VEHICLE_LINK = {'fin_effectiveness', 'roll_offset', 'yaw_time_constant', 'yaw_delay'}
+from check_fin_or_roll import check, check_clean, diagnose, finish  # noqa: E402
 
 
 def main():
@@ -32,16 +30,8 @@ def main():
     check(failures, diagnose(truth, program, source, out, 'shallow', 706348478596914654, {'roll_offset': roll}),
           'roll_offset', roll, 'fin_effectiveness')
     clean = diagnose(truth, program, source, out, 'deep', 357883734764765648, {})
-    named = sorted(e for e in clean if e in VEHICLE_LINK)
-    print('clean: findings %s' % {k: (round(v['value'], 4), [round(x, 4) for x in v['ci95']])
-                                  for k, v in clean.items()})
-    if named:
-        failures.append('a clean log names %s' % ', '.join(named))
-    if failures:
-        print('FAIL ' + '; '.join(failures))
-        return 1
-    print('PASS reselection without the regressions')
-    return 0
+    check_clean(failures, clean)
+    return finish(failures, 'reselection without the regressions')
 
 
 if __name__ == '__main__':

@@ -238,10 +238,19 @@ struct YawPlant {
         roll_offset(value(values, HeadingEffect::kRollOffset)),
         tau(std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)))),
         fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9) {}
-  double roll_of(std::size_t run) const { return t.roll_rad[t.run_first[run]] + roll_offset; }
-  double target(std::size_t k, double w, double now, double roll) const {
+  // The roll as logged between samples k and k + 1, with the offset: the
+  // fin rolls the glider and the roll turns it back against the fin (the
+  // independent truth's 0-0.2 rad of roll per rad of fin read as a fin
+  // 0.84-0.88 where the glide's median roll stood for it; docs/science.md
+  // "The yaw's lag in a closed loop and the fin's roll"). The closed loop,
+  // which flies its own fin, keeps the median (HeadingTrack::roll_rad).
+  double roll_at(std::size_t k, double w) const {
+    return t.roll_sample_rad[k] + w * (t.roll_sample_rad[k + 1] - t.roll_sample_rad[k]) + roll_offset;
+  }
+  double target(std::size_t k, double w, double now) const {
     const double speed = t.speed_m_s[k] + w * (t.speed_m_s[k + 1] - t.speed_m_s[k]);
     const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
+    const double roll = roll_at(k, w);
     const double fin = fin_between_rows(t.row_time_s, t.row_fin_filled_rad, now - delay, fin_rate);
     return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
   }
@@ -264,8 +273,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
     const std::size_t first = t.run_first[run], end = t.run_end(run);
     if (wanted >= samples.size()) break;
     if (samples[wanted] >= end) continue;
-    const double roll = plant.roll_of(run);
-    auto target = [&](std::size_t k, double w, double now) { return plant.target(k, w, now, roll); };
+    auto target = [&](std::size_t k, double w, double now) { return plant.target(k, w, now); };
     model_heading.assign(1, t.heading_rad[first]);
     double yaw_rate = target(first, 0.0, t.time_s[first]);
     double psi = t.heading_rad[first];
@@ -307,8 +315,7 @@ void filter_headings(const HeadingTrack& t, const model::VehicleParams& vehicle,
   if (variance != nullptr) variance->assign(t.size(), kNaN);
   for (std::size_t run = 0; run < t.run_first.size(); ++run) {
     const std::size_t first = t.run_first[run], end = t.run_end(run);
-    const double roll = plant.roll_of(run);
-    auto target = [&](std::size_t k, double w, double now) { return plant.target(k, w, now, roll); };
+    auto target = [&](std::size_t k, double w, double now) { return plant.target(k, w, now); };
     // The state from sample k to k + 1: the mean as predict_yaw_rate steps it
     // (the yaw rate relaxing toward fin + roll + random yaw, the heading by
     // the trapezoid), the random yaw decaying, and (P not null) the

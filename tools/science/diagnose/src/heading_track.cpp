@@ -175,6 +175,7 @@ HeadingTrack prepare_heading_track(const flightlog::FlightLog& log, const model:
         t.depth_rate_m_s.push_back(depth_rate[k]);
         t.lift_factor.push_back(g.lift_factor);
         t.roll_rad.push_back(roll_here);
+        t.roll_sample_rad.push_back(std::isfinite(roll[k]) ? roll[k] : roll_here);
         t.phase.push_back(c.phase[k]);
         t.yo.push_back(c.yo[k]);
         if (time[k] - time[rows.front()] >= options.settle_s) t.scored.push_back(t.size() - 1);

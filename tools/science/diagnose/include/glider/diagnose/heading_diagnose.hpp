@@ -43,9 +43,10 @@ struct HeadingDiagnosis {
   // slow yaw disturbance, not compass noise, when that is tens of seconds).
   double unexplained_yaw_rate_rad_s = 0.0;
   double unexplained_correlation_s = 0.0;
-  // The compass noise and random yaw the fin was measured with on the
-  // heading's innovations (heading_rad 0: not measured - the vehicle link
-  // did not name the fin, or yaw_noise_model is off).
+  // The compass noise and random yaw the fin and the yaw's time constant
+  // were measured with on the heading's innovations (heading_rad 0: not
+  // measured - the vehicle link named neither, nor a roll offset, or
+  // yaw_noise_model is off).
   YawNoise yaw_noise;
   // The current's vertical shear across the heading, from what the
   // extended yaw model leaves (heading_shear.hpp); the unexplained yaw
@@ -68,15 +69,17 @@ struct HeadingDiagnosis {
 struct HeadingDiagnoseOptions {
   HeadingTrackOptions track;
   std::size_t max_fit_samples = 4000;  // per half, even stride (the fits' cost)
-  // Where the vehicle link names fin_effectiveness or roll_offset (chosen
-  // on the yaw rate of the logged fin, which reads the fin biased in a
-  // closed loop and a stronger fin as a roll offset), the fin measured on
-  // the heading's one-step innovations with the compass noise and the
+  // Where the vehicle link names fin_effectiveness, roll_offset or
+  // yaw_time_constant (chosen on the yaw rate of the logged fin, which reads
+  // the fin weak, a stronger fin as a roll offset and the yaw's lag long or
+  // as a weaker fin in a closed loop), the fin and the lag measured together
+  // on the heading's one-step innovations with the compass noise and the
   // random yaw modelled (heading_models.hpp heading_innovations), no finding
-  // where that interval holds 1, and the rest of the link selected again
-  // with that fin held; false: the rate error's selection (docs/science.md
-  // "The fin's authority in a closed loop", "The fin measured whenever the
-  // rate error names the fin or a roll offset"). Not with fit_only (a
+  // where an interval holds the vehicle file's value, and the rest of the
+  // link selected again with those held; false: the rate error's selection
+  // (docs/science.md "The fin's authority in a closed loop", "The fin
+  // measured whenever the rate error names the fin or a roll offset", "The
+  // yaw's lag in a closed loop and the fin's roll"). Not with fit_only (a
   // measurement of named effects, e.g. health's on decimated logs, whose
   // headings are interpolated between readings: the innovations need every
   // heading reading as logged).

@@ -31,6 +31,7 @@ struct HeadingTrack {
   std::vector<double> speed_m_s;                // |depth rate| / |sin(glide path at the logged pitch)|
   std::vector<double> lift_factor;              // a_eff = C_L / cl_alpha at that glide's angle of attack
   std::vector<double> roll_rad;                 // the run's median m_roll (the vehicle's roll where the log has none)
+  std::vector<double> roll_sample_rad;          // m_roll at each sample (that median where none): the yaw's
   std::vector<double> yaw_rate_rad_s;           // measured: the slope of heading_rad (estimator of track.hpp)
   std::vector<double> depth_m, depth_rate_m_s;  // the depth rate: the speed's (+ down)
   std::vector<flightlog::Phase> phase;
