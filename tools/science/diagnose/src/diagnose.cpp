@@ -854,8 +854,9 @@ void select_effects(const SampleSet& set, const Split& s, const DiagnoseOptions&
 // replicated_sigma). The intervals from the training yos' Jacobian and
 // residuals see noise and errors that differ between glides, not a term the
 // model lacks that moves the whole reading: on the independent truth most
-// intervals that missed were a few half-widths off with a tight interval
-// (docs/science.md, "Intervals checked by the held-out yos"). Selection is
+// intervals that missed were 1-1.6 of their half-widths off, with counting
+// yos instead of glides covering hardly more (docs/science.md, "intervals
+// checked by the held-out yos"). Selection is
 // unchanged: it judges with the training intervals, as before.
 void check_by_heldout_replicate(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                                 const Candidate& current, FitResult& current_fit) {
