@@ -6,7 +6,10 @@
 #include <CppUTest/TestHarness.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "draws.hpp"
@@ -122,4 +125,56 @@ TEST(FittingCoreIntervals, TheGlideRuleIsTheWiderOfLag1AndClusters) {
   CHECK(mg.high - mg.low > m1.high - m1.low);
   CHECK(fc::cluster_of(fc::IntervalRule::kGlides, 3, 2) != fc::cluster_of(fc::IntervalRule::kGlides, 3, 4));
   CHECK(fc::cluster_of(fc::IntervalRule::kYos, 3, 2) == fc::cluster_of(fc::IntervalRule::kYos, 3, 4));
+}
+
+TEST(FittingCoreIntervals, AReplicateWidensByTheBirgeRatioAndNeverNarrows) {
+  DOUBLES_EQUAL(1.0, fc::replicated_sigma(1.0, 0.0, 1.0, 1.0), 1e-12);  // ratio 1/sqrt(2): kept
+  DOUBLES_EQUAL(4.0 / std::sqrt(2.0), fc::replicated_sigma(1.0, 0.0, 1.0, 4.0), 1e-12);
+  // |1 - -4| / hypot(2, 4) = 1.118: 2 -> 2.236.
+  DOUBLES_EQUAL(2.0 * 5.0 / std::hypot(2.0, 4.0), fc::replicated_sigma(2.0, 1.0, 4.0, -4.0), 1e-12);
+  DOUBLES_EQUAL(1.5, fc::replicated_sigma(1.5, 0.0, 1.0, std::nan("")), 0.0);  // a failed replicate: kept
+  DOUBLES_EQUAL(1.5, fc::replicated_sigma(1.5, 0.0, std::numeric_limits<double>::infinity(), 3.0), 0.0);
+}
+
+// A mean fitted to one half of the data (the training yos) and replicated on
+// the other (the held-out yos), each half with its own model-form error (a
+// term the fitted model lacks, different in each half's water): the lag-1
+// interval sees only the noise and misses; the replicate's Birge ratio sees
+// the halves disagree. Without a model error the replicate costs little width.
+TEST(FittingCoreIntervals, AHeldOutReplicateCoversAModelFormError) {
+  const int trials = 400;
+  for (const double model_error : {0.0, 1.0}) {
+    int covered_lag1 = 0, covered_replicated = 0;
+    std::vector<double> widening;
+    for (int t = 0; t < trials; ++t) {
+      double value[2], sigma[2];
+      for (int half = 0; half < 2; ++half) {
+        // 300 samples of AR(1) noise, phi 0.8: the mean's sigma about 0.17.
+        std::vector<double> y = fitting_core_test::ar1(rng, 300, 0.8, 1.0);
+        const double shared = model_error * 0.17 * fitting_core_test::normal(rng);  // truth: 0
+        for (double& v : y) v += shared;
+        const MeanFit f = fit_mean(y);
+        value[half] = f.mean;
+        sigma[half] = std::sqrt(fc::noise_covariance(f.jac, f.r)(0, 0));
+      }
+      const double replicated = fc::replicated_sigma(sigma[0], value[0], sigma[1], value[1]);
+      CHECK(replicated >= sigma[0]);
+      if (std::abs(value[0]) <= fc::kZ95 * sigma[0]) ++covered_lag1;
+      if (std::abs(value[0]) <= fc::kZ95 * replicated) ++covered_replicated;
+      widening.push_back(replicated / sigma[0]);
+    }
+    std::sort(widening.begin(), widening.end());
+    const double lag1 = static_cast<double>(covered_lag1) / trials;
+    const double replicated = static_cast<double>(covered_replicated) / trials;
+    const std::string what = "model error " + std::to_string(model_error) + ": lag-1 " + std::to_string(lag1) +
+                             ", replicated " + std::to_string(replicated) + ", median widening " +
+                             std::to_string(widening[trials / 2]);
+    if (model_error == 0.0) {
+      CHECK_TEXT(lag1 >= 0.90 && replicated <= 0.995, what.c_str());
+      CHECK_TEXT(widening[trials / 2] < 1.05, what.c_str());  // most intervals unchanged
+    } else {
+      CHECK_TEXT(lag1 < 0.88, what.c_str());  // the model-only interval misses
+      CHECK_TEXT(replicated >= 0.90, what.c_str());
+    }
+  }
 }

@@ -94,6 +94,12 @@ Estimate mean_with_rule(std::span<const double> x, std::span<const long> cluster
   return {mean, mean - half, mean + half};
 }
 
+double replicated_sigma(double sigma_a, double a, double sigma_b, double b) {
+  const double joint = std::hypot(sigma_a, sigma_b);
+  if (!std::isfinite(joint) || !std::isfinite(a) || !std::isfinite(b) || !(joint > 0.0)) return sigma_a;
+  return sigma_a * std::max(1.0, std::abs(a - b) / joint);
+}
+
 double t_quantile_975(double degrees_of_freedom) {
   return boost::math::quantile(boost::math::students_t_distribution<double>(degrees_of_freedom), 0.975);
 }

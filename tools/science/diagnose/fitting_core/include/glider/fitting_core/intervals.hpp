@@ -73,6 +73,19 @@ class ParameterUncertainty {
   bool has_clustered_ = false;
 };
 
+// The sigma of an estimate that a replicate - the same model fitted to
+// other data (a diagnosis's held-out yos) - can check: `sigma` widened by
+// the Birge ratio |a - b| / sqrt(sigma_a^2 + sigma_b^2) where that exceeds 1
+// (`a` the estimate with `sigma_a` = `sigma`, `b` the replicate with its own
+// `sigma_b`). Under the fitted model the two differ by about their joint
+// sigma and the ratio is near 1; where the model lacks a term the truth has,
+// each fit absorbs it differently in different water, flight and controller
+// states, they disagree by more than either interval allows, and an
+// interval built on the model alone (Jacobian and residuals, however
+// clustered) is too narrow by that ratio. Never narrows; a replicate that
+// failed (not finite) leaves `sigma`.
+double replicated_sigma(double sigma_a, double a, double sigma_b, double b);
+
 // The two-sided 95 % quantile of Student's t.
 double t_quantile_975(double degrees_of_freedom);
 
