@@ -244,6 +244,103 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
   return flown;
 }
 
+namespace {
+
+// One flight of fly_two: fly_n<1>'s loop (depth-rate flights, stages all
+// cached) unrolled into single RK4 steps, so two can take turns.
+struct StepCursor {
+  const RunFlight::StagesView view;
+  const model::PrescribedPitchDynamics& dynamics;
+  const model::SkinFrictionFactor friction;
+  std::vector<double>& z;
+  std::size_t last;
+  Impulse p;
+  double depth = 0.0, h = 0.0;
+  std::size_t i = 0, stage = 0, flown = 0;
+  int s = 0, steps = 0;
+  bool flying = true;
+
+  // At interval i's start: its sub-steps, or the interval's end where it has none.
+  void open_interval() {
+    while (flying) {
+      if (i >= last) {
+        flying = false;
+        return;
+      }
+      const double dt = view.time_s[i + 1] - view.time_s[i];
+      steps = rk4_steps(dt, view.max_step_s);
+      h = dt / steps;
+      depth = z[i - view.first];
+      s = 0;
+      if (steps > 0) return;
+      close_interval();
+    }
+  }
+  void close_interval() {
+    if (!p.allFinite() || !std::isfinite(depth)) {  // the rest of the run stays NaN: unflyable
+      flying = false;
+      return;
+    }
+    z[i + 1 - view.first] = depth;
+    flown = i + 1;
+    ++i;
+  }
+};
+
+}  // namespace
+
+std::array<std::size_t, 2> RunFlight::fly_two(const RunFlight& a, double v1a, double v3a, std::size_t last_a,
+                                              std::vector<double>& za, const RunFlight& b, double v1b, double v3b,
+                                              std::size_t last_b, std::vector<double>& zb) {
+  const model::PrescribedPitchDynamics& dynamics_a = a.c_.dynamics;
+  const model::PrescribedPitchDynamics dynamics_b = b.c_.dynamics;  // its own stage cache
+  std::array<StepCursor, 2> f{
+      StepCursor{a.view(), dynamics_a, dynamics_a.skin_friction(), za, last_a, dynamics_a.impulse(v1a, v3a, a.in0_)},
+      StepCursor{b.view(), dynamics_b, dynamics_b.skin_friction(), zb, last_b, dynamics_b.impulse(v1b, v3b, b.in0_)}};
+  for (StepCursor& c : f) {
+    c.z.assign(c.last - c.view.first + 1, kNaN);
+    c.z[0] = 0.0;
+    c.i = c.view.first;
+    c.flown = c.view.first;
+    c.open_interval();
+  }
+  const Derivative kIdle{Impulse::Zero(), 0.0};
+  while (f[0].flying || f[1].flying) {
+    // One RK4 step of each flight still flying, stage by stage across them.
+    std::array<const model::PrescribedPitchInputs*, 2> in{};
+    std::array<Derivative, 2> d1, d2, d3, d4;
+    for (std::size_t k = 0; k < 2; ++k) {
+      in[k] = f[k].flying ? &f[k].view.stages[f[k].stage] : nullptr;
+      d1[k] = f[k].flying ? f[k].dynamics.derivative(f[k].p, in[k][0], f[k].friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < 2; ++k)
+      d2[k] = f[k].flying
+                  ? f[k].dynamics.derivative(Impulse(f[k].p + 0.5 * f[k].h * d1[k].p_dot), in[k][1], f[k].friction)
+                  : kIdle;
+    for (std::size_t k = 0; k < 2; ++k)
+      d3[k] = f[k].flying
+                  ? f[k].dynamics.derivative(Impulse(f[k].p + 0.5 * f[k].h * d2[k].p_dot), in[k][1], f[k].friction)
+                  : kIdle;
+    for (std::size_t k = 0; k < 2; ++k)
+      d4[k] = f[k].flying ? f[k].dynamics.derivative(Impulse(f[k].p + f[k].h * d3[k].p_dot), in[k][2], f[k].friction)
+                          : kIdle;
+    for (std::size_t k = 0; k < 2; ++k) {
+      StepCursor& c = f[k];
+      if (!c.flying) continue;
+      const double h = c.h;
+      c.depth +=
+          h / 6.0 *
+          (d1[k].depth_rate_m_s + 2.0 * d2[k].depth_rate_m_s + 2.0 * d3[k].depth_rate_m_s + d4[k].depth_rate_m_s);
+      c.p += h / 6.0 * (d1[k].p_dot + 2.0 * d2[k].p_dot + 2.0 * d3[k].p_dot + d4[k].p_dot);
+      c.stage += 3;
+      if (++c.s < c.steps) continue;
+      c.close_interval();
+      c.open_interval();
+    }
+  }
+  return {f[0].flown, f[1].flown};
+}
+
 void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {
   const Track& t = t_;
   z.assign(rel.size(), kNaN);
