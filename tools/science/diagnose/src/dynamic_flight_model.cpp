@@ -13,6 +13,8 @@ namespace glider::diagnose {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Main flights of this many runs flown side by side (RunFlight::fly_runs).
+constexpr std::size_t kRunsTogether = 3;
 
 // FNV-1a over a key's bytes: a memo's bucket; its entries are then compared bit for bit.
 class BitsHash {
@@ -249,7 +251,7 @@ std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, co
 // state (detail::RunFlight: RK4 at <= max_step_s through the log's inputs)
 // and read where asked. The runs' start states first, then the flights not
 // remembered, two runs side by side where both runs' stages are cached
-// (RunFlight::fly_two: the same bits as one after the other), then the
+// (RunFlight::fly_runs: the same bits as one after the other), then the
 // reading, run by run.
 void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                                       std::vector<double>* depth_rate, std::vector<double>* speed,
@@ -285,30 +287,34 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     slot = {true, key, use_ctd, a.v1, a.v3, a.last, flown, with_speed, std::move(slot.depth), std::move(slot.speed)};
     a.flight = &slot;
   };
-  AskedRun* waiting = nullptr;  // a flight to fly beside the next one that can
+  std::vector<AskedRun*> ready;  // to fly side by side (their stages cached)
   for (AskedRun& a : asked) {
     if (a.flight != nullptr) continue;
     if (with_speed || !a.run_flight.stages_cached(a.last)) {
       RelativeFlight& slot = flight_slot(a.run);
       keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, with_speed ? &slot.speed : nullptr));
-      continue;
+    } else {
+      ready.push_back(&a);
     }
-    if (waiting == nullptr) {
-      waiting = &a;
-      continue;
-    }
-    RelativeFlight& slot_w = flight_slot(waiting->run);
-    RelativeFlight& slot_a = flight_slot(a.run);
-    const std::array<std::size_t, 2> flown =
-        detail::RunFlight::fly_two(waiting->run_flight, waiting->v1, waiting->v3, waiting->last, slot_w.depth,
-                                   a.run_flight, a.v1, a.v3, a.last, slot_a.depth);
-    keep(*waiting, slot_w, flown[0]);
-    keep(a, slot_a, flown[1]);
-    waiting = nullptr;
   }
-  if (waiting != nullptr) {
-    RelativeFlight& slot = flight_slot(waiting->run);
-    keep(*waiting, slot, waiting->run_flight.fly(waiting->v1, waiting->v3, waiting->last, slot.depth, nullptr));
+  auto fly_together = [&]<std::size_t N>(std::span<AskedRun* const, N> group) {
+    std::array<RelativeFlight*, N> slots;
+    std::array<detail::RunFlight::RunQuestion, N> q;
+    for (std::size_t k = 0; k < N; ++k) {
+      AskedRun& a = *group[k];
+      slots[k] = &flight_slot(a.run);
+      q[k] = {&a.run_flight, a.v1, a.v3, a.last, &slots[k]->depth};
+    }
+    const std::array<std::size_t, N> flown = detail::RunFlight::fly_runs<N>(q);
+    for (std::size_t k = 0; k < N; ++k) keep(*group[k], *slots[k], flown[k]);
+  };
+  std::span<AskedRun* const> left(ready);
+  for (; left.size() >= kRunsTogether; left = left.subspan(kRunsTogether)) fly_together(left.first<kRunsTogether>());
+  if (left.size() == 2) fly_together(left.first<2>());
+  if (left.size() == 1) {
+    AskedRun& a = *left[0];
+    RelativeFlight& slot = flight_slot(a.run);
+    keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, nullptr));
   }
   next = 0;
   for (const AskedRun& a : asked)

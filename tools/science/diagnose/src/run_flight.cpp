@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -246,7 +247,7 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
 
 namespace {
 
-// One flight of fly_two: fly_n<1>'s loop (depth-rate flights, stages all
+// One flight of fly_runs: fly_n<1>'s loop (depth-rate flights, stages all
 // cached) unrolled into single RK4 steps, so two can take turns.
 struct StepCursor {
   const RunFlight::StagesView view;
@@ -289,15 +290,21 @@ struct StepCursor {
 
 }  // namespace
 
-std::array<std::size_t, 2> RunFlight::fly_two(const RunFlight& a, double v1a, double v3a, std::size_t last_a,
-                                              std::vector<double>& za, const RunFlight& b, double v1b, double v3b,
-                                              std::size_t last_b, std::vector<double>& zb) {
-  const model::PrescribedPitchDynamics& dynamics_a = a.c_.dynamics;
-  const model::PrescribedPitchDynamics dynamics_b = b.c_.dynamics;  // its own stage cache
-  std::array<StepCursor, 2> f{
-      StepCursor{a.view(), dynamics_a, dynamics_a.skin_friction(), za, last_a, dynamics_a.impulse(v1a, v3a, a.in0_)},
-      StepCursor{b.view(), dynamics_b, dynamics_b.skin_friction(), zb, last_b, dynamics_b.impulse(v1b, v3b, b.in0_)}};
-  for (StepCursor& c : f) {
+template <std::size_t N>
+std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>& q) {
+  // Each flight after the first its own copy of the dynamics (its stage cache).
+  std::array<std::optional<model::PrescribedPitchDynamics>, N> copies;
+  std::array<std::optional<StepCursor>, N> cursors;
+  for (std::size_t k = 0; k < N; ++k) {
+    if (k > 0) copies[k].emplace(q[k].run->c_.dynamics);
+    const model::PrescribedPitchDynamics& dynamics = k > 0 ? *copies[k] : q[k].run->c_.dynamics;
+    cursors[k].emplace(StepCursor{q[k].run->view(), dynamics, dynamics.skin_friction(), *q[k].z, q[k].last,
+                                  dynamics.impulse(q[k].v1, q[k].v3, q[k].run->in0_)});
+  }
+  std::array<StepCursor*, N> f;
+  for (std::size_t k = 0; k < N; ++k) {
+    StepCursor& c = *cursors[k];
+    f[k] = &c;
     c.z.assign(c.last - c.view.first + 1, kNaN);
     c.z[0] = 0.0;
     c.i = c.view.first;
@@ -305,27 +312,29 @@ std::array<std::size_t, 2> RunFlight::fly_two(const RunFlight& a, double v1a, do
     c.open_interval();
   }
   const Derivative kIdle{Impulse::Zero(), 0.0};
-  while (f[0].flying || f[1].flying) {
+  while (std::any_of(f.begin(), f.end(), [](const StepCursor* c) { return c->flying; })) {
     // One RK4 step of each flight still flying, stage by stage across them.
-    std::array<const model::PrescribedPitchInputs*, 2> in{};
-    std::array<Derivative, 2> d1, d2, d3, d4;
-    for (std::size_t k = 0; k < 2; ++k) {
-      in[k] = f[k].flying ? &f[k].view.stages[f[k].stage] : nullptr;
-      d1[k] = f[k].flying ? f[k].dynamics.derivative(f[k].p, in[k][0], f[k].friction) : kIdle;
+    std::array<const model::PrescribedPitchInputs*, N> in{};
+    std::array<Derivative, N> d1, d2, d3, d4;
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      in[k] = c.flying ? &c.view.stages[c.stage] : nullptr;
+      d1[k] = c.flying ? c.dynamics.derivative(c.p, in[k][0], c.friction) : kIdle;
     }
-    for (std::size_t k = 0; k < 2; ++k)
-      d2[k] = f[k].flying
-                  ? f[k].dynamics.derivative(Impulse(f[k].p + 0.5 * f[k].h * d1[k].p_dot), in[k][1], f[k].friction)
-                  : kIdle;
-    for (std::size_t k = 0; k < 2; ++k)
-      d3[k] = f[k].flying
-                  ? f[k].dynamics.derivative(Impulse(f[k].p + 0.5 * f[k].h * d2[k].p_dot), in[k][1], f[k].friction)
-                  : kIdle;
-    for (std::size_t k = 0; k < 2; ++k)
-      d4[k] = f[k].flying ? f[k].dynamics.derivative(Impulse(f[k].p + f[k].h * d3[k].p_dot), in[k][2], f[k].friction)
-                          : kIdle;
-    for (std::size_t k = 0; k < 2; ++k) {
-      StepCursor& c = f[k];
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      d2[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d1[k].p_dot), in[k][1], c.friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      d3[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d2[k].p_dot), in[k][1], c.friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      d4[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + c.h * d3[k].p_dot), in[k][2], c.friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      StepCursor& c = *f[k];
       if (!c.flying) continue;
       const double h = c.h;
       c.depth +=
@@ -338,8 +347,13 @@ std::array<std::size_t, 2> RunFlight::fly_two(const RunFlight& a, double v1a, do
       c.open_interval();
     }
   }
-  return {f[0].flown, f[1].flown};
+  std::array<std::size_t, N> flown;
+  for (std::size_t k = 0; k < N; ++k) flown[k] = f[k]->flown;
+  return flown;
 }
+
+template std::array<std::size_t, 2> RunFlight::fly_runs<2>(const std::array<RunQuestion, 2>&);
+template std::array<std::size_t, 3> RunFlight::fly_runs<3>(const std::array<RunQuestion, 3>&);
 
 void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {
   const Track& t = t_;

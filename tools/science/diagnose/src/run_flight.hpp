@@ -144,7 +144,7 @@ class RunFlight {
   std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
                   double stop_above = std::numeric_limits<double>::infinity()) const;
 
-  // What fly_two's steps read of a run: its times, first sample, step and cached stages.
+  // What fly_runs's steps read of a run: its times, first sample, step and cached stages.
   struct StagesView {
     const std::vector<double>& time_s;
     std::size_t first;
@@ -153,20 +153,25 @@ class RunFlight {
   };
 
   // Whether fly() up to `last` reads every stage from the run's cache
-  // (RunStages), computing none: what fly_two needs.
+  // (RunStages), computing none: what fly_runs needs.
   bool stages_cached(std::size_t last) const { return last - first_ <= stages_.intervals; }
 
-  // Two runs' flights side by side, each exactly fly(v1, v3, last, z,
-  // nullptr) of its own run (the same bits): a main flight is one long
-  // chain of dependent operations per stage (a division, a square root,
-  // the skin friction's series, atan2) that leaves the core mostly idle,
-  // and a second run's fills it. Both runs' stages must be cached up to
-  // their `last` (stages_cached); no speeds, no misfit bound. The second
-  // flight gets its own copy of the dynamics (its stage cache). Returns
+  // N runs' flights side by side, each exactly run->fly(v1, v3, last, *z,
+  // nullptr) (the same bits): a main flight is one long chain of dependent
+  // operations per stage (a division, a square root, the skin friction's
+  // series, atan2) that leaves the core mostly idle, and other runs' fill
+  // it. Every run's stages must be cached up to its `last`
+  // (stages_cached); no speeds, no misfit bound. The flights after the
+  // first get their own copy of the dynamics (its stage cache). Returns
   // each flight's last sample reached.
-  static std::array<std::size_t, 2> fly_two(const RunFlight& a, double v1a, double v3a, std::size_t last_a,
-                                            std::vector<double>& za, const RunFlight& b, double v1b, double v3b,
-                                            std::size_t last_b, std::vector<double>& zb);
+  struct RunQuestion {
+    const RunFlight* run;
+    double v1, v3;
+    std::size_t last;
+    std::vector<double>* z;
+  };
+  template <std::size_t N>
+  static std::array<std::size_t, N> fly_runs(const std::array<RunQuestion, N>& q);
 
   // The depth over ground at samples first..flown: the measured first
   // depth, the flight's relative depth `rel` and the water's vertical
