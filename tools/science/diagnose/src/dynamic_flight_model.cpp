@@ -250,7 +250,7 @@ std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, co
 // Each run that holds a requested sample is flown from its fitted start
 // state (detail::RunFlight: RK4 at <= max_step_s through the log's inputs)
 // and read where asked. The runs' start states first, then the flights not
-// remembered, two runs side by side where both runs' stages are cached
+// remembered, kRunsTogether runs side by side where their stages are cached
 // (RunFlight::fly_runs: the same bits as one after the other), then the
 // reading, run by run.
 void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
