@@ -250,7 +250,7 @@ std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, co
 // Each run that holds a requested sample is flown from its fitted start
 // state (detail::RunFlight: RK4 at <= max_step_s through the log's inputs)
 // and read where asked. The runs' start states first, then the flights not
-// remembered, kRunsTogether runs side by side where their stages are cached
+// remembered, kRunsTogether runs side by side (their stages cached first)
 // (RunFlight::fly_runs: the same bits as one after the other), then the
 // reading, run by run.
 void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
@@ -290,10 +290,11 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   std::vector<AskedRun*> ready;  // to fly side by side (their stages cached)
   for (AskedRun& a : asked) {
     if (a.flight != nullptr) continue;
-    if (with_speed || !a.run_flight.stages_cached(a.last)) {
+    if (with_speed) {
       RelativeFlight& slot = flight_slot(a.run);
-      keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, with_speed ? &slot.speed : nullptr));
+      keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, &slot.speed));
     } else {
+      a.run_flight.cache_stages(a.last);  // the run's first flight under these inputs: its stages now
       ready.push_back(&a);
     }
   }

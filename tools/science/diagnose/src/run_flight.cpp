@@ -355,6 +355,23 @@ std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>&
 template std::array<std::size_t, 2> RunFlight::fly_runs<2>(const std::array<RunQuestion, 2>&);
 template std::array<std::size_t, 3> RunFlight::fly_runs<3>(const std::array<RunQuestion, 3>&);
 
+void RunFlight::cache_stages(std::size_t last) const {
+  // The pumped volume lagged from the last cached stage's, as fly_n carries it.
+  double lagged = stages_.stages.empty() ? in0_.pumped_volume_m3 : stages_.stages.back().pumped_volume_m3;
+  for (std::size_t i = first_ + stages_.intervals; i < last; ++i) {
+    const double dt = t_.time_s[i + 1] - t_.time_s[i];
+    const int steps = rk4_steps(dt, c_.max_step_s);
+    for (int s = 0; s < steps; ++s) {
+      const model::PrescribedPitchInputs a = inputs(i, 2 * s, steps, lagged, 2 * s);
+      const model::PrescribedPitchInputs b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
+      const model::PrescribedPitchInputs c = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
+      stages_.stages.insert(stages_.stages.end(), {a, b, c});
+      lagged = c.pumped_volume_m3;
+    }
+    ++stages_.intervals;
+  }
+}
+
 void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {
   const Track& t = t_;
   z.assign(rel.size(), kNaN);

@@ -152,16 +152,17 @@ class RunFlight {
     const model::PrescribedPitchInputs* stages;
   };
 
-  // Whether fly() up to `last` reads every stage from the run's cache
-  // (RunStages), computing none: what fly_runs needs.
-  bool stages_cached(std::size_t last) const { return last - first_ <= stages_.intervals; }
+  // Computes the stages fly() would up to `last` into the run's cache
+  // (RunStages), in order from the first not cached, without flying: the
+  // same calls on the same numbers, so the same bits.
+  void cache_stages(std::size_t last) const;
 
   // N runs' flights side by side, each exactly run->fly(v1, v3, last, *z,
   // nullptr) (the same bits): a main flight is one long chain of dependent
   // operations per stage (a division, a square root, the skin friction's
   // series, atan2) that leaves the core mostly idle, and other runs' fill
   // it. Every run's stages must be cached up to its `last`
-  // (stages_cached); no speeds, no misfit bound. The flights after the
+  // (cache_stages); no speeds, no misfit bound. The flights after the
   // first get their own copy of the dynamics (its stage cache). Returns
   // each flight's last sample reached.
   struct RunQuestion {
