@@ -13,6 +13,8 @@ namespace glider::diagnose {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Main flights of this many runs flown side by side (RunFlight::fly_runs).
+constexpr std::size_t kRunsTogether = 3;
 
 // FNV-1a over a key's bytes: a memo's bucket; its entries are then compared bit for bit.
 class BitsHash {
@@ -176,27 +178,34 @@ void DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::s
 // The run's flight through the water, reused when only the water's
 // velocity changed and the start state came out the same (a profile bin
 // the run's spin-up does not reach: the Jacobian of a depth profile costs
-// a flight per bin otherwise).
-const DynamicFlightModel::RelativeFlight& DynamicFlightModel::relative_flight(const detail::RunFlight& run_flight,
-                                                                              std::size_t run, const EffectValues& x,
-                                                                              bool use_ctd, double v1, double v3,
-                                                                              std::size_t last, bool with_speed) const {
-  RunRelativeFlights& kept = relative_flights_[run];
-  EffectValues key = x;
-  key[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)] = 0.0;
-  key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;  // the sensor's, not the flight's
-  for (const RelativeFlight& flight : kept.flights) {
+// a flight per bin otherwise). Null where it is not remembered.
+const DynamicFlightModel::RelativeFlight* DynamicFlightModel::kept_flight(std::size_t run, const EffectValues& key,
+                                                                          bool use_ctd, double v1, double v3,
+                                                                          std::size_t last, bool with_speed) const {
+  for (const RelativeFlight& flight : relative_flights_[run].flights) {
     if (flight.valid && flight.key == key && flight.use_ctd == use_ctd && flight.v1 == v1 && flight.v3 == v3 &&
         flight.last >= last && (!with_speed || flight.has_speed))
-      return flight;
+      return &flight;
   }
+  return nullptr;
+}
+
+// The slot a new flight of the run replaces (round robin), its buffers kept for reuse.
+DynamicFlightModel::RelativeFlight& DynamicFlightModel::flight_slot(std::size_t run) const {
+  RunRelativeFlights& kept = relative_flights_[run];
   if (kept.flights.size() < kRelativeFlights) kept.flights.emplace_back();
   RelativeFlight& flight = kept.flights[kept.next];
   kept.next = (kept.next + 1) % kRelativeFlights;
-  flight.flown = run_flight.fly(v1, v3, last, flight.depth, with_speed ? &flight.speed : nullptr);
-  flight = {
-      true, key, use_ctd, v1, v3, last, flight.flown, with_speed, std::move(flight.depth), std::move(flight.speed)};
   return flight;
+}
+
+// The key a run's flight through the water depends on: the values but the
+// water's velocity and the depth lag (the sensor's, not the flight's).
+EffectValues DynamicFlightModel::flight_key(const EffectValues& x) {
+  EffectValues key = x;
+  key[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)] = 0.0;
+  key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;
+  return key;
 }
 
 // The run's depth over ground, read late by the depth lag as the sensor
@@ -240,7 +249,10 @@ std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, co
 
 // Each run that holds a requested sample is flown from its fitted start
 // state (detail::RunFlight: RK4 at <= max_step_s through the log's inputs)
-// and read where asked.
+// and read where asked. The runs' start states first, then the flights not
+// remembered, kRunsTogether runs side by side (their stages cached first)
+// (RunFlight::fly_runs: the same bits as one after the other), then the
+// reading, run by run.
 void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                                       std::vector<double>* depth_rate, std::vector<double>* speed,
                                       const VerticalVelocityProfile* profile) const {
@@ -250,17 +262,64 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   const detail::FlightConditions conditions(nominal_, x, use_ctd, track_, profile, max_step_s_, *stage_pitch_);
   const double depth_lag_s = std::abs(x[static_cast<std::size_t>(Effect::kDepthLag)]);  // no sign, as the pump's
   const Track& t = track_;
+  const EffectValues key = flight_key(x);
+  const bool with_speed = speed != nullptr;
+  struct AskedRun {
+    detail::RunFlight run_flight;
+    std::size_t run, last;
+    double v1, v3;
+    const RelativeFlight* flight;  // null: to fly
+  };
+  std::vector<AskedRun> asked;
+  asked.reserve(t.run_first.size());
   std::size_t next = 0;  // next requested sample
   for (std::size_t run = 0; run < t.run_first.size() && next < samples.size(); ++run) {
     const std::size_t end = t.run_end(run);
     if (samples[next] >= end) continue;  // nothing requested in this run (every sample is in a run)
-    const detail::RunFlight run_flight(conditions, t.run_first[run], end, run_stages_[run]);
-    double v1 = 0.0, v3 = 0.0;
-    start_state(run_flight, run, x, use_ctd, profile, v1, v3);
-    const std::size_t last = last_needed(end, samples.back());
-    const RelativeFlight& flight = relative_flight(run_flight, run, x, use_ctd, v1, v3, last, speed != nullptr);
-    next = read_run(run_flight, flight, last, depth_lag_s, samples, next, depth_rate, speed);
+    while (next < samples.size() && samples[next] < end) ++next;
+    AskedRun& a = asked.emplace_back(
+        AskedRun{detail::RunFlight(conditions, t.run_first[run], end, run_stages_[run]), run, 0, 0.0, 0.0, nullptr});
+    start_state(a.run_flight, run, x, use_ctd, profile, a.v1, a.v3);
+    a.last = last_needed(end, samples.back());
+    a.flight = kept_flight(run, key, use_ctd, a.v1, a.v3, a.last, with_speed);
   }
+  auto keep = [&](AskedRun& a, RelativeFlight& slot, std::size_t flown) {
+    slot = {true, key, use_ctd, a.v1, a.v3, a.last, flown, with_speed, std::move(slot.depth), std::move(slot.speed)};
+    a.flight = &slot;
+  };
+  std::vector<AskedRun*> ready;  // to fly side by side (their stages cached)
+  for (AskedRun& a : asked) {
+    if (a.flight != nullptr) continue;
+    if (with_speed) {
+      RelativeFlight& slot = flight_slot(a.run);
+      keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, &slot.speed));
+    } else {
+      a.run_flight.cache_stages(a.last);  // the run's first flight under these inputs: its stages now
+      ready.push_back(&a);
+    }
+  }
+  auto fly_together = [&]<std::size_t N>(std::span<AskedRun* const, N> group) {
+    std::array<RelativeFlight*, N> slots;
+    std::array<detail::RunFlight::RunQuestion, N> q;
+    for (std::size_t k = 0; k < N; ++k) {
+      AskedRun& a = *group[k];
+      slots[k] = &flight_slot(a.run);
+      q[k] = {&a.run_flight, a.v1, a.v3, a.last, &slots[k]->depth};
+    }
+    const std::array<std::size_t, N> flown = detail::RunFlight::fly_runs<N>(q);
+    for (std::size_t k = 0; k < N; ++k) keep(*group[k], *slots[k], flown[k]);
+  };
+  std::span<AskedRun* const> left(ready);
+  for (; left.size() >= kRunsTogether; left = left.subspan(kRunsTogether)) fly_together(left.first<kRunsTogether>());
+  if (left.size() == 2) fly_together(left.first<2>());
+  if (left.size() == 1) {
+    AskedRun& a = *left[0];
+    RelativeFlight& slot = flight_slot(a.run);
+    keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, nullptr));
+  }
+  next = 0;
+  for (const AskedRun& a : asked)
+    next = read_run(a.run_flight, *a.flight, a.last, depth_lag_s, samples, next, depth_rate, speed);
 }
 
 double DynamicFlightModel::ctd_density_anomaly() const {

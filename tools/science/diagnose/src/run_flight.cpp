@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -242,6 +243,133 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
       (*u)[i + 1 - first_] = dynamics.velocities(p[0], inputs(i, 2 * steps, steps, lagged, 2 * steps)).norm();
   }
   return flown;
+}
+
+namespace {
+
+// One flight of fly_runs: fly_n<1>'s loop (depth-rate flights, stages all
+// cached) unrolled into single RK4 steps, so two can take turns.
+struct StepCursor {
+  const RunFlight::StagesView view;
+  const model::PrescribedPitchDynamics& dynamics;
+  const model::SkinFrictionFactor friction;
+  std::vector<double>& z;
+  std::size_t last;
+  Impulse p;
+  double depth = 0.0, h = 0.0;
+  std::size_t i = 0, stage = 0, flown = 0;
+  int s = 0, steps = 0;
+  bool flying = true;
+
+  // At interval i's start: its sub-steps, or the interval's end where it has none.
+  void open_interval() {
+    while (flying) {
+      if (i >= last) {
+        flying = false;
+        return;
+      }
+      const double dt = view.time_s[i + 1] - view.time_s[i];
+      steps = rk4_steps(dt, view.max_step_s);
+      h = dt / steps;
+      depth = z[i - view.first];
+      s = 0;
+      if (steps > 0) return;
+      close_interval();
+    }
+  }
+  void close_interval() {
+    if (!p.allFinite() || !std::isfinite(depth)) {  // the rest of the run stays NaN: unflyable
+      flying = false;
+      return;
+    }
+    z[i + 1 - view.first] = depth;
+    flown = i + 1;
+    ++i;
+  }
+};
+
+}  // namespace
+
+template <std::size_t N>
+std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>& q) {
+  // Each flight after the first its own copy of the dynamics (its stage cache).
+  std::array<std::optional<model::PrescribedPitchDynamics>, N> copies;
+  std::array<std::optional<StepCursor>, N> cursors;
+  for (std::size_t k = 0; k < N; ++k) {
+    if (k > 0) copies[k].emplace(q[k].run->c_.dynamics);
+    const model::PrescribedPitchDynamics& dynamics = k > 0 ? *copies[k] : q[k].run->c_.dynamics;
+    cursors[k].emplace(StepCursor{q[k].run->view(), dynamics, dynamics.skin_friction(), *q[k].z, q[k].last,
+                                  dynamics.impulse(q[k].v1, q[k].v3, q[k].run->in0_)});
+  }
+  std::array<StepCursor*, N> f;
+  for (std::size_t k = 0; k < N; ++k) {
+    StepCursor& c = *cursors[k];
+    f[k] = &c;
+    c.z.assign(c.last - c.view.first + 1, kNaN);
+    c.z[0] = 0.0;
+    c.i = c.view.first;
+    c.flown = c.view.first;
+    c.open_interval();
+  }
+  const Derivative kIdle{Impulse::Zero(), 0.0};
+  while (std::any_of(f.begin(), f.end(), [](const StepCursor* c) { return c->flying; })) {
+    // One RK4 step of each flight still flying, stage by stage across them.
+    std::array<const model::PrescribedPitchInputs*, N> in{};
+    std::array<Derivative, N> d1, d2, d3, d4;
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      in[k] = c.flying ? &c.view.stages[c.stage] : nullptr;
+      d1[k] = c.flying ? c.dynamics.derivative(c.p, in[k][0], c.friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      d2[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d1[k].p_dot), in[k][1], c.friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      d3[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d2[k].p_dot), in[k][1], c.friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      const StepCursor& c = *f[k];
+      d4[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + c.h * d3[k].p_dot), in[k][2], c.friction) : kIdle;
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      StepCursor& c = *f[k];
+      if (!c.flying) continue;
+      const double h = c.h;
+      c.depth +=
+          h / 6.0 *
+          (d1[k].depth_rate_m_s + 2.0 * d2[k].depth_rate_m_s + 2.0 * d3[k].depth_rate_m_s + d4[k].depth_rate_m_s);
+      c.p += h / 6.0 * (d1[k].p_dot + 2.0 * d2[k].p_dot + 2.0 * d3[k].p_dot + d4[k].p_dot);
+      c.stage += 3;
+      if (++c.s < c.steps) continue;
+      c.close_interval();
+      c.open_interval();
+    }
+  }
+  std::array<std::size_t, N> flown;
+  for (std::size_t k = 0; k < N; ++k) flown[k] = f[k]->flown;
+  return flown;
+}
+
+template std::array<std::size_t, 2> RunFlight::fly_runs<2>(const std::array<RunQuestion, 2>&);
+template std::array<std::size_t, 3> RunFlight::fly_runs<3>(const std::array<RunQuestion, 3>&);
+
+void RunFlight::cache_stages(std::size_t last) const {
+  // The pumped volume lagged from the last cached stage's, as fly_n carries it.
+  double lagged = stages_.stages.empty() ? in0_.pumped_volume_m3 : stages_.stages.back().pumped_volume_m3;
+  for (std::size_t i = first_ + stages_.intervals; i < last; ++i) {
+    const double dt = t_.time_s[i + 1] - t_.time_s[i];
+    const int steps = rk4_steps(dt, c_.max_step_s);
+    for (int s = 0; s < steps; ++s) {
+      const model::PrescribedPitchInputs a = inputs(i, 2 * s, steps, lagged, 2 * s);
+      const model::PrescribedPitchInputs b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
+      const model::PrescribedPitchInputs c = inputs(i, 2 * s + 2, steps, lagged, 2 * s);
+      stages_.stages.insert(stages_.stages.end(), {a, b, c});
+      lagged = c.pumped_volume_m3;
+    }
+    ++stages_.intervals;
+  }
 }
 
 void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {

@@ -144,6 +144,36 @@ class RunFlight {
   std::size_t fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
                   double stop_above = std::numeric_limits<double>::infinity()) const;
 
+  // What fly_runs's steps read of a run: its times, first sample, step and cached stages.
+  struct StagesView {
+    const std::vector<double>& time_s;
+    std::size_t first;
+    double max_step_s;
+    const model::PrescribedPitchInputs* stages;
+  };
+
+  // Computes the stages fly() would up to `last` into the run's cache
+  // (RunStages), in order from the first not cached, without flying: the
+  // same calls on the same numbers, so the same bits.
+  void cache_stages(std::size_t last) const;
+
+  // N runs' flights side by side, each exactly run->fly(v1, v3, last, *z,
+  // nullptr) (the same bits): a main flight is one long chain of dependent
+  // operations per stage (a division, a square root, the skin friction's
+  // series, atan2) that leaves the core mostly idle, and other runs' fill
+  // it. Every run's stages must be cached up to its `last`
+  // (cache_stages); no speeds, no misfit bound. The flights after the
+  // first get their own copy of the dynamics (its stage cache). Returns
+  // each flight's last sample reached.
+  struct RunQuestion {
+    const RunFlight* run;
+    double v1, v3;
+    std::size_t last;
+    std::vector<double>* z;
+  };
+  template <std::size_t N>
+  static std::array<std::size_t, N> fly_runs(const std::array<RunQuestion, N>& q);
+
   // The depth over ground at samples first..flown: the measured first
   // depth, the flight's relative depth `rel` and the water's vertical
   // velocity integrated with the same RK4 weights at the same stages.
@@ -169,6 +199,7 @@ class RunFlight {
   // The profile's bin at ground_depth's three stages a step of interval i
   // (RunStages::bins), or nullptr where they are not kept.
   const std::uint32_t* stage_bins(std::size_t i, int steps) const;
+  StagesView view() const { return {t_.time_s, first_, c_.max_step_s, stages_.stages.data()}; }
 
   const FlightConditions& c_;
   const Track& t_;

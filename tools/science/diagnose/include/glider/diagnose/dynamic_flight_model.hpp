@@ -54,9 +54,10 @@ class DynamicFlightModel final : public DepthRateModel {
   std::size_t last_needed(std::size_t end, std::size_t last_requested) const;
   void start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& values, bool use_ctd,
                    const VerticalVelocityProfile* profile, double& v1, double& v3) const;
-  const RelativeFlight& relative_flight(const detail::RunFlight& run_flight, std::size_t run,
-                                        const EffectValues& values, bool use_ctd, double v1, double v3,
-                                        std::size_t last, bool with_speed) const;
+  const RelativeFlight* kept_flight(std::size_t run, const EffectValues& key, bool use_ctd, double v1, double v3,
+                                    std::size_t last, bool with_speed) const;
+  RelativeFlight& flight_slot(std::size_t run) const;
+  static EffectValues flight_key(const EffectValues& x);
   std::size_t read_run(const detail::RunFlight& run_flight, const RelativeFlight& flight, std::size_t last,
                        double depth_lag_s, std::span<const std::size_t> samples, std::size_t next,
                        std::vector<double>* depth_rate, std::vector<double>* speed) const;
