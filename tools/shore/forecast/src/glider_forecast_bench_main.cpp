@@ -94,9 +94,15 @@ void score_case(const fc::Forecast& f, const fc::TruthSurfacing& next, Score& s,
     std::printf(
         "    forecast %6.0f m, %+5.0f s off (baseline %6.0f m, %+5.0f s); ellipse %4.0f x %4.0f m, truth at %.2f of "
         "it; current %s +-%.3f/%.3f m/s, measured next %+.1f/%+.1f sigma; %.2f s\n",
-        e, f.time_utc_s - next.surfaced_utc_s, b, f.baseline_time_utc_s - next.surfaced_utc_s,
-        f.ellipse.semi_major_m, f.ellipse.semi_minor_m, radius, f.current.method.c_str(), f.current.sigma_east_m_s,
-        f.current.sigma_north_m_s, ze, zn, f.wall_s);
+        e, f.time_utc_s - next.surfaced_utc_s, b, f.baseline_time_utc_s - next.surfaced_utc_s, f.ellipse.semi_major_m,
+        f.ellipse.semi_minor_m, radius, f.current.method.c_str(), f.current.sigma_east_m_s, f.current.sigma_north_m_s,
+        ze, zn, f.wall_s);
+    // The speed term: the pitch scale read and its evidence, the drag found.
+    std::printf(
+        "    speed term: pitch scale %.3f +-%.3f (%d samples), DR speed x%.3f; speed ratio %.3f over %d dives; "
+        "drag x%.3f +-%.3f\n",
+        f.pitch_scale, f.pitch_scale_sigma, f.pitch_samples, f.pitch_dr_speed_factor, f.glider_speed_ratio,
+        f.speed_dives, f.speed_drag_factor, f.speed_drag_sigma);
     // The currents themselves (m/s), to score a current rule without its
     // flights: the forecast's, persistence's and the one measured next.
     std::printf("    current forecast %+.3f %+.3f, persistence %+.3f %+.3f, measured next %+.3f %+.3f m/s\n",
