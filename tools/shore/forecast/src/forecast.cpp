@@ -419,8 +419,15 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   // speed while carrying the glider's belief (which holds the glider's DR
   // error) replayed a glider whose DR reads 9 % slow onto a waypoint its
   // DR never reached.
-  if (options.pitch_calibration && f.pitch_samples > 0 && f.pitch_scale > 0.0) {
+  const double model_average_speed_m_s = setup.average_speed_m_s;  // the baseline's (the file's DR)
+  const bool glider_dr =
+      options.glider_dead_reckoning && options.pitch_calibration && f.pitch_samples > 0 && f.pitch_scale > 0.0;
+  // The glider's DR error its pitch sensor adds, where the model's DR does not count it.
+  const double sensor_dr_factor = options.pitch_calibration && !glider_dr ? f.pitch_dr_speed_factor : 1.0;
+  if (glider_dr) {
     setup.config.dead_reckoning = biased_pitch_dead_reckoning(setup.config.dead_reckoning, 1.0 / f.pitch_scale);
+    // The navigator's mean speed (m_avg_speed) is its DR's: as slow.
+    if (f.pitch_dr_speed_factor > 0.0) setup.average_speed_m_s /= f.pitch_dr_speed_factor;
   }
   std::vector<DiveMiss> misses;
   const double longest_climb_s = longest_climb_left_s(setup, options);
@@ -432,7 +439,8 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     now.active_waypoint = options.waypoint;
     f.notes.push_back("active waypoint given (--waypoint), not replayed");
   } else {
-    replay_waypoints(now, history, setup, options, longest_climb_s, model_dr_ratio(setup, options), misses);
+    replay_waypoints(now, history, setup, options, longest_climb_s, model_dr_ratio(setup, options) * sensor_dr_factor,
+                     misses);
   }
   // Only the last day's dives: older water and older trim are other ones.
   {
@@ -484,7 +492,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   }
   // The glider's DR speed error (the model's DR counts as the glider's, its pitch sensor's scale included):
   // its share of each estimate out.
-  const double glider_dr_ratio = f.dr_speed_ratio;
+  const double glider_dr_ratio = f.dr_speed_ratio * sensor_dr_factor;
   const std::vector<CurrentSample> samples = current_samples(history, glider_dr_ratio, expected_s);
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior);
   f.favoured = favoured_prior(samples, f.dive_utc_s, f.prior);
@@ -517,6 +525,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   base.current = f.baseline_current;
   base.vehicle.hydro = nominal_hydro;                      // the baseline flies the nominal vehicle
   base.config.dead_reckoning = now.config.dead_reckoning;  // and its DR as the file's
+  base.average_speed_m_s = model_average_speed_m_s;
   const std::vector<RunOutcome> baseline = fly_runs(base, options, 1, false);
   if (!baseline.empty() && baseline[0].surfaced && !baseline[0].aborted) {
     f.baseline_ok = true;

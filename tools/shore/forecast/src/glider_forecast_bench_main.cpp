@@ -173,6 +173,8 @@ int main(int argc, char** argv) {
                "(default: only calibrated for its pitch sensor; docs/forecast.md)");
   app.add_flag("!--no-speed-correction", options.speed_correction_calibrated,
                "the forecasts never scale the model's drag");
+  app.add_flag("!--no-glider-dead-reckoning", options.glider_dead_reckoning,
+               "the forecasts' model firmware dead-reckons as the vehicle file's, not through the pitch sensor");
   app.add_flag("!--no-pitch-calibration", options.pitch_calibration,
                "the forecasts take the glider's dead-reckoned speed as counted (no pitch sensor calibration)");
   tool.add_number("--truth-pitch-bias", truth_options.pitch_bias_max, {0.0, 0.5, ""},
