@@ -21,7 +21,7 @@ the glider measured over the dive than persistence is, and within 0.1 m/s from s
 and each forecast's time within 5 min of the glider's (the issue's time goal).
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
        [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--no-pitch-calibration]
-       [--from-glider]
+       [--no-glider-dead-reckoning] [--from-glider]
        [--check]
 """
 import argparse
@@ -182,6 +182,8 @@ def main():
     p.add_argument("--speed-correction", action="store_true", help="glider-forecast's --speed-correction")
     p.add_argument("--no-speed-correction", action="store_true", help="glider-forecast's --no-speed-correction")
     p.add_argument("--no-pitch-calibration", action="store_true", help="glider-forecast's --no-pitch-calibration")
+    p.add_argument("--no-glider-dead-reckoning", action="store_true",
+                   help="glider-forecast's --no-glider-dead-reckoning")
     p.add_argument("--from-glider", action="store_true",
                    help="put the dives' m_depth and m_pitch the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
@@ -243,7 +245,8 @@ def main():
                              (["--current-prior", a.current_prior] if a.current_prior else []) +
                              (["--speed-correction"] if a.speed_correction else []) +
                              (["--no-speed-correction"] if a.no_speed_correction else []) +
-                             (["--no-pitch-calibration"] if a.no_pitch_calibration else []),
+                             (["--no-pitch-calibration"] if a.no_pitch_calibration else []) +
+                             (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []),
                              capture_output=True, text=True)
         if run.returncode != 0:
             print(run.stdout, run.stderr)

@@ -88,6 +88,25 @@ fs::path vehicle_file(const fs::path& glider_dir, const std::string& glider, con
 // model) that part is taken out: the DR's through-water track of the segment
 // (its position on surfacing less the fix it dived from and the current it
 // already carried) times (ratio - 1), over the time.
+// The current history[i] measured over the segment that ended there (the
+// one before it dived from), with the DR's share out as current_samples
+// takes it; as measured where the segment's DR is not known.
+fw::EastNorth measured_current(const std::vector<Surfacing>& history, std::size_t i, double ratio) {
+  const Surfacing& s = history[i];
+  fw::EastNorth c{*s.water_vx_m_s, *s.water_vy_m_s};
+  if (i == 0 || ratio == 1.0) return c;
+  const Surfacing& before = history[i - 1];
+  if (!before.has_fix() || !s.dr_lat_deg || !s.dr_lon_deg) return c;
+  const double under_s = s.call_start_utc_s - before.call_end_utc_s;
+  if (!(under_s > 0.0)) return c;
+  const fw::LocalFrame frame({*before.lat_deg, *before.lon_deg});
+  const fw::EastNorth dr = frame.to_local({*s.dr_lat_deg, *s.dr_lon_deg});
+  const double carried_e = before.water_vx_m_s.value_or(0.0), carried_n = before.water_vy_m_s.value_or(0.0);
+  c.east_m -= (ratio - 1.0) * (dr.east_m - carried_e * under_s) / under_s;
+  c.north_m -= (ratio - 1.0) * (dr.north_m - carried_n * under_s) / under_s;
+  return c;
+}
+
 std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio, double first_span_s) {
   std::vector<CurrentSample> out;
   // The first event's estimate is the mean over the segment that ended at
@@ -106,15 +125,8 @@ std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history
     if (!s.has_fix()) continue;
     const double under_s = s.call_start_utc_s - before.call_end_utc_s;
     if (!(under_s >= 600.0)) continue;
-    CurrentSample sample{0.5 * (s.call_start_utc_s + before.call_end_utc_s), *s.water_vx_m_s, *s.water_vy_m_s, under_s};
-    if (ratio != 1.0 && before.has_fix() && s.dr_lat_deg && s.dr_lon_deg) {
-      const fw::LocalFrame frame({*before.lat_deg, *before.lon_deg});
-      const fw::EastNorth dr = frame.to_local({*s.dr_lat_deg, *s.dr_lon_deg});
-      const double carried_e = before.water_vx_m_s.value_or(0.0), carried_n = before.water_vy_m_s.value_or(0.0);
-      sample.east_m_s -= (ratio - 1.0) * (dr.east_m - carried_e * under_s) / under_s;
-      sample.north_m_s -= (ratio - 1.0) * (dr.north_m - carried_n * under_s) / under_s;
-    }
-    out.push_back(sample);
+    const fw::EastNorth c = measured_current(history, i, ratio);
+    out.push_back({0.5 * (s.call_start_utc_s + before.call_end_utc_s), c.east_m, c.north_m, under_s});
   }
   return out;
 }
@@ -268,14 +280,31 @@ double longest_climb_left_s(const FlightSetup& setup, const ForecastOptions& opt
   return span > 0.0 ? yo_climb_s * m.dive_to_m / span : yo_climb_s;
 }
 
+// The model's own check of the firmware's dead reckoning: one still-water
+// flight of the setup's dive, true over dead-reckoned distance (1: none).
+double model_dr_ratio(const FlightSetup& setup, const ForecastOptions& options) {
+  FlightSetup still = setup;
+  still.current = CurrentEstimate{};
+  still.firmware_current.reset();
+  const RunOutcome r = fly_runs(still, options, 1, false).at(0);
+  const double dr = std::hypot(r.dr_east_m, r.dr_north_m), truth = std::hypot(r.east_m, r.north_m);
+  return r.surfaced && !r.aborted && dr > 100.0 && truth / dr > 0.5 && truth / dr < 2.0 ? truth / dr : 1.0;
+}
+
 // A dive the replay flew again: the fix less where the model put it (m).
 struct DiveMiss {
   double utc_s = 0.0;
   double east_m = 0.0, north_m = 0.0;
 };
 
+// Each past dive flown again by the model, with the current measured over
+// it less the glider's DR share (`dr_ratio`, as current_samples): the raw
+// measure holds the DR's speed error, which a model flying the true speed
+// would count twice (a glider whose DR reads 9 % slow replayed 9 % too far,
+// past a waypoint it did not reach).
 void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, const FlightSetup& base,
-                      const ForecastOptions& options, double longest_climb_s, std::vector<DiveMiss>& misses) {
+                      const ForecastOptions& options, double longest_climb_s, double dr_ratio,
+                      std::vector<DiveMiss>& misses) {
   const fw::MissionPlan& plan = now.config.plan;
   if (plan.waypoint_count == 0) return;
   const Surfacing* previous = nullptr;
@@ -288,8 +317,11 @@ void replay_waypoints(MissionNow& now, const std::vector<Surfacing>& history, co
       segment.surface_time_s = std::max(0.0, previous->call_end_utc_s - previous->call_start_utc_s);
       segment.clock_fired_before_s = climb_left_at_firing_s(history, i - 1, plan, longest_climb_s);
       const bool measured = s.water_vx_m_s && s.water_vy_m_s;
-      segment.current.east_m_s = measured ? *s.water_vx_m_s : previous->water_vx_m_s.value_or(0.0);
-      segment.current.north_m_s = measured ? *s.water_vy_m_s : previous->water_vy_m_s.value_or(0.0);
+      const fw::EastNorth c =
+          measured ? measured_current(history, i, dr_ratio)
+                   : fw::EastNorth{previous->water_vx_m_s.value_or(0.0), previous->water_vy_m_s.value_or(0.0)};
+      segment.current.east_m_s = c.east_m;
+      segment.current.north_m_s = c.north_m;
       segment.firmware_current.reset();
       if (previous->water_vx_m_s && previous->water_vy_m_s) {
         segment.firmware_current = fw::EastNorth{*previous->water_vx_m_s, *previous->water_vy_m_s};
@@ -380,6 +412,23 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   }
   const model::Hydrodynamics nominal_hydro = setup.vehicle.hydro;  // the baseline's (measure_speed may correct it)
   measure_speed(history, glider_dir, setup, options, f);
+  // The glider's firmware dead-reckons through its pitch sensor, whose scale
+  // measure_speed read: the model's firmware counts the same way, so the
+  // waypoint arrivals it judges on its DR, and the DR share of each current
+  // estimate (model_dr_ratio), are the glider's. Its DR counting the true
+  // speed while carrying the glider's belief (which holds the glider's DR
+  // error) replayed a glider whose DR reads 9 % slow onto a waypoint its
+  // DR never reached.
+  const double model_average_speed_m_s = setup.average_speed_m_s;  // the baseline's (the file's DR)
+  const bool glider_dr =
+      options.glider_dead_reckoning && options.pitch_calibration && f.pitch_samples > 0 && f.pitch_scale > 0.0;
+  // The glider's DR error its pitch sensor adds, where the model's DR does not count it.
+  const double sensor_dr_factor = options.pitch_calibration && !glider_dr ? f.pitch_dr_speed_factor : 1.0;
+  if (glider_dr) {
+    setup.config.dead_reckoning = biased_pitch_dead_reckoning(setup.config.dead_reckoning, 1.0 / f.pitch_scale);
+    // The navigator's mean speed (m_avg_speed) is its DR's: as slow.
+    if (f.pitch_dr_speed_factor > 0.0) setup.average_speed_m_s /= f.pitch_dr_speed_factor;
+  }
   std::vector<DiveMiss> misses;
   const double longest_climb_s = longest_climb_left_s(setup, options);
   if (options.waypoint >= 0 && now.applied.empty()) {
@@ -390,7 +439,8 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     now.active_waypoint = options.waypoint;
     f.notes.push_back("active waypoint given (--waypoint), not replayed");
   } else {
-    replay_waypoints(now, history, setup, options, longest_climb_s, misses);
+    replay_waypoints(now, history, setup, options, longest_climb_s, model_dr_ratio(setup, options) * sensor_dr_factor,
+                     misses);
   }
   // Only the last day's dives: older water and older trim are other ones.
   {
@@ -430,14 +480,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   // last segment, or the surfacing interval), and the persistence baseline.
   // The model's own check of the firmware's dead reckoning: one still-water
   // flight of the coming dive, true against dead-reckoned distance.
-  {
-    FlightSetup still = setup;
-    still.current = CurrentEstimate{};
-    still.firmware_current.reset();
-    const RunOutcome r = fly_runs(still, options, 1, false).at(0);
-    const double dr = std::hypot(r.dr_east_m, r.dr_north_m), truth = std::hypot(r.east_m, r.north_m);
-    if (r.surfaced && !r.aborted && dr > 100.0 && truth / dr > 0.5 && truth / dr < 2.0) f.dr_speed_ratio = truth / dr;
-  }
+  f.dr_speed_ratio = model_dr_ratio(setup, options);
   // when_secs counts from its firing, a climb before the arrival: the dive is shorter by the time
   // spent up (the climb left then and the coming one's are alike on average: climb_left_at_firing_s).
   double expected_s = now.config.plan.surface_interval_s > 0.0
@@ -447,8 +490,9 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
     const double last_dive = history.back().call_start_utc_s - history[history.size() - 2].call_end_utc_s;
     if (last_dive > 60.0) expected_s = std::min(expected_s, last_dive);
   }
-  // The glider's DR speed error holds its pitch sensor's too (speed_term.hpp): its share of each estimate out.
-  const double glider_dr_ratio = f.dr_speed_ratio * (options.pitch_calibration ? f.pitch_dr_speed_factor : 1.0);
+  // The glider's DR speed error (the model's DR counts as the glider's, its pitch sensor's scale included):
+  // its share of each estimate out.
+  const double glider_dr_ratio = f.dr_speed_ratio * sensor_dr_factor;
   const std::vector<CurrentSample> samples = current_samples(history, glider_dr_ratio, expected_s);
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior);
   f.favoured = favoured_prior(samples, f.dive_utc_s, f.prior);
@@ -479,7 +523,9 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
 
   FlightSetup base = setup;
   base.current = f.baseline_current;
-  base.vehicle.hydro = nominal_hydro;  // the baseline flies the nominal vehicle
+  base.vehicle.hydro = nominal_hydro;                      // the baseline flies the nominal vehicle
+  base.config.dead_reckoning = now.config.dead_reckoning;  // and its DR as the file's
+  base.average_speed_m_s = model_average_speed_m_s;
   const std::vector<RunOutcome> baseline = fly_runs(base, options, 1, false);
   if (!baseline.empty() && baseline[0].surfaced && !baseline[0].aborted) {
     f.baseline_ok = true;

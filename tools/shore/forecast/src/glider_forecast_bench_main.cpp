@@ -97,6 +97,12 @@ void score_case(const fc::Forecast& f, const fc::TruthSurfacing& next, Score& s,
         e, f.time_utc_s - next.surfaced_utc_s, b, f.baseline_time_utc_s - next.surfaced_utc_s, f.ellipse.semi_major_m,
         f.ellipse.semi_minor_m, radius, f.current.method.c_str(), f.current.sigma_east_m_s, f.current.sigma_north_m_s,
         ze, zn, f.wall_s);
+    // The speed term: the pitch scale read and its evidence, the drag found.
+    std::printf(
+        "    speed term: pitch scale %.3f +-%.3f (%d samples), DR speed x%.3f; speed ratio %.3f over %d dives; "
+        "drag x%.3f +-%.3f\n",
+        f.pitch_scale, f.pitch_scale_sigma, f.pitch_samples, f.pitch_dr_speed_factor, f.glider_speed_ratio,
+        f.speed_dives, f.speed_drag_factor, f.speed_drag_sigma);
     // The currents themselves (m/s), to score a current rule without its
     // flights: the forecast's, persistence's and the one measured next.
     std::printf("    current forecast %+.3f %+.3f, persistence %+.3f %+.3f, measured next %+.3f %+.3f m/s\n",
@@ -167,6 +173,8 @@ int main(int argc, char** argv) {
                "(default: only calibrated for its pitch sensor; docs/forecast.md)");
   app.add_flag("!--no-speed-correction", options.speed_correction_calibrated,
                "the forecasts never scale the model's drag");
+  app.add_flag("!--no-glider-dead-reckoning", options.glider_dead_reckoning,
+               "the forecasts' model firmware dead-reckons as the vehicle file's, not through the pitch sensor");
   app.add_flag("!--no-pitch-calibration", options.pitch_calibration,
                "the forecasts take the glider's dead-reckoned speed as counted (no pitch sensor calibration)");
   tool.add_number("--truth-pitch-bias", truth_options.pitch_bias_max, {0.0, 0.5, ""},

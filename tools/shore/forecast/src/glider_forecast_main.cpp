@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
         "sensor's calibration (default: only with it; docs/forecast.md)");
     command->add_flag("!--no-speed-correction", options.speed_correction_calibrated,
                       "never scale the model's drag to the glider's speed");
+    command->add_flag("!--no-glider-dead-reckoning", options.glider_dead_reckoning,
+                      "the model's firmware dead-reckons as the vehicle file's, not through the glider's pitch sensor "
+                      "(docs/forecast.md)");
     command->add_flag("!--no-pitch-calibration", options.pitch_calibration,
                       "take the glider's dead-reckoned speed as counted, not calibrated for its pitch sensor's scale "
                       "read from from-glider/ (docs/forecast.md)");

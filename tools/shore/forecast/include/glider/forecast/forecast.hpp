@@ -47,6 +47,10 @@ struct ForecastOptions {
   // The glider's dead-reckoned speed calibrated for its pitch sensor's scale,
   // read from the steady glides it sent home (speed_term.hpp; off: --no-pitch-calibration).
   bool pitch_calibration = true;
+  // The model's firmware dead-reckons through the glider's pitch sensor (its
+  // scale read as above), its navigator's mean speed as slow (off:
+  // --no-glider-dead-reckoning: the vehicle file's DR).
+  bool glider_dead_reckoning = true;
 };
 
 struct RunOutcome {
