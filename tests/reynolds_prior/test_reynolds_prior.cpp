@@ -7,15 +7,12 @@
 // other callers (the deployment view, health) flew 0 for a silent file.
 #include <CppUTest/TestHarness.h>
 
-#include <cmath>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "glider/diagnose/deployment_diagnosis.hpp"
 #include "glider/diagnose/diagnose.hpp"
-#include "glider/diagnose/heading_diagnose.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/model/vehicle_file.hpp"
 
@@ -111,24 +108,4 @@ TEST(DiagnoseReynoldsPrior, EveryLibraryCallerFliesTheSameRule) {
   CHECK_TRUE(view.segments.at(0).fixed.has_value());
   DOUBLES_EQUAL(diagnose::kDragReynoldsExponentPrior, view.segments[0].fixed->drag_reynolds_exponent, 0.0);
   DOUBLES_EQUAL(silent.findings.front().value, view.segments[0].fixed->findings.front().value, 0.0);
-}
-
-// The heading plane reads each glide's speed from the steady glide at the
-// logged pitch and depth rate: it flies the vertical plane's exponent (the
-// same rule, diagnose_heading), not the file's 0 where the file is silent.
-TEST(DiagnoseReynoldsPrior, TheHeadingPlaneFliesTheSameGlide) {
-  const glider::flightlog::FlightLog log =
-      glider::flightlog::read_flight_log(GLIDER_SOURCE_DIR "/tests/data/real/comet-2016-174-05.csv");
-  diagnose::HeadingDiagnoseOptions options;
-  options.closed_loop = false;  // the rule, not the closed loop, is under test
-  auto unexplained = [&](const model::VehicleParams& v, std::optional<double> asked = std::nullopt) {
-    diagnose::HeadingDiagnoseOptions o = options;
-    o.drag_reynolds_exponent = asked;
-    return diagnose::diagnose_heading(v, log, o).unexplained_yaw_rate_rad_s;
-  };
-  const double silent = unexplained(shallow());
-  CHECK_TRUE(std::isfinite(silent));
-  DOUBLES_EQUAL(unexplained(shallow_stating(diagnose::kDragReynoldsExponentPrior)), silent, 0.0);
-  CHECK_TEXT(unexplained(shallow_stating(0.0)) != silent, "a stated 0 must fly 0, not the prior");
-  DOUBLES_EQUAL(unexplained(shallow_stating(0.0)), unexplained(shallow(), 0.0), 0.0);
 }

@@ -101,10 +101,7 @@ py::object diagnose(const Log& log, const py::object& vehicle, const std::string
     const auto d = glider::diagnose::diagnose(params, observations, options);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::ordered_json j = glider::diagnose::diagnosis_json(d, vehicle_source, wall_s);
-    glider::diagnose::HeadingDiagnoseOptions heading_options;
-    heading_options.drag_reynolds_exponent = drag_reynolds_exponent;
-    // As glider-diagnose's default --plane both.
-    j["heading"] = glider::diagnose::heading_plane(params, log.log, heading_options).json;
+    j["heading"] = glider::diagnose::heading_plane(params, log.log).json;  // as glider-diagnose's default --plane both
     text = j.dump();
   }
   return py::module_::import("json").attr("loads")(text);

@@ -351,10 +351,7 @@ int main(int argc, char** argv) {
           glider::diagnose::nominal_vehicle({vehicle_path, default_vehicle, glider::cli::boards_dir()}, log, log_path);
       const glider::model::VehicleParams& vehicle = nominal.params;
       // Unasked, diagnose() chooses (drag_reynolds_exponent_for: the file's, else the prior).
-      if (drag_reynolds_option->count() > 0) {
-        options.drag_reynolds_exponent = drag_reynolds_exponent;
-        heading_options.drag_reynolds_exponent = drag_reynolds_exponent;
-      }
+      if (drag_reynolds_option->count() > 0) options.drag_reynolds_exponent = drag_reynolds_exponent;
       const std::string& vehicle_source = nominal.source;
       const auto start = std::chrono::steady_clock::now();
       // Progress on stderr once a run has taken more than 2 s, at most a line a second.

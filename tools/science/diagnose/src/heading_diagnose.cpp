@@ -8,7 +8,6 @@
 #include <limits>
 #include <numbers>
 
-#include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/thin.hpp"
 
 namespace glider::diagnose {
@@ -498,10 +497,8 @@ AutopilotSettings configured_autopilot(const flightlog::FlightLog& log) {
   return s;
 }
 
-HeadingDiagnosis diagnose_heading(const model::VehicleParams& given, const flightlog::FlightLog& log,
+HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
                                   const HeadingDiagnoseOptions& options) {
-  model::VehicleParams nominal = given;
-  nominal.hydro.cd0_reynolds_exponent = drag_reynolds_exponent_for(given, options.drag_reynolds_exponent);
   const HeadingTrack track = prepare_heading_track(log, nominal, options.track);
   HeadingDiagnosis d;
   d.vehicle = nominal.name;

@@ -4,7 +4,6 @@
 // (servo, vehicle, autopilot; heading_effects.hpp) replayed on the log with
 // its nominal model, its effects selected on alternate yos and scored on the
 // others, the named cause, the extended vehicle and the autopilot flown.
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,11 +88,6 @@ struct HeadingDiagnoseOptions {
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
   // Fly the closed-loop check (heading_closed_loop.hpp; not with fit_only).
   bool closed_loop = true;
-  // The skin friction's Reynolds exponent of the glide the heading plane reads
-  // its speed from: as the vertical plane chooses it (DiagnoseOptions'
-  // drag_reynolds_exponent, drag_reynolds_exponent_for: asked, else the
-  // vehicle file's when stated, else the prior), so both planes fly one glide.
-  std::optional<double> drag_reynolds_exponent;
 };
 
 struct UnexplainedYaw {
