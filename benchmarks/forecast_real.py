@@ -20,7 +20,7 @@ With --check (CTest forecast.real_comet_2019) it exits 1 unless each forecast's 
 the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two estimates),
 and each forecast's time within 5 min of the glider's (the issue's time goal).
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
-       [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--no-pitch-calibration]
+       [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
        [--no-glider-dead-reckoning] [--from-glider]
        [--check]
 """
@@ -181,7 +181,7 @@ def main():
     p.add_argument("--current-prior", default=None, help="glider-forecast's --current-prior (evidence, fixed, off)")
     p.add_argument("--speed-correction", action="store_true", help="glider-forecast's --speed-correction")
     p.add_argument("--no-speed-correction", action="store_true", help="glider-forecast's --no-speed-correction")
-    p.add_argument("--no-pitch-calibration", action="store_true", help="glider-forecast's --no-pitch-calibration")
+    p.add_argument("--pitch-calibration", action="store_true", help="glider-forecast's --pitch-calibration")
     p.add_argument("--no-glider-dead-reckoning", action="store_true",
                    help="glider-forecast's --no-glider-dead-reckoning")
     p.add_argument("--from-glider", action="store_true",
@@ -245,7 +245,7 @@ def main():
                              (["--current-prior", a.current_prior] if a.current_prior else []) +
                              (["--speed-correction"] if a.speed_correction else []) +
                              (["--no-speed-correction"] if a.no_speed_correction else []) +
-                             (["--no-pitch-calibration"] if a.no_pitch_calibration else []) +
+                             (["--pitch-calibration"] if a.pitch_calibration else []) +
                              (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []),
                              capture_output=True, text=True)
         if run.returncode != 0:

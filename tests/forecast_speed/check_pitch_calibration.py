@@ -32,7 +32,7 @@ def main():
     run = subprocess.run([bench, "--mission", os.path.join(source, "boards/missions/comet-nsb3/missions/nsb3.mi"),
                           "--vehicle", os.path.join(source, "boards/vehicles/slocum_comet.toml"), "--seed", str(seed),
                           "--truths", "1", "--surfacings", "3", "--from", "2", "--runs", "4", "--threads", "1",
-                          "--truth-pitch-bias", "0.2", "--speed-correction", "--out", out],
+                          "--truth-pitch-bias", "0.2", "--speed-correction", "--pitch-calibration", "--out", out],
                          capture_output=True, text=True, timeout=55)
     if run.returncode != 0:
         fail("bench exited %d: %s %s" % (run.returncode, run.stdout[-400:], run.stderr[-400:]))

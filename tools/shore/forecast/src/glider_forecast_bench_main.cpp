@@ -175,8 +175,9 @@ int main(int argc, char** argv) {
                "the forecasts never scale the model's drag");
   app.add_flag("!--no-glider-dead-reckoning", options.glider_dead_reckoning,
                "the forecasts' model firmware dead-reckons as the vehicle file's, not through the pitch sensor");
-  app.add_flag("!--no-pitch-calibration", options.pitch_calibration,
-               "the forecasts take the glider's dead-reckoned speed as counted (no pitch sensor calibration)");
+  app.add_flag("--pitch-calibration", options.pitch_calibration,
+               "the forecasts calibrate the glider's dead-reckoned speed for its pitch sensor's scale (off by "
+               "default, as glider-forecast)");
   tool.add_number("--truth-pitch-bias", truth_options.pitch_bias_max, {0.0, 0.5, ""},
                   "the truths' pitch sensor reads (1 + b) x the hull's pitch, b drawn uniform in [-this, this]")
       ->capture_default_str();

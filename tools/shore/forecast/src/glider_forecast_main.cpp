@@ -46,9 +46,10 @@ int main(int argc, char** argv) {
     command->add_flag("!--no-glider-dead-reckoning", options.glider_dead_reckoning,
                       "the model's firmware dead-reckons as the vehicle file's, not through the glider's pitch sensor "
                       "(docs/forecast.md)");
-    command->add_flag("!--no-pitch-calibration", options.pitch_calibration,
-                      "take the glider's dead-reckoned speed as counted, not calibrated for its pitch sensor's scale "
-                      "read from from-glider/ (docs/forecast.md)");
+    command->add_flag("--pitch-calibration", options.pitch_calibration,
+                      "calibrate the glider's dead-reckoned speed for its pitch sensor's scale read from from-glider/ "
+                      "(then the drag is corrected and the model dead-reckons as the glider; off by default: the "
+                      "real comet contradicts it, docs/forecast.md)");
     command
         ->add_option("--current-prior", prior_mode,
                      "the current's prior: evidence (the estimates weigh its widths), fixed or off (persistence); "

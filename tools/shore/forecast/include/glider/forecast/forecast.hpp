@@ -45,8 +45,13 @@ struct ForecastOptions {
   bool speed_correction = false;
   bool speed_correction_calibrated = true;
   // The glider's dead-reckoned speed calibrated for its pitch sensor's scale,
-  // read from the steady glides it sent home (speed_term.hpp; off: --no-pitch-calibration).
-  bool pitch_calibration = true;
+  // read from the steady glides it sent home (speed_term.hpp; on:
+  // --pitch-calibration). Off by default: it wins on SIL truths whose navigator
+  // counts slow through a biased pitch sensor by construction, but the real
+  // comet's own log says its navigator did not (m_avg_speed 0.265 m/s, the
+  // model's 0.27), and its forecast from surfacing 1 loses with it, 68 m ->
+  // 1174 m (docs/forecast.md, speed term).
+  bool pitch_calibration = false;
   // The model's firmware dead-reckons through the glider's pitch sensor (its
   // scale read as above), its navigator's mean speed as slow (off:
   // --no-glider-dead-reckoning: the vehicle file's DR).
