@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "glider/firmware/yo_mission.hpp"
+#include "glider/units.hpp"
 
 namespace glider::sil {
 
@@ -37,7 +37,7 @@ bool FlightStats::write(const hal::FlightLogRecord& r) {
     ++s.samples;
     s.pitch_sum_rad += r.m_pitch;
     s.depth_rate_sum_m_s += r.m_depth_rate;
-    const double degrees = std::clamp(std::round(r.m_pitch * 180.0 / std::numbers::pi), -90.0, 90.0);
+    const double degrees = std::clamp(std::round(rad_to_deg(r.m_pitch)), -90.0, 90.0);
     ++s.pitch_histogram_deg[static_cast<std::size_t>(degrees + 90.0)];
     if (std::isfinite(r.c_pitch)) {
       const double error = r.m_pitch - r.c_pitch;

@@ -136,7 +136,7 @@ void step_interval(const EffectAssessment& a, const std::vector<SegmentMeasureme
 // the level at the hinge and the last value, each known no better than the
 // median per-segment half-width on its side, over the days between them.
 // (The scatter alone gave a drag rate +-1 %, the segments' own intervals
-// +-2-9 %; the plane's gain on the increment is the rule's rate_gain_low.)
+// +-2-9 %.)
 double hinge_slope_half_width(const EffectAssessment& a, const std::vector<SegmentMeasurement>& segments,
                               double last_time_s) {
   const diagnose::Trend& tr = a.trend;
@@ -146,15 +146,6 @@ double hinge_slope_half_width(const EffectAssessment& a, const std::vector<Segme
   const double hb = segment_half_width(a, segments, tr.hinge_s, true);
   const double ha = segment_half_width(a, segments, tr.hinge_s, false);
   return std::max(scatter, std::hypot(hb, ha) / span_days);
-}
-
-// A rate read by a plane whose gain on the change is between gain_low and 1
-// (the rule's rate_gain_low): the truth is the reading over the gain, so the
-// interval reaches 1 / gain_low out on each side's own sign.
-void allow_rate_gain(double gain_low, double& low, double& high) {
-  if (!(gain_low > 0.0 && gain_low < 1.0)) return;
-  low = std::min(low, low / gain_low);
-  high = std::max(high, high / gain_low);
 }
 
 std::string step_message(const HealthEffectInfo& e, double change, double low, double high, double before,
@@ -258,7 +249,6 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
                                            0.5 * (tr.hinge_level.high - tr.hinge_level.low), hinge_before);
       alert.low = hinge_rate - half;
       alert.high = hinge_rate + half;
-      allow_rate_gain(e.rule.rate_gain_low, alert.low, alert.high);
       alert.relative = true;
       alert.since_s = a.since_s.value_or(tr.hinge_s);
       alert.message = std::string(e.id) + " is changing by " + number(100.0 * alert.size) + " % of its level a day [" +
@@ -290,7 +280,6 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
           alert.size = w.slope_per_day.value;
           alert.low = w.slope_per_day.low;
           alert.high = w.slope_per_day.high;
-          allow_rate_gain(e.rule.rate_gain_low, alert.low, alert.high);
           // Onset: where the recent line leaves the level before it.
           double onset = wt.front();
           if (before.size() >= 2) {

@@ -28,10 +28,6 @@ struct AlertRule {
   bool relative = false;
   double rate_per_day = 0.0;      // a line: |slope| at least this (unit/day); 0: steps only
   double min_line_span_days = 0;  // a line is judged only over at least this span
-  // The lowest gain the measuring plane reads a change's rate with (1: none
-  // known): the truth may be up to 1 / rate_gain_low of the reading, and a
-  // line's interval reaches that far out (assess.cpp, docs/health.md).
-  double rate_gain_low = 1.0;
 };
 
 struct HealthEffectInfo {
