@@ -1,25 +1,37 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""The forecast on the real comet deployment's consecutive surfacings (docs/forecast.md, Benchmark).
+"""The forecast on the real comet deployments' consecutive surfacings (docs/forecast.md, Benchmark).
 
-comet-2019-222-02-154 and -156 (tests/data/real, mission NSB3 in boards/missions/comet-nsb3) are two
-~2.8 h dives of one deployment with fixes before each dive and after each surfacing. Each surfacing
-becomes a shore event (glider-shore-surfacing/1: the last fix before the dive, the dive time, the
-glider's m_water_vx/vy after its update, its DR position before the first fix), written into a glider
+comet-2019 (the default, --deployment comet-2019): comet-2019-222-02-154 and -156 (tests/data/real,
+mission NSB3 in boards/missions/comet-nsb3) are two ~2.8 h dives of one deployment with fixes before each
+dive and after each surfacing.
+comet-2016 (--deployment comet-2016): comet-2016-174-05.csv (segments 000..009, 4.13 h), seven calls (the
+file's start, five after 8-half-yo dives - the first 2 half yos -, one after a timer's climb; the yo tops'
+brief fixes are no calls), flown with the mission reconstructed from its .dbd files
+(boards/missions/comet-subex2016-reconstructed, README: not the flown mission); the forecast from the 6th
+call's predecessor is printed, not scored (the timer is not in the mission). --deployment all: both, and
+the combined tables (median, p90 by nearest rank, with and without each deployment's surfacing 0).
+Each surfacing becomes a shore event (glider-shore-surfacing/1: the last fix before the dive, the dive time,
+the glider's m_water_vx/vy after its update, its DR position before the first fix), written into a glider
 folder holding what the shore would have had at that call; glider-forecast forecasts the next
-surfacing, scored against the first fix after it (position) and the time the glider reached 1 m.
+surfacing, scored against the first fix after it (position) and the time the glider reached 1 m; the same
+forecast options and vehicle (slocum_comet.toml) for every deployment.
 The waypoint the glider flew to at each dive is its own (c_wpt_lat/lon, x_last_wpt_lat/lon in the .dbd
-files of tests/data/real/dbd/comet-2019, decoded with glider-convert); `--waypoint N` forces one.
+files of tests/data/real/dbd/comet-20xx, decoded with glider-convert); `--waypoint N` forces one.
 Each forecast's position error is split into terms (docs/forecast.md, "Where the error comes from"):
   flight  = the baseline flight (water as the glider believed it) - the glider's own dead reckoning
-            (both fly the believed water: what is left is heading law, speed through the water, waypoints)
+            (both fly the believed water: what is left is heading law, speed through the water, waypoints;
+            comet-2016: the DR's steps summed without its resets at the yo tops' fixes)
   current = (forecast current - the current the glider measured over the dive) x time under water
   time    = (forecast current - believed current) x (forecast - true time under water)
   rest    = error - the three (the runs' spread and median, the DR's own error)
-With --check (CTest forecast.real_comet_2019) it exits 1 unless each forecast's current is nearer the one
-the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two estimates),
-and each forecast's time within 5 min of the glider's (the issue's time goal).
+With --check: comet-2019 (CTest forecast.real_comet_2019) exits 1 unless each forecast's current is nearer
+the one the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two
+estimates), and each forecast's time within 5 min of the glider's (the issue's time goal); comet-2016
+(forecast.real_comet_2016) unless the waypoints are the glider's c_wpt (0 0 0 1 1 1) and from surfacing 2 on
+each forecast is within 0.5 km of the first fix and its current within 0.1 m/s of the glider's next update.
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
+       [--deployment comet-2019|comet-2016|all]
        [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
        [--no-glider-dead-reckoning] [--from-glider]
        [--check]
@@ -256,7 +268,8 @@ def run_case(a, forecast, vehicle, out, case):
             "signed_time": t_utc(n["time_utc"]) - up, "base_signed_time": t_utc(b["time_utc"]) - up,
             "current_off": math.hypot(cp[0] - ct[0], cp[1] - ct[1]),
             "persistence_off": math.hypot(cb[0] - ct[0], cb[1] - ct[1]),
-            "forecast_dive_s": pred_s, "true_dive_s": true_s}
+            "forecast_dive_s": pred_s, "true_dive_s": true_s, "current": cp, "persistence": cb,
+            "fix_current": case["truth"].get("fix_current")}
 
 
 def comet_2019_cases(a, real, convert):
@@ -347,6 +360,11 @@ def comet_2016_surfacings(rows):
                 lon += here[1] - prev[1]
             prev = here
         c["pure_dr"] = (lat, lon)
+        # The current the fixes say over the dive: the glider's carried estimate plus the pure DR's miss
+        # of the first fix over the time from the dive's fix (the glider's own m_water_vx lags it here).
+        under_s = c["first"]["m_present_time"] - before["fix"]["m_present_time"]
+        e, n = offset_m(lat, lon, ddmm(c["first"]["m_gps_lat"]), ddmm(c["first"]["m_gps_lon"]))
+        c["fix_current"] = (before["water"]["m_water_vx"] + e / under_s, before["water"]["m_water_vy"] + n / under_s)
     return calls
 
 
@@ -376,7 +394,7 @@ def comet_2016_cases(a, real, convert):
                       "mission": mission, "log_name": "2016062%d_%04d.surfacing.json", "events": events[:k + 1],
                       "waypoint": wpts[k],
                       "truth": {"up": nxt["arrival"], "first": nxt["first"], "water": nxt["water"],
-                                "dr_end": nxt["pure_dr"]},
+                                "dr_end": nxt["pure_dr"], "fix_current": nxt["fix_current"]},
                       "from_glider": [(rows[calls[j]["dive_index"]:calls[j + 1]["start_index"] + 1],
                                        calls[j + 1]["arrival"], "comet-2016-174-05-dive%d" % j) for j in range(k)],
                       # surfacing 6 came up by a timer (x_surface_active 4 at 15 m in a climb) the
@@ -469,13 +487,18 @@ def main():
     if results_2016:
         scored = [r for r in results_2016 if not r["timer"]]
         print("\ncomet-2016 per forecast (the time signed, + late; dive: forecast / true time under water)")
-        print("| from | position | baseline | time | baseline time | dive forecast/true | current off | persistence off |")
-        print("|---|---|---|---|---|---|---|---|")
+        print("| from | position | baseline | time | baseline time | dive forecast/true | current off | persistence off "
+              "| current: forecast / the fixes say (E, N m/s) | off the fixes': forecast / persistence |")
+        print("|---|---|---|---|---|---|---|---|---|---|")
         for r in results_2016:
-            print("| %d%s | %.2f km | %.2f km | %+.0f s | %+.0f s | %.0f / %.0f s | %.3f m/s | %.3f m/s |" %
+            fc = r["fix_current"]
+            print("| %d%s | %.2f km | %.2f km | %+.0f s | %+.0f s | %.0f / %.0f s | %.3f m/s | %.3f m/s "
+                  "| %+.3f %+.3f / %+.3f %+.3f | %.3f / %.3f |" %
                   (r["k"], " (timer, not scored)" if r["timer"] else "", r["pos"] / 1000, r["base_pos"] / 1000,
                    r["signed_time"], r["base_signed_time"], r["forecast_dive_s"], r["true_dive_s"],
-                   r["current_off"], r["persistence_off"]))
+                   r["current_off"], r["persistence_off"], r["current"][0], r["current"][1], fc[0], fc[1],
+                   math.hypot(r["current"][0] - fc[0], r["current"][1] - fc[1]),
+                   math.hypot(r["persistence"][0] - fc[0], r["persistence"][1] - fc[1])))
         table("real comet-2016 (surfacings 0-4 forecast, the 8-half-yo dives' ends)", scored)
         table("real comet-2016 without surfacing 0", [r for r in scored if r["k"] > 0])
         # The solid part (forecast.real_comet_2016), what holds with the forecast's rules as they are:
