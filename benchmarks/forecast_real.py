@@ -185,7 +185,7 @@ def main():
     p.add_argument("--no-glider-dead-reckoning", action="store_true",
                    help="glider-forecast's --no-glider-dead-reckoning")
     p.add_argument("--from-glider", action="store_true",
-                   help="put the dives' m_depth and m_pitch the shore had by each call (4.5 s rows, as an .sbd "
+                   help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
     p.add_argument("--check", action="store_true", help="test mode: the current checks above, PASS/FAIL line")
     a = p.parse_args()
@@ -233,10 +233,11 @@ def main():
             os.makedirs(os.path.join(d, "from-glider"))
             for logged, until, name in ((files[0], up1, "comet-2019-222-02-154"),)[:k]:
                 with open(os.path.join(d, "from-glider", name + ".sbd.csv"), "w") as f:
-                    f.write("m_present_time,m_depth,m_pitch\n")
+                    f.write("m_present_time,m_depth,m_pitch,m_heading\n")
                     for r in logged:
                         if r["m_present_time"] <= until and r["m_depth"] is not None and r["m_pitch"] is not None:
-                            f.write("%.3f,%.3f,%.5f\n" % (r["m_present_time"], r["m_depth"], r["m_pitch"]))
+                            heading = "" if r["m_heading"] is None else "%.5f" % r["m_heading"]
+                            f.write("%.3f,%.3f,%.5f,%s\n" % (r["m_present_time"], r["m_depth"], r["m_pitch"], heading))
         # The history holds no fix of an earlier arrival: the waypoint is the glider's own (its .dbd's
         # c_wpt: dive 154 flew to waypoint 1, 54.30 N 7.43 E, reached by DR 6918 s in, then waypoint 0;
         # dive 156 to waypoint 0, 54.558 N 7.217 E).
