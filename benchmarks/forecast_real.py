@@ -199,14 +199,15 @@ def t_utc(s):
 
 
 def write_from_glider(d, dives):
-    """The dives' m_depth and m_pitch the shore had by the call (4.5 s rows, as an .sbd carries them)."""
+    """The dives' m_depth, m_pitch and m_heading the shore had by the call (4.5 s rows, as an .sbd carries them)."""
     os.makedirs(os.path.join(d, "from-glider"))
     for logged, until, name in dives:
         with open(os.path.join(d, "from-glider", name + ".sbd.csv"), "w") as f:
-            f.write("m_present_time,m_depth,m_pitch\n")
+            f.write("m_present_time,m_depth,m_pitch,m_heading\n")
             for r in logged:
                 if r["m_present_time"] <= until and r["m_depth"] is not None and r["m_pitch"] is not None:
-                    f.write("%.3f,%.3f,%.5f\n" % (r["m_present_time"], r["m_depth"], r["m_pitch"]))
+                    heading = "" if r["m_heading"] is None else "%.5f" % r["m_heading"]
+                    f.write("%.3f,%.3f,%.5f,%s\n" % (r["m_present_time"], r["m_depth"], r["m_pitch"], heading))
 
 
 def run_case(a, forecast, vehicle, out, case):
@@ -444,7 +445,7 @@ def main():
     p.add_argument("--no-glider-dead-reckoning", action="store_true",
                    help="glider-forecast's --no-glider-dead-reckoning")
     p.add_argument("--from-glider", action="store_true",
-                   help="put the dives' m_depth and m_pitch the shore had by each call (4.5 s rows, as an .sbd "
+                   help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
     p.add_argument("--check", action="store_true", help="test mode: the checks above, PASS/FAIL line")
     a = p.parse_args()

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "glider/firmware/geo.hpp"
 #include "glider/flightlog/flight_log.hpp"
+#include "glider/forecast/course_straightness.hpp"
+#include "glider/forecast/from_glider.hpp"
 
 namespace glider::forecast {
 namespace fs = std::filesystem;
@@ -21,6 +21,9 @@ constexpr double kMaxSampleGapS = 30.0;
 constexpr int kSpeedPasses = 6;
 constexpr double kSpeedStepMax = 1.3;     // per pass: the slope is the comet polar's only near the last flight
 constexpr double kSpeedTolerance = 0.01;  // of the ratio: below the DR's own spread
+// A dive whose course's straightness is below this went round: its net track
+// divided by it would multiply the fixes' and current's errors.
+constexpr double kMinStraightness = 0.5;
 
 // One direction's scale (model / glider mean |pitch|) and its sampling sigma.
 bool direction_scale(double glider_mean, double glider_sd, int glider_n, double model_mean, int model_n, double& scale,
@@ -79,24 +82,6 @@ SpeedFlight still_water_flight(const FlightSetup& setup, const ForecastOptions& 
   out.average_m_s = r.average_speed_m_s;
   out.speed_m_s = r.surfaced && !r.aborted && r.time_s > 600.0 ? std::hypot(r.dr_east_m, r.dr_north_m) / r.time_s : 0.0;
   return out;
-}
-
-// The header (the first line not a `#` comment) names m_depth and m_pitch.
-bool has_glide_columns(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    bool depth = false, pitch = false;
-    std::stringstream names(line);
-    std::string name;
-    while (std::getline(names, name, ',')) {
-      depth = depth || name == "m_depth";
-      pitch = pitch || name == "m_pitch";
-    }
-    return depth && pitch;
-  }
-  return false;
 }
 
 }  // namespace
@@ -161,18 +146,12 @@ GlidePitch logged_glide_pitch(const fs::path& glider_dir, double since_utc_s, st
                               int& files) {
   GlidePitch g;
   files = 0;
-  const fs::path from = glider_dir / "from-glider";
-  if (!fs::is_directory(from)) return g;
-  std::vector<fs::path> paths;
-  for (const fs::directory_entry& e : fs::directory_iterator(from)) {
-    if (e.is_regular_file() && e.path().extension() == ".csv") paths.push_back(e.path());
-  }
-  std::sort(paths.begin(), paths.end());
   flightlog::ReadOptions read;
   read.required = {{"m_depth"}, {"m_pitch"}};
   read.columns = {"m_depth", "m_pitch"};
-  for (const fs::path& path : paths) {
-    if (!has_glide_columns(path)) continue;  // a science (.tbd/.ebd) file: no pitch to read, nothing wrong
+  for (const fs::path& path : from_glider_files(glider_dir)) {
+    if (!header_names(path, {"m_depth", "m_pitch"}))
+      continue;  // a science (.tbd/.ebd) file: no pitch to read, nothing wrong
     try {
       const flightlog::FlightLog log = flightlog::read_flight_log(path, read);
       const flightlog::Column& t = log.time();
@@ -231,7 +210,8 @@ SpeedMatch match_speed(double target_m_s, const SpeedFlight& at_one, const std::
 // The glider's own speed through the water, as its dead reckoning counts
 // it, against the model's: over each recent dive of the last day the DR's
 // track less the current it carried ((DR position on surfacing - the fix it
-// dived from) / time - its m_water_vx/vy then), against one still-water
+// dived from) / time - its m_water_vx/vy then, over its course's
+// straightness where the glider sent its heading home), against one still-water
 // flight of the model (whose DR is its track through the water). Both count
 // speed from the depth rate and pitch; the glider's pitch through its
 // sensor, whose scale the steady glides it sent home give against the
@@ -247,6 +227,11 @@ SpeedMatch match_speed(double target_m_s, const SpeedFlight& at_one, const std::
 void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider_dir, FlightSetup& setup,
                    const ForecastOptions& options, Forecast& f) {
   std::vector<double> glider_speeds;
+  // The glider's headings under way, to read each dive's net track as the
+  // distance it glided (course_straightness.hpp).
+  const std::vector<HeadingSample> headings = logged_headings(glider_dir, f.fix_utc_s - 2.0 * 86400.0, f.notes);
+  int straightened = 0;
+  double least_straight = 1.0, most_straight = 0.0;
   for (std::size_t i = 1; i < history.size(); ++i) {
     const Surfacing& s = history[i];
     const Surfacing& before = history[i - 1];
@@ -257,8 +242,17 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
     const fw::EastNorth dr =
         fw::LocalFrame({*before.lat_deg, *before.lon_deg}).to_local({*s.dr_lat_deg, *s.dr_lon_deg});
     const double ce = before.water_vx_m_s.value_or(0.0), cn = before.water_vy_m_s.value_or(0.0);
-    const double speed = std::hypot(dr.east_m / under_s - ce, dr.north_m / under_s - cn);
-    if (std::isfinite(speed) && speed > 0.02) glider_speeds.push_back(speed);
+    const double net = std::hypot(dr.east_m / under_s - ce, dr.north_m / under_s - cn);
+    const double straight = course_straightness(headings, before.call_end_utc_s, s.call_start_utc_s);
+    if (std::isfinite(straight) && straight < kMinStraightness) continue;  // it circled: its net track says nothing
+    const double speed = std::isfinite(straight) ? net / straight : net;
+    if (!(std::isfinite(speed) && speed > 0.02)) continue;
+    glider_speeds.push_back(speed);
+    if (std::isfinite(straight)) {
+      ++straightened;
+      least_straight = std::min(least_straight, straight);
+      most_straight = std::max(most_straight, straight);
+    }
   }
   GlidePitch model_pitch;
   const SpeedFlight nominal = still_water_flight(setup, options, &model_pitch);
@@ -270,7 +264,7 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
   const GlidePitch logged = logged_glide_pitch(glider_dir, f.fix_utc_s - 86400.0, f.notes, files);
   const PitchCalibrationEstimate calibration = estimate_pitch_calibration(logged, model_pitch);
   const DrSpeedCalibration dr_calibration = dr_speed_calibration(setup.config.dead_reckoning, logged, calibration);
-  char text[320];
+  char text[400];
   if (calibration.have) {
     f.pitch_scale = calibration.scale;
     f.pitch_scale_sigma = calibration.scale_sigma;
@@ -301,10 +295,19 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
     const double glider = counted * k;
     f.glider_speed_ratio = glider / model;
     f.speed_dives = static_cast<int>(glider_speeds.size());
+    char course[160];
+    if (straightened == static_cast<int>(glider_speeds.size())) {
+      std::snprintf(course, sizeof course, ", each net track over its course's straightness %.2f-%.2f", least_straight,
+                    most_straight);
+    } else {
+      std::snprintf(course, sizeof course,
+                    ", %d of them net tracks without the heading (a dive that turned counts short there)",
+                    static_cast<int>(glider_speeds.size()) - straightened);
+    }
     std::snprintf(text, sizeof text,
-                  "speed through the water by dead reckoning: the glider's %.3f m/s over %zu recent dives%s, the "
+                  "speed through the water by dead reckoning: the glider's %.3f m/s over %zu recent dives%s%s, the "
                   "model's %.3f (%s)",
-                  glider, glider_speeds.size(), calibrate ? " (pitch calibrated)" : "", model,
+                  glider, glider_speeds.size(), course, calibrate ? " (pitch calibrated)" : "", model,
                   correct                                             ? "corrected below"
                   : options.speed_correction_calibrated && !calibrate ? "not corrected: no pitch calibration"
                                                                       : "said, not applied");
