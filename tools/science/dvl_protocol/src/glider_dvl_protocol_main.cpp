@@ -61,6 +61,50 @@ GliderflightInput gliderflight_input(const glider::flightlog::FlightLog& log) {
   return in;
 }
 
+// The vertical water velocity glider-diagnose fitted (its depth profile, else its constant), m/s + down.
+double fitted_water_at(const glider::diagnose::Diagnosis& d, double depth_m) {
+  if (d.extended_profile) return d.extended_profile->at(depth_m);
+  return d.extended[static_cast<std::size_t>(glider::diagnose::Effect::kVerticalWaterVelocity)];
+}
+
+bool water_fitted(const glider::diagnose::Diagnosis& d) {
+  return d.extended_profile.has_value() ||
+         d.extended[static_cast<std::size_t>(glider::diagnose::Effect::kVerticalWaterVelocity)] != 0.0;
+}
+
+std::string water_text(const glider::diagnose::Diagnosis& d) {
+  std::string text;
+  char item[64];
+  if (d.extended_profile) {
+    const auto& p = *d.extended_profile;
+    for (std::size_t b = 0; b < p.w_m_s.size(); ++b) {
+      std::snprintf(item, sizeof item, "%s%.0f-%.0f m %+.1f", b == 0 ? "" : ", ",
+                    p.first_m + p.bin_m * static_cast<double>(b), p.first_m + p.bin_m * static_cast<double>(b + 1),
+                    1e3 * p.w_m_s[b]);
+      text += item;
+    }
+    return text + " mm/s, + down";
+  }
+  std::snprintf(item, sizeof item, "%+.1f mm/s, + down",
+                1e3 * d.extended[static_cast<std::size_t>(glider::diagnose::Effect::kVerticalWaterVelocity)]);
+  return item;
+}
+
+// gliderflight's records with glider-diagnose's fitted water velocity at each record's depth (from its pressure).
+GliderflightInput with_water(GliderflightInput in, const glider::diagnose::Diagnosis& d) {
+  if (!water_fitted(d)) {
+    throw std::runtime_error(
+        "--shared-water: glider-diagnose fitted no vertical water velocity (add vertical_water_velocity to --fit)");
+  }
+  constexpr double kGravity = 9.80665;
+  in.water_w_down_m_s.resize(in.time_s.size());
+  for (std::size_t i = 0; i < in.time_s.size(); ++i) {
+    const double depth_m = in.pressure_bar[i] * 1e5 / (in.density_kg_m3[i] * kGravity);
+    in.water_w_down_m_s[i] = fitted_water_at(d, depth_m);
+  }
+  return in;
+}
+
 // gliderflight's example mask: 10-35 dbar.
 bool in_example_window(double pressure_bar) { return pressure_bar * 10.0 >= 10.0 && pressure_bar * 10.0 <= 35.0; }
 
@@ -116,6 +160,12 @@ int main(int argc, char** argv) {
   app.add_flag("--gliderflight-epsilon", gliderflight_epsilon,
                "the protocol's gliderflight fits also fit its hull compressibility epsilon (as gliderflight's "
                "calibrate can; for comparisons where glider-diagnose fits hull_compressibility)");
+  bool shared_water = false;
+  app.add_flag("--shared-water", shared_water,
+               "both models carry the same vertical water velocity: the one glider-diagnose fits on the even yos "
+               "(vertical_water_velocity in --fit or its selection: a depth profile) is given to gliderflight's "
+               "calibration, whose depth rate is then its flight plus that water (the speeds scored do not depend "
+               "on it, the fitted parameters do)");
   double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
   tool.add_number("--score-block", score_block_s, {0.0, 600.0, "s"},
                   "glider-diagnose's selection score: held-out residuals averaged over blocks of a glide this long "
@@ -185,14 +235,30 @@ int main(int argc, char** argv) {
     }
 
     // 2. The protocol.
+    const GliderflightInput in_protocol = shared_water ? with_water(in, d) : in;
+    if (shared_water) {
+      std::printf(
+          "\nwater term, both models: glider-diagnose's vertical water velocity fitted on the even yos (%s), "
+          "given to gliderflight's calibration\n",
+          water_text(d).c_str());
+    }
     std::vector<double> gf_speed[2], gf_dynamic_w;
     for (int k = 0; k < 2; ++k) {
       const auto kind = k == 0 ? GliderflightKind::kDynamic : GliderflightKind::kSteady;
-      fitted[k] = glider::science::gliderflight_calibrate(kind, {}, in, fit_even, nullptr,
+      fitted[k] = glider::science::gliderflight_calibrate(kind, {}, in_protocol, fit_even, nullptr,
                                                           gliderflight_epsilon
                                                               ? glider::science::GliderflightFit::kCd0MassEpsilon
                                                               : glider::science::GliderflightFit::kCd0Mass);
-      const auto solved = glider::science::gliderflight_solve(kind, fitted[k], in);
+      auto solved = glider::science::gliderflight_solve(kind, fitted[k], in);
+      if (glider::science::gliderflight_diverged(solved, fit_even)) {
+        // No score from a fit that left the model's domain (the breakdown's truth check skips such logs).
+        std::printf(
+            "\ngliderflight %s: its fit diverged (its model not finite at most of the fitted records): "
+            "no score\n",
+            k == 0 ? "dynamic" : "steady");
+        std::fill(solved.speed_m_s.begin(), solved.speed_m_s.end(), std::nan(""));
+        std::fill(solved.w_m_s.begin(), solved.w_m_s.end(), std::nan(""));
+      }
       gf_speed[k] = solved.speed_m_s;
       if (k == 0) gf_dynamic_w = solved.w_m_s;
     }

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 
@@ -53,6 +54,16 @@ void check(const GliderflightInput& in) {
   if (n < 3 || in.pressure_bar.size() != n || in.pitch_rad.size() != n || in.buoyancy_change_cc.size() != n ||
       in.density_kg_m3.size() != n) {
     throw std::invalid_argument("gliderflight model: the input columns differ in length or have fewer than 3 records");
+  }
+  if (!in.water_w_down_m_s.empty() && in.water_w_down_m_s.size() != n) {
+    throw std::invalid_argument("gliderflight model: " + std::to_string(in.water_w_down_m_s.size()) +
+                                " water velocities for " + std::to_string(n) + " records");
+  }
+  for (std::size_t i = 0; i < in.water_w_down_m_s.size(); ++i) {
+    if (!std::isfinite(in.water_w_down_m_s[i]) || std::abs(in.water_w_down_m_s[i]) > 1.0) {
+      throw std::invalid_argument("gliderflight model: record " + std::to_string(i) + " water velocity " +
+                                  std::to_string(in.water_w_down_m_s[i]) + " m/s (allowed: finite, within +-1 m/s)");
+    }
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(in.time_s[i] + in.pressure_bar[i] + in.pitch_rad[i] + in.buoyancy_change_cc[i] +
@@ -223,19 +234,27 @@ GliderflightParameters gliderflight_calibrate(GliderflightKind kind, Gliderfligh
     if (dims == 3) q.epsilon_per_pa = x[2];
     return q;
   };
+  // How many fitted records each evaluated point's model is finite at: the
+  // stopping rule's test for a fit that has left the model's domain.
+  std::map<Point, std::size_t> finite_at;
+  std::size_t fitted_records = 0;
+  for (const bool use : fit) fitted_records += use ? 1 : 0;
   auto cost = [&](const Point& x) {
     const GliderflightParameters q = with(x);
+    finite_at[x] = 0;
     if (!(q.cd0 > 0.0)) return std::numeric_limits<double>::infinity();
     const GliderflightResult r = kind == GliderflightKind::kSteady ? solve_steady(q, in) : solve_dynamic(q, in);
     double sum = 0.0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < fit.size(); ++i) {
       if (!fit[i]) continue;
-      const double e = r.w_m_s[i] - dhdt[i];
+      const double water_up = in.water_w_down_m_s.empty() ? 0.0 : -in.water_w_down_m_s[i];
+      const double e = r.w_m_s[i] + water_up - dhdt[i];
       if (!std::isfinite(e)) continue;  // np.nanmean
       sum += e * e;
       ++count;
     }
+    finite_at[x] = count;
     return count > 0 ? sum / static_cast<double>(count) : std::numeric_limits<double>::infinity();
   };
   // Nelder-Mead (reflection 1, expansion 2, contraction 1/2, shrink 1/2),
@@ -266,6 +285,15 @@ GliderflightParameters gliderflight_calibrate(GliderflightKind kind, Gliderfligh
       for (std::size_t j = 0; j < dims; ++j) size = std::max(size, std::abs(x[k][j] - best[j]) / scale[j]);
     }
     if (size < 1e-9 && fw - fb <= 1e-16) break;
+    // Diverged: past scipy fmin's own iteration limit (200 per parameter),
+    // the best point's model still not finite at most of the fitted records
+    // (the dynamic model's RK4 blows up on them; np.nanmean drops them, so
+    // the cost is over the few left and the simplex wanders on without
+    // converging, to the cap). Such a fit has no meaning: stop (the protocol
+    // reports the model as diverged). A start that diverges (m_g far from
+    // the glider's) is left the 200 per parameter to walk out of it; the fits
+    // that converge do so in ~70 iterations.
+    if (iteration >= 200 * static_cast<int>(dims) && 2 * finite_at[best] < fitted_records) break;
     Point centre(dims, 0.0);
     for (std::size_t j = 0; j < dims; ++j) {
       double sum = 0.0;
@@ -310,6 +338,17 @@ GliderflightParameters gliderflight_calibrate(GliderflightKind kind, Gliderfligh
   p = with(x[b]);
   if (rms_m_s != nullptr) *rms_m_s = std::sqrt(f[b]);
   return p;
+}
+
+bool gliderflight_diverged(const GliderflightResult& r, const std::vector<bool>& fit) {
+  if (r.w_m_s.size() != fit.size()) throw std::invalid_argument("gliderflight_diverged: mask length");
+  std::size_t fitted = 0, finite = 0;
+  for (std::size_t i = 0; i < fit.size(); ++i) {
+    if (!fit[i]) continue;
+    ++fitted;
+    if (std::isfinite(r.w_m_s[i])) ++finite;
+  }
+  return 2 * finite < fitted;
 }
 
 }  // namespace glider::science

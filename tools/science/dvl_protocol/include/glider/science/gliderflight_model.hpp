@@ -47,6 +47,11 @@ struct GliderflightParameters {
 // The log's time series, one entry per record (gliderflight works on all of them).
 struct GliderflightInput {
   std::vector<double> time_s, pressure_bar, pitch_rad, buoyancy_change_cc, density_kg_m3;
+  // A stated vertical water velocity at each record (m/s, + down; empty: none). The glider's depth rate is its
+  // flight through the water plus this, so a calibration compares w - water with dh/dt; the speed through
+  // the water does not depend on it. The DVL protocol gives gliderflight the profile glider-diagnose fitted,
+  // so both models carry the same water term (--shared-water).
+  std::vector<double> water_w_down_m_s;
 };
 
 struct GliderflightResult {
@@ -71,11 +76,17 @@ enum class GliderflightFit { kCd0Mass, kCd0MassEpsilon };
 // Calibrates C_D0 and m_g (gliderflight's example: calibrate("Cd0", "mg"))
 // on the records where `fit` is true: the least mean square of w - dh/dt
 // (Nelder-Mead from p's values, converged tighter than scipy's fmin
-// defaults, so the minimum is the model's, not the stopping rule's).
+// defaults, so the minimum is the model's, not the stopping rule's). It
+// stops early where the fit diverged: past 200 iterations per parameter
+// (scipy fmin's limit), the best point's model not finite at more than half
+// the fitted records (gliderflight_diverged).
 // Returns p with those fitted; *rms_m_s (if given) the fit's RMS.
 GliderflightParameters gliderflight_calibrate(GliderflightKind kind, GliderflightParameters p,
                                               const GliderflightInput& in, const std::vector<bool>& fit,
                                               double* rms_m_s = nullptr,
                                               GliderflightFit what = GliderflightFit::kCd0Mass);
 
+// Whether a solution diverged on the records `fit` marks: not finite at more
+// than half of them (a calibration that ends there has no meaning).
+bool gliderflight_diverged(const GliderflightResult& r, const std::vector<bool>& fit);
 }  // namespace glider::science
