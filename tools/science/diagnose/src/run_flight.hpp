@@ -100,6 +100,11 @@ struct RunStages {
   FlightConditions::InputKey key{};
   std::vector<model::PrescribedPitchInputs> stages;
   std::size_t intervals = 0;  // the intervals filled so far
+  // Of those, the first `pumped` hold the pumped volume of the key's pump
+  // lag: a new lag alone (the pump lag's grid, fit and Jacobian: a new one
+  // at every flight) recomputes only the pumped volumes (RunFlight::
+  // refresh_pumped), the rest of a stage's inputs do not depend on it.
+  std::size_t pumped = 0;
   // The water's vertical displacement after each interval (ground_depth),
   // for the water it was integrated in: its own key.
   bool water_valid = false, water_has_profile = false;
@@ -129,6 +134,8 @@ class RunFlight {
   // StagePitchTable), with the displaced volume lagged from `lagged0` at
   // the interval's stage k0.
   model::PrescribedPitchInputs inputs(std::size_t i, int k, int n, double lagged0, int k0) const;
+  // Its pumped volume alone (inputs() takes it from here).
+  double pumped_volume_m3(std::size_t i, int k, int n, double lagged0, int k0) const;
 
   // Flies the run from its first sample with body velocities (v1, v3) up
   // to sample `last`: the model's depth change through the water at each
@@ -156,6 +163,9 @@ class RunFlight {
   // (RunStages), in order from the first not cached, without flying: the
   // same calls on the same numbers, so the same bits.
   void cache_stages(std::size_t last) const;
+  // Brings the cached stages' pumped volumes up to `last` to this flight's
+  // pump lag (RunStages::pumped), as cache_stages would compute them.
+  void refresh_pumped(std::size_t last) const;
 
   // N runs' flights side by side, each exactly run->fly(v1, v3, last, *z,
   // nullptr) (the same bits): a main flight is one long chain of dependent
