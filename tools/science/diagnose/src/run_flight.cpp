@@ -166,11 +166,11 @@ void RunFlight::refresh_pumped(std::size_t last) const {
   // The stages are three a sub-step, in order: the first stage of interval `pumped`.
   std::size_t stage = 0;
   for (std::size_t i = first_; i < first_ + stages_.pumped; ++i)
-    stage += 3 * static_cast<std::size_t>(rk4_steps(t_.time_s[i + 1] - t_.time_s[i], c_.max_step_s));
+    stage += 3 * static_cast<std::size_t>(c_.pitch.steps(i));
   // The pumped volume lagged from the last refreshed stage's, as cache_stages carries it.
   double lagged = stage == 0 ? in0_.pumped_volume_m3 : stages_.stages[stage - 1].pumped_volume_m3;
   for (std::size_t i = first_ + stages_.pumped; i < first_ + upto; ++i) {
-    const int steps = rk4_steps(t_.time_s[i + 1] - t_.time_s[i], c_.max_step_s);
+    const int steps = c_.pitch.steps(i);
     for (int s = 0; s < steps; ++s) {
       for (int k = 0; k < 3; ++k)
         stages_.stages[stage + static_cast<std::size_t>(k)].pumped_volume_m3 =
@@ -219,7 +219,7 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
   for (std::size_t i = first_; i < last; ++i) {
     if (std::none_of(flying.begin(), flying.end(), [](bool f) { return f; })) break;
     const double dt = t_.time_s[i + 1] - t_.time_s[i];
-    const int steps = rk4_steps(dt, c_.max_step_s);
+    const int steps = c_.pitch.steps(i);
     const double h = dt / steps;
     for (std::size_t k = 0; k < N; ++k) depth[k] = (*z[k])[i - first_];
     // The intervals are cached in order: the first not cached is the next to cache.
@@ -306,7 +306,7 @@ struct StepCursor {
         return;
       }
       const double dt = view.time_s[i + 1] - view.time_s[i];
-      steps = rk4_steps(dt, view.max_step_s);
+      steps = view.pitch.steps(i);
       h = dt / steps;
       depth = z[i - view.first];
       s = 0;
@@ -397,8 +397,7 @@ void RunFlight::cache_stages(std::size_t last) const {
   // The pumped volume lagged from the last cached stage's, as fly_n carries it.
   double lagged = stages_.stages.empty() ? in0_.pumped_volume_m3 : stages_.stages.back().pumped_volume_m3;
   for (std::size_t i = first_ + stages_.intervals; i < last; ++i) {
-    const double dt = t_.time_s[i + 1] - t_.time_s[i];
-    const int steps = rk4_steps(dt, c_.max_step_s);
+    const int steps = c_.pitch.steps(i);
     for (int s = 0; s < steps; ++s) {
       const model::PrescribedPitchInputs a = inputs(i, 2 * s, steps, lagged, 2 * s);
       const model::PrescribedPitchInputs b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
@@ -415,6 +414,7 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
   z.assign(rel.size(), kNaN);
   z[0] = t.depth_m[first_] + rel[0];
   double water = 0.0;
+  const bool bins_kept = c_.has_profile() && stages_.water.size() < flown - first_ && this->bins_kept();
   for (std::size_t i = first_; i < flown; ++i) {
     // The water's displacement, integrated once in this water (in order, as fly() caches its stages).
     if (i - first_ < stages_.water.size()) {
@@ -423,14 +423,14 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       continue;
     }
     const double dt = t.time_s[i + 1] - t.time_s[i];
-    const int steps = rk4_steps(dt, c_.max_step_s);
+    const int steps = c_.pitch.steps(i);
     const double h = dt / steps;
     if (!c_.has_profile()) {
       // The same sum with the one velocity at every stage (no depths to look up).
       const double w = c_.water_w(0.0);
       for (int s = 0; s < steps; ++s) water += h / 6.0 * (w + 2.0 * w + 2.0 * w + w);
     }
-    const std::uint32_t* bins = c_.has_profile() ? stage_bins(i, steps) : nullptr;
+    const std::uint32_t* bins = bins_kept ? stage_bins(i, steps) : nullptr;
     for (int s = 0; s < steps && bins != nullptr; ++s) {
       // VerticalVelocityProfile::at at the stages' depths, their bins looked up once per geometry.
       const std::vector<double>& w = c_.profile()->w_m_s;
@@ -448,9 +448,9 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
   }
 }
 
-const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
+bool RunFlight::bins_kept() const {
   const VerticalVelocityProfile& profile = *c_.profile();
-  if (profile.w_m_s.empty()) return nullptr;  // no bins: at() is 0
+  if (profile.w_m_s.empty()) return false;  // no bins: at() is 0
   auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   if (!same(stages_.bins_first_m, profile.first_m) || !same(stages_.bins_bin_m, profile.bin_m) ||
       stages_.bins_count != profile.w_m_s.size()) {
@@ -460,6 +460,11 @@ const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
     stages_.bins_offset.clear();
     stages_.bins.clear();
   }
+  return true;
+}
+
+const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
+  const VerticalVelocityProfile& profile = *c_.profile();
   const std::size_t interval = i - first_;
   if (interval < stages_.bins_offset.size()) return &stages_.bins[stages_.bins_offset[interval]];
   if (interval > stages_.bins_offset.size()) return nullptr;  // filled in order only: looked up directly

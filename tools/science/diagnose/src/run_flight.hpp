@@ -35,6 +35,10 @@ class StagePitchTable {
   };
   StagePitchTable(const Track& track, double max_step_s);
   const Pitch& at(std::size_t i, int k) const { return pitch_[offset_[i] + static_cast<std::size_t>(k)]; }
+  // rk4_steps of interval [i, i + 1] (i + 1 a sample of the track): its
+  // 2 steps + 1 stages here. Looked up, not worked out again (a ceil and a
+  // division at every interval of every flight, 2 % of a 24 h log).
+  int steps(std::size_t i) const { return static_cast<int>((offset_[i + 1] - offset_[i]) / 2); }
 
  private:
   std::vector<std::size_t> offset_;  // per interval i, its stage 0
@@ -155,7 +159,7 @@ class RunFlight {
   struct StagesView {
     const std::vector<double>& time_s;
     std::size_t first;
-    double max_step_s;
+    const StagePitchTable& pitch;
     const model::PrescribedPitchInputs* stages;
   };
 
@@ -206,10 +210,13 @@ class RunFlight {
   std::array<std::size_t, N> fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3, std::size_t last,
                                    const std::array<std::vector<double>*, N>& z, std::vector<double>* u,
                                    const std::array<double, N>& stop_above) const;
+  // Whether the profile's bins are kept (RunStages::bins; a profile with
+  // bins), for its geometry: once per ground_depth.
+  bool bins_kept() const;
   // The profile's bin at ground_depth's three stages a step of interval i
-  // (RunStages::bins), or nullptr where they are not kept.
+  // (RunStages::bins, bins_kept()), or nullptr where they are not kept.
   const std::uint32_t* stage_bins(std::size_t i, int steps) const;
-  StagesView view() const { return {t_.time_s, first_, c_.max_step_s, stages_.stages.data()}; }
+  StagesView view() const { return {t_.time_s, first_, c_.pitch, stages_.stages.data()}; }
 
   const FlightConditions& c_;
   const Track& t_;
