@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flow_forces_inline.hpp"
 #include "glider/model/hydrodynamics.hpp"
 
 namespace glider::model {
@@ -32,21 +33,7 @@ FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slope
 
 FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density, double v1,
                                 double v3, double speed_m_s, bool with_moment, double cd0_factor) {
-  FlowForces out;
-  out.speed_m_s = speed_m_s;
-  out.alpha_rad = std::atan2(v3, v1);
-  if (!(out.speed_m_s > 0.0)) return out;
-  const ForceCoefficients c = force_coefficients(h, slopes, out.alpha_rad, cd0_factor);
-  const double dyn = 0.5 * water_density * h.reference_area_m2 * out.speed_m_s * out.speed_m_s;
-  out.lift_coefficient = c.lift;
-  out.lift_n = dyn * c.lift;
-  out.drag_n = dyn * c.drag;
-  const double cos_a = v1 / out.speed_m_s;
-  const double sin_a = v3 / out.speed_m_s;
-  out.f1 = out.lift_n * sin_a - out.drag_n * cos_a;
-  out.f3 = -out.lift_n * cos_a - out.drag_n * sin_a;
-  if (with_moment) out.moment_nm = dyn * moment_coefficient(h, out.alpha_rad);
-  return out;
+  return detail::flow_forces_at_speed(h, slopes, water_density, v1, v3, speed_m_s, with_moment, cd0_factor);
 }
 
 GliderDynamics::GliderDynamics(const VehicleParams& vehicle, const Environment& environment)

@@ -6,17 +6,10 @@
 #include <limits>
 #include <numbers>
 
+#include "flow_forces_inline.hpp"
+
 namespace glider::model {
 namespace {
-
-// 1 inside the fit's range, 0 in the crossflow range, C1-smooth in between.
-double fit_weight(const Hydrodynamics& h, double alpha_rad) {
-  const double a = std::abs(alpha_rad);
-  if (a <= h.fit_valid_to_rad) return 1.0;
-  if (a >= h.crossflow_from_rad) return 0.0;
-  const double u = (a - h.fit_valid_to_rad) / (h.crossflow_from_rad - h.fit_valid_to_rad);
-  return 1.0 - u * u * (3.0 - 2.0 * u);
-}
 
 // Lift slope of the wing by its own area.
 double wing_slope_by_wing_area(const Hydrodynamics& h) {
@@ -75,11 +68,7 @@ SkinFrictionFactor::SkinFrictionFactor(const Hydrodynamics& h)
   c4_ = -c3_ * (n + 3.0) / 4.0;
 }
 
-double SkinFrictionFactor::operator()(double speed_m_s) const {
-  if (exponent_ == 0.0) return 1.0;
-  const double v = std::max(speed_m_s, kSkinFrictionMinSpeedMS);
-  const double d = v * anchor_inverse_ - 1.0;
-  if (std::abs(d) <= kAnchorSpan) return anchor_factor_ * (1.0 + d * (c1_ + d * (c2_ + d * (c3_ + d * c4_))));
+double SkinFrictionFactor::reanchor(double v) const {
   anchor_factor_ = std::pow(v / reference_m_s_, -exponent_);
   anchor_inverse_ = 1.0 / v;
   return anchor_factor_;
@@ -87,29 +76,11 @@ double SkinFrictionFactor::operator()(double speed_m_s) const {
 
 ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarSlopes& slopes, double alpha_rad,
                                      double cd0_factor) {
-  const double cd0 = h.cd0 * cd0_factor;
-  const double w = fit_weight(h, alpha_rad);
-  ForceCoefficients fit{};
-  if (w > 0.0) {
-    // Beyond its range the polynomial is evaluated at the range's edge (it is
-    // then only a fading part of the blend).
-    const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
-    fit.lift = h.cl0 + slopes.lift_per_rad * a + h.cl_alpha_abs_alpha * a * std::abs(a);
-    fit.drag = cd0 + slopes.drag_per_rad2 * a * a;
-  }
-  if (w >= 1.0) return fit;
-  // Crossflow: normal force ~ sin a |sin a|, axial (skin) force ~ cos a |cos a|,
-  // rotated into lift (normal to the flow) and drag (along the flow).
-  const double s = std::sin(alpha_rad);
-  const double c = std::cos(alpha_rad);
-  const double normal = h.crossflow_cn90 * s * std::abs(s);
-  const double axial = cd0 * c * std::abs(c);
-  const ForceCoefficients cross{normal * c - axial * s, normal * s + axial * c};
-  return {w * fit.lift + (1.0 - w) * cross.lift, w * fit.drag + (1.0 - w) * cross.drag};
+  return detail::force_coefficients(h, slopes, alpha_rad, cd0_factor);
 }
 
 double moment_coefficient(const Hydrodynamics& h, double alpha_rad) {
-  const double w = fit_weight(h, alpha_rad);
+  const double w = detail::fit_weight(h, alpha_rad);
   const double a = std::clamp(alpha_rad, -h.crossflow_from_rad, h.crossflow_from_rad);
   const double fit = h.cm0_m + h.cm_alpha_m * a;
   if (w >= 1.0) return fit;

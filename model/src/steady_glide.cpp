@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "flow_forces_inline.hpp"
 #include "glider/model/hydrodynamics.hpp"
 #include "glider/model/root_finding.hpp"
 #include "glider/units.hpp"
@@ -27,10 +28,17 @@ struct Branch {
   const Hydrodynamics& h;
   int direction;
   double alpha0;
+  // The polar's slopes, once per branch: force_coefficients(h, alpha) works
+  // them out at every call, and a diagnosis's steady model solves a glide
+  // per sample (the same numbers, so the same bits).
+  PolarSlopes slopes = polar_slopes(h);
   double alpha(double t) const { return alpha0 + direction * t; }
+  ForceCoefficients coefficients(double alpha_rad) const {
+    return detail::force_coefficients(h, slopes, alpha_rad, 1.0);
+  }
   // tan(gamma) = D / |L|: +inf at t = 0, falling to the best glide.
   double tan_gamma(double t) const {
-    const ForceCoefficients c = force_coefficients(h, alpha(t));
+    const ForceCoefficients c = coefficients(alpha(t));
     return c.drag / (direction * c.lift);
   }
   // t of the best glide ratio (unimodal on the fit range).
@@ -44,7 +52,7 @@ Branch make_branch(const Hydrodynamics& h, int direction) { return Branch{h, dir
 // The glide with angle of attack `alpha` on `branch` and net buoyancy m0.
 SteadyGlide glide_at(const Branch& branch, double t, double density, double gravity, double m0) {
   const double alpha = branch.alpha(t);
-  const ForceCoefficients c = force_coefficients(branch.h, alpha);
+  const ForceCoefficients c = branch.coefficients(alpha);
   const double gamma = std::atan(branch.tan_gamma(t));
   const double speed =
       std::sqrt(2.0 * std::abs(m0) * gravity / (density * branch.h.reference_area_m2 * std::hypot(c.lift, c.drag)));

@@ -264,9 +264,14 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   const Track& t = track_;
   const EffectValues key = flight_key(x);
   const bool with_speed = speed != nullptr;
+  // A flight is flown to its run's end (fly_to), though read only up to
+  // `last`: a flight's samples do not depend on how far it goes, and a fit's
+  // closing question (its solution, asked at the training and held-out
+  // samples together) then finds the flight its last trial flew (asked at the
+  // training samples, which end a little earlier) instead of flying it again.
   struct AskedRun {
     detail::RunFlight run_flight;
-    std::size_t run, last;
+    std::size_t run, last, fly_to;
     double v1, v3;
     const RelativeFlight* flight;  // null: to fly
   };
@@ -277,14 +282,14 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     const std::size_t end = t.run_end(run);
     if (samples[next] >= end) continue;  // nothing requested in this run (every sample is in a run)
     while (next < samples.size() && samples[next] < end) ++next;
-    AskedRun& a = asked.emplace_back(
-        AskedRun{detail::RunFlight(conditions, t.run_first[run], end, run_stages_[run]), run, 0, 0.0, 0.0, nullptr});
+    AskedRun& a = asked.emplace_back(AskedRun{detail::RunFlight(conditions, t.run_first[run], end, run_stages_[run]),
+                                              run, 0, end - 1, 0.0, 0.0, nullptr});
     start_state(a.run_flight, run, x, use_ctd, profile, a.v1, a.v3);
     a.last = last_needed(end, samples.back());
     a.flight = kept_flight(run, key, use_ctd, a.v1, a.v3, a.last, with_speed);
   }
   auto keep = [&](AskedRun& a, RelativeFlight& slot, std::size_t flown) {
-    slot = {true, key, use_ctd, a.v1, a.v3, a.last, flown, with_speed, std::move(slot.depth), std::move(slot.speed)};
+    slot = {true, key, use_ctd, a.v1, a.v3, a.fly_to, flown, with_speed, std::move(slot.depth), std::move(slot.speed)};
     a.flight = &slot;
   };
   std::vector<AskedRun*> ready;  // to fly side by side (their stages cached)
@@ -292,9 +297,9 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     if (a.flight != nullptr) continue;
     if (with_speed) {
       RelativeFlight& slot = flight_slot(a.run);
-      keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, &slot.speed));
+      keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.fly_to, slot.depth, &slot.speed));
     } else {
-      a.run_flight.cache_stages(a.last);  // the run's first flight under these inputs: its stages now
+      a.run_flight.cache_stages(a.fly_to);  // the run's first flight under these inputs: its stages now
       ready.push_back(&a);
     }
   }
@@ -304,7 +309,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     for (std::size_t k = 0; k < N; ++k) {
       AskedRun& a = *group[k];
       slots[k] = &flight_slot(a.run);
-      q[k] = {&a.run_flight, a.v1, a.v3, a.last, &slots[k]->depth};
+      q[k] = {&a.run_flight, a.v1, a.v3, a.fly_to, &slots[k]->depth};
     }
     const std::array<std::size_t, N> flown = detail::RunFlight::fly_runs<N>(q);
     for (std::size_t k = 0; k < N; ++k) keep(*group[k], *slots[k], flown[k]);
@@ -315,7 +320,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   if (left.size() == 1) {
     AskedRun& a = *left[0];
     RelativeFlight& slot = flight_slot(a.run);
-    keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.last, slot.depth, nullptr));
+    keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.fly_to, slot.depth, nullptr));
   }
   next = 0;
   for (const AskedRun& a : asked)

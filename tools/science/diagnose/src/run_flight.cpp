@@ -104,10 +104,17 @@ RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t e
     : c_(c), t_(c.track), first_(first), end_(end), spin_up_last_(first), stages_(stages) {
   const FlightConditions::InputKey key = c.input_key();
   if (!stages_.valid || std::memcmp(&stages_.key, &key, sizeof key) != 0) {
-    stages_.valid = true;
+    FlightConditions::InputKey but_lag = key;
+    but_lag.pump_lag_s = stages_.key.pump_lag_s;
+    if (stages_.valid && std::memcmp(&stages_.key, &but_lag, sizeof key) == 0) {
+      stages_.pumped = 0;  // the pump lag alone changed: its volumes only (refresh_pumped)
+    } else {
+      stages_.valid = true;
+      stages_.stages.clear();
+      stages_.intervals = 0;
+      stages_.pumped = 0;
+    }
     stages_.key = key;
-    stages_.stages.clear();
-    stages_.intervals = 0;
   }
   if (!stages_.water_valid || !c.same_water(stages_.water_has_profile, stages_.water_w, stages_.water_profile)) {
     stages_.water_valid = true;
@@ -122,8 +129,7 @@ model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, doub
   const Track& t = t_;
   const std::size_t j = i + 1 < end_ ? i + 1 : i;
   model::PrescribedPitchInputs in;
-  const double dt = j > i ? t.time_s[j] - t.time_s[i] : 0.0;
-  const double f = stage_fraction(k, n), f0 = stage_fraction(k0, n);
+  const double f = stage_fraction(k, n);
   // The pitch from the track's table where its interval is this one (the
   // run's last sample is the table's only where the track ends there).
   if (j == i + 1 || i + 1 == t.time_s.size()) {
@@ -140,10 +146,40 @@ model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, doub
   in.battery_pos_m = lerp(c_.battery(i), c_.battery(j), f);
   in.density_kg_m3 = lerp(c_.density(i), c_.density(j), f);
   in.temperature_c = lerp(c_.temperature(i), c_.temperature(j), f);
-  // The ballast as the pump moved it (pump_ramp.hpp), lagged exactly.
-  in.pumped_volume_m3 = cc_to_m3(lag_over_ramp(m3_to_cc(lagged0), t.ballast_cc[i], t.ballast_cc[j], t.ballast_ramp[i],
-                                               f0, f, dt, c_.vehicle.ballast.lag_s));
+  in.pumped_volume_m3 = pumped_volume_m3(i, k, n, lagged0, k0);
   return in;
+}
+
+double RunFlight::pumped_volume_m3(std::size_t i, int k, int n, double lagged0, int k0) const {
+  const Track& t = t_;
+  const std::size_t j = i + 1 < end_ ? i + 1 : i;
+  const double dt = j > i ? t.time_s[j] - t.time_s[i] : 0.0;
+  const double f = stage_fraction(k, n), f0 = stage_fraction(k0, n);
+  // The ballast as the pump moved it (pump_ramp.hpp), lagged exactly.
+  return cc_to_m3(lag_over_ramp(m3_to_cc(lagged0), t.ballast_cc[i], t.ballast_cc[j], t.ballast_ramp[i], f0, f, dt,
+                                c_.vehicle.ballast.lag_s));
+}
+
+void RunFlight::refresh_pumped(std::size_t last) const {
+  const std::size_t upto = std::min(stages_.intervals, last > first_ ? last - first_ : 0);
+  if (stages_.pumped >= upto) return;
+  // The stages are three a sub-step, in order: the first stage of interval `pumped`.
+  std::size_t stage = 0;
+  for (std::size_t i = first_; i < first_ + stages_.pumped; ++i)
+    stage += 3 * static_cast<std::size_t>(c_.pitch.steps(i));
+  // The pumped volume lagged from the last refreshed stage's, as cache_stages carries it.
+  double lagged = stage == 0 ? in0_.pumped_volume_m3 : stages_.stages[stage - 1].pumped_volume_m3;
+  for (std::size_t i = first_ + stages_.pumped; i < first_ + upto; ++i) {
+    const int steps = c_.pitch.steps(i);
+    for (int s = 0; s < steps; ++s) {
+      for (int k = 0; k < 3; ++k)
+        stages_.stages[stage + static_cast<std::size_t>(k)].pumped_volume_m3 =
+            pumped_volume_m3(i, 2 * s + k, steps, lagged, 2 * s);
+      lagged = stages_.stages[stage + 2].pumped_volume_m3;
+      stage += 3;
+    }
+  }
+  stages_.pumped = upto;
 }
 
 std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<double>& z, std::vector<double>* u,
@@ -156,6 +192,7 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
                                             std::size_t last, const std::array<std::vector<double>*, N>& z,
                                             std::vector<double>* u, const std::array<double, N>& stop_above) const {
   const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
+  refresh_pumped(last);  // the cached stages it reads, for this flight's pump lag
   // Each flight's own skin-friction anchors, fresh: a function of its (v1, v3) and the run alone, whatever flew
   // before or beside it.
   const auto friction = [&]<std::size_t... K>(std::index_sequence<K...>) {
@@ -182,7 +219,7 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
   for (std::size_t i = first_; i < last; ++i) {
     if (std::none_of(flying.begin(), flying.end(), [](bool f) { return f; })) break;
     const double dt = t_.time_s[i + 1] - t_.time_s[i];
-    const int steps = rk4_steps(dt, c_.max_step_s);
+    const int steps = c_.pitch.steps(i);
     const double h = dt / steps;
     for (std::size_t k = 0; k < N; ++k) depth[k] = (*z[k])[i - first_];
     // The intervals are cached in order: the first not cached is the next to cache.
@@ -219,7 +256,7 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
       }
       lagged = c.pumped_volume_m3;
     }
-    if (!cached) ++stages_.intervals;
+    if (!cached) stages_.pumped = ++stages_.intervals;  // refreshed up to here, so the new one too
     for (std::size_t k = 0; k < N; ++k) {
       if (!flying[k]) continue;
       if (!p[k].allFinite() || !std::isfinite(depth[k])) {  // the rest of the run stays NaN: unflyable
@@ -269,7 +306,7 @@ struct StepCursor {
         return;
       }
       const double dt = view.time_s[i + 1] - view.time_s[i];
-      steps = rk4_steps(dt, view.max_step_s);
+      steps = view.pitch.steps(i);
       h = dt / steps;
       depth = z[i - view.first];
       s = 0;
@@ -356,11 +393,11 @@ template std::array<std::size_t, 2> RunFlight::fly_runs<2>(const std::array<RunQ
 template std::array<std::size_t, 3> RunFlight::fly_runs<3>(const std::array<RunQuestion, 3>&);
 
 void RunFlight::cache_stages(std::size_t last) const {
+  refresh_pumped(last);
   // The pumped volume lagged from the last cached stage's, as fly_n carries it.
   double lagged = stages_.stages.empty() ? in0_.pumped_volume_m3 : stages_.stages.back().pumped_volume_m3;
   for (std::size_t i = first_ + stages_.intervals; i < last; ++i) {
-    const double dt = t_.time_s[i + 1] - t_.time_s[i];
-    const int steps = rk4_steps(dt, c_.max_step_s);
+    const int steps = c_.pitch.steps(i);
     for (int s = 0; s < steps; ++s) {
       const model::PrescribedPitchInputs a = inputs(i, 2 * s, steps, lagged, 2 * s);
       const model::PrescribedPitchInputs b = inputs(i, 2 * s + 1, steps, lagged, 2 * s);
@@ -368,7 +405,7 @@ void RunFlight::cache_stages(std::size_t last) const {
       stages_.stages.insert(stages_.stages.end(), {a, b, c});
       lagged = c.pumped_volume_m3;
     }
-    ++stages_.intervals;
+    stages_.pumped = ++stages_.intervals;
   }
 }
 
@@ -377,6 +414,7 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
   z.assign(rel.size(), kNaN);
   z[0] = t.depth_m[first_] + rel[0];
   double water = 0.0;
+  const bool bins_kept = c_.has_profile() && stages_.water.size() < flown - first_ && this->bins_kept();
   for (std::size_t i = first_; i < flown; ++i) {
     // The water's displacement, integrated once in this water (in order, as fly() caches its stages).
     if (i - first_ < stages_.water.size()) {
@@ -385,14 +423,14 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       continue;
     }
     const double dt = t.time_s[i + 1] - t.time_s[i];
-    const int steps = rk4_steps(dt, c_.max_step_s);
+    const int steps = c_.pitch.steps(i);
     const double h = dt / steps;
     if (!c_.has_profile()) {
       // The same sum with the one velocity at every stage (no depths to look up).
       const double w = c_.water_w(0.0);
       for (int s = 0; s < steps; ++s) water += h / 6.0 * (w + 2.0 * w + 2.0 * w + w);
     }
-    const std::uint32_t* bins = c_.has_profile() ? stage_bins(i, steps) : nullptr;
+    const std::uint32_t* bins = bins_kept ? stage_bins(i, steps) : nullptr;
     for (int s = 0; s < steps && bins != nullptr; ++s) {
       // VerticalVelocityProfile::at at the stages' depths, their bins looked up once per geometry.
       const std::vector<double>& w = c_.profile()->w_m_s;
@@ -410,9 +448,9 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
   }
 }
 
-const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
+bool RunFlight::bins_kept() const {
   const VerticalVelocityProfile& profile = *c_.profile();
-  if (profile.w_m_s.empty()) return nullptr;  // no bins: at() is 0
+  if (profile.w_m_s.empty()) return false;  // no bins: at() is 0
   auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   if (!same(stages_.bins_first_m, profile.first_m) || !same(stages_.bins_bin_m, profile.bin_m) ||
       stages_.bins_count != profile.w_m_s.size()) {
@@ -422,6 +460,11 @@ const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
     stages_.bins_offset.clear();
     stages_.bins.clear();
   }
+  return true;
+}
+
+const std::uint32_t* RunFlight::stage_bins(std::size_t i, int steps) const {
+  const VerticalVelocityProfile& profile = *c_.profile();
   const std::size_t interval = i - first_;
   if (interval < stages_.bins_offset.size()) return &stages_.bins[stages_.bins_offset[interval]];
   if (interval > stages_.bins_offset.size()) return nullptr;  // filled in order only: looked up directly

@@ -35,6 +35,10 @@ class StagePitchTable {
   };
   StagePitchTable(const Track& track, double max_step_s);
   const Pitch& at(std::size_t i, int k) const { return pitch_[offset_[i] + static_cast<std::size_t>(k)]; }
+  // rk4_steps of interval [i, i + 1] (i + 1 a sample of the track): its
+  // 2 steps + 1 stages here. Looked up, not worked out again (a ceil and a
+  // division at every interval of every flight, 2 % of a 24 h log).
+  int steps(std::size_t i) const { return static_cast<int>((offset_[i + 1] - offset_[i]) / 2); }
 
  private:
   std::vector<std::size_t> offset_;  // per interval i, its stage 0
@@ -100,6 +104,11 @@ struct RunStages {
   FlightConditions::InputKey key{};
   std::vector<model::PrescribedPitchInputs> stages;
   std::size_t intervals = 0;  // the intervals filled so far
+  // Of those, the first `pumped` hold the pumped volume of the key's pump
+  // lag: a new lag alone (the pump lag's grid, fit and Jacobian: a new one
+  // at every flight) recomputes only the pumped volumes (RunFlight::
+  // refresh_pumped), the rest of a stage's inputs do not depend on it.
+  std::size_t pumped = 0;
   // The water's vertical displacement after each interval (ground_depth),
   // for the water it was integrated in: its own key.
   bool water_valid = false, water_has_profile = false;
@@ -129,6 +138,8 @@ class RunFlight {
   // StagePitchTable), with the displaced volume lagged from `lagged0` at
   // the interval's stage k0.
   model::PrescribedPitchInputs inputs(std::size_t i, int k, int n, double lagged0, int k0) const;
+  // Its pumped volume alone (inputs() takes it from here).
+  double pumped_volume_m3(std::size_t i, int k, int n, double lagged0, int k0) const;
 
   // Flies the run from its first sample with body velocities (v1, v3) up
   // to sample `last`: the model's depth change through the water at each
@@ -148,7 +159,7 @@ class RunFlight {
   struct StagesView {
     const std::vector<double>& time_s;
     std::size_t first;
-    double max_step_s;
+    const StagePitchTable& pitch;
     const model::PrescribedPitchInputs* stages;
   };
 
@@ -156,6 +167,9 @@ class RunFlight {
   // (RunStages), in order from the first not cached, without flying: the
   // same calls on the same numbers, so the same bits.
   void cache_stages(std::size_t last) const;
+  // Brings the cached stages' pumped volumes up to `last` to this flight's
+  // pump lag (RunStages::pumped), as cache_stages would compute them.
+  void refresh_pumped(std::size_t last) const;
 
   // N runs' flights side by side, each exactly run->fly(v1, v3, last, *z,
   // nullptr) (the same bits): a main flight is one long chain of dependent
@@ -196,10 +210,13 @@ class RunFlight {
   std::array<std::size_t, N> fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3, std::size_t last,
                                    const std::array<std::vector<double>*, N>& z, std::vector<double>* u,
                                    const std::array<double, N>& stop_above) const;
+  // Whether the profile's bins are kept (RunStages::bins; a profile with
+  // bins), for its geometry: once per ground_depth.
+  bool bins_kept() const;
   // The profile's bin at ground_depth's three stages a step of interval i
-  // (RunStages::bins), or nullptr where they are not kept.
+  // (RunStages::bins, bins_kept()), or nullptr where they are not kept.
   const std::uint32_t* stage_bins(std::size_t i, int steps) const;
-  StagesView view() const { return {t_.time_s, first_, c_.max_step_s, stages_.stages.data()}; }
+  StagesView view() const { return {t_.time_s, first_, c_.pitch, stages_.stages.data()}; }
 
   const FlightConditions& c_;
   const Track& t_;
