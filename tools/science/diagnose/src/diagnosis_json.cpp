@@ -30,6 +30,7 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
   }
   j["drag_reynolds"] = {{"exponent", d.drag_reynolds_exponent},
                         {"reference_speed_m_s", d.drag_reference_speed_m_s},
+                        {"exponent_sigma_in_intervals", d.drag_reynolds_exponent_sigma},
                         {"note", "the model's zero-lift drag is cd0 (V / reference_speed)^-exponent"}};
   j["samples_used"] = d.samples_used;
   j["train_samples"] = d.train_samples;

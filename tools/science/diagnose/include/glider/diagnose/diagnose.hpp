@@ -151,6 +151,10 @@ struct Diagnosis {
   // DiagnoseOptions::drag_reynolds_exponent) and the speed its cd0 holds at.
   double drag_reynolds_exponent = 0.0;
   double drag_reference_speed_m_s = 0.0;
+  // The prior exponent's one-sigma uncertainty carried into every interval
+  // (kDragReynoldsExponentPriorSigma), 0 where the exponent was asked for or
+  // stated by the vehicle file.
+  double drag_reynolds_exponent_sigma = 0.0;
 };
 
 // The prior of the skin friction's Reynolds exponent (docs/science.md,
@@ -159,6 +163,16 @@ struct Diagnosis {
 // friction's share of the zero-lift drag (~0.4 for slocum_shallow: C_f 0.0058
 // on ~1.2 m^2 wetted over cd0 0.17 on 0.1 m^2).
 inline constexpr double kDragReynoldsExponentPrior = 0.1;
+// Its one-sigma uncertainty: the friction's share of C_D0 is known to
+// 0.2-0.8 between hull shapes and wings (0.4 slocum_shallow, ~0.8 WE01's
+// reference area), so n = 0.24 x share spans about 0.05-0.2; 0.05 puts 0-0.2
+// within two sigmas. A diagnosis flying the prior carries it into every
+// interval (diagnose.cpp, add_reynolds_prior_uncertainty).
+inline constexpr double kDragReynoldsExponentPriorSigma = 0.05;
+
+// True when a diagnosis flies the prior: no exponent asked for and none
+// stated by the vehicle file (see drag_reynolds_exponent_for).
+bool flies_reynolds_prior(const model::VehicleParams& vehicle, const std::optional<double>& asked);
 
 // The exponent every diagnosis flies (diagnose() calls it, so the CLI, the
 // deployment view, health, Python and the DVL protocol agree): the one asked
