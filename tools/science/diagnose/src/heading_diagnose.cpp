@@ -166,6 +166,10 @@ LinkSamples settled_samples(const HeadingTrack& track, std::size_t max_samples) 
   return split(samples, track.yo, diving, max_samples);
 }
 
+// The yaw's own dynamics, measured beside the fin on the innovations where
+// the rate error names them (measure_fin_then_reselect).
+bool is_yaw_dynamics(HeadingEffect e) { return e == HeadingEffect::kYawTimeConstant || e == HeadingEffect::kYawDelay; }
+
 // The fin's authority measured on the heading's one-step innovations with
 // the compass noise and the random yaw modelled (heading_innovations), then
 // the rest of the vehicle link selected again on the rate error with that
@@ -198,7 +202,11 @@ LinkSamples settled_samples(const HeadingTrack& track, std::size_t max_samples) 
 // named a fin 0.65 and no lag); the innovations read 13.4 and 11.5 s. It
 // stands where its interval excludes the vehicle file's; it is no
 // candidate of the reselection (docs/science.md "The yaw's lag in a closed
-// loop and the fin's roll").
+// loop and the fin's roll"). So is the yaw's delay after the fin: the rate
+// error reads it long as it reads the lag (a hidden 7.25 s read 8.63 s,
+// 8.30 s with the truth's random yaw off; the innovations read 8.25 s;
+// docs/science.md "The yaw's delay on the innovations").
+
 void measure_fin_then_reselect(const HeadingTrack& track, const model::VehicleParams& nominal,
                                const HeadingValues& base, const HeadingResiduals& rate_error,
                                const LinkSamples& rate_samples, HeadingDiagnosis& d,
@@ -206,7 +214,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
   // Either named: the fin is measured.
   if (std::none_of(d.yaw.findings.begin(), d.yaw.findings.end(), [](const HeadingFinding& f) {
         return f.effect == HeadingEffect::kFinEffectiveness || f.effect == HeadingEffect::kRollOffset ||
-               f.effect == HeadingEffect::kYawTimeConstant;
+               is_yaw_dynamics(f.effect);
       })) {
     return;
   }
@@ -261,7 +269,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
   // clean deep log named a yaw_time_constant of 21.8 s [15.5, 28.2] that way.
   std::vector<HeadingEffect> others, named_others;
   for (HeadingEffect e : d.yaw.candidates) {
-    if (e == HeadingEffect::kFinEffectiveness || e == HeadingEffect::kYawTimeConstant) continue;
+    if (e == HeadingEffect::kFinEffectiveness || is_yaw_dynamics(e)) continue;
     others.push_back(e);
     if (e == HeadingEffect::kRollOffset || std::any_of(d.yaw.findings.begin(), d.yaw.findings.end(),
                                                        [&](const HeadingFinding& f) { return f.effect == e; })) {
@@ -296,12 +304,10 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
     }
     return n > 0 ? std::sqrt(sum / static_cast<double>(n)) : kNaN;
   };
-  auto fin_beats_named_roll = [&](double fin, double lag) {
+  auto fin_beats_named_roll = [&](double fin, const HeadingValues& dynamics) {
     if (named_roll == chosen.findings.end() || rate_named_fin) return true;
-    HeadingValues as_fin = base, as_roll = base;
+    HeadingValues as_fin = dynamics, as_roll = dynamics;
     at(as_fin, HeadingEffect::kFinEffectiveness) = fin;
-    at(as_fin, HeadingEffect::kYawTimeConstant) = lag;
-    at(as_roll, HeadingEffect::kYawTimeConstant) = lag;
     at(as_roll, HeadingEffect::kRollOffset) = named_roll->value;
     return innovations_rms(as_fin) < innovations_rms(as_roll);
   };
@@ -314,44 +320,61 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
   HeadingValues rest = base;  // the last selection's roll offset, the rest nominal
   std::vector<HeadingFinding> measured, left_out;
   LinkFit again;
-  bool fin_confirmed = false, lag_confirmed = false, reselected = false;
-  const double nominal_lag = at(base, HeadingEffect::kYawTimeConstant);
+  bool fin_confirmed = false, reselected = false;
   auto of = [](const std::vector<HeadingFinding>& fs, HeadingEffect e) {
     return std::find_if(fs.begin(), fs.end(), [e](const HeadingFinding& f) { return f.effect == e; });
   };
   auto excludes = [](const HeadingFinding& f, double x) { return !(f.ci95_low <= x && x <= f.ci95_high); };
-  // The lag is measured beside the fin only where the rate error named
-  // it. Not where it named a weaker fin, though a longer lag is read so (a
-  // 12 s lag named a fin 0.75 and no lag): the first-order lag on the
-  // innovations takes any fast pole the model lacks - on the independent
-  // truth, lags of 3.8 and 5.5 s beside fins of 1.69 and 1.14 (logs hiding
-  // a fin x1.66 and a fin delay) and a clean log's 3.2 s [2.17, 4.23] were
-  // its second pole (0.98, 0.58, 0.84 s; gone with it switched off;
-  // docs/science.md "The yaw's lag in a closed loop and the fin's roll").
-  const auto rate_lag = of(chosen.findings, HeadingEffect::kYawTimeConstant);
-  const bool measure_lag = rate_lag != chosen.findings.end();
+  // The yaw's dynamics (its lag, its delay after the fin) are measured
+  // beside the fin only where the rate error named them. Not the lag where
+  // it named a weaker fin, though a longer lag is read so (a 12 s lag named
+  // a fin 0.75 and no lag): the first-order lag on the innovations takes
+  // any fast pole the model lacks - on the independent truth, lags of 3.8
+  // and 5.5 s beside fins of 1.69 and 1.14 (logs hiding a fin x1.66 and a
+  // fin delay) and a clean log's 3.2 s [2.17, 4.23] were its second pole
+  // (0.98, 0.58, 0.84 s; gone with it switched off; docs/science.md "The
+  // yaw's lag in a closed loop and the fin's roll"). The yaw's delay reads
+  // long in the closed loop as the lag does (docs/science.md "The yaw's
+  // delay on the innovations").
+  std::vector<HeadingEffect> dynamics;
+  for (const HeadingEffect e : {HeadingEffect::kYawTimeConstant, HeadingEffect::kYawDelay}) {
+    if (of(chosen.findings, e) != chosen.findings.end()) dynamics.push_back(e);
+  }
+  std::vector<bool> dynamics_stand(dynamics.size(), false);
   std::vector<HeadingEffect> to_measure = {HeadingEffect::kFinEffectiveness};
-  if (measure_lag) to_measure.push_back(HeadingEffect::kYawTimeConstant);
+  to_measure.insert(to_measure.end(), dynamics.begin(), dynamics.end());
   for (int round = 0; round < kAlternations; ++round) {
     std::vector<HeadingFinding> m = measure(to_measure, rest);
-    const auto fin = of(m, HeadingEffect::kFinEffectiveness), lag = of(m, HeadingEffect::kYawTimeConstant);
-    if (fin == m.end() || (measure_lag && lag == m.end())) break;
-    const double lag_value = measure_lag ? lag->value : nominal_lag;
-    bool confirmed = excludes(*fin, 1.0);
-    if (confirmed && round == 0) confirmed = fin_beats_named_roll(fin->value, lag_value);
-    const bool lag_stands = measure_lag && excludes(*lag, nominal_lag);
-    if (round > 0 && confirmed == fin_confirmed && lag_stands == lag_confirmed &&
-        (!confirmed || std::abs(fin->value - of(measured, HeadingEffect::kFinEffectiveness)->value) < kFinSettled) &&
-        (!lag_stands ||
-         std::abs(lag_value - of(measured, HeadingEffect::kYawTimeConstant)->value) < kFinSettled * lag_value))
+    const auto fin = of(m, HeadingEffect::kFinEffectiveness);
+    if (fin == m.end() ||
+        std::any_of(dynamics.begin(), dynamics.end(), [&](HeadingEffect e) { return of(m, e) == m.end(); }))
       break;
+    HeadingValues at_dynamics = base;
+    std::vector<bool> stand(dynamics.size(), false);
+    for (std::size_t k = 0; k < dynamics.size(); ++k) {
+      const HeadingFinding& f = *of(m, dynamics[k]);
+      at(at_dynamics, f.effect) = f.value;
+      stand[k] = excludes(f, at(base, f.effect));
+    }
+    bool confirmed = excludes(*fin, 1.0);
+    if (confirmed && round == 0) confirmed = fin_beats_named_roll(fin->value, at_dynamics);
+    auto settled = [&](HeadingEffect e, double tolerance) {
+      return std::abs(of(m, e)->value - of(measured, e)->value) < tolerance;
+    };
+    bool same = round > 0 && confirmed == fin_confirmed && stand == dynamics_stand &&
+                (!confirmed || settled(HeadingEffect::kFinEffectiveness, kFinSettled));
+    for (std::size_t k = 0; same && k < dynamics.size(); ++k) {
+      same = !stand[k] || settled(dynamics[k], kFinSettled * std::max(of(m, dynamics[k])->value, 1.0));
+    }
+    if (same) break;
     fin_confirmed = confirmed;
-    lag_confirmed = lag_stands;
+    dynamics_stand = stand;
     measured = m;
     left_out.clear();
     HeadingValues held = base;
     for (const HeadingFinding& f : m) {
-      const bool stands = f.effect == HeadingEffect::kFinEffectiveness ? confirmed : lag_stands;
+      const auto k = std::find(dynamics.begin(), dynamics.end(), f.effect);
+      const bool stands = k == dynamics.end() ? confirmed : stand[static_cast<std::size_t>(k - dynamics.begin())];
       if (stands) at(held, f.effect) = f.value;
       if (!stands) left_out.push_back(f);
     }
@@ -362,24 +385,36 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
     at(rest, HeadingEffect::kRollOffset) = at(again.values, HeadingEffect::kRollOffset);
     if (rest == last_rest) break;
   }
+  auto dynamics_stands = [&](HeadingEffect e) {
+    const auto k = std::find(dynamics.begin(), dynamics.end(), e);
+    return k != dynamics.end() && dynamics_stand[static_cast<std::size_t>(k - dynamics.begin())];
+  };
   const double roll = at(rest, HeadingEffect::kRollOffset);
   if (!reselected) return;  // no fit on the innovations: the rate error's findings stand
   d.yaw_noise = noise;
   const bool fin_named = of(d.yaw.findings, HeadingEffect::kFinEffectiveness) != d.yaw.findings.end();
-  const bool lag_named = of(d.yaw.findings, HeadingEffect::kYawTimeConstant) != d.yaw.findings.end();
-  if (!fin_confirmed && !fin_named && !lag_confirmed && !lag_named &&
-      roll == at(chosen.values, HeadingEffect::kRollOffset))
-    return;
+  if (!fin_confirmed && !fin_named && dynamics.empty() && roll == at(chosen.values, HeadingEffect::kRollOffset)) return;
   again.candidates = chosen.candidates;
   for (HeadingFinding& f : again.findings) f.nominal = at(base, f.effect);
   // The measured ones first, the fin before the lag (as the rate error ranks them).
-  for (const HeadingEffect e : {HeadingEffect::kYawTimeConstant, HeadingEffect::kFinEffectiveness}) {
-    if (!(e == HeadingEffect::kFinEffectiveness ? fin_confirmed : lag_confirmed)) continue;
+  for (const HeadingEffect e :
+       {HeadingEffect::kYawDelay, HeadingEffect::kYawTimeConstant, HeadingEffect::kFinEffectiveness}) {
+    if (!(e == HeadingEffect::kFinEffectiveness ? fin_confirmed : dynamics_stands(e))) continue;
     HeadingFinding m = *of(measured, e);
     m.nominal = at(base, e);
     m.heldout_rms = again.extended_heldout_rms;
     again.findings.insert(again.findings.begin(), m);
     at(again.values, e) = m.value;
+    // A held dynamics term is no candidate of the reselection, so its pairs
+    // (a dead time against the slow pole: both make the yaw follow the fin
+    // late) are the rate error's, judged where it named the term.
+    if (e == HeadingEffect::kFinEffectiveness) continue;
+    for (const HeadingAmbiguity& a : chosen.identifiability) {
+      if (a.chosen == e) again.identifiability.push_back(a);
+    }
+    for (const LinkFit::ScreenedCorrelation& c : chosen.screen) {
+      if (c.chosen == e) again.screen.push_back(c);
+    }
   }
   // Against the nominal's baseline (the held fin's is the reselection's).
   again.baseline_rms = chosen.baseline_rms;
