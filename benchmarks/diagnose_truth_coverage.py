@@ -172,8 +172,9 @@ def run_draw(args, case, seed):
                           for e, v, lo, hi, f in findings_of(document)]
     if args.identifiability:
         try:
-            result['identifiability'] = identifiability.measure(args.diagnose, log, vehicle, result['truth'],
-                                                                nominal, plane_of, args.timeout)
+            result['identifiability'] = identifiability.measure(
+                args.diagnose, log, vehicle, result['truth'], nominal, plane_of, args.timeout,
+                rivals if args.identifiability == 'rivals' else None)
         except (RuntimeError, subprocess.TimeoutExpired, ValueError) as error:
             result['identifiability_error'] = str(error)
     result['ok'] = True
@@ -203,6 +204,11 @@ def score(r):
 
 def plane_of(effect):
     return 'heading' if effect in HEADING else 'vertical'
+
+
+def rivals(effect):
+    """The other candidates of an effect's plane (identifiability.py's stricter reading)."""
+    return [e for e in (HEADING if effect in HEADING else VERTICAL) if e != effect]
 
 
 def pct(a, b):
@@ -280,6 +286,7 @@ def effect_table(results):
     identifiability (benchmarks/identifiability.py)."""
     slots = {}
     measured = any('identifiability' in r for r in results if r['ok'])
+    strict = any('z_rival' in m for r in results if r['ok'] for m in r.get('identifiability', {}).values())
     for r in results:
         if not r['ok']:
             continue
@@ -291,7 +298,7 @@ def effect_table(results):
             slots.setdefault(effect, []).append({'named': n, 'within': w, 'covered': c,
                                                  'ambiguous': bool(amb or effect in stated),
                                                  'identifiable': m.get('identifiable'), 'sizeable': m.get('sizeable'),
-                                                 'z': m.get('z')})
+                                                 'z': m.get('z'), 'rival': m.get('identifiable_rival')})
     head = '| effect (singles and pairs) | hidden | named | within 15 % | 95 % coverage | ambiguous stated |'
     rule = '|---|---|---|---|---|---|'
     if measured:
@@ -299,6 +306,9 @@ def effect_table(results):
                  ' not identifiable: named | within 15 %% | not judged | sizeable (z >= %.1f): within 15 %% |'
                  ' median z |' % (identifiability.Z_IDENTIFIABLE, identifiability.Z_SIZEABLE))
         rule += '---|---|---|---|---|---|---|---|---|---|'
+    if strict:
+        head += ' identifiable against its nearest rival | named | within 15 % | 95 % coverage |'
+        rule += '---|---|---|---|'
     lines = [head, rule]
     for effect in VERTICAL + HEADING:
         if effect not in slots:
@@ -316,6 +326,9 @@ def effect_table(results):
                 pct(hy, h), pct(ny, hy), pct(wy, hy), covy, pct(ay, hy), pct(nn, hn), pct(wn, hn),
                 h - hy - hn, pct(sum(s['within'] for s in big), len(big)),
                 '%.1f' % statistics.median(zs) if zs else '-')
+        if strict:
+            hr, nr, wr, covr, _ = tally([s for s in slots[effect] if s['rival'] is True])
+            line += ' %s | %s | %s | %s |' % (pct(hr, h), pct(nr, hr), pct(wr, hr), covr)
         lines.append(line)
     return lines
 
@@ -343,9 +356,10 @@ def main():
     p.add_argument('--timeout', type=int, default=600, help='seconds per program run')
     p.add_argument('--details', help='JSON file: every draw with its truth and findings')
     p.add_argument('--from-details', help='tabulate a run saved with --details again (nothing is flown)')
-    p.add_argument('--identifiability', action='store_true',
+    p.add_argument('--identifiability', nargs='?', const='fit', choices=('fit', 'rivals'),
                    help='also judge each hidden effect identifiable or not on its log (one forced fit of the '
-                        'hidden effects per draw; benchmarks/identifiability.py) and split the per-effect table')
+                        'hidden effects per draw; "rivals": also once more with each other candidate of its plane '
+                        'added; benchmarks/identifiability.py) and split the per-effect table')
     args = p.parse_args()
     if args.from_details:
         with open(args.from_details) as f:

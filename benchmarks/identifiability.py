@@ -22,7 +22,17 @@ size would be told from absent at the 95 % level in 95 % of logs with this
 information. SIZEABLE (a stricter, second reading): z >= 1.96 / 0.15 = 13.1,
 the log's own sigma small enough that 15 % of the size is a 95 % interval's
 half-width - only then can "within 15 %" be expected in most draws.
-No interval (the fit failed or gave none): not judged (None).
+No interval (the fit failed or gave none): not judged (None). The pitch
+trim offset is not judged: it is read from the battery position, not fitted
+on the depth rate, and the diagnosis reports it only where it selects it.
+
+The forced fit knows which effects are hidden: z is what the log can show
+given the right model, not whether the selection can tell the effect from a
+candidate that is not there. A stricter reading (--rivals, stated with the
+rule above before any hit rate was looked at): the same fit once more with
+each other candidate of the effect's plane added (one at a time; the pitch
+trim never), sigma the largest of them: z_rival = size / max sigma. An
+effect IDENTIFIABLE AGAINST ITS NEAREST RIVAL has z_rival >= 3.6 too.
 """
 import argparse
 import json
@@ -72,24 +82,54 @@ def has_ctd(log):
     return False
 
 
-def measure(diagnose, log, vehicle, truth_effects, nominal, plane_of, timeout=600, extra=()):
-    """effect -> judge(...) for every hidden effect of a truth log; raises RuntimeError when the fit fails."""
-    if not truth_effects:
+NOT_FITTED = {'pitch_trim_offset'}  # not a depth-rate or heading fit (glider-diagnose --fit refuses it)
+
+
+def forced_fit(diagnose, log, vehicle, effects, plane_of, timeout):
+    """effect -> (value, low, high) of `glider-diagnose --fit` of these effects (+ the CTD's density)."""
+    effects = [e for e in effects if e not in NOT_FITTED]
+    if not effects:
         return {}
-    planes = {plane_of(e) for e in truth_effects}
+    planes = {plane_of(e) for e in effects}
     plane = ['--plane', planes.pop()] if len(planes) == 1 else []
-    fitted = list(truth_effects)
+    fitted = list(effects)
     if plane != ['--plane', 'heading'] and has_ctd(log):
         fitted.insert(0, 'water_density')
-    command = [diagnose, log, '--vehicle', vehicle, '--json', '--fit', ','.join(fitted)] + plane + list(extra)
+    command = [diagnose, log, '--vehicle', vehicle, '--json', '--fit', ','.join(fitted)] + plane
     done = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
     if done.returncode != 0:
-        raise RuntimeError('glider-diagnose --fit exit %d: %s' % (done.returncode, done.stderr.strip()[-300:]))
-    fitted = forced_fit_findings(json.loads(done.stdout))
+        raise RuntimeError('glider-diagnose --fit %s exit %d: %s' % (','.join(fitted), done.returncode,
+                                                                     done.stderr.strip()[-300:]))
+    return forced_fit_findings(json.loads(done.stdout))
+
+
+def measure(diagnose, log, vehicle, truth_effects, nominal, plane_of, timeout=600, rivals=None):
+    """effect -> judge(...) for every hidden effect of a truth log; raises RuntimeError when the fit fails.
+    rivals: effect -> the other candidates of its plane, for the stricter reading (z_rival, identifiable_rival)."""
+    fitted = forced_fit(diagnose, log, vehicle, truth_effects, plane_of, timeout)
     out = {}
     for effect, truth in truth_effects.items():
-        value, low, high = fitted.get(effect, (None, None, None))
+        # The pitch trim a forced fit reports is the diagnosis's own choice (reported only where selected).
+        value, low, high = (None, None, None) if effect in NOT_FITTED else fitted.get(effect, (None, None, None))
         out[effect] = judge(truth, nominal(effect), value, low, high)
+    if rivals is None:
+        return out
+    for effect, truth in truth_effects.items():
+        if out[effect]['z'] is None:
+            continue
+        worst, nearest = out[effect], None
+        for rival in rivals(effect):
+            if rival in truth_effects or rival in NOT_FITTED:
+                continue
+            try:
+                value, low, high = forced_fit(diagnose, log, vehicle, list(truth_effects) + [rival], plane_of,
+                                              timeout).get(effect, (None, None, None))
+            except RuntimeError:  # e.g. a candidate this log cannot show: no rival
+                continue
+            m = judge(truth, nominal(effect), value, low, high)
+            if m['z'] is not None and m['z'] < worst['z']:  # a fit without an interval is no rival
+                worst, nearest = m, rival
+        out[effect].update(z_rival=worst['z'], identifiable_rival=worst['identifiable'], nearest_rival=nearest)
     return out
 
 
