@@ -171,12 +171,14 @@ def run_draw(args, case, seed):
     result['findings'] = [(e, v, lo, hi, bool(f.get('ambiguous') or f.get('alternatives') or e in paired))
                           for e, v, lo, hi, f in findings_of(document)]
     if args.identifiability:
+        start = time.monotonic()
         try:
             result['identifiability'] = identifiability.measure(
                 args.diagnose, log, vehicle, result['truth'], nominal, plane_of, args.timeout,
                 rivals if args.identifiability == 'rivals' else None)
         except (RuntimeError, subprocess.TimeoutExpired, ValueError) as error:
             result['identifiability_error'] = str(error)
+        result['identifiability_s'] = time.monotonic() - start
     result['ok'] = True
     if not args.keep:
         os.remove(log)
@@ -424,6 +426,11 @@ def main():
     truth_s = [r['truth_s'] for r in results if 'truth_s' in r]
     diag_s = [r['diagnose_s'] for r in results if 'diagnose_s' in r]
     rows = [r['flight']['log_rows'] for r in results if 'flight' in r]
+    ident_s = [r['identifiability_s'] for r in results if 'identifiability_s' in r]
+    if ident_s:
+        print('identifiability (%s): %.1f s median per draw (%.1f-%.1f); not judged: %d draws with a failed forced fit' % (
+            args.identifiability, statistics.median(ident_s), min(ident_s), max(ident_s),
+            sum('identifiability_error' in r for r in results)))
     if truth_s:
         print('speed: one truth log %.2f s median (%.2f-%.2f, %d rows median); one diagnosis %.1f s median '
               '(%.1f-%.1f); %d draws in %.0f s wall with %d jobs' % (
