@@ -221,27 +221,19 @@ def table(results, cases):
     lines = ['| case | draws | named | within 15 % | 95 % coverage | spurious (draws) | spurious vertical | '
              'spurious heading | ambiguous | no finding |',
              '|---|---|---|---|---|---|---|---|---|---|']
-    per_effect = {}
     for case in cases:
         rs = [r for r in results if r['case'] == case]
         ok = [r for r in rs if r['ok']]
         named = within = covered = valued = spur = spur_v = spur_h = amb = clean = slots = 0
         for r in ok:
             per, spurious, ambiguous = score(r)
-            for effect, (n, w, c, _) in per.items():
+            for n, w, c, _ in per.values():
                 slots += 1
                 named += n
                 within += w
                 if c is not None:
                     valued += 1
                     covered += c
-                e = per_effect.setdefault(effect, [0, 0, 0, 0, 0])
-                e[0] += 1
-                e[1] += n
-                e[2] += w
-                if c is not None:
-                    e[3] += 1
-                    e[4] += c
             spur += bool(spurious)
             spur_v += any(plane_of(e) == 'vertical' for e in spurious)
             spur_h += any(plane_of(e) == 'heading' for e in spurious)
