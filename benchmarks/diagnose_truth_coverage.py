@@ -420,8 +420,8 @@ def main():
     rows = [r['flight']['log_rows'] for r in results if 'flight' in r]
     ident_s = [r['identifiability_s'] for r in results if 'identifiability_s' in r]
     if ident_s:
-        print('identifiability (%s): %.1f s median per draw (%.1f-%.1f); not judged: %d draws with a failed forced fit' % (
-            args.identifiability, statistics.median(ident_s), min(ident_s), max(ident_s),
+        print('identifiability (%s): %.1f s median per draw (%.1f-%.1f); not judged: %d draws with a failed '
+              'forced fit' % (args.identifiability, statistics.median(ident_s), min(ident_s), max(ident_s),
             sum('identifiability_error' in r for r in results)))
     if truth_s:
         print('speed: one truth log %.2f s median (%.2f-%.2f, %d rows median); one diagnosis %.1f s median '
