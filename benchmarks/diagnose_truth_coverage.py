@@ -422,7 +422,7 @@ def main():
     if ident_s:
         print('identifiability (%s): %.1f s median per draw (%.1f-%.1f); not judged: %d draws with a failed '
               'forced fit' % (args.identifiability, statistics.median(ident_s), min(ident_s), max(ident_s),
-            sum('identifiability_error' in r for r in results)))
+                              sum('identifiability_error' in r for r in results)))
     if truth_s:
         print('speed: one truth log %.2f s median (%.2f-%.2f, %d rows median); one diagnosis %.1f s median '
               '(%.1f-%.1f); %d draws in %.0f s wall with %d jobs' % (
