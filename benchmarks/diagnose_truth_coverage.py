@@ -17,7 +17,8 @@ coverage (the interval holds the truth, among the named), spurious findings
 (draws with a finding of an effect not hidden; the measured water density is
 an input, not a finding), ambiguous (draws where the diagnosis says the
 hidden effect cannot be told apart from another: a finding's "ambiguous" or
-"alternatives"), and for clean logs how many give no finding at all.
+"alternatives", a vertical "ambiguous" pair or a heading link's "ambiguous"
+verdict), and for clean logs how many give no finding at all.
 
 With --identifiability, each hidden effect is also judged identifiable or
 not on its log by a measure that does not use the diagnosis's choice
