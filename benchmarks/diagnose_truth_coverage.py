@@ -17,7 +17,14 @@ coverage (the interval holds the truth, among the named), spurious findings
 (draws with a finding of an effect not hidden; the measured water density is
 an input, not a finding), ambiguous (draws where the diagnosis says the
 hidden effect cannot be told apart from another: a finding's "ambiguous" or
-"alternatives"), and for clean logs how many give no finding at all.
+"alternatives", a vertical "ambiguous" pair or a heading link's "ambiguous"
+verdict), and for clean logs how many give no finding at all.
+
+With --identifiability, each hidden effect is also judged identifiable or
+not on its log by a measure that does not use the diagnosis's choice
+(benchmarks/identifiability.py: a forced joint fit of the hidden effects, the
+truth's size over the fit's standard error, z >= 3.6), and the per-effect
+table is split by it beside the unsplit figures.
 """
 import argparse
 import concurrent.futures
@@ -31,6 +38,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+import identifiability
 
 VERTICAL = ['buoyancy_offset', 'drag_change', 'hull_compressibility', 'thermal_expansion', 'vertical_water_velocity',
             'pitch_trim_offset', 'pump_lag', 'lift_change', 'depth_lag']
@@ -155,8 +164,22 @@ def run_draw(args, case, seed):
     # glider-diagnose states ambiguity at the top level ("ambiguous": the pairs the held-out yos cannot tell
     # apart, vertical plane); a finding is ambiguous when it is one side of such a pair.
     paired = {side for a in document.get('ambiguous', []) for side in (a.get('effect'), a.get('alternative'))}
+    # The heading plane states its pairs per link (verdict "ambiguous").
+    for link in ((document.get('heading') or {}).get('links') or {}).values():
+        paired |= {side for a in link.get('identifiability', []) or [] if a.get('verdict') == 'ambiguous'
+                   for side in (a.get('chosen'), a.get('alternative'))}
+    result['stated_ambiguous'] = sorted(paired)
     result['findings'] = [(e, v, lo, hi, bool(f.get('ambiguous') or f.get('alternatives') or e in paired))
                           for e, v, lo, hi, f in findings_of(document)]
+    if args.identifiability:
+        start = time.monotonic()
+        try:
+            result['identifiability'] = identifiability.measure(
+                args.diagnose, log, vehicle, result['truth'], nominal, plane_of, args.timeout,
+                rivals if args.identifiability == 'rivals' else None)
+        except (RuntimeError, subprocess.TimeoutExpired, ValueError) as error:
+            result['identifiability_error'] = str(error)
+        result['identifiability_s'] = time.monotonic() - start
     result['ok'] = True
     if not args.keep:
         os.remove(log)
@@ -186,6 +209,11 @@ def plane_of(effect):
     return 'heading' if effect in HEADING else 'vertical'
 
 
+def rivals(effect):
+    """The other candidates of an effect's plane (identifiability.py's stricter reading)."""
+    return [e for e in (HEADING if effect in HEADING else VERTICAL) if e != effect]
+
+
 def pct(a, b):
     return '-' if b == 0 else '%d/%d (%.0f %%)' % (a, b, 100.0 * a / b)
 
@@ -194,27 +222,19 @@ def table(results, cases):
     lines = ['| case | draws | named | within 15 % | 95 % coverage | spurious (draws) | spurious vertical | '
              'spurious heading | ambiguous | no finding |',
              '|---|---|---|---|---|---|---|---|---|---|']
-    per_effect = {}
     for case in cases:
         rs = [r for r in results if r['case'] == case]
         ok = [r for r in rs if r['ok']]
         named = within = covered = valued = spur = spur_v = spur_h = amb = clean = slots = 0
         for r in ok:
             per, spurious, ambiguous = score(r)
-            for effect, (n, w, c, _) in per.items():
+            for n, w, c, _ in per.values():
                 slots += 1
                 named += n
                 within += w
                 if c is not None:
                     valued += 1
                     covered += c
-                e = per_effect.setdefault(effect, [0, 0, 0, 0, 0])
-                e[0] += 1
-                e[1] += n
-                e[2] += w
-                if c is not None:
-                    e[3] += 1
-                    e[4] += c
             spur += bool(spurious)
             spur_v += any(plane_of(e) == 'vertical' for e in spurious)
             spur_h += any(plane_of(e) == 'heading' for e in spurious)
@@ -246,12 +266,66 @@ def table(results, cases):
         lines.append('| %s | %d | %s | %s | %s | %s | %s | %s |' % (
             variant, len(ok), pct(named, slots), pct(within, slots), pct(covered, valued), pct(spur_v, len(ok)),
             pct(spur_h, len(ok)), pct(empty, len(clean))))
-    lines += ['', '| effect (singles and pairs) | hidden | named | within 15 % | 95 % coverage |', '|---|---|---|---|---|']
+    return '\n'.join(lines + [''] + effect_table(results))
+
+
+def tally(slots):
+    """hidden, named, within 15 %, covered of those with an interval (a/b), ambiguous stated."""
+    valued = [s for s in slots if s['covered'] is not None]
+    return (len(slots), sum(s['named'] for s in slots), sum(s['within'] for s in slots),
+            pct(sum(s['covered'] for s in valued), len(valued)), sum(s['ambiguous'] for s in slots))
+
+
+def effect_table(results):
+    """Per effect (singles and pairs): the unsplit figures, the stated ambiguity and, where measured, the split by
+    identifiability (benchmarks/identifiability.py)."""
+    slots = {}
+    measured = any('identifiability' in r for r in results if r['ok'])
+    strict = any('z_rival' in m for r in results if r['ok'] for m in r.get('identifiability', {}).values())
+    for r in results:
+        if not r['ok']:
+            continue
+        per, _, _ = score(r)
+        stated = set(r.get('stated_ambiguous', []))
+        judged = r.get('identifiability', {})
+        for effect, (n, w, c, amb) in per.items():
+            m = judged.get(effect, {})
+            slots.setdefault(effect, []).append({'named': n, 'within': w, 'covered': c,
+                                                 'ambiguous': bool(amb or effect in stated),
+                                                 'identifiable': m.get('identifiable'), 'sizeable': m.get('sizeable'),
+                                                 'z': m.get('z'), 'rival': m.get('identifiable_rival')})
+    head = '| effect (singles and pairs) | hidden | named | within 15 % | 95 % coverage | ambiguous stated |'
+    rule = '|---|---|---|---|---|---|'
+    if measured:
+        head += (' identifiable (z >= %.1f) | named | within 15 %% | 95 %% coverage | ambiguous stated |'
+                 ' not identifiable: named | within 15 %% | not judged | sizeable (z >= %.1f): within 15 %% |'
+                 ' median z |' % (identifiability.Z_IDENTIFIABLE, identifiability.Z_SIZEABLE))
+        rule += '---|---|---|---|---|---|---|---|---|---|'
+    if strict:
+        head += ' identifiable against its nearest rival | named | within 15 % | 95 % coverage |'
+        rule += '---|---|---|---|'
+    lines = [head, rule]
     for effect in VERTICAL + HEADING:
-        if effect in per_effect:
-            h, n, w, v, c = per_effect[effect]
-            lines.append('| %s | %d | %s | %s | %s |' % (effect, h, pct(n, h), pct(w, h), pct(c, v)))
-    return '\n'.join(lines)
+        if effect not in slots:
+            continue
+        h, n, w, cov, amb = tally(slots[effect])
+        line = '| %s | %d | %s | %s | %s | %s |' % (effect, h, pct(n, h), pct(w, h), cov, pct(amb, h))
+        if measured:
+            yes = [s for s in slots[effect] if s['identifiable'] is True]
+            no = [s for s in slots[effect] if s['identifiable'] is False]
+            big = [s for s in slots[effect] if s['sizeable'] is True]
+            zs = [s['z'] for s in slots[effect] if s['z'] is not None]
+            hy, ny, wy, covy, ay = tally(yes)
+            hn, nn, wn, _, _ = tally(no)
+            line += ' %s | %s | %s | %s | %s | %s | %s | %d | %s | %s |' % (
+                pct(hy, h), pct(ny, hy), pct(wy, hy), covy, pct(ay, hy), pct(nn, hn), pct(wn, hn),
+                h - hy - hn, pct(sum(s['within'] for s in big), len(big)),
+                '%.1f' % statistics.median(zs) if zs else '-')
+        if strict:
+            hr, nr, wr, covr, _ = tally([s for s in slots[effect] if s['rival'] is True])
+            line += ' %s | %s | %s | %s |' % (pct(hr, h), pct(nr, hr), pct(wr, hr), covr)
+        lines.append(line)
+    return lines
 
 
 def main():
@@ -277,6 +351,10 @@ def main():
     p.add_argument('--timeout', type=int, default=600, help='seconds per program run')
     p.add_argument('--details', help='JSON file: every draw with its truth and findings')
     p.add_argument('--from-details', help='tabulate a run saved with --details again (nothing is flown)')
+    p.add_argument('--identifiability', nargs='?', const='fit', choices=('fit', 'rivals'),
+                   help='also judge each hidden effect identifiable or not on its log (one forced fit of the '
+                        'hidden effects per draw; "rivals": also once more with each other candidate of its plane '
+                        'added; benchmarks/identifiability.py) and split the per-effect table')
     args = p.parse_args()
     if args.from_details:
         with open(args.from_details) as f:
@@ -341,6 +419,11 @@ def main():
     truth_s = [r['truth_s'] for r in results if 'truth_s' in r]
     diag_s = [r['diagnose_s'] for r in results if 'diagnose_s' in r]
     rows = [r['flight']['log_rows'] for r in results if 'flight' in r]
+    ident_s = [r['identifiability_s'] for r in results if 'identifiability_s' in r]
+    if ident_s:
+        print('identifiability (%s): %.1f s median per draw (%.1f-%.1f); not judged: %d draws with a failed '
+              'forced fit' % (args.identifiability, statistics.median(ident_s), min(ident_s), max(ident_s),
+                              sum('identifiability_error' in r for r in results)))
     if truth_s:
         print('speed: one truth log %.2f s median (%.2f-%.2f, %d rows median); one diagnosis %.1f s median '
               '(%.1f-%.1f); %d draws in %.0f s wall with %d jobs' % (

@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""Can this log show a hidden effect at its true size at all? (issue 26 items 2-3)
+
+The goal "named within 15 % where identifiable" needs a measure of
+identifiability that does not use the diagnosis's choice. This one uses the
+log and the truth only: the hidden effects (all of the draw's, both planes)
+are fitted jointly by `glider-diagnose --fit` - no selection, every other
+candidate held at its nominal, the water's density the CTD's where the log
+has one (a measured input the diagnosis flies too; without it the thermal
+and compressibility terms absorb the water's density structure: a 2.3e-5 /K,
+2.5e-10 /Pa draw read -9.3e-5 and -1.9e-9 with tight intervals) - and each effect's 95 % interval from that fit
+(cluster-robust by glide, widened where the held-out yos read it otherwise,
+never zero-width) gives its standard error sigma = half-width / 1.96. The
+effect's true size over it is a Wald z of the truth against absent:
+
+    z = |truth - nominal| / sigma
+
+Rule, fixed before any hit rate was looked at: IDENTIFIABLE when
+z >= 1.96 + 1.645 = 3.6, the minimum detectable effect - an effect of this
+size would be told from absent at the 95 % level in 95 % of logs with this
+information. SIZEABLE (a stricter, second reading): z >= 1.96 / 0.15 = 13.1,
+the log's own sigma small enough that 15 % of the size is a 95 % interval's
+half-width - only then can "within 15 %" be expected in most draws.
+No interval (the fit failed or gave none): not judged (None). The pitch
+trim offset is not judged: it is read from the battery position, not fitted
+on the depth rate, and the diagnosis reports it only where it selects it.
+
+The forced fit knows which effects are hidden: z is what the log can show
+given the right model, not whether the selection can tell the effect from a
+candidate that is not there. A stricter reading (--rivals, stated with the
+rule above before any hit rate was looked at): the same fit once more with
+each other candidate of the effect's plane added (one at a time; the pitch
+trim never), sigma the largest of them: z_rival = size / max sigma. An
+effect IDENTIFIABLE AGAINST ITS NEAREST RIVAL has z_rival >= 3.6 too.
+"""
+import argparse
+import json
+import math
+import subprocess
+import sys
+
+Z_IDENTIFIABLE = 1.96 + 1.645
+Z_SIZEABLE = 1.96 / 0.15
+
+
+def forced_fit_findings(document):
+    """effect -> (value, low, high) of a `glider-diagnose --json --fit` document, both planes."""
+    out = {}
+    for f in document.get('findings', []) or []:
+        ci = f.get('ci95') or [None, None]
+        out[f['effect']] = (f.get('value'), ci[0], ci[1])
+    heading = document.get('heading') or {}
+    for link in (heading.get('links') or {}).values():
+        for f in link.get('findings', []) or []:
+            ci = f.get('ci95') or [None, None]
+            out[f['effect']] = (f.get('value'), ci[0], ci[1])
+    return out
+
+
+def judge(truth, nominal, value, low, high):
+    """The measure of one effect: z and the two verdicts (None where there is no usable interval)."""
+    out = {'value': value, 'ci95': [low, high], 'z': None, 'identifiable': None, 'sizeable': None}
+    if low is None or high is None or not all(math.isfinite(x) for x in (low, high)):
+        return out
+    sigma = (high - low) / (2.0 * 1.96)
+    size = abs(truth - nominal)
+    if sigma <= 0.0:  # never expected (intervals are never zero-width): not judged rather than infinite
+        return out
+    z = size / sigma
+    out.update(z=z, identifiable=z >= Z_IDENTIFIABLE, sizeable=z >= Z_SIZEABLE)
+    return out
+
+
+def has_ctd(log):
+    """The log carries the water's density or what gives it (the columns log_columns.cpp reads)."""
+    with open(log) as f:
+        for line in f:
+            if not line.startswith('#'):
+                columns = line.strip().split(',')
+                return 'sci_water_density' in columns or 'sci_water_cond' in columns
+    return False
+
+
+NOT_FITTED = {'pitch_trim_offset'}  # not a depth-rate or heading fit (glider-diagnose --fit refuses it)
+
+
+def forced_fit(diagnose, log, vehicle, effects, plane_of, timeout):
+    """effect -> (value, low, high) of `glider-diagnose --fit` of these effects (+ the CTD's density)."""
+    effects = [e for e in effects if e not in NOT_FITTED]
+    if not effects:
+        return {}
+    planes = {plane_of(e) for e in effects}
+    plane = ['--plane', planes.pop()] if len(planes) == 1 else []
+    fitted = list(effects)
+    if plane != ['--plane', 'heading'] and has_ctd(log):
+        fitted.insert(0, 'water_density')
+    command = [diagnose, log, '--vehicle', vehicle, '--json', '--fit', ','.join(fitted)] + plane
+    done = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+    if done.returncode != 0:
+        raise RuntimeError('glider-diagnose --fit %s exit %d: %s' % (','.join(fitted), done.returncode,
+                                                                     done.stderr.strip()[-300:]))
+    return forced_fit_findings(json.loads(done.stdout))
+
+
+def measure(diagnose, log, vehicle, truth_effects, nominal, plane_of, timeout=600, rivals=None):
+    """effect -> judge(...) for every hidden effect of a truth log; raises RuntimeError when the fit fails.
+    rivals: effect -> the other candidates of its plane, for the stricter reading (z_rival, identifiable_rival)."""
+    fitted = forced_fit(diagnose, log, vehicle, truth_effects, plane_of, timeout)
+    out = {}
+    for effect, truth in truth_effects.items():
+        # The pitch trim a forced fit reports is the diagnosis's own choice (reported only where selected).
+        value, low, high = (None, None, None) if effect in NOT_FITTED else fitted.get(effect, (None, None, None))
+        out[effect] = judge(truth, nominal(effect), value, low, high)
+    if rivals is None:
+        return out
+    for effect, truth in truth_effects.items():
+        if out[effect]['z'] is None:
+            continue
+        worst, nearest = out[effect], None
+        for rival in rivals(effect):
+            if rival in truth_effects or rival in NOT_FITTED:
+                continue
+            try:
+                value, low, high = forced_fit(diagnose, log, vehicle, list(truth_effects) + [rival], plane_of,
+                                              timeout).get(effect, (None, None, None))
+            except RuntimeError:  # e.g. a candidate this log cannot show: no rival
+                continue
+            m = judge(truth, nominal(effect), value, low, high)
+            if m['z'] is not None and m['z'] < worst['z']:  # a fit without an interval is no rival
+                worst, nearest = m, rival
+        out[effect].update(z_rival=worst['z'], identifiable_rival=worst['identifiable'], nearest_rival=nearest)
+    return out
+
+
+def main():
+    sys.path.insert(0, __file__.rsplit('/', 1)[0])
+    import diagnose_truth_coverage as coverage
+    p = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    p.add_argument('diagnose', help='glider-diagnose')
+    p.add_argument('log', help='a glider-truth log (CSV)')
+    p.add_argument('truth', help='its truth file (glider-truth --truth)')
+    p.add_argument('vehicle', help='the nominal vehicle file the diagnosis flies')
+    args = p.parse_args()
+    with open(args.truth) as f:
+        effects = json.load(f)['effects']
+    for effect, m in measure(args.diagnose, args.log, args.vehicle, effects, coverage.nominal,
+                             coverage.plane_of).items():
+        print('%s truth %.6g: forced fit %s [%s, %s], z %s -> %s' % (
+            effect, effects[effect], m['value'], m['ci95'][0], m['ci95'][1],
+            'n/a' if m['z'] is None else '%.2f' % m['z'],
+            {None: 'not judged', True: 'identifiable', False: 'not identifiable'}[m['identifiable']]))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
