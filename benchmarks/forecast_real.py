@@ -191,7 +191,8 @@ def forecast_options(a):
             (["--speed-correction"] if a.speed_correction else []) +
             (["--no-speed-correction"] if a.no_speed_correction else []) +
             (["--pitch-calibration"] if a.pitch_calibration else []) +
-            (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []))
+            (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []) +
+            (["--no-depth-rate-calibration"] if a.no_depth_rate_calibration else []))
 
 
 def t_utc(s):
@@ -444,6 +445,8 @@ def main():
     p.add_argument("--pitch-calibration", action="store_true", help="glider-forecast's --pitch-calibration")
     p.add_argument("--no-glider-dead-reckoning", action="store_true",
                    help="glider-forecast's --no-glider-dead-reckoning")
+    p.add_argument("--no-depth-rate-calibration", action="store_true",
+                   help="glider-forecast's --no-depth-rate-calibration")
     p.add_argument("--from-glider", action="store_true",
                    help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")

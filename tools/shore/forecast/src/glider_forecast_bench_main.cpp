@@ -178,6 +178,11 @@ int main(int argc, char** argv) {
   app.add_flag("--pitch-calibration", options.pitch_calibration,
                "the forecasts calibrate the glider's dead-reckoned speed for its pitch sensor's scale (off by "
                "default, as glider-forecast)");
+  app.add_flag("!--no-depth-rate-calibration", options.depth_rate_calibration,
+               "the forecasts fly the vehicle file, not calibrated to the glider's steady-glide depth rates");
+  app.add_flag("--truth-servo-on-sensor", truth_options.servo_on_sensor,
+               "the truths' pitch servo holds the biased sensor's pitch at the mission's (as a real servo does), "
+               "not the hull's");
   tool.add_number("--truth-pitch-bias", truth_options.pitch_bias_max, {0.0, 0.5, ""},
                   "the truths' pitch sensor reads (1 + b) x the hull's pitch, b drawn uniform in [-this, this]")
       ->capture_default_str();
