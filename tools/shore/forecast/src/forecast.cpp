@@ -419,7 +419,9 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   // speed while carrying the glider's belief (which holds the glider's DR
   // error) replayed a glider whose DR reads 9 % slow onto a waypoint its
   // DR never reached.
-  const double model_average_speed_m_s = setup.average_speed_m_s;  // the baseline's (the file's DR)
+  // The baseline's (the file's DR; the vehicle file's flight, not the depth-rate calibrated one).
+  const double model_average_speed_m_s =
+      f.depth_rate_applied && f.nominal_average_speed_m_s > 0.0 ? f.nominal_average_speed_m_s : setup.average_speed_m_s;
   // (A servo calibrated by its depth rates already counts through its sensor: measure_speed.)
   const bool glider_dr = options.glider_dead_reckoning && options.pitch_calibration && f.pitch_samples > 0 &&
                          f.pitch_scale > 0.0 && !(f.depth_rate_applied && f.depth_rate_servo);

@@ -370,6 +370,7 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
   int files = 0;
   const GlidePitch logged = logged_glide_pitch(glider_dir, f.fix_utc_s - 86400.0, f.notes, files);
   char text[400];
+  f.nominal_average_speed_m_s = nominal.average_m_s;  // the baseline's: the vehicle file's flight
   if (files > 0 && calibrate_to_depth_rates(logged, model_pitch, reset_dives > 0, setup, options, f)) {
     nominal = still_water_flight(setup, options, nullptr);
   }

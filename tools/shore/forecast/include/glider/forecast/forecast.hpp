@@ -117,6 +117,7 @@ struct Forecast {
   // applied, and what it set.
   bool depth_rate_have = false, depth_rate_applied = false, depth_rate_servo = false;
   double depth_rate_pitch_scale = 1.0, depth_rate_drag_factor = 1.0, depth_rate_buoyancy_kg = 0.0;
+  double nominal_average_speed_m_s = 0.0;  // the vehicle file's still-water flight's m_avg_speed (0: none)
   double depth_rate_glider_dive_m_s = 0.0, depth_rate_glider_climb_m_s = 0.0;
   double depth_rate_model_dive_m_s = 0.0, depth_rate_model_climb_m_s = 0.0;
   // The model's own miss on the glider's recent dives, flown again with the
