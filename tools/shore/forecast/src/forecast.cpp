@@ -410,7 +410,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   if (history.back().water_vx_m_s && history.back().water_vy_m_s) {
     setup.firmware_current = fw::EastNorth{*history.back().water_vx_m_s, *history.back().water_vy_m_s};
   }
-  const model::Hydrodynamics nominal_hydro = setup.vehicle.hydro;  // the baseline's (measure_speed may correct it)
+  const model::VehicleParams nominal_vehicle = setup.vehicle;  // the baseline's (measure_speed may correct it)
   measure_speed(history, glider_dir, setup, options, f);
   // The glider's firmware dead-reckons through its pitch sensor, whose scale
   // measure_speed read: the model's firmware counts the same way, so the
@@ -419,9 +419,12 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   // speed while carrying the glider's belief (which holds the glider's DR
   // error) replayed a glider whose DR reads 9 % slow onto a waypoint its
   // DR never reached.
-  const double model_average_speed_m_s = setup.average_speed_m_s;  // the baseline's (the file's DR)
-  const bool glider_dr =
-      options.glider_dead_reckoning && options.pitch_calibration && f.pitch_samples > 0 && f.pitch_scale > 0.0;
+  // The baseline's (the file's DR; the vehicle file's flight, not the depth-rate calibrated one).
+  const double model_average_speed_m_s =
+      f.depth_rate_applied && f.nominal_average_speed_m_s > 0.0 ? f.nominal_average_speed_m_s : setup.average_speed_m_s;
+  // (A servo calibrated by its depth rates already counts through its sensor: measure_speed.)
+  const bool glider_dr = options.glider_dead_reckoning && options.pitch_calibration && f.pitch_samples > 0 &&
+                         f.pitch_scale > 0.0 && !(f.depth_rate_applied && f.depth_rate_servo);
   // The glider's DR error its pitch sensor adds, where the model's DR does not count it.
   const double sensor_dr_factor = options.pitch_calibration && !glider_dr ? f.pitch_dr_speed_factor : 1.0;
   if (glider_dr) {
@@ -523,7 +526,8 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
 
   FlightSetup base = setup;
   base.current = f.baseline_current;
-  base.vehicle.hydro = nominal_hydro;                      // the baseline flies the nominal vehicle
+  base.vehicle = nominal_vehicle;                          // the baseline flies the nominal vehicle
+  base.config.mission = now.config.mission;                // the mission's own pitch
   base.config.dead_reckoning = now.config.dead_reckoning;  // and its DR as the file's
   base.average_speed_m_s = model_average_speed_m_s;
   const std::vector<RunOutcome> baseline = fly_runs(base, options, 1, false);
@@ -588,6 +592,16 @@ nlohmann::json forecast_json(const Forecast& f) {
                       {"estimate_sigma_m_s", f.prior.estimate_sigma_m_s},
                       {"favoured_mean_sigma_m_s", f.favoured.mean_sigma_m_s},
                       {"favoured_m2_sigma_m_s", f.favoured.m2_sigma_m_s}}}};
+  out["depth_rate"] = {{"read", f.depth_rate_have},
+                       {"applied", f.depth_rate_applied},
+                       {"servo", f.depth_rate_servo},
+                       {"pitch_scale", f.depth_rate_pitch_scale},
+                       {"drag_factor", f.depth_rate_drag_factor},
+                       {"buoyancy_g", 1000.0 * f.depth_rate_buoyancy_kg},
+                       {"glider_dive_m_s", f.depth_rate_glider_dive_m_s},
+                       {"glider_climb_m_s", f.depth_rate_glider_climb_m_s},
+                       {"model_dive_m_s", f.depth_rate_model_dive_m_s},
+                       {"model_climb_m_s", f.depth_rate_model_climb_m_s}};
   out["model_miss"] = {{"dives", f.model_miss_dives},
                        {"rms_east_m", f.model_miss_east_m},
                        {"rms_north_m", f.model_miss_north_m},

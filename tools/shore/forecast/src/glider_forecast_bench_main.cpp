@@ -103,6 +103,15 @@ void score_case(const fc::Forecast& f, const fc::TruthSurfacing& next, Score& s,
         "drag x%.3f +-%.3f\n",
         f.pitch_scale, f.pitch_scale_sigma, f.pitch_samples, f.pitch_dr_speed_factor, f.glider_speed_ratio,
         f.speed_dives, f.speed_drag_factor, f.speed_drag_sigma);
+    // The depth-rate calibration: what it read and whether the runs flew it.
+    if (f.depth_rate_have) {
+      std::printf(
+          "    depth rates: glider %.3f / %.3f m/s, model %.3f / %.3f; %s hull x%.3f of m_pitch, drag x%.3f, "
+          "buoyancy %+.1f g (%s)\n",
+          f.depth_rate_glider_dive_m_s, f.depth_rate_glider_climb_m_s, f.depth_rate_model_dive_m_s,
+          f.depth_rate_model_climb_m_s, f.depth_rate_servo ? "servo:" : "battery fixed:", f.depth_rate_pitch_scale,
+          f.depth_rate_drag_factor, 1000.0 * f.depth_rate_buoyancy_kg, f.depth_rate_applied ? "flown" : "not flown");
+    }
     // The currents themselves (m/s), to score a current rule without its
     // flights: the forecast's, persistence's and the one measured next.
     std::printf("    current forecast %+.3f %+.3f, persistence %+.3f %+.3f, measured next %+.3f %+.3f m/s\n",
@@ -178,6 +187,11 @@ int main(int argc, char** argv) {
   app.add_flag("--pitch-calibration", options.pitch_calibration,
                "the forecasts calibrate the glider's dead-reckoned speed for its pitch sensor's scale (off by "
                "default, as glider-forecast)");
+  app.add_flag("!--no-depth-rate-calibration", options.depth_rate_calibration,
+               "the forecasts fly the vehicle file, not calibrated to the glider's steady-glide depth rates");
+  app.add_flag("--truth-servo-on-sensor", truth_options.servo_on_sensor,
+               "the truths' pitch servo holds the biased sensor's pitch at the mission's (as a real servo does), "
+               "not the hull's");
   tool.add_number("--truth-pitch-bias", truth_options.pitch_bias_max, {0.0, 0.5, ""},
                   "the truths' pitch sensor reads (1 + b) x the hull's pitch, b drawn uniform in [-this, this]")
       ->capture_default_str();

@@ -46,6 +46,9 @@ int main(int argc, char** argv) {
     command->add_flag("!--no-glider-dead-reckoning", options.glider_dead_reckoning,
                       "the model's firmware dead-reckons as the vehicle file's, not through the glider's pitch sensor "
                       "(docs/forecast.md)");
+    command->add_flag("!--no-depth-rate-calibration", options.depth_rate_calibration,
+                      "fly the model as the vehicle file says, not calibrated to the glider's steady-glide depth "
+                      "rates read from from-glider/ (docs/forecast.md)");
     command->add_flag("--pitch-calibration", options.pitch_calibration,
                       "calibrate the glider's dead-reckoned speed for its pitch sensor's scale read from from-glider/ "
                       "(then the drag is corrected and the model dead-reckons as the glider; off by default: the "

@@ -66,6 +66,11 @@ Truth fly_truth(const TruthOptions& o) {
   const double sensor_scale = o.pitch_bias_max > 0.0 ? 1.0 + o.pitch_bias_max * (2.0 * draw.uniform() - 1.0) : 1.0;
   fw::FlightSoftwareConfig config = *prepared.config;
   config.dead_reckoning = biased_pitch_dead_reckoning(config.dead_reckoning, sensor_scale);
+  if (o.servo_on_sensor && std::isnan(config.mission.dive_battpos_in) && std::isnan(config.mission.climb_battpos_in)) {
+    // The servo holds sensor = scale x hull at the mission's pitch.
+    config.mission.dive_pitch_rad /= sensor_scale;
+    config.mission.climb_pitch_rad /= sensor_scale;
+  }
   char text[360];
   std::snprintf(text, sizeof text,
                 "seed %llu: mean current %.3f E %.3f N m/s, M2 tide %.3f m/s toward %.0f deg (phase %.0f deg), drag "

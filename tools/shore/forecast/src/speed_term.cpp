@@ -8,7 +8,9 @@
 #include "glider/firmware/geo.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/forecast/course_straightness.hpp"
+#include "glider/forecast/depth_rate_calibration.hpp"
 #include "glider/forecast/from_glider.hpp"
+#include "glider/forecast/surface_touches.hpp"
 
 namespace glider::forecast {
 namespace fs = std::filesystem;
@@ -82,6 +84,101 @@ SpeedFlight still_water_flight(const FlightSetup& setup, const ForecastOptions& 
   out.average_m_s = r.average_speed_m_s;
   out.speed_m_s = r.surfaced && !r.aborted && r.time_s > 600.0 ? std::hypot(r.dr_east_m, r.dr_north_m) / r.time_s : 0.0;
   return out;
+}
+
+// The depth-rate calibration (depth_rate_calibration.hpp): read, said, and
+// applied to the runs' vehicle and mission when the options say so. The
+// polar's steady glides are not the SIL's flight to the last per cent (a
+// flight 5 deg steeper read 2 % off), so once applied the model flies again
+// and the rule is applied to that flight, which composes (the pitch scale is
+// the hull's over the glider's logged pitch, the drag and buoyancy relative
+// to the vehicle flown), up to kDepthRatePasses times. True when applied.
+constexpr int kDepthRatePasses = 3;
+bool calibrate_to_depth_rates(const GlidePitch& logged, const GlidePitch& model_pitch, bool dr_restarts,
+                              FlightSetup& setup, const ForecastOptions& options, Forecast& f) {
+  fw::YoMissionConfig& mission = setup.config.mission;
+  // Slocum's d_/c_use_pitch 3: the battery servoed on the pitch sensor.
+  const bool servo = std::isnan(mission.dive_battpos_in) && std::isnan(mission.climb_battpos_in);
+  const DepthRateCalibration first =
+      calibrate_depth_rates(setup.vehicle.hydro, setup.vehicle.trim_density_kg_m3, logged, model_pitch, servo);
+  char text[560];
+  if (!first.have) {
+    std::snprintf(text, sizeof text, "depth rates: not calibrated (%s)", first.why_not.c_str());
+    f.notes.push_back(text);
+    return false;
+  }
+  f.depth_rate_have = true;
+  f.depth_rate_servo = servo;
+  f.depth_rate_glider_dive_m_s = first.glider_dive_m_s;
+  f.depth_rate_glider_climb_m_s = first.glider_climb_m_s;
+  f.depth_rate_model_dive_m_s = first.model_dive_m_s;
+  f.depth_rate_model_climb_m_s = first.model_climb_m_s;
+  const model::VehicleParams nominal_vehicle = setup.vehicle;
+  const fw::YoMissionConfig nominal_mission = mission;
+  DepthRateCalibration c = first;
+  double drag = 1.0, buoyancy = 0.0, scale = 1.0, dive_factor = 1.0, climb_factor = 1.0;
+  GlidePitch flown;
+  int passes = 0;
+  for (; passes < kDepthRatePasses && c.have; ++passes) {
+    if (servo) {
+      mission.dive_pitch_rad *= c.dive_pitch_factor;
+      mission.climb_pitch_rad *= c.climb_pitch_factor;
+      dive_factor *= c.dive_pitch_factor;
+      climb_factor *= c.climb_pitch_factor;
+      scale = c.pitch_scale;
+    } else {
+      model::scale_drag(setup.vehicle.hydro, c.drag_factor);
+      drag *= c.drag_factor;
+    }
+    setup.vehicle.buoyancy_offset_kg += c.buoyancy_kg;
+    buoyancy += c.buoyancy_kg;
+    still_water_flight(setup, options, &flown);
+    c = calibrate_depth_rates(setup.vehicle.hydro, setup.vehicle.trim_density_kg_m3, logged, flown, servo);
+    const bool settled = c.have && std::fabs(c.dive_pitch_factor - 1.0) < 0.002 &&
+                         std::fabs(c.climb_pitch_factor - 1.0) < 0.002 && std::fabs(c.drag_factor - 1.0) < 0.002 &&
+                         std::fabs(c.buoyancy_kg) < 0.0005;
+    if (settled) {
+      ++passes;
+      break;
+    }
+  }
+  f.depth_rate_pitch_scale = scale;
+  f.depth_rate_drag_factor = drag;
+  f.depth_rate_buoyancy_kg = buoyancy;
+  char cause[160];
+  if (servo) {
+    std::snprintf(cause, sizeof cause, "pitch servo: hull pitch = %.3f x m_pitch (the mission's pitch x%.3f / x%.3f)",
+                  scale, dive_factor, climb_factor);
+  } else {
+    std::snprintf(cause, sizeof cause, "battery fixed: drag x%.3f", drag);
+  }
+  std::snprintf(text, sizeof text,
+                "depth rates: the glider's steady dives / climbs %.3f / %.3f m/s, the model's %.3f / %.3f: %s, "
+                "buoyancy %+.0f g; so calibrated (%d flights) the model glides %.3f / %.3f (%s%s)",
+                first.glider_dive_m_s, first.glider_climb_m_s, first.model_dive_m_s, first.model_climb_m_s, cause,
+                1000.0 * buoyancy, passes, flown.dive_rate_m_s(), flown.climb_rate_m_s(),
+                options.depth_rate_calibration ? "flown" : "said, not applied",
+                options.depth_rate_calibration && servo && options.glider_dead_reckoning
+                    ? (dr_restarts ? "; the model's DR the file's: the glider's restarted inside its dives"
+                                   : "; the model dead-reckons through the glider's sensor")
+                    : "");
+  f.notes.push_back(text);
+  if (!options.depth_rate_calibration) {
+    setup.vehicle = nominal_vehicle;
+    mission = nominal_mission;
+    return false;
+  }
+  // Its firmware dead-reckons through the sensor the servo holds (reading
+  // 1 / scale of the hull's pitch): the model's the same, so the waypoint
+  // arrivals and the current it carries count as the glider's. Not when
+  // the glider's DR restarted at fixes inside its dives (surface_touches.hpp):
+  // its current estimates then hold its DR's error over the last leg only,
+  // not over the dive the model's DR would count it over.
+  if (servo && options.glider_dead_reckoning && !dr_restarts) {
+    setup.config.dead_reckoning = biased_pitch_dead_reckoning(setup.config.dead_reckoning, 1.0 / scale);
+  }
+  f.depth_rate_applied = true;
+  return true;
 }
 
 }  // namespace
@@ -232,11 +329,23 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
   const std::vector<HeadingSample> headings = logged_headings(glider_dir, f.fix_utc_s - 2.0 * 86400.0, f.notes);
   int straightened = 0;
   double least_straight = 1.0, most_straight = 0.0;
+  // The glider's depths, to find the dives whose yo tops came to the surface
+  // (surface_touches.hpp): its DR restarted there, not measured.
+  const std::vector<DepthSample> depths = logged_depths(glider_dir, f.fix_utc_s - 2.0 * 86400.0, f.notes);
+  int reset_dives = 0, touches = 0, measurable_dives = 0;
   for (std::size_t i = 1; i < history.size(); ++i) {
     const Surfacing& s = history[i];
     const Surfacing& before = history[i - 1];
     if (s.call_start_utc_s <= f.fix_utc_s - 86400.0) continue;  // the last day's dives: today's trim
     if (!before.has_fix() || !s.dr_lat_deg || !s.dr_lon_deg) continue;
+    const int touched =
+        surface_touches(depths, before.call_end_utc_s, s.call_start_utc_s, setup.config.mission.surfaced_depth_m);
+    ++measurable_dives;
+    if (touched > 0) {
+      ++reset_dives;
+      touches += touched;
+      continue;
+    }
     const double under_s = s.call_start_utc_s - before.call_end_utc_s;
     if (!(under_s >= 1800.0)) continue;  // a short dive's speed is mostly its turns
     const fw::EastNorth dr =
@@ -255,16 +364,20 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
     }
   }
   GlidePitch model_pitch;
-  const SpeedFlight nominal = still_water_flight(setup, options, &model_pitch);
-  double average = nominal.average_m_s;
-  const double model = nominal.speed_m_s;
+  SpeedFlight nominal = still_water_flight(setup, options, &model_pitch);
 
   // The pitch sensor's scale, from the steady glides sent home in the last day.
   int files = 0;
   const GlidePitch logged = logged_glide_pitch(glider_dir, f.fix_utc_s - 86400.0, f.notes, files);
+  char text[400];
+  f.nominal_average_speed_m_s = nominal.average_m_s;  // the baseline's: the vehicle file's flight
+  if (files > 0 && calibrate_to_depth_rates(logged, model_pitch, reset_dives > 0, setup, options, f)) {
+    nominal = still_water_flight(setup, options, nullptr);
+  }
+  double average = nominal.average_m_s;
+  const double model = nominal.speed_m_s;
   const PitchCalibrationEstimate calibration = estimate_pitch_calibration(logged, model_pitch);
   const DrSpeedCalibration dr_calibration = dr_speed_calibration(setup.config.dead_reckoning, logged, calibration);
-  char text[400];
   if (calibration.have) {
     f.pitch_scale = calibration.scale;
     f.pitch_scale_sigma = calibration.scale_sigma;
@@ -289,6 +402,15 @@ void measure_speed(const std::vector<Surfacing>& history, const fs::path& glider
   // calibrated speed.
   const bool correct = options.speed_correction || (options.speed_correction_calibrated && calibrate);
 
+  if (reset_dives > 0) {
+    std::snprintf(text, sizeof text,
+                  "speed through the water by dead reckoning: %d of the last day's %d dive(s) not measured: the "
+                  "glider came up shallower than %.1f m %d time(s) inside them (from-glider/ m_depth), where a "
+                  "Slocum takes GPS positions and restarts its dead reckoning, so its DR at the call is not its "
+                  "track from the fix it dived from",
+                  reset_dives, measurable_dives, setup.config.mission.surfaced_depth_m, touches);
+    f.notes.push_back(text);
+  }
   if (!glider_speeds.empty() && model > 0.02) {
     std::sort(glider_speeds.begin(), glider_speeds.end());
     const double counted = glider_speeds[glider_speeds.size() / 2];

@@ -56,6 +56,11 @@ struct ForecastOptions {
   // scale read as above), its navigator's mean speed as slow (off:
   // --no-glider-dead-reckoning: the vehicle file's DR).
   bool glider_dead_reckoning = true;
+  // The model's flight calibrated to the glider's steady-glide depth rates
+  // read from from-glider/ (depth_rate_calibration.hpp): with the pitch servo
+  // the hull's pitch (the sensor's scale), with the battery fixed the drag;
+  // and the buoyancy's offset (--no-depth-rate-calibration: off).
+  bool depth_rate_calibration = true;
 };
 
 struct RunOutcome {
@@ -108,6 +113,13 @@ struct Forecast {
   // factor its dead-reckoned speed is low by for it (speed_term.hpp).
   double pitch_scale = 1.0, pitch_scale_sigma = 0.0, pitch_dr_speed_factor = 1.0;
   int pitch_samples = 0;
+  // The depth-rate calibration (depth_rate_calibration.hpp): read (have),
+  // applied, and what it set.
+  bool depth_rate_have = false, depth_rate_applied = false, depth_rate_servo = false;
+  double depth_rate_pitch_scale = 1.0, depth_rate_drag_factor = 1.0, depth_rate_buoyancy_kg = 0.0;
+  double nominal_average_speed_m_s = 0.0;  // the vehicle file's still-water flight's m_avg_speed (0: none)
+  double depth_rate_glider_dive_m_s = 0.0, depth_rate_glider_climb_m_s = 0.0;
+  double depth_rate_model_dive_m_s = 0.0, depth_rate_model_climb_m_s = 0.0;
   // The model's own miss on the glider's recent dives, flown again with the
   // current each one measured (the waypoint replay's flights): RMS east and
   // north and their correlation, over `model_miss_dives` dives of the last

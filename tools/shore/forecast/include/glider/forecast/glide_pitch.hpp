@@ -15,6 +15,9 @@ namespace glider::forecast {
 struct GlidePitch {
   double dive_sum_rad = 0.0, dive_sum2_rad2 = 0.0;  // of |pitch|
   double climb_sum_rad = 0.0, climb_sum2_rad2 = 0.0;
+  // |depth rate| (m/s) of the same samples: the depth-rate calibration's
+  // (depth_rate_calibration.hpp).
+  double dive_rate_sum_m_s = 0.0, climb_rate_sum_m_s = 0.0;
   int dive_n = 0, climb_n = 0;
 
   static constexpr double kMinDepthM = 3.0, kMinDepthRateMS = 0.05, kMinPitchRad = 0.1745, kMaxPitchRateRadS = 0.005;
@@ -28,15 +31,19 @@ struct GlidePitch {
     if (pitch_rad < 0.0 && depth_rate_m_s > 0.0) {
       dive_sum_rad += p;
       dive_sum2_rad2 += p * p;
+      dive_rate_sum_m_s += depth_rate_m_s;
       ++dive_n;
     } else if (pitch_rad > 0.0 && depth_rate_m_s < 0.0) {
       climb_sum_rad += p;
       climb_sum2_rad2 += p * p;
+      climb_rate_sum_m_s -= depth_rate_m_s;
       ++climb_n;
     }
   }
   double dive_rad() const { return dive_n > 0 ? dive_sum_rad / dive_n : std::nan(""); }
   double climb_rad() const { return climb_n > 0 ? climb_sum_rad / climb_n : std::nan(""); }
+  double dive_rate_m_s() const { return dive_n > 0 ? dive_rate_sum_m_s / dive_n : std::nan(""); }
+  double climb_rate_m_s() const { return climb_n > 0 ? climb_rate_sum_m_s / climb_n : std::nan(""); }
   double dive_sd_rad() const { return sd(dive_sum_rad, dive_sum2_rad2, dive_n); }
   double climb_sd_rad() const { return sd(climb_sum_rad, climb_sum2_rad2, climb_n); }
 

@@ -33,6 +33,10 @@ struct TruthOptions {
   // [-max, max] (0: a true sensor, nothing drawn): its dead reckoning and the
   // m_pitch it sends home (from-glider/) are the biased sensor's.
   double pitch_bias_max = 0.0;
+  // With the mission's pitch servo: the servo holds the biased sensor's
+  // pitch at the mission's, as a real servo does (the hull then at the
+  // mission's / (1 + b)); false: it holds the hull's (the sensor only logs).
+  bool servo_on_sensor = false;
   double max_working_depth_m = 100.0;
 };
 
