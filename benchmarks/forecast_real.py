@@ -34,7 +34,7 @@ and with --from-glider each 8-half-yo dive's time (from surfacings 1-4) within 5
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
        [--deployment comet-2019|comet-2016|all]
        [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
-       [--no-glider-dead-reckoning] [--no-depth-rate-calibration] [--from-glider]
+       [--no-glider-dead-reckoning] [--no-depth-rate-calibration] [--depth-rate-drag] [--from-glider]
        [--check]
 """
 import argparse
@@ -193,7 +193,8 @@ def forecast_options(a):
             (["--no-speed-correction"] if a.no_speed_correction else []) +
             (["--pitch-calibration"] if a.pitch_calibration else []) +
             (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []) +
-            (["--no-depth-rate-calibration"] if a.no_depth_rate_calibration else []))
+            (["--no-depth-rate-calibration"] if a.no_depth_rate_calibration else []) +
+            (["--depth-rate-drag"] if a.depth_rate_drag else []))
 
 
 def t_utc(s):
@@ -448,6 +449,7 @@ def main():
                    help="glider-forecast's --no-glider-dead-reckoning")
     p.add_argument("--no-depth-rate-calibration", action="store_true",
                    help="glider-forecast's --no-depth-rate-calibration")
+    p.add_argument("--depth-rate-drag", action="store_true", help="glider-forecast's --depth-rate-drag")
     p.add_argument("--from-glider", action="store_true",
                    help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")

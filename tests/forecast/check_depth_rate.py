@@ -8,7 +8,8 @@ Two SIL truths on a fresh seed (printed; replay with --seed):
   its drag the file's (under a servo a drag off the file's reads as the sensor's scale: the depth rates cannot tell
   them apart): the forecast reads hull = scale x m_pitch with scale within 1 % of 1 / (1 + b), and the truth's drawn
   buoyancy within 2 g (measured on 5 fresh seeds: 0.2 %, 0.6 g);
-- nsb3.mi (battery fixed) on slocum_comet.toml with the drag x1.25 (times the drawn 5 %): the drag within 1.5 % of
+- nsb3.mi (battery fixed) on slocum_comet.toml with the drag x1.25 (times the drawn 5 %), read and said but not
+  flown by default, the same reading flown with --depth-rate-drag: the drag within 1.5 % of
   the truth's, the buoyancy within 2 g (measured: 0.1 %, 0.6 g).
 Usage: check_depth_rate.py GLIDER_FORECAST_BENCH SOURCE_DIR OUT_DIR [--seed N]
 """
@@ -25,7 +26,7 @@ def fail(why):
     sys.exit(1)
 
 
-def truth_and_calibration(bench, source, out, seed, mission, extra):
+def truth_and_calibration(bench, source, out, seed, mission, extra, applied=True):
     run = subprocess.run([bench, "--mission", os.path.join(source, mission), "--vehicle",
                           os.path.join(source, "boards/vehicles/slocum_comet.toml"), "--seed", str(seed), "--truths",
                           "1", "--surfacings", "3", "--from", "2", "--runs", "4", "--threads", "1", "--out", out] +
@@ -37,8 +38,8 @@ def truth_and_calibration(bench, source, out, seed, mission, extra):
         fail("no truth in: " + run.stdout[:400])
     with open(os.path.join(out, "seed%d" % seed, "from2", "forecast", "forecast.json")) as f:
         d = json.load(f)["depth_rate"]
-    if not d["read"] or not d["applied"]:
-        fail("%s: the depth rates not read or not applied: %s" % (mission, d))
+    if not d["read"] or d["applied"] != applied:
+        fail("%s: the depth rates not read, or applied %s where %s was due: %s" % (mission, d["applied"], applied, d))
     return float(m.group(1)), float(m.group(2)), float(m.group(3)), d
 
 
@@ -66,9 +67,15 @@ def main():
     # The truth's buoyancy is printed rounded to 1 g.
     if abs(d["buoyancy_g"] - buoyancy) > 2.0:
         fail("buoyancy %+.1f g, the truth's %+.0f g" % (d["buoyancy_g"], buoyancy))
+    # With the battery fixed the calibration is read and said, flown only with --depth-rate-drag.
+    _, _, _, said = truth_and_calibration(
+        bench, source, os.path.join(out, "fixed_said"), seed, "boards/missions/comet-nsb3/missions/nsb3.mi",
+        ["--truth-drag", "1.25"], applied=False)
     drag, buoyancy, _, d = truth_and_calibration(
         bench, source, os.path.join(out, "fixed"), seed, "boards/missions/comet-nsb3/missions/nsb3.mi",
-        ["--truth-drag", "1.25"])
+        ["--truth-drag", "1.25", "--depth-rate-drag"])
+    if said["drag_factor"] != d["drag_factor"] or said["buoyancy_g"] != d["buoyancy_g"]:
+        fail("the calibration read differently when flown: %s against %s" % (said, d))
     print("battery fixed: truth drag x%.3f, buoyancy %+.0f g; read drag x%.3f, buoyancy %+.1f g" %
           (drag, buoyancy, d["drag_factor"], d["buoyancy_g"]))
     if d["servo"]:

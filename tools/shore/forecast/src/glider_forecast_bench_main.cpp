@@ -189,6 +189,9 @@ int main(int argc, char** argv) {
                "default, as glider-forecast)");
   app.add_flag("!--no-depth-rate-calibration", options.depth_rate_calibration,
                "the forecasts fly the vehicle file, not calibrated to the glider's steady-glide depth rates");
+  app.add_flag("--depth-rate-drag", options.depth_rate_drag,
+               "with the battery fixed the forecasts fly the drag and buoyancy the depth rates read too (as "
+               "glider-forecast)");
   app.add_flag("--truth-servo-on-sensor", truth_options.servo_on_sensor,
                "the truths' pitch servo holds the biased sensor's pitch at the mission's (as a real servo does), "
                "not the hull's");

@@ -49,6 +49,9 @@ int main(int argc, char** argv) {
     command->add_flag("!--no-depth-rate-calibration", options.depth_rate_calibration,
                       "fly the model as the vehicle file says, not calibrated to the glider's steady-glide depth "
                       "rates read from from-glider/ (docs/forecast.md)");
+    command->add_flag("--depth-rate-drag", options.depth_rate_drag,
+                      "with the battery fixed, fly the drag and buoyancy the depth rates read too (default: said, "
+                      "not flown; under the pitch servo the calibration is flown; docs/forecast.md)");
     command->add_flag("--pitch-calibration", options.pitch_calibration,
                       "calibrate the glider's dead-reckoned speed for its pitch sensor's scale read from from-glider/ "
                       "(then the drag is corrected and the model dead-reckons as the glider; off by default: the "

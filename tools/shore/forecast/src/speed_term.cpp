@@ -99,6 +99,7 @@ bool calibrate_to_depth_rates(const GlidePitch& logged, const GlidePitch& model_
   fw::YoMissionConfig& mission = setup.config.mission;
   // Slocum's d_/c_use_pitch 3: the battery servoed on the pitch sensor.
   const bool servo = std::isnan(mission.dive_battpos_in) && std::isnan(mission.climb_battpos_in);
+  const bool apply = options.depth_rate_calibration && (servo || options.depth_rate_drag);
   const DepthRateCalibration first =
       calibrate_depth_rates(setup.vehicle.hydro, setup.vehicle.trim_density_kg_m3, logged, model_pitch, servo);
   char text[560];
@@ -157,13 +158,15 @@ bool calibrate_to_depth_rates(const GlidePitch& logged, const GlidePitch& model_
                 "buoyancy %+.0f g; so calibrated (%d flights) the model glides %.3f / %.3f (%s%s)",
                 first.glider_dive_m_s, first.glider_climb_m_s, first.model_dive_m_s, first.model_climb_m_s, cause,
                 1000.0 * buoyancy, passes, flown.dive_rate_m_s(), flown.climb_rate_m_s(),
-                options.depth_rate_calibration ? "flown" : "said, not applied",
-                options.depth_rate_calibration && servo && options.glider_dead_reckoning
+                apply                            ? "flown"
+                : options.depth_rate_calibration ? "said, not applied: the battery fixed (--depth-rate-drag flies it)"
+                                                 : "said, not applied",
+                apply && servo && options.glider_dead_reckoning
                     ? (dr_restarts ? "; the model's DR the file's: the glider's restarted inside its dives"
                                    : "; the model dead-reckons through the glider's sensor")
                     : "");
   f.notes.push_back(text);
-  if (!options.depth_rate_calibration) {
+  if (!apply) {
     setup.vehicle = nominal_vehicle;
     mission = nominal_mission;
     return false;

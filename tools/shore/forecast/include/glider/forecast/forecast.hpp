@@ -59,8 +59,13 @@ struct ForecastOptions {
   // The model's flight calibrated to the glider's steady-glide depth rates
   // read from from-glider/ (depth_rate_calibration.hpp): with the pitch servo
   // the hull's pitch (the sensor's scale), with the battery fixed the drag;
-  // and the buoyancy's offset (--no-depth-rate-calibration: off).
+  // and the buoyancy's offset (--no-depth-rate-calibration: off). Flown by
+  // default only under the servo: with the battery fixed it is said, not
+  // flown, unless depth_rate_drag (--depth-rate-drag) - on the one real
+  // fixed-battery glider it lost the position (comet-2019 from surfacing 1:
+  // 68 -> 469 m) and on SIL the positions were mixed (docs/forecast.md).
   bool depth_rate_calibration = true;
+  bool depth_rate_drag = false;
 };
 
 struct RunOutcome {
