@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "glider/diagnose/log_columns.hpp"
+#include "glider/diagnose/stored_on_change.hpp"
 #include "glider/flightlog/columns.hpp"
 #include "glider/flightlog/gaps.hpp"
 
@@ -186,18 +187,47 @@ PitchCurve stored_pitch_curve(std::span<const double> time, std::span<const doub
 // those alone, and every row gets the ramp's value at its time and the part
 // of the ramp between it and the next row. A log that moves every row
 // (pumping at 1 Hz) keeps its ramps; a constant stretch's repeats are no
-// new measurements in either reading.
+// new measurements in either reading - but the last row at least one storing
+// interval before a change is known to hold the old value (the writer would
+// have stored the change by then): a knot too. Without it a stroke after a
+// long hold whose own first row the log lost (a thinned full-rate log) was
+// placed in the middle of the hold, minutes early (independent truth draw
+// 2138946469: the model pumped mid-climb, held-out speed error x3.6).
 void ramps_between_changes(Track& track) {
   const std::size_t n = track.size();
-  std::vector<std::size_t> knot;  // rows: each run's first and last, and where the value changes
+  auto changed_at = [&](std::size_t i) {
+    return std::memcmp(&track.ballast_cc[i], &track.ballast_cc[i - 1], sizeof(double)) != 0;
+  };
+  // The storing interval: the shortest usual gap between consecutive changes
+  // (a stroke stores at every chance), and half a row's spacing of jitter.
+  flightlog::Column changes(n, std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> spacing;
+  for (std::size_t run = 0; run < track.run_first.size(); ++run) {
+    for (std::size_t i = track.run_first[run] + 1; i < track.run_end(run); ++i) {
+      if (changed_at(i)) changes[i] = track.ballast_cc[i];
+      spacing.push_back(track.time_s[i] - track.time_s[i - 1]);
+    }
+  }
+  const double interval = storing_interval_s(track.time_s, changes);
+  double jitter = 0.0;
+  if (!spacing.empty()) {
+    const auto middle = spacing.begin() + static_cast<long>(spacing.size() / 2);
+    std::nth_element(spacing.begin(), middle, spacing.end());
+    jitter = 0.5 * *middle;
+  }
+  std::vector<std::size_t> knot;  // rows: each run's first and last, where the value changes, and held before
   std::vector<std::size_t> knot_run_first;
   for (std::size_t run = 0; run < track.run_first.size(); ++run) {
     const std::size_t first = track.run_first[run], end = track.run_end(run);
     knot_run_first.push_back(knot.size());
     for (std::size_t i = first; i < end; ++i) {
-      const bool changed = i == first || i + 1 == end ||
-                           std::memcmp(&track.ballast_cc[i], &track.ballast_cc[i - 1], sizeof(double)) != 0;
-      if (changed) knot.push_back(i);
+      const bool change = i != first && changed_at(i);
+      if (change && interval > 0.0) {
+        std::size_t held = i - 1;
+        while (held > knot.back() && track.time_s[held] > track.time_s[i] - interval + jitter) --held;
+        if (held > knot.back()) knot.push_back(held);
+      }
+      if (i == first || i + 1 == end || change) knot.push_back(i);
     }
   }
   std::vector<double> kt, kv;
