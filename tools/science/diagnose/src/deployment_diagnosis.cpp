@@ -99,20 +99,25 @@ DeploymentDiagnosis diagnose_deployment(const model::VehicleParams& nominal, con
     h.effect = e;
     h.selected_in = found[static_cast<std::size_t>(e)];
     for (const SegmentResult& s : result.segments) {
-      double value = kNaN, low = kNaN, high = kNaN;
+      double value = kNaN, low = kNaN, high = kNaN, shift = kNaN;  // NaN: no value (the trend leaves it out)
       if (s.fixed) {
         for (const Finding& f : s.fixed->findings) {
           if (f.effect != e) continue;
           value = f.value;
           low = f.ci95_low;
           high = f.ci95_high;
+          shift = f.reynolds_prior_shift;
         }
       }
       h.value.push_back(value);
       h.ci95_low.push_back(low);
       h.ci95_high.push_back(high);
+      h.reynolds_prior_shift.push_back(shift);
     }
-    h.trend = fit_trend(times, h.value, options.trend);
+    // The segments' scatter holds what differs between them; the Reynolds
+    // prior's shift is one bias for the whole glider: the levels' intervals
+    // carry it as a common-mode term, the slopes and steps do not.
+    h.trend = fit_trend(times, h.value, options.trend, h.reynolds_prior_shift);
   }
   return result;
 }

@@ -33,17 +33,26 @@ nlohmann::ordered_json interval_json(const Interval& i) {
 // JSON has no NaN: a segment without a value is null.
 nlohmann::ordered_json number_or_null(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nullptr; }
 
+// A level's interval with the bias all segments share in it: its sigma and
+// the segments' scatter's half-width alone (the slopes and steps carry none).
+nlohmann::ordered_json level_json(const Interval& i, const SharedBias& shared) {
+  nlohmann::ordered_json j = interval_json(i);
+  j["shared_sigma"] = shared.sigma;
+  j["between_segments_half_width"] = shared.sigma > 0.0 ? shared.between_half_width : 0.5 * (i.high - i.low);
+  return j;
+}
+
 nlohmann::ordered_json trend_json(const Trend& t, const DeploymentDiagnosis& d) {
   nlohmann::ordered_json j{{"shape", to_string(t.shape)}, {"segments", t.segments}};
   switch (t.shape) {
     case TrendShape::kNone:
       break;
     case TrendShape::kConstant:
-      j["mean"] = interval_json(t.mean);
+      j["mean"] = level_json(t.mean, t.mean_shared);
       break;
     case TrendShape::kLinear:
       j["per_day"] = interval_json(t.slope_per_day);
-      j["at_day_0"] = interval_json(t.at_start);
+      j["at_day_0"] = level_json(t.at_start, t.at_start_shared);
       j["p"] = t.p_slope;
       break;
     case TrendShape::kStep:
@@ -55,7 +64,8 @@ nlohmann::ordered_json trend_json(const Trend& t, const DeploymentDiagnosis& d) 
       j["p"] = t.p_step;
       break;
     case TrendShape::kHinge:
-      j["level"] = interval_json(t.hinge_level);
+      j["level"] = level_json(t.hinge_level, t.hinge_level_shared);
+      j["at_last_segment"] = level_json(t.hinge_end, t.hinge_end_shared);
       j["from_day"] = day_of(d, t.hinge_s);
       j["per_day"] = interval_json(t.hinge_slope_per_day);
       j["p"] = t.p_hinge;
@@ -115,6 +125,9 @@ nlohmann::ordered_json deployment_json(const DeploymentDiagnosis& d, const std::
     e["values"] = values;
     e["ci95_low"] = low;
     e["ci95_high"] = high;
+    nlohmann::ordered_json shift = nlohmann::ordered_json::array();
+    for (double x : h.reynolds_prior_shift) shift.push_back(number_or_null(x));
+    e["reynolds_prior_shift"] = shift;  // per segment, 1 sigma: the shared part of ci95
     e["trend"] = trend_json(h.trend, d);
     effects.push_back(e);
   }

@@ -888,7 +888,8 @@ void check_by_heldout_replicate(const SampleSet& set, const Split& s, const Diag
 // Values and selection are unchanged.
 void add_reynolds_prior_uncertainty(const model::VehicleParams& nominal, const Observations& obs, bool dynamic,
                                     const SampleSet& set, const Split& s, const DiagnoseOptions& options,
-                                    const Candidate& current, FitResult& current_fit) {
+                                    const Candidate& current, FitResult& current_fit, std::vector<double>& shift) {
+  shift.assign(current.fitted.size(), 0.0);
   if (current.fitted.empty() || current_fit.sigma.size() != current.fitted.size()) return;
   model::VehicleParams shifted = nominal;
   shifted.hydro.cd0_reynolds_exponent += kDragReynoldsExponentPriorSigma;
@@ -906,7 +907,9 @@ void add_reynolds_prior_uncertainty(const model::VehicleParams& nominal, const O
     const auto e = static_cast<std::size_t>(current.fitted[j]);
     double a = current_fit.parameters.values[e], b = moved.parameters.values[e];
     if (is_lag(current.fitted[j])) a = std::abs(a), b = std::abs(b);  // fitted as |value|
-    if (std::isfinite(b)) current_fit.sigma[j] = std::hypot(current_fit.sigma[j], b - a);
+    if (!std::isfinite(b)) continue;
+    current_fit.sigma[j] = std::hypot(current_fit.sigma[j], b - a);
+    shift[j] = b - a;
   }
 }
 
@@ -1229,14 +1232,18 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   if (options.fit_only.empty() && dynamic)
     read_pump_lag_beside_depth_lag(set, s, options, aliases, current, current_fit);
   check_by_heldout_replicate(set, s, options, current, current_fit);
+  std::vector<double> prior_shift;
   if (flies_reynolds_prior(given, options.drag_reynolds_exponent)) {
     d.drag_reynolds_exponent_sigma = kDragReynoldsExponentPriorSigma;
-    add_reynolds_prior_uncertainty(nominal, obs, dynamic, set, s, options, current, current_fit);
+    add_reynolds_prior_uncertainty(nominal, obs, dynamic, set, s, options, current, current_fit, prior_shift);
   }
   report_final_values(set.model, current, current_fit, d);
   for (Finding& f : d.findings) {
     f.ci95_conditional_low = f.ci95_low;
     f.ci95_conditional_high = f.ci95_high;
+    const auto it = std::find(current.fitted.begin(), current.fitted.end(), f.effect);
+    const auto j = static_cast<std::size_t>(it - current.fitted.begin());
+    if (f.fitted && j < prior_shift.size()) f.reynolds_prior_shift = prior_shift[j];
   }
   hold_aliased_readings(set, s, options, current, current_fit, aliases, d);
   if (dynamic) widen_lift_at_stall(nominal, obs.track, d);

@@ -18,6 +18,7 @@ constexpr double kSecondsPerDay = 86400.0;
 
 struct Points {
   std::vector<double> t_day, y;  // t relative to the first point
+  std::vector<double> shift;     // the shared bias's shift at each point (0: none)
   double first_time_s = 0.0;
   std::size_t size() const { return y.size(); }
 };
@@ -193,6 +194,40 @@ void fit_hinge(const Points& p, const TrendOptions& options, Trend& trend, doubl
   trend.hinge_end = fitting_core::t_interval(refined.end, refined.se_end, refined.dof);
 }
 
+// The level's interval widened by the bias every segment shares: the
+// level's shift (the same estimator on the shifts) in quadrature with the
+// scatter's half-width.
+void add_shared(Interval& level, SharedBias& shared, double level_shift) {
+  shared.between_half_width = 0.5 * (level.high - level.low);
+  shared.sigma = std::abs(level_shift);
+  const double half = std::hypot(shared.between_half_width, fitting_core::kZ95 * shared.sigma);
+  level.low = level.value - half;
+  level.high = level.value + half;
+}
+
+// The shared shifts through each level's estimator: the mean, the line's
+// start, the hinge's level and its end (the hinge at the values' onset).
+void add_shared_bias(const Points& p, Trend& trend) {
+  bool any = false;
+  for (double x : p.shift) any = any || x != 0.0;
+  if (!any) return;
+  Points shifts = p;
+  shifts.y = p.shift;
+  add_shared(trend.mean, trend.mean_shared, mean_of(shifts.y, 0, shifts.size()));
+  if (std::isfinite(trend.bic_linear)) {
+    Trend moved;
+    fit_linear(shifts, moved, 1.0);
+    add_shared(trend.at_start, trend.at_start_shared, moved.at_start.value);
+  }
+  if (std::isfinite(trend.bic_hinge)) {
+    const HingeFit moved = hinge_at(shifts, (trend.hinge_s - p.first_time_s) / kSecondsPerDay, 3);
+    if (std::isfinite(moved.rss)) {
+      add_shared(trend.hinge_level, trend.hinge_level_shared, moved.level);
+      add_shared(trend.hinge_end, trend.hinge_end_shared, moved.end);
+    }
+  }
+}
+
 std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", x);
@@ -202,6 +237,12 @@ std::string number(double x) {
 std::string bracket(const Interval& i) {
   std::string text("[");  // by append: GCC 12's false -Wrestrict on "literal" + std::string&&
   return text.append(number(i.low)).append(", ").append(number(i.high)).append("]");
+}
+
+// The shared bias named where it widened a level.
+std::string shared_text(const SharedBias& shared, const std::string& unit) {
+  if (shared.sigma == 0.0) return "";
+  return " (with a bias all segments share, sigma " + number(shared.sigma) + unit + ")";
 }
 
 }  // namespace
@@ -222,7 +263,8 @@ const char* to_string(TrendShape shape) {
   return "none";
 }
 
-Trend fit_trend(std::span<const double> time_s, std::span<const double> value, const TrendOptions& options) {
+Trend fit_trend(std::span<const double> time_s, std::span<const double> value, const TrendOptions& options,
+                std::span<const double> shared_shift) {
   Trend trend;
   Points p;
   bool first = true;
@@ -232,6 +274,8 @@ Trend fit_trend(std::span<const double> time_s, std::span<const double> value, c
     first = false;
     p.t_day.push_back((time_s[i] - p.first_time_s) / kSecondsPerDay);
     p.y.push_back(value[i]);
+    const double shift = i < shared_shift.size() ? shared_shift[i] : 0.0;
+    p.shift.push_back(std::isfinite(shift) ? shift : 0.0);
   }
   trend.segments = p.size();
   trend.first_time_s = p.first_time_s;
@@ -242,6 +286,7 @@ Trend fit_trend(std::span<const double> time_s, std::span<const double> value, c
   fit_linear(p, trend, scale);
   fit_step(p, options, trend, scale);
   fit_hinge(p, options, trend, scale);
+  add_shared_bias(p, trend);
   // Three shapes are tried on every series: each at a third of the level
   // keeps the chance of a spurious line, step or hinge in constant data at
   // the level. Among the significant ones, the lowest BIC.
@@ -283,11 +328,12 @@ std::string Trend::describe(const char* unit) const {
     case TrendShape::kNone:
       return "too few segments with a value (" + std::to_string(segments) + ")";
     case TrendShape::kConstant:
-      return "constant " + number(mean.value) + u + " " + bracket(mean) + " over " + std::to_string(segments) +
-             " segments (no significant trend or step)";
+      return "constant " + number(mean.value) + u + " " + bracket(mean) + shared_text(mean_shared, u) + " over " +
+             std::to_string(segments) + " segments (no significant trend or step)";
     case TrendShape::kLinear:
       return "linear: " + number(slope_per_day.value) + u + " per day " + bracket(slope_per_day) + ", from " +
-             number(at_start.value) + u + " at day 0 (p = " + number(p_slope) + ")";
+             number(at_start.value) + u + " " + bracket(at_start) + shared_text(at_start_shared, u) +
+             " at day 0 (p = " + number(p_slope) + ")";
     case TrendShape::kStep:
       return "step of " + number(step_change.value) + u + " " + bracket(step_change) + " between day " +
              day(step_before_s) + " and day " + day(step_after_s) + " (" + number(level_before) + " -> " +

@@ -37,6 +37,10 @@ struct EffectHistory {
   Effect effect = Effect::kBuoyancyOffset;
   std::size_t selected_in = 0;                     // segments whose own selection found it
   std::vector<double> value, ci95_low, ci95_high;  // per segment; NaN where it has none
+  // Per segment: the value's shift under the Reynolds prior's exponent one
+  // sigma higher (Finding::reynolds_prior_shift; 0 where not flown): a bias
+  // all segments share, carried into the trend's levels (trend.hpp).
+  std::vector<double> reynolds_prior_shift;
   Trend trend;
 };
 

@@ -52,6 +52,11 @@ struct Finding {
   // selected model alone is then ci95_conditional.
   std::vector<Effect> interval_holds_with;
   double ci95_conditional_low = 0.0, ci95_conditional_high = 0.0;
+  // The value's shift when the Reynolds prior's exponent is one prior sigma
+  // higher (signed; in the interval already, 0 where the prior is not
+  // flown): a bias every segment of one glider shares, which the deployment
+  // view carries into its levels (trend.hpp, shared bias).
+  double reynolds_prior_shift = 0.0;
 };
 
 // Identifiability of a finding against an alternative whose depth-rate

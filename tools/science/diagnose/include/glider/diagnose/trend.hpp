@@ -22,6 +22,19 @@ const char* to_string(TrendShape shape);
 // An estimate and its 95 % interval (the fitting core's, as every plane's).
 using Interval = fitting_core::Estimate;
 
+// A bias every segment shares (the Reynolds prior's: one exponent for the
+// whole glider) is not in the segments' scatter: a level's interval from the
+// scatter alone is too narrow by it. `sigma` is the level's own shift (1
+// sigma: the level estimator applied to the segments' shifts - a common-mode
+// term, it does not average down with the number of segments), added in
+// quadrature to the scatter's 95 % half-width (kZ95 sigma); 0: none. Slopes
+// and step changes are differences between segments, where it cancels: not
+// widened.
+struct SharedBias {
+  double sigma = 0.0;
+  double between_half_width = 0.0;  // the scatter's own 95 % half-width, before
+};
+
 struct Trend {
   TrendShape shape = TrendShape::kNone;  // kNone: fewer than 3 segments with a value
   std::size_t segments = 0;              // with a finite value
@@ -38,6 +51,8 @@ struct Trend {
   // line of `hinge_slope_per_day`; `hinge_end` its value at the last segment.
   double hinge_s = 0.0;
   Interval hinge_level, hinge_slope_per_day, hinge_end;
+  // The shared bias in each level's interval (all 0 without shared shifts).
+  SharedBias mean_shared, at_start_shared, hinge_level_shared, hinge_end_shared;
   // Two-sided p-values of the linear slope, of the best step and of the best
   // hinge's slope (the step's and the hinge's corrected for the number of
   // places they were searched).
@@ -58,7 +73,11 @@ struct TrendOptions {
 };
 
 // time_s: each segment's time (s, increasing); value: its fitted value (NaN
-// where the segment has none, left out).
-Trend fit_trend(std::span<const double> time_s, std::span<const double> value, const TrendOptions& options = {});
+// where the segment has none, left out). shared_shift (empty: none): each
+// segment's shift under a bias all segments share, 1 sigma, signed (the
+// Reynolds prior's, Finding::reynolds_prior_shift): widens the levels'
+// intervals (SharedBias), never the shape, the slopes or the step's change.
+Trend fit_trend(std::span<const double> time_s, std::span<const double> value, const TrendOptions& options = {},
+                std::span<const double> shared_shift = {});
 
 }  // namespace glider::diagnose
