@@ -415,6 +415,10 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
     for (const LinkFit::ScreenedCorrelation& c : chosen.screen) {
       if (c.chosen == e) again.screen.push_back(c);
     }
+    // They were screened at the rate error's threshold: the reselection's is
+    // unset (0) when it screened nothing, which would call every copied pair
+    // judged with no verdict (a 0.745 pair "judged", truth seed 903374064).
+    again.screen_correlation = std::max(again.screen_correlation, chosen.screen_correlation);
   }
   // Against the nominal's baseline (the held fin's is the reselection's).
   again.baseline_rms = chosen.baseline_rms;
