@@ -25,6 +25,7 @@
 #include "glider/fitting_core/effective_samples.hpp"
 #include "glider/fitting_core/identifiability.hpp"
 #include "glider/fitting_core/intervals.hpp"
+#include "glider/fitting_core/profile_check.hpp"
 #include "glider/fitting_core/selection.hpp"
 #include "glider/fitting_core/stepwise.hpp"
 #include "glider/units.hpp"
@@ -338,6 +339,30 @@ double lag_profile_sigma(const SampleSet& set, const Candidate& candidate, std::
   return std::max(value - profile.low, profile.high - value) / kZ95;
 }
 
+// A sigma the residual itself supports (fitting_core/profile_check.hpp): the
+// Jacobian's where the training RSS rises at its 95 % ends as it should, else
+// the conditional profile's (the other parameters held at the fit) - a
+// forward difference across a step of the flight gave thermal expansion a
+// zero-width interval. Two flights where the Jacobian holds.
+double profile_checked_sigma(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
+                             const FitResult& f, std::size_t j, std::size_t parameters, double sigma) {
+  const auto e = static_cast<std::size_t>(candidate.fitted[j]);
+  const double value = f.parameters.values[e];
+  const double n_eff = std::max(effective_sample_count(f.train_residuals, 0.0), static_cast<double>(parameters) + 2.0);
+  std::vector<double> r;
+  const auto rss_at = [&](double x) {
+    Parameters moved = f.parameters;
+    moved.values[e] = x;
+    residuals(set, moved, candidate.ctd_density, train, r);
+    double s = 0.0;
+    for (double v : r) s += v * v;
+    return s;
+  };
+  const double half = profile_checked_half_width(value, kZ95 * sigma, f.train_rss, n_eff, static_cast<int>(parameters),
+                                                 1e-6 * info(candidate.fitted[j]).scale, rss_at);
+  return half / kZ95;
+}
+
 // Parameter uncertainty of `f` (a fit of `candidate`) from the Jacobian at
 // its solution, with the residuals' serial correlation respected
 // (DiagnoseOptions::intervals). Once per fit: a no-op when it has them.
@@ -365,6 +390,8 @@ void add_intervals(const SampleSet& set, const Candidate& candidate, std::span<c
     double sigma = uncertainty.sigma(w) * info(e).scale;
     if (is_lag(e) && jacobian_failed(kZ95 * sigma, info(e).scale)) {
       sigma = lag_profile_sigma(set, candidate, train, f, j, k);
+    } else if (!is_lag(e) && e != Effect::kVerticalWaterVelocity) {
+      sigma = profile_checked_sigma(set, candidate, train, f, j, k, sigma);
     }
     f.sigma.push_back(sigma);
   }
