@@ -13,24 +13,16 @@ namespace fs = std::filesystem;
 std::vector<HeadingSample> logged_headings(const fs::path& glider_dir, double since_utc_s,
                                            std::vector<std::string>& notes) {
   std::vector<HeadingSample> out;
-  flightlog::ReadOptions read;
-  read.required = {{"m_depth"}, {"m_heading"}};
-  read.columns = {"m_depth", "m_heading"};
-  for (const fs::path& path : from_glider_files(glider_dir)) {
-    if (!header_names(path, {"m_depth", "m_heading"})) continue;  // the glider did not send its heading
-    try {
-      const flightlog::FlightLog log = flightlog::read_flight_log(path, read);
-      const flightlog::Column& t = log.time();
-      const flightlog::Column& depth = log.column("m_depth");
-      const flightlog::Column& heading = log.column("m_heading");
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        if (!(t[i] >= since_utc_s) || !(depth[i] > kCourseMinDepthM) || !std::isfinite(heading[i])) continue;
-        out.push_back({t[i], heading[i]});
-      }
-    } catch (const std::exception& e) {
-      notes.push_back("from-glider: " + path.filename().string() + " not read for the heading: " + e.what());
-    }
-  }
+  for_each_from_glider_log(
+      glider_dir, {"m_depth", "m_heading"}, "heading", notes, [&](const flightlog::FlightLog& log) {
+        const flightlog::Column& t = log.time();
+        const flightlog::Column& depth = log.column("m_depth");
+        const flightlog::Column& heading = log.column("m_heading");
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          if (!(t[i] >= since_utc_s) || !(depth[i] > kCourseMinDepthM) || !std::isfinite(heading[i])) continue;
+          out.push_back({t[i], heading[i]});
+        }
+      });
   std::sort(out.begin(), out.end(),
             [](const HeadingSample& a, const HeadingSample& b) { return a.time_utc_s < b.time_utc_s; });
   return out;

@@ -35,4 +35,21 @@ bool header_names(const fs::path& path, const std::vector<std::string>& names) {
   return false;
 }
 
+void for_each_from_glider_log(const fs::path& glider_dir, const std::vector<std::string>& columns,
+                              const std::string& what, std::vector<std::string>& notes,
+                              const std::function<void(const flightlog::FlightLog&)>& use) {
+  flightlog::ReadOptions read;
+  read.required.clear();
+  for (const std::string& c : columns) read.required.push_back({c});
+  read.columns = columns;
+  for (const fs::path& path : from_glider_files(glider_dir)) {
+    if (!header_names(path, columns)) continue;  // another kind of file (science data): nothing wrong
+    try {
+      use(flightlog::read_flight_log(path, read));
+    } catch (const std::exception& e) {
+      notes.push_back("from-glider: " + path.filename().string() + " not read for the " + what + ": " + e.what());
+    }
+  }
+}
+
 }  // namespace glider::forecast

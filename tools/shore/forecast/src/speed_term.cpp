@@ -246,32 +246,22 @@ GlidePitch logged_glide_pitch(const fs::path& glider_dir, double since_utc_s, st
                               int& files) {
   GlidePitch g;
   files = 0;
-  flightlog::ReadOptions read;
-  read.required = {{"m_depth"}, {"m_pitch"}};
-  read.columns = {"m_depth", "m_pitch"};
-  for (const fs::path& path : from_glider_files(glider_dir)) {
-    if (!header_names(path, {"m_depth", "m_pitch"}))
-      continue;  // a science (.tbd/.ebd) file: no pitch to read, nothing wrong
-    try {
-      const flightlog::FlightLog log = flightlog::read_flight_log(path, read);
-      const flightlog::Column& t = log.time();
-      const flightlog::Column& depth = log.column("m_depth");
-      const flightlog::Column& pitch = log.column("m_pitch");
-      ++files;
-      std::size_t last = t.size();
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        if (!std::isfinite(depth[i]) || !std::isfinite(pitch[i]) || !(t[i] >= since_utc_s)) continue;
-        if (last < t.size() && t[i] - t[last] <= kMaxSampleGapS) {
-          const double dt = t[i] - t[last];
-          g.add(0.5 * (depth[i] + depth[last]), (depth[i] - depth[last]) / dt, 0.5 * (pitch[i] + pitch[last]),
-                (pitch[i] - pitch[last]) / dt);
-        }
-        last = i;
+  for_each_from_glider_log(glider_dir, {"m_depth", "m_pitch"}, "pitch", notes, [&](const flightlog::FlightLog& log) {
+    const flightlog::Column& t = log.time();
+    const flightlog::Column& depth = log.column("m_depth");
+    const flightlog::Column& pitch = log.column("m_pitch");
+    ++files;
+    std::size_t last = t.size();
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (!std::isfinite(depth[i]) || !std::isfinite(pitch[i]) || !(t[i] >= since_utc_s)) continue;
+      if (last < t.size() && t[i] - t[last] <= kMaxSampleGapS) {
+        const double dt = t[i] - t[last];
+        g.add(0.5 * (depth[i] + depth[last]), (depth[i] - depth[last]) / dt, 0.5 * (pitch[i] + pitch[last]),
+              (pitch[i] - pitch[last]) / dt);
       }
-    } catch (const std::exception& e) {
-      notes.push_back("from-glider: " + path.filename().string() + " not read for the pitch: " + e.what());
+      last = i;
     }
-  }
+  });
   return g;
 }
 

@@ -13,22 +13,13 @@ namespace fs = std::filesystem;
 std::vector<DepthSample> logged_depths(const fs::path& glider_dir, double since_utc_s,
                                        std::vector<std::string>& notes) {
   std::vector<DepthSample> out;
-  flightlog::ReadOptions read;
-  read.required = {{"m_depth"}};
-  read.columns = {"m_depth"};
-  for (const fs::path& path : from_glider_files(glider_dir)) {
-    if (!header_names(path, {"m_depth"})) continue;  // a science file
-    try {
-      const flightlog::FlightLog log = flightlog::read_flight_log(path, read);
-      const flightlog::Column& t = log.time();
-      const flightlog::Column& depth = log.column("m_depth");
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        if (t[i] >= since_utc_s && std::isfinite(depth[i])) out.push_back({t[i], depth[i]});
-      }
-    } catch (const std::exception& e) {
-      notes.push_back("from-glider: " + path.filename().string() + " not read for the depth: " + e.what());
+  for_each_from_glider_log(glider_dir, {"m_depth"}, "depth", notes, [&](const flightlog::FlightLog& log) {
+    const flightlog::Column& t = log.time();
+    const flightlog::Column& depth = log.column("m_depth");
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] >= since_utc_s && std::isfinite(depth[i])) out.push_back({t[i], depth[i]});
     }
-  }
+  });
   std::sort(out.begin(), out.end(),
             [](const DepthSample& a, const DepthSample& b) { return a.time_utc_s < b.time_utc_s; });
   return out;
