@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "glider/flightlog/flight_log.hpp"
@@ -38,27 +40,36 @@ flightlog::FlightLog strokes_log(std::mt19937& random, int strokes, double mean_
   return flightlog::parse_flight_log(csv, "strokes.csv", only_the_pump);
 }
 
-// Fouling on 8-hourly segments: 12 at 1.0, then +3 % a day for 12 (4 days),
-// each increment read at `gain` of the truth, with +-0.0001 of scatter and
-// a +-`own_half` interval of its own.
-std::vector<health::SegmentMeasurement> drag_ramp(double gain, double own_half) {
+// `count` 8-hourly segments of 3 h with only a drag value each: value(k,
+// day of the segment's middle), a +-`own_half` interval of its own and the
+// shared shift `shift` (the Reynolds prior's: a bias every segment shares).
+std::vector<health::SegmentMeasurement> drag_segments(int count, const std::function<double(int, double)>& value,
+                                                      double own_half, double shift) {
   std::vector<health::SegmentMeasurement> segments;
-  std::mt19937 random(11u);
-  std::normal_distribution<double> g(0.0, 1e-4);
-  for (int k = 0; k < 24; ++k) {
+  for (int k = 0; k < count; ++k) {
     health::SegmentMeasurement m;
     m.name = "seg" + std::to_string(k);
     m.start_s = k * 28800.0;
     m.end_s = m.start_s + 10800.0;
     m.time_s = 0.5 * (m.start_s + m.end_s);
     m.judged = true;
-    const double day = m.time_s / 86400.0, onset = 12 * 28800.0 / 86400.0;
-    const double v = 1.0 + gain * 0.03 * std::max(0.0, day - onset) + g(random);
+    const double v = value(k, m.time_s / 86400.0);
     for (health::EffectValue& e : m.effects) e = {std::nan(""), std::nan(""), std::nan(""), "not in this test"};
-    m.effects[static_cast<std::size_t>(health::HealthEffect::kDragChange)] = {v, v - own_half, v + own_half, {}};
+    m.effects[static_cast<std::size_t>(health::HealthEffect::kDragChange)] = {v, v - own_half, v + own_half, {}, shift};
     segments.push_back(m);
   }
   return segments;
+}
+
+// Fouling on 8-hourly segments: 12 at 1.0, then +3 % a day for 12 (4 days),
+// each increment read at `gain` of the truth, with +-0.0001 of scatter and
+// a +-`own_half` interval of its own.
+std::vector<health::SegmentMeasurement> drag_ramp(double gain, double own_half) {
+  std::mt19937 random(11u);
+  std::normal_distribution<double> g(0.0, 1e-4);
+  const double onset = 12 * 28800.0 / 86400.0;
+  return drag_segments(
+      24, [&](int, double day) { return 1.0 + gain * 0.03 * std::max(0.0, day - onset) + g(random); }, own_half, 0.0);
 }
 
 const health::Alert* drag_line_alert(const health::Assessment& a) {
@@ -167,4 +178,66 @@ TEST(HealthRules, DepthSampleSpacingIsTheMedianGapOfStoredDepths) {
   flightlog::ReadOptions only_depth;
   only_depth.required.clear();
   DOUBLES_EQUAL(4.0, health::depth_sample_spacing_s(flightlog::parse_flight_log(csv, "depth.csv", only_depth)), 1e-9);
+}
+
+namespace {
+
+// `count` 8-hourly drag readings about `level` (+-0.003 of scatter, +-0.01
+// own intervals), each with the shared shift `shift` (the Reynolds prior's:
+// a bias every segment shares), a step of `step` after the first half.
+std::vector<health::SegmentMeasurement> shared_bias_segments(int count, double level, double step, double shift) {
+  std::mt19937 random(23u);
+  std::normal_distribution<double> g(0.0, 0.003);
+  return drag_segments(
+      count, [&](int k, double) { return level + (k >= count / 2 ? step : 0.0) + g(random); }, 0.01, shift);
+}
+
+health::EffectAssessment drag_of(const health::Assessment& a) {
+  return a.effects[static_cast<std::size_t>(health::HealthEffect::kDragChange)];
+}
+
+// The drag's assessment of the same segments without and with a shared shift.
+std::pair<health::EffectAssessment, health::EffectAssessment> drag_without_and_with(double level, double step,
+                                                                                    double shift) {
+  return {drag_of(health::assess(shared_bias_segments(12, level, step, 0.0))),
+          drag_of(health::assess(shared_bias_segments(12, level, step, shift)))};
+}
+
+}  // namespace
+
+TEST(HealthRules, ALevelCarriesTheBiasEverySegmentShares) {
+  // The Reynolds prior's shift is one exponent for the whole glider: every
+  // segment shares it, and the level's interval from the segments' scatter
+  // cannot hold it (it does not average down with more segments). The level
+  // (a constant: its mean) widens to hypot(scatter's half-width, 1.96
+  // |shift|); the shape and the value are the scatter's alone.
+  const auto [a0, a1] = drag_without_and_with(1.37, 0.0, -0.015);
+  CHECK(a0.trend.shape == glider::diagnose::TrendShape::kConstant);
+  CHECK(a1.trend.shape == glider::diagnose::TrendShape::kConstant);
+  DOUBLES_EQUAL(a0.value, a1.value, 0.0);
+  const double scatter = 0.5 * (a0.high - a0.low);
+  CHECK(scatter > 0.0 && scatter < 0.01);
+  DOUBLES_EQUAL(std::hypot(scatter, 1.96 * 0.015), 0.5 * (a1.high - a1.low), 1e-9);
+  DOUBLES_EQUAL(0.015, a1.trend.mean_shared.sigma, 1e-12);
+  DOUBLES_EQUAL(0.015, a1.shared_sigma, 1e-12);
+  // A change is a difference between segments, where the shared bias
+  // cancels: a shift whose level interval alone is wider than the change that
+  // matters (1.96 x 0.04 = 0.078 > the rule's 0.05) leaves the effect judged.
+  const health::EffectAssessment a2 = drag_of(health::assess(shared_bias_segments(12, 1.37, 0.0, -0.04)));
+  CHECK(0.5 * (a2.high - a2.low) > 0.05);
+  CHECK_TEXT(a2.judged, a2.why.c_str());
+}
+
+TEST(HealthRules, AStepsLevelAfterCarriesTheSharedBiasButNotItsChange) {
+  // A +10 % drag step half-way: the change is a difference between segments
+  // (the shared bias cancels: the alert's interval is unchanged); the level
+  // now (the mean after the step) carries it.
+  const auto [a0, a1] = drag_without_and_with(1.0, 0.1, -0.02);
+  CHECK(a1.trend.shape == glider::diagnose::TrendShape::kStep);
+  CHECK_EQUAL(1U, a0.alerts.size());
+  CHECK_EQUAL(1U, a1.alerts.size());
+  DOUBLES_EQUAL(a0.alerts[0].low, a1.alerts[0].low, 0.0);
+  DOUBLES_EQUAL(a0.alerts[0].high, a1.alerts[0].high, 0.0);
+  DOUBLES_EQUAL(a0.value, a1.value, 0.0);
+  DOUBLES_EQUAL(std::hypot(0.5 * (a0.high - a0.low), 1.96 * 0.02), 0.5 * (a1.high - a1.low), 1e-9);
 }

@@ -85,6 +85,18 @@ TEST(HealthState, IncrementalAndNeverTrustedWhenDamaged) {
          const auto at = s.find("\"low\": ");
          return s.replace(at, 7, "\"low\": 1e9, \"was\": ");
        }()},
+      {"a shared shift that is not a number",
+       [&] {
+         std::string s = saved;
+         const auto at = s.find("\"shared_shift\": ");
+         return s.replace(at, 16, "\"shared_shift\": null, \"was\": ");
+       }()},
+      {"measured by the version before (no shared shifts)",
+       [&] {
+         std::string s = saved;
+         const std::string now = "\"measurement_version\": " + std::to_string(health::kMeasurementVersion);
+         return s.replace(s.find(now), now.size(), "\"measurement_version\": 5");
+       }()},
       {"wrong schema",
        [&] {
          std::string s = saved;

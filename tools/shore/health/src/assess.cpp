@@ -32,7 +32,7 @@ std::optional<double> first_start_after(double time_s, const EffectAssessment& a
 
 // The level after the last segment's time and its interval, from the shape.
 void current_level(EffectAssessment& a, const std::vector<double>& t, const std::vector<double>& v,
-                   const std::vector<SegmentMeasurement>& segments) {
+                   const std::vector<double>& shift, const std::vector<SegmentMeasurement>& segments) {
   const diagnose::Trend& tr = a.trend;
   const std::size_t n = v.size();
   switch (tr.shape) {
@@ -40,6 +40,7 @@ void current_level(EffectAssessment& a, const std::vector<double>& t, const std:
       a.value = tr.mean.value;
       a.low = tr.mean.low;
       a.high = tr.mean.high;
+      a.shared_sigma = tr.mean_shared.sigma;
       return;
     case diagnose::TrendShape::kLinear: {
       // at_start's and the slope's intervals added in quadrature: their
@@ -50,20 +51,32 @@ void current_level(EffectAssessment& a, const std::vector<double>& t, const std:
                                   span * 0.5 * (tr.slope_per_day.high - tr.slope_per_day.low));
       a.low = a.value - h;
       a.high = a.value + h;
+      a.shared_sigma = tr.at_start_shared.sigma;
       a.since_s = tr.first_time_s;
       return;
     }
     case diagnose::TrendShape::kStep: {
       // step_after_s went through days and back: a second's tolerance.
-      std::vector<double> after;
+      std::vector<double> after, after_shift;
       for (std::size_t i = 0; i < n; ++i) {
-        if (t[i] >= tr.step_after_s - 1.0) after.push_back(v[i]);
+        if (t[i] >= tr.step_after_s - 1.0) {
+          after.push_back(v[i]);
+          after_shift.push_back(shift[i]);
+        }
       }
-      if (after.size() < 2) after.assign(v.end() - 2, v.end());  // min_step_side is at least 2
+      if (after.size() < 2) {  // min_step_side is at least 2
+        after.assign(v.end() - 2, v.end());
+        after_shift.assign(shift.end() - 2, shift.end());
+      }
       const diagnose::Interval i = diagnose::mean_with_interval(after);
+      // The level's shared bias: the mean of the shifts (common-mode, as the
+      // trend's other levels: trend.hpp's SharedBias).
+      const double shared = diagnose::mean_with_interval(after_shift).value;
+      const double half = std::hypot(0.5 * (i.high - i.low), fitting_core::kZ95 * shared);
       a.value = i.value;
-      a.low = i.low;
-      a.high = i.high;
+      a.low = i.value - half;
+      a.high = i.value + half;
+      a.shared_sigma = std::abs(shared);
       a.since_s = first_start_after(tr.step_before_s, a, segments);
       return;
     }
@@ -71,6 +84,7 @@ void current_level(EffectAssessment& a, const std::vector<double>& t, const std:
       a.value = tr.hinge_end.value;
       a.low = tr.hinge_end.low;
       a.high = tr.hinge_end.high;
+      a.shared_sigma = tr.hinge_end_shared.sigma;
       a.since_s = first_start_after(tr.hinge_s, a, segments);
       return;
     case diagnose::TrendShape::kNone: {
@@ -78,6 +92,7 @@ void current_level(EffectAssessment& a, const std::vector<double>& t, const std:
       a.value = last.value;
       a.low = last.low;
       a.high = last.high;
+      a.shared_sigma = std::abs(last.shared_shift);
       return;
     }
   }
@@ -170,7 +185,7 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
     EffectAssessment& a = result.effects.emplace_back();
     a.effect = health_effect(index);
     const HealthEffectInfo& e = info(a.effect);
-    std::vector<double> t, v;
+    std::vector<double> t, v, shift;
     std::string last_why;
     for (std::size_t k = 0; k < segments.size(); ++k) {
       const EffectValue& value = segments[k].effects[index];
@@ -178,6 +193,7 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
         a.segments.push_back(k);
         t.push_back(segments[k].time_s);
         v.push_back(value.value);
+        shift.push_back(value.shared_shift);
       } else if (!value.why.empty()) {
         last_why = segments[k].name + ": " + value.why;
       }
@@ -187,22 +203,28 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
       a.why = last_why.empty() ? "no segment" : last_why;
       continue;
     }
-    a.trend = diagnose::fit_trend(t, v, options.trend);
-    current_level(a, t, v, segments);
+    // The levels carry the bias every segment shares (the diagnosis core's
+    // rule, as the deployment view's); the shapes, slopes and steps do not.
+    a.trend = diagnose::fit_trend(t, v, options.trend, shift);
+    current_level(a, t, v, shift, segments);
     if (v.size() < options.min_segments) {
       a.why = "only " + std::to_string(v.size()) + " segment(s) with a value (" + std::to_string(options.min_segments) +
               " needed for a shape)" + (last_why.empty() ? "" : "; last not judged: " + last_why);
       continue;
     }
     // Too thin to judge: the interval of the level is wider than the change
-    // the alert rule is about.
+    // the alert rule is about. A change is a difference between segments:
+    // the bias they all share is not in it, so not in this judgement.
     const double scale = e.rule.relative ? std::abs(a.value) : 1.0;
     const double threshold = e.rule.step_size * scale;
+    const double half = 0.5 * (a.high - a.low), shared_half = fitting_core::kZ95 * a.shared_sigma;
+    const double change_half = std::sqrt(std::max(0.0, half * half - shared_half * shared_half));
     if (!(std::isfinite(a.low) && std::isfinite(a.high))) {
       a.judged = true;  // one number per segment: the scatter about the shape judges it
-    } else if (threshold > 0.0 && 0.5 * (a.high - a.low) > threshold) {
-      a.why = "the data are too thin: the 95 % interval of the level (+-" + number(0.5 * (a.high - a.low)) + " " +
-              e.unit + ") is wider than the change that matters (" + number(threshold) + " " + e.unit + ")";
+    } else if (threshold > 0.0 && change_half > threshold) {
+      a.why = "the data are too thin: the 95 % interval of the level (+-" + number(change_half) + " " + e.unit +
+              (shared_half > 0.0 ? " without the bias every segment shares" : "") +
+              ") is wider than the change that matters (" + number(threshold) + " " + e.unit + ")";
       continue;
     } else {
       a.judged = true;

@@ -59,7 +59,7 @@ model::VehicleParams measure_vertical(const model::VehicleParams& nominal, const
     } else {
       continue;
     }
-    at(m.effects, e) = {f.value, f.ci95_low, f.ci95_high, {}};
+    at(m.effects, e) = {f.value, f.ci95_low, f.ci95_high, {}, f.reynolds_prior_shift};
   }
   if (dynamic) {
     EffectValue& lag = at(m.effects, HealthEffect::kPumpLag);

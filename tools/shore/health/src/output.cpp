@@ -87,6 +87,7 @@ std::string health_json(const HealthRun& run) {
                   {"shape_text", a.trend.shape == diagnose::TrendShape::kNone ? "" : a.trend.describe(e.unit)},
                   {"value", number_or_null(a.value)},
                   {"ci95", {number_or_null(a.low), number_or_null(a.high)}},
+                  {"shared_sigma", number_or_null(a.shared_sigma)},
                   {"since_utc", a.since_s ? json(utc_iso(*a.since_s)) : json(nullptr)},
                   {"judged", a.judged},
                   {"why", a.why.empty() ? json(nullptr) : json(a.why)},

@@ -42,6 +42,7 @@ EffectValue effect_from_json(const json& j) {
   e.low = number_or_nan(j, "low");
   e.high = number_or_nan(j, "high");
   e.why = j.at("why").get<std::string>();
+  e.shared_shift = finite_number(j, "shared_shift");
   if (e.judged() && std::isfinite(e.low) && !(e.low <= e.value && e.value <= e.high)) {
     throw std::runtime_error("an interval does not hold its value");
   }
@@ -60,7 +61,8 @@ std::string state_json(const HealthState& state) {
       effects[info(health_effect(i)).id] = {{"value", number_or_null(e.value)},
                                             {"low", number_or_null(e.low)},
                                             {"high", number_or_null(e.high)},
-                                            {"why", e.why}};
+                                            {"why", e.why},
+                                            {"shared_shift", e.shared_shift}};
     }
     segments.push_back({{"name", m.name},
                         {"files", m.files},

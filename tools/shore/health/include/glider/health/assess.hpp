@@ -31,6 +31,10 @@ struct EffectAssessment {
   diagnose::Trend trend;              // over the deployment
   // The current level and its 95 % interval (NaN: no value yet).
   double value = 0.0, low = 0.0, high = 0.0;
+  // Of that interval, the bias every segment shares (1 sigma; the Reynolds
+  // prior's, trend.hpp's SharedBias): it moves the level, never a change
+  // between segments, so the "too thin" judgement leaves it out.
+  double shared_sigma = 0.0;
   std::optional<double> since_s;  // start of the current level (after a step) or of a line
   bool judged = false;            // enough segments, and the interval resolves the alert threshold
   std::string why;                // not judged: why

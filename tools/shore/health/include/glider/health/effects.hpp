@@ -48,6 +48,11 @@ struct EffectValue {
   double low = std::numeric_limits<double>::quiet_NaN();
   double high = std::numeric_limits<double>::quiet_NaN();
   std::string why;
+  // The value's shift under a bias every segment of the deployment shares (1
+  // sigma, signed; the Reynolds prior's: diagnose's Finding::reynolds_prior_shift,
+  // 0 where none was flown). Already in this segment's interval; the
+  // deployment's levels add it as a common-mode term (assess.cpp).
+  double shared_shift = 0.0;
   bool judged() const { return value == value; }
 };
 using EffectValues = std::array<EffectValue, kHealthEffectCount>;

@@ -21,8 +21,12 @@ inline constexpr const char* kStateSchema = "glider-health-state/1";
 // files as stored; 4: the Reynolds prior for a vehicle file silent on the
 // exponent, the heading command held between stores, a fresh skin-friction
 // anchor per flight (session 34); 5: the dynamic track reads a decimated
-// file's depth, pitch and ballast as stored (diagnose's track.cpp, session 35).
-inline constexpr int kMeasurementVersion = 5;
+// file's depth, pitch and ballast as stored (diagnose's track.cpp, session 35);
+// 6: the Reynolds prior's uncertainty in the intervals, intervals checked
+// against the residual's profile, the ballast's knot before a change (session
+// 36, which changed measurements without the bump), each value's shared shift
+// stored (session 37).
+inline constexpr int kMeasurementVersion = 6;
 
 struct HealthState {
   std::string glider;
