@@ -7,7 +7,11 @@
 // step() call. Exit 0 pass, 1 fail, 77 skipped (no lrzsz), 2 usage.
 //
 //   zmodem_lrzsz --direction to-rz|from-sz [--sizes 0,1,1024] [--corruption P]
-//                [--seed N] [--cut-after BYTES] [--escape] [--limit-s S]
+//                [--seed N] [--cut-after BYTES] [--escape] [--limit-s S] [--fin-xoff K]
+//
+// --fin-xoff K: the engine's first ZFIN header reaches the peer with its byte
+// K (6-19; 0 is the first ZPAD, 19 the closing LF) turned into XOFF, the one garbling that stops lrzsz's
+// tty (IXON): a deterministic replay of a 1-in-255 corruption at session end.
 #include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
@@ -18,6 +22,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -92,8 +97,8 @@ class Trace {
 // after cut_after bytes in all the carrier is gone (nothing passes).
 class RelayStream : public ByteStream {
  public:
-  RelayStream(int fd, double corruption, std::uint64_t seed, std::uint64_t cut_after)
-      : fd_(fd), corruption_(corruption), rng_(seed), cut_after_(cut_after) {}
+  RelayStream(int fd, double corruption, std::uint64_t seed, std::uint64_t cut_after, int fin_xoff)
+      : fd_(fd), corruption_(corruption), rng_(seed), cut_after_(cut_after), fin_xoff_(fin_xoff) {}
   std::size_t read(std::span<std::uint8_t> out) override {
     const ssize_t n = ::read(fd_, out.data(), out.size());
     if (n <= 0) return 0;
@@ -110,7 +115,7 @@ class RelayStream : public ByteStream {
     buf.assign(data.begin(), data.end());
     // Corrupt once per byte offered; bytes the pty refuses are offered
     // again next time, so their fate is drawn again (a fresh transmission).
-    for (auto& b : buf) b = noisy(b);
+    for (auto& b : buf) b = fin_xoff(noisy(b));
     const ssize_t n = ::write(fd_, buf.data(), buf.size());
     if (n <= 0) return 0;
     trace_.bytes("peer", trace_.to_peer, std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)));
@@ -125,6 +130,27 @@ class RelayStream : public ByteStream {
     ++corrupted_;
     return static_cast<std::uint8_t>(b ^ flip_(rng_));
   }
+  // The engine's bytes to the peer, in order: the first hex ZFIN header
+  // ("**" ZDLE 'B' "08") is found as it goes by and its byte fin_xoff_ made XOFF.
+  std::uint8_t fin_xoff(std::uint8_t b) {
+    if (fin_xoff_ < 0) return b;
+    static constexpr std::array<std::uint8_t, 6> kFinStart = {kPad, kPad, kDle, kHex, '0', '8'};
+    if (fin_at_ >= 0) {
+      ++fin_at_;
+      if (fin_at_ != fin_xoff_) return b;
+      fin_xoff_ = -1;  // once
+      ++corrupted_;
+      return kXoff;
+    }
+    std::copy(recent_.begin() + 1, recent_.end(), recent_.begin());
+    recent_.back() = b;
+    if (recent_ == kFinStart) {
+      // The header's first 6 bytes are already out: only a later byte can be hit.
+      fin_at_ = static_cast<int>(kFinStart.size()) - 1;
+      if (fin_xoff_ < static_cast<int>(kFinStart.size())) fin_xoff_ = -1;
+    }
+    return b;
+  }
   int fd_;
   double corruption_;
   std::mt19937_64 rng_;
@@ -133,6 +159,9 @@ class RelayStream : public ByteStream {
   std::uint64_t cut_after_;
   std::uint64_t carried_ = 0;
   std::uint64_t corrupted_ = 0;
+  int fin_xoff_;                          // -1: no ZFIN garbled
+  int fin_at_ = -1;                       // the index of the byte going out in the first ZFIN
+  std::array<std::uint8_t, 6> recent_{};  // the last bytes to the peer, before corruption
   std::vector<std::uint8_t> scratch_;
   Trace trace_;
 };
@@ -249,6 +278,7 @@ struct Args {
   bool escape = false;
   double limit_s = 50.0;
   std::uint32_t block = kMaxBlock;
+  int fin_xoff = -1;
 };
 
 struct SessionResult {
@@ -305,7 +335,7 @@ void print(const char* what, const SessionResult& r, std::uint64_t payload, cons
 int usage() {
   std::fprintf(stderr,
                "usage: zmodem_lrzsz --direction to-rz|from-sz [--sizes 0,1,1024] [--corruption P] [--seed N]\n"
-               "                    [--cut-after BYTES] [--escape] [--limit-s S]\n");
+               "                    [--cut-after BYTES] [--escape] [--limit-s S] [--fin-xoff K]\n");
   return 2;
 }
 
@@ -338,6 +368,16 @@ int main(int argc, char** argv) {
       args.cut_after = std::stoull(value);
     } else if (key == "--block") {
       args.block = static_cast<std::uint32_t>(std::stoul(value));
+    } else if (key == "--fin-xoff") {
+      // Bytes 0-5 ("**" ZDLE 'B' "08") are how the header is recognised, and
+      // so already out; 19 is its LF, the last.
+      args.fin_xoff = std::stoi(value);
+      if (args.fin_xoff < 6 || args.fin_xoff > 19) {
+        std::fprintf(stderr,
+                     "zmodem_lrzsz: --fin-xoff %s: allowed 6 to 19 (a byte of the hex ZFIN after \"**\" ZDLE B 08)\n",
+                     value.c_str());
+        return 2;
+      }
     } else if (key == "--limit-s") {
       args.limit_s = std::stod(value);
     } else {
@@ -398,7 +438,7 @@ int main(int argc, char** argv) {
     Peer peer = spawn(command, to_rz ? to_dir : from_dir);
     if (peer.pid < 0) return 1;
     RelayStream relay(peer.master, args.corruption, args.seed + 1000 + static_cast<std::uint64_t>(session),
-                      cut_now ? args.cut_after : UINT64_MAX);
+                      cut_now ? args.cut_after : UINT64_MAX, args.fin_xoff);
     SessionResult result;
     PosixFileAccess posix_files(to_rz ? from_dir.string() : to_dir.string());
     TimedFiles files(posix_files);

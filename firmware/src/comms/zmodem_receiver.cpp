@@ -67,6 +67,19 @@ void Receiver::resync(hal::Micros now) {
   }
 }
 
+void Receiver::send_fin() {
+  // XON first, every time: a garbled byte of our previous ZFIN may have been
+  // an XOFF to the sender's tty (lrzsz's has IXON). sz was then stopped in
+  // write() of its repeated ZFIN or its "OO", for good: the repeats below
+  // (a ZFIN has no trailing XON) never restarted it, and sz never exited
+  // (comms.zmodem.lrzsz.from_sz_corrupted, seed 640975; replayed by
+  // comms.zmodem.lrzsz.from_sz_fin_xoff_*). A sender not stopped ignores the XON.
+  static constexpr std::array<std::uint8_t, 1> kXonByte = {kXon};
+  if (encoder_.room() < Encoder::kHeaderCost + kXonByte.size()) return;
+  encoder_.raw(kXonByte);
+  send(Header::flags(Frame::fin, 0));
+}
+
 void Receiver::start(hal::Micros now) {
   status_ = Status::running;
   failure_ = Failure::none;
@@ -94,8 +107,9 @@ Status Receiver::step(hal::Micros now, std::size_t budget) {
   if (status_ == Status::running && expired(now)) on_timeout(now);
   if (status_ == Status::running && state_ == State::finishing && o_count_ == 0 && now >= fin_again_us_) {
     // No "OO" yet: our ZFIN may have vanished (its lead-in garbled) and the
-    // sender waits for it; said again once before the "OO" is given up on.
-    send(Header::flags(Frame::fin, 0));
+    // sender waits for it, or a byte of it became XOFF and the sender's tty
+    // holds its answer; said again (XON first) once before the "OO" is given up on.
+    send_fin();
     fin_again_us_ = deadline_;
   }
   const bool mid_frame = (state_ == State::receiving && accepting_) || (between_files() && resync_at_us_ < 0);
@@ -156,7 +170,7 @@ void Receiver::on_event(Parser::Event event, std::uint8_t byte, hal::Micros now)
       } else if (state_ == State::finishing) {
         // The sender's repeat of its ZFIN (all it says now): our answer was
         // garbled and lrzsz's sz waits for a ZFIN, tens of seconds, before it exits.
-        send(Header::flags(Frame::fin, 0));
+        send_fin();
       }
       return;
     case Parser::Event::bad_subpacket:
@@ -240,7 +254,7 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
       close_partial();
       state_ = State::finishing;
       o_count_ = 0;
-      send(Header::flags(Frame::fin, 0));
+      send_fin();
       // Every file is settled: the sender's "OO" (which lrzsz's sz may not
       // get out before it hangs up) is waited for a tenth of the timeout, or
       // three of the link's round trips if longer (Iridium: seconds; a stray

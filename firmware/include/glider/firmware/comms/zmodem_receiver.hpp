@@ -50,6 +50,7 @@ class Receiver : public Session {
   void finish_file(hal::Micros now);
   void close_partial();
   void send(const Header& header);
+  void send_fin();  // our ZFIN at the session's end, XON first
   Header rinit() const;
   void record(bool published);
 
