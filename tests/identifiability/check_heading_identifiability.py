@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The identifiability measure's stated limit in the heading plane
 (benchmarks/identifiability.py ON_INNOVATIONS, issue 26 items 2-3): the fin's
-authority and the yaw's lag and delay are fitted but not judged - the forced
+authority and the yaw's lag are fitted but not judged - the forced
 fit reads them on the rate error, which a closed loop biases, where the
 diagnosis measures them on the heading's innovations.
 
