@@ -16,6 +16,7 @@
 #include "glider/fitting_core/effective_samples.hpp"
 #include "glider/fitting_core/identifiability.hpp"
 #include "glider/fitting_core/intervals.hpp"
+#include "glider/fitting_core/profile_check.hpp"
 #include "glider/fitting_core/stepwise.hpp"
 
 namespace glider::diagnose {
@@ -45,7 +46,7 @@ bool searched_globally(HeadingEffect e) { return is_delay(e) || e == HeadingEffe
 // servo's residual is flat in its delay between the cycle's fin readings, so
 // the start must fall in the right flat; 121 replays of logged rows, cheap),
 // every 1 s for the yaw (61 replays of the plant, the costly link). The
-// grid's step is what a delay's interval can resolve (profile_delays). The
+// grid's step is what a delay's interval can resolve (profile_intervals). The
 // yaw's time constant: 1 to 40 s every 1 s (its start only).
 DelayGrid delay_grid_of(HeadingEffect e) {
   if (e == HeadingEffect::kYawTimeConstant) return delay_grid(1.0, 40.0, 1.0);
@@ -59,7 +60,7 @@ struct Trial {
   std::vector<double> ci_low, ci_high;  // 95 %, per fitted effect, reported units
   double train_rss = 0.0, heldout_rms = 0.0, bic = 0.0;
   double n_eff = 0.0;     // independent training samples
-  bool profiled = false;  // profile_delays done
+  bool profiled = false;  // profile_intervals done
 };
 
 class Problem {
@@ -222,29 +223,51 @@ Interval delay_profile(const Problem& problem, const Trial& trial, HeadingEffect
                              resolution_at(grid, value), 0.0);
 }
 
-// The reported fit's delays: the interval is the wider of the Jacobian's
-// and the profile's over the delay's grid (never narrower than the grid's
-// step: what the grid resolves). The Jacobian's alone was far too narrow on
-// the independent truth: a residual read at a log's cycle moves in steps
-// with the delay, and its local slope says nothing of how far the next
-// minimum lies (autopilot_delay 5.445 [5.416, 5.474] for 5.342; clean logs
-// read a delay of 0.2-0.7 s [0.16, 0.98] from the law's timing - a
-// Jacobian interval excluding 0 well inside one grid step). The yaw's time
-// constant takes the profile only where the Jacobian says nothing (zero
-// width): its grid is for the start, 1 s coarse against a 2 s nominal.
-// Only the selection's significance tests and the reported fit pay for the
-// profiles (a grid of replays each).
-void profile_delays(const Problem& problem, Trial& trial) {
+// The reported fit's intervals where the Jacobian's alone says too little.
+// A delay's is the wider of the Jacobian's and the profile's over the
+// delay's grid (never narrower than the grid's step: what the grid
+// resolves). The Jacobian's alone was far too narrow on the independent
+// truth: a residual read at a log's cycle moves in steps with the delay,
+// and its local slope says nothing of how far the next minimum lies
+// (autopilot_delay 5.445 [5.416, 5.474] for 5.342; clean logs read a delay
+// of 0.2-0.7 s [0.16, 0.98] from the law's timing - a Jacobian interval
+// excluding 0 well inside one grid step). The yaw's time constant takes the
+// grid profile where the Jacobian says nothing (zero width): its grid is
+// for the start, 1 s coarse against a 2 s nominal. Every other smooth effect
+// (the fin's authority, the roll offset, the yaw's time constant where its
+// Jacobian holds, the autopilot's gains) is checked against the residual as
+// in the vertical plane (fitting_core/profile_check.hpp: at the Jacobian
+// interval's ends the training RSS must rise by a quarter of the 95 %
+// profile threshold's rise, else that side steps out to the conditional
+// profile's crossing; only ever widens). A threshold keeps its grid's
+// profile (fit()). Only the selection's significance tests and the reported
+// fit pay for the profiles (a grid of replays each, two replays per checked
+// effect where the Jacobian holds).
+void profile_intervals(const Problem& problem, Trial& trial) {
   if (trial.profiled) return;
   trial.profiled = true;
+  const auto k = static_cast<int>(trial.fitted.size());
   for (std::size_t j = 0; j < trial.fitted.size(); ++j) {
     const HeadingEffect e = trial.fitted[j];
-    if (!searched_globally(e)) continue;
-    const bool failed = jacobian_failed(0.5 * (trial.ci_high[j] - trial.ci_low[j]), info(e).scale);
-    if (!is_delay(e) && !failed) continue;
-    const Interval profile = delay_profile(problem, trial, e, static_cast<int>(trial.fitted.size()));
-    trial.ci_low[j] = failed ? profile.low : std::min(trial.ci_low[j], profile.low);
-    trial.ci_high[j] = failed ? profile.high : std::max(trial.ci_high[j], profile.high);
+    const HeadingEffectInfo& i = info(e);
+    if (i.grid) continue;
+    const double value = at(trial.values, e);
+    const double half = trial.ci_high[j] - value;
+    const bool failed = jacobian_failed(half, i.scale);
+    if (is_delay(e) || (searched_globally(e) && failed)) {
+      const Interval profile = delay_profile(problem, trial, e, k);
+      trial.ci_low[j] = failed ? profile.low : std::min(trial.ci_low[j], profile.low);
+      trial.ci_high[j] = failed ? profile.high : std::max(trial.ci_high[j], profile.high);
+      continue;
+    }
+    const double checked =
+        profile_checked_half_width(value, half, trial.train_rss, trial.n_eff, k, 1e-6 * i.scale, [&](double x) {
+          HeadingValues v = trial.values;
+          at(v, e) = i.magnitude ? std::abs(x) : x;
+          return problem.train_rss(v);
+        });
+    trial.ci_low[j] = i.magnitude ? std::max(0.0, value - checked) : value - checked;
+    trial.ci_high[j] = value + checked;
   }
 }
 
@@ -378,7 +401,7 @@ class HeadingSelection : public SelectionProblem {
   // reported) excludes the nominal.
   bool significant(const EffectSet& set, int effect) override {
     Trial& t = trial(set);
-    profile_delays(problem_, t);
+    profile_intervals(problem_, t);
     const auto e = static_cast<HeadingEffect>(effect);
     const auto j = static_cast<std::size_t>(std::find(set.begin(), set.end(), effect) - set.begin());
     const double nominal = at(problem_.nominal(), e);
@@ -475,7 +498,7 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
     judge_pairs(problem, selection, chosen, candidates, options, out);
   }
   Trial final_fit = selection.trial(chosen);
-  profile_delays(problem, final_fit);
+  profile_intervals(problem, final_fit);
   // Ranked by worth (the held-out error without each), the cumulative gain along it.
   EffectSet so_far;
   for (int id : rank_by_worth(chosen, worth)) {
