@@ -28,17 +28,35 @@ def main(truth, diagnose, benchmarks, vehicles, workdir):
     import diagnose_truth_coverage as coverage
     import identifiability
     seed = fresh_seed()
-    variant = random.Random(seed).choice(('shallow', 'deep'))
-    vehicle = os.path.join(vehicles, 'slocum_shallow.toml' if variant == 'shallow' else 'slocum_we01.toml')
-    print(f'seed {seed} (replay: GLIDER_TEST_SEED={seed}), {variant} variant')
+    print(f'seed {seed} (replay: GLIDER_TEST_SEED={seed})')
     os.makedirs(workdir, exist_ok=True)
+
+    def make(seed, variant, size):
+        log = os.path.join(workdir, f'thermal_{size:g}_{seed}.csv')
+        made = subprocess.run([truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log,
+                               '--truth', log[:-4] + '.json', '--effect', f'thermal_expansion={size:.9g}'],
+                              capture_output=True, text=True, timeout=120)
+        return log, made
+
+    # The large expansion (10x a real hull's) makes some draws' warm surface
+    # water lift the truth's vehicle out of it (1 seed seen in 30+; glider-truth
+    # refuses it: "the vehicle left the water"). That draw is no case of the
+    # measure: another seed, derived from this one (so the replay is the same),
+    # at most 3 times.
+    for attempt in range(3):
+        variant = random.Random(seed).choice(('shallow', 'deep'))
+        _, made = make(seed, variant, 3e-4)
+        if made.returncode == 0 or 'left the water' not in made.stderr:
+            break
+        print(f'glider-truth cannot fly seed {seed} ({variant}) with 3e-4 /K: {made.stderr.strip()[-120:]}; '
+              'drawing another')
+        seed = random.Random(seed).randrange(1, 2**31)
+    vehicle = os.path.join(vehicles, 'slocum_shallow.toml' if variant == 'shallow' else 'slocum_we01.toml')
+    print(f'draw seed {seed}, {variant} variant')
     failed = False
     for size, expected in ((3e-4, True), (2e-6, False)):
-        log = os.path.join(workdir, f'thermal_{size:g}_{seed}.csv')
+        log, made = make(seed, variant, size)
         truth_path = log[:-4] + '.json'
-        made = subprocess.run([truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log,
-                               '--truth', truth_path, '--effect', f'thermal_expansion={size:.9g}'],
-                              capture_output=True, text=True, timeout=120)
         if made.returncode != 0:
             print('FAIL: glider-truth:', made.stderr.strip()[-300:])
             return 1
