@@ -88,6 +88,14 @@ struct HeadingDiagnoseOptions {
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
   // Fly the closed-loop check (heading_closed_loop.hpp; not with fit_only).
   bool closed_loop = true;
+  // The autopilot's integrator at each glide's start: a state per glide,
+  // profiled out of the autopilot link's residuals (its mean over the
+  // glide's unclamped rows) instead of replayed from the log's start - a
+  // law that integrates over another clock than the log's intervals gains
+  // or loses integrator in each wind-up, a constant miss for the rest of the
+  // glide. false: replayed (the rule before; docs/science.md "The
+  // autopilot's integrator at each glide's start").
+  bool autopilot_integrator_per_glide = true;
 };
 
 struct UnexplainedYaw {
