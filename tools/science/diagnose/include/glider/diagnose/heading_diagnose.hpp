@@ -33,6 +33,9 @@ struct HeadingDiagnosis {
   bool roll_logged = false;
   double logged_roll_rad = 0.0;  // median m_roll on the glides used
   std::size_t runs = 0;          // glides under a heading command
+  // The autopilot link's integrator a state per glide (false: replayed from
+  // the log's start; HeadingDiagnoseOptions::autopilot_integrator_per_glide).
+  bool autopilot_integrator_per_glide = false;
   // The heading's cycle-to-cycle jitter on the glides, as white noise
   // (sqrt(2/3) x the RMS of half the second difference): compass noise and
   // yaw faster than the cycle, which no link explains. The SIL's compass
