@@ -23,15 +23,20 @@ import subprocess
 import sys
 
 
-def diagnose(truth, program, source, out, variant, seed, effects):
-    log = os.path.join(out, 'fin_or_roll_%d.csv' % seed)
+def fly(truth, source, out, variant, seed, effects, prefix='fin_or_roll'):
+    """A truth log of 6 yos with these effects hidden, and its variant's vehicle file."""
+    log = os.path.join(out, '%s_%d.csv' % (prefix, seed))
     command = [truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log, '--truth',
-               os.path.join(out, 'fin_or_roll_%d.json' % seed)]
+               os.path.join(out, '%s_%d.json' % (prefix, seed))]
     for effect, value in effects.items():
         command += ['--effect', '%s=%.9g' % (effect, value)]
     subprocess.run(command, check=True, capture_output=True, timeout=120)
-    vehicle = os.path.join(source, 'boards', 'vehicles', 'slocum_we01.toml' if variant == 'deep' else
-                           'slocum_shallow.toml')
+    return log, os.path.join(source, 'boards', 'vehicles', 'slocum_we01.toml' if variant == 'deep' else
+                             'slocum_shallow.toml')
+
+
+def diagnose(truth, program, source, out, variant, seed, effects):
+    log, vehicle = fly(truth, source, out, variant, seed, effects)
     run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json'], capture_output=True,
                          text=True, timeout=120)
     if run.returncode != 0:

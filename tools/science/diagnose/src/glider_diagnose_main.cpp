@@ -238,6 +238,7 @@ int main(int argc, char** argv) {
   std::vector<double> window;
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
+  std::string autopilot_integrator = "per-glide";
   double drag_reynolds_exponent = glider::diagnose::kDragReynoldsExponentPrior;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
   glider::diagnose::PitchCalibration pitch_calibration;
@@ -270,6 +271,12 @@ int main(int argc, char** argv) {
                  "(cluster-robust, each glide or yo a cluster) or lag1 (the noise over an AR(1)'s effective sample "
                  "count, the rule before issue 26's fitting core; fitting_core/intervals.hpp)")
       ->check(CLI::IsMember({"lag1", "glides", "yos"}))
+      ->capture_default_str();
+  app.add_option("--autopilot-integrator", autopilot_integrator,
+                 "the heading autopilot's integrator at each glide's start: per-glide (a state per glide, profiled "
+                 "out of the autopilot link's residuals) or replayed (from the log's start, the rule before; "
+                 "docs/science.md)")
+      ->check(CLI::IsMember({"per-glide", "replayed"}))
       ->capture_default_str();
   app.add_option("--fit", fit_only,
                  "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
@@ -308,6 +315,7 @@ int main(int argc, char** argv) {
                                                 : glider::diagnose::DiagnoseOptions::Intervals::kLag1;
     glider::diagnose::HeadingDiagnoseOptions heading_options;
     heading_options.intervals = options.intervals;
+    heading_options.autopilot_integrator_per_glide = autopilot_integrator == "per-glide";
     std::vector<std::string> depth_rate_ids;
     for (const std::string& id : fit_only) {
       bool heading_id = false;

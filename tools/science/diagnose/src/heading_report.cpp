@@ -97,6 +97,7 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
   j["available"] = true;
   j["runs"] = d.runs;
   j["roll_logged"] = d.roll_logged;
+  j["autopilot_integrator"] = d.autopilot_integrator_per_glide ? "per-glide" : "replayed";
   j["logged_roll_rad"] = d.logged_roll_rad;
   j["fin_max_rad"] = d.fin_max_rad;
   j["heading_noise_rad"] = d.heading_noise_rad;

@@ -33,6 +33,9 @@ struct HeadingDiagnosis {
   bool roll_logged = false;
   double logged_roll_rad = 0.0;  // median m_roll on the glides used
   std::size_t runs = 0;          // glides under a heading command
+  // The autopilot link's integrator a state per glide (false: replayed from
+  // the log's start; HeadingDiagnoseOptions::autopilot_integrator_per_glide).
+  bool autopilot_integrator_per_glide = false;
   // The heading's cycle-to-cycle jitter on the glides, as white noise
   // (sqrt(2/3) x the RMS of half the second difference): compass noise and
   // yaw faster than the cycle, which no link explains. The SIL's compass
@@ -88,6 +91,14 @@ struct HeadingDiagnoseOptions {
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
   // Fly the closed-loop check (heading_closed_loop.hpp; not with fit_only).
   bool closed_loop = true;
+  // The autopilot's integrator at each glide's start: a state per glide,
+  // profiled out of the autopilot link's residuals (its mean over the
+  // glide's unclamped rows) instead of replayed from the log's start - a
+  // law that integrates over another clock than the log's intervals gains
+  // or loses integrator in each wind-up, a constant miss for the rest of the
+  // glide. false: replayed (the rule before; docs/science.md "The
+  // autopilot's integrator at each glide's start").
+  bool autopilot_integrator_per_glide = true;
 };
 
 struct UnexplainedYaw {
