@@ -848,17 +848,29 @@ class VerticalSelection : public SelectionProblem {
 void select_effects(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                     const std::vector<Effect>& pool, Candidate& current, FitResult& current_fit, Diagnosis& d) {
   VerticalSelection problem(set, s, options, current_fit);
-  const SelectionRules rules{options.margins, {static_cast<int>(Effect::kWaterDensity)}};
+  const auto density = static_cast<int>(Effect::kWaterDensity);
+  const SelectionRules rules{options.margins, {density}};
   std::vector<int> candidates;
   for (Effect e : pool) candidates.push_back(static_cast<int>(e));
-  const EffectSet forward = forward_select(problem, {}, candidates, rules);
+  // The CTD's density is flown from the start where the log has it: it is a
+  // measurement, not a claim, and the margins guard claims. Left to earn its
+  // place it could be declined where the model still lacks an offset (the
+  // true stratification makes a heavy glider's nominal fit worse), and a
+  // negative thermal expansion then stood in for the density and the offset
+  // together (docs/science.md, "the CTD's density flown from the start").
+  EffectSet start;
+  if (std::find(candidates.begin(), candidates.end(), density) != candidates.end()) {
+    start.push_back(density);
+    candidates = without(candidates, density);
+  }
+  const EffectSet forward = forward_select(problem, start, candidates, rules);
   std::vector<double> worth;
   EffectSet chosen = backward_eliminate(problem, forward, rules, worth);
   const auto profile = static_cast<int>(Effect::kVerticalWaterVelocity);
   if (std::find(forward.begin(), forward.end(), profile) != forward.end()) {
     std::vector<double> other_worth;
     const EffectSet other = backward_eliminate(
-        problem, forward_select(problem, {}, without(candidates, profile), rules), rules, other_worth);
+        problem, forward_select(problem, start, without(candidates, profile), rules), rules, other_worth);
     if (!beats(problem.score(chosen), problem.score(other), options.margins)) {
       chosen = other;
       worth = other_worth;

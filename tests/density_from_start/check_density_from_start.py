@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""The CTD's density is flown from the start; a thermal expansion does not stand in for it.
+
+Logs of the independent truth (tools/science/truth), two fixed draws of a
+heavy buoyancy offset alone (6 yos; the regression cases, found on fresh
+benchmark seeds), diagnosed as a black box (`glider-diagnose --plane
+vertical --json`). The code before left the CTD's density to earn its place
+by the selection's margins: with the offset still missing, the true
+stratification made the nominal fit worse, the density was declined, and a
+negative thermal expansion near -2e-4 /K stood in for the density and the
+offset together (docs/science.md, "the CTD's density flown from the start"):
+
+- shallow, +67.95 g (draw 8490527760697439514 of benchmark seed 1834244384):
+  before, thermal_expansion -2.21e-4 /K and buoyancy_offset -26.5 g.
+- deep, +51.84 g (draw 7891877463615551685 of benchmark seed 1964417921):
+  before, thermal_expansion -2.03e-4 /K alone.
+
+Each must name the CTD's density and the offset within 15 % with an
+interval that holds it, and no thermal expansion.
+"""
+import json
+import os
+import subprocess
+import sys
+
+DRAWS = [('shallow', 8490527760697439514, 67.9466049), ('deep', 7891877463615551685, 51.8400814)]
+VEHICLES = {'shallow': 'slocum_shallow.toml', 'deep': 'slocum_we01.toml'}
+
+
+def diagnose(truth, program, vehicles, out, variant, seed, offset_g):
+    log = os.path.join(out, 'offset_%d.csv' % seed)
+    subprocess.run([truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log,
+                    '--effect', 'buoyancy_offset=%.9g' % offset_g], check=True, capture_output=True, timeout=120)
+    run = subprocess.run([program, log, '--vehicle', os.path.join(vehicles, VEHICLES[variant]), '--plane', 'vertical',
+                          '--json'], capture_output=True, text=True, timeout=120)
+    if run.returncode != 0:
+        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
+    return json.loads(run.stdout)
+
+
+def main():
+    truth, program, vehicles, out = sys.argv[1:5]
+    os.makedirs(out, exist_ok=True)
+    failures = []
+    for variant, seed, hidden in DRAWS:
+        found = {f['effect']: f for f in diagnose(truth, program, vehicles, out, variant, seed, hidden)['findings']}
+        print('seed %d (%s, %+.2f g hidden): %s' % (seed, variant, hidden, ', '.join(
+            '%s %.4g' % (e, f['value']) for e, f in found.items())))
+        if 'water_density' not in found:
+            failures.append('seed %d: the CTD density not flown' % seed)
+        if 'thermal_expansion' in found:
+            failures.append('seed %d: a thermal expansion %.3g /K named' % (seed, found['thermal_expansion']['value']))
+        offset = found.get('buoyancy_offset')
+        if offset is None:
+            failures.append('seed %d: the offset not named' % seed)
+            continue
+        low, high = offset['ci95']
+        if not abs(offset['value'] - hidden) <= 0.15 * abs(hidden):
+            failures.append('seed %d: offset %.2f g, not within 15 %% of %.2f' % (seed, offset['value'], hidden))
+        if not low <= hidden <= high:
+            failures.append('seed %d: [%.2f, %.2f] misses %.2f' % (seed, low, high, hidden))
+    if failures:
+        print('FAIL ' + '; '.join(failures))
+        return 1
+    print('PASS the CTD density flown from the start')
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
