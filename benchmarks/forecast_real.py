@@ -194,7 +194,8 @@ def forecast_options(a):
             (["--pitch-calibration"] if a.pitch_calibration else []) +
             (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []) +
             (["--no-depth-rate-calibration"] if a.no_depth_rate_calibration else []) +
-            (["--depth-rate-drag"] if a.depth_rate_drag else []))
+            (["--depth-rate-drag"] if a.depth_rate_drag else []) +
+            (["--prior-position-sigma", str(a.prior_position_sigma)] if a.prior_position_sigma is not None else []))
 
 
 def t_utc(s):
@@ -450,6 +451,8 @@ def main():
     p.add_argument("--no-depth-rate-calibration", action="store_true",
                    help="glider-forecast's --no-depth-rate-calibration")
     p.add_argument("--depth-rate-drag", action="store_true", help="glider-forecast's --depth-rate-drag")
+    p.add_argument("--prior-position-sigma", type=float, default=None,
+                   help="glider-forecast's --prior-position-sigma (m; 0: the rule before session 37)")
     p.add_argument("--from-glider", action="store_true",
                    help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
