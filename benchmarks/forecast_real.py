@@ -520,8 +520,10 @@ def main():
         if a.waypoint is None and [c["waypoint"] for c in cases] != [0, 0, 0, 1, 1, 1]:
             failures.append("comet-2016 waypoints %s, the glider's c_wpt says 0 0 0 1 1 1" %
                             [c["waypoint"] for c in cases])
+        # From surfacing 1 too since session 37 (each estimate's position error over its segment: the
+        # 606 s dive's estimate no longer extrapolated as a tide, 2.03 -> 0.24 km; docs/forecast.md).
         for r in scored:
-            if r["k"] >= 2 and not r["pos"] <= 500.0:
+            if r["k"] >= 1 and not r["pos"] <= 500.0:
                 failures.append("comet-2016 from surfacing %d the position is %.0f m off (500 allowed)" %
                                 (r["k"], r["pos"]))
             if r["k"] >= 2 and not r["current_off"] < 0.1:
