@@ -106,7 +106,11 @@ fc::TruthOptions truth_options(const char* mission, const char* vehicle, std::ui
 
 TEST_GROUP(ForecastCurrent){};
 
-TEST(ForecastCurrent, OneOrTwoEstimatesOfATurningTideAreCoveredByTheirSigma) {
+// The coverage and weighing tests are groups of their own (one CTest entry each): the
+// evidence's 1176 hypotheses (session 37) made one group of them near its 60 s timeout.
+TEST_GROUP(ForecastCurrentCoverage){};
+
+TEST(ForecastCurrentCoverage, OneOrTwoEstimatesOfATurningTideAreCoveredByTheirSigma) {
   // Waters from the stated prior: with one or two 3 h estimates the window's
   // mean lies within 1.96 sigma in 95 % of the cases (persistence's sigma
   // before, 0.05 m/s with one estimate, covered 22 %, mean z^2 46).
@@ -121,7 +125,7 @@ TEST(ForecastCurrent, OneOrTwoEstimatesOfATurningTideAreCoveredByTheirSigma) {
   }
 }
 
-TEST(ForecastCurrent, AWeakerTideThanThePriorIsStillCovered) {
+TEST(ForecastCurrentCoverage, AWeakerTideThanThePriorIsStillCovered) {
   // A tide of half the prior's amplitude and no mean: the prior's sigma is
   // then wider than the error (covered more often), never narrower.
   fc::TidalPrior water;
@@ -276,7 +280,9 @@ TEST(ForecastCurrent, ASteadyCurrentAfterOneEstimateIsForecastAsATideWouldTurnIt
   DOUBLES_EQUAL(0.2, persisted.east_m_s, 1e-12);
 }
 
-TEST(ForecastCurrent, WeakWaterIsForecastWithTheWeakWatersSigma) {
+TEST_GROUP(ForecastCurrentWeighed){};
+
+TEST(ForecastCurrentWeighed, WeakWaterIsForecastWithTheWeakWatersSigma) {
   // Waters drawn from a prior a quarter of the pilot's (a weak-tide sea):
   // weighed by their evidence, one or two estimates give a narrower sigma
   // than the fixed prior's (which keeps the shelf sea's, several times too
@@ -298,7 +304,7 @@ TEST(ForecastCurrent, WeakWaterIsForecastWithTheWeakWatersSigma) {
   }
 }
 
-TEST(ForecastCurrent, ManyEstimatesGiveASigmaTheErrorsBearOut) {
+TEST(ForecastCurrentWeighed, ManyEstimatesGiveASigmaTheErrorsBearOut) {
   // Six estimates of waters drawn from the pilot's prior: the rule that won
   // its hindcasts predicts the next window with a sigma scaled by those
   // hindcasts' z. The sigma at least the hindcasts' RMS error (the rule
@@ -427,7 +433,9 @@ double two_estimate_rms(double short_s, double position_m, const fc::TidalPrior&
 
 }  // namespace
 
-TEST(ForecastCurrent, AShortSegmentsEstimateIsWeighedAsNoisyAgainstATidesChange) {
+TEST_GROUP(ForecastCurrentNoise){};
+
+TEST(ForecastCurrentNoise, AShortSegmentsEstimateIsWeighedAsNoisyAgainstATidesChange) {
   // comet-2016 from its surfacing 1 (docs/forecast.md, session 37): +0.05 E
   // over a dive, then -0.36 E over a 606 s one; the prior read the change
   // as a tide and extrapolated it to -0.84 E where the fixes said -0.06.
@@ -455,7 +463,7 @@ TEST(ForecastCurrent, AShortSegmentsEstimateIsWeighedAsNoisyAgainstATidesChange)
   CHECK_TEXT(std::fabs(tide.east_m_s - tide_before.east_m_s) < 0.03, tide_what.c_str());
 }
 
-TEST(ForecastCurrent, ShortNoisySegmentsAreForecastBetterAndPreciseOnesAtASmallCost) {
+TEST(ForecastCurrentNoise, ShortNoisySegmentsAreForecastBetterAndPreciseOnesAtASmallCost) {
   // Waters from the pilot's prior, a dive's estimate then a 600 s one's,
   // each off by a 100 m position error over its segment: the RMS error of
   // the next window's mean falls by more than half against the rule off
