@@ -467,9 +467,9 @@ TEST(ForecastCurrentNoise, ShortNoisySegmentsAreForecastBetterAndPreciseOnesAtAS
   // Waters from the pilot's prior, a dive's estimate then a 600 s one's,
   // each off by a 100 m position error over its segment: the RMS error of
   // the next window's mean falls by more than half against the rule off
-  // (0.33 -> 0.14 m/s when written). The cost, with precise estimates (no
+  // (0.324 -> 0.146 m/s when written). The cost, with precise estimates (no
   // position error; the prior's own family, extrapolated almost exactly
-  // without the rule, 0.009 m/s): below 0.05 m/s (0.038).
+  // without the rule, 0.010 m/s): below 0.05 m/s (0.037).
   fc::TidalPrior no_position;
   no_position.position_sigma_m = 0.0;
   const double noisy = two_estimate_rms(600.0, 100.0, fc::TidalPrior{}, 2468u);
