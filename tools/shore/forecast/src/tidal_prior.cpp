@@ -25,11 +25,10 @@ struct PositionScale {
 };
 // Half the weight on a precise glider (no position error: extrapolating two
 // estimates of a tide stays as good as it was), half spread over 1/8-2 of
-// the pilot's width. Chosen on synthetic two-estimate waters (the test
-// ShortNoisySegmentsAreForecastBetterAndPreciseOnesNoWorse) before the SIL
-// and the real files: an even split over 2, 1, 1/2 and 0 cost a precise
-// glider's 600 s estimate 0.009 -> 0.064 m/s RMS, this 0.009 -> 0.038, and
-// a 100 m error's 0.33 -> 0.14 (0.12).
+// the pilot's width. Chosen on synthetic two-estimate waters (the waters of
+// forecast.CurrentNoise's ShortNoisySegmentsAreForecastBetterAndPreciseOnes-
+// AtASmallCost, seed 11, 1000 draws) before the SIL and the real files: an even split over 2, 1, 1/2 and 0 cost a
+// precise glider's 600 s estimate 0.009 -> 0.064 m/s RMS, this 0.009 -> 0.038, and a 100 m error's 0.33 -> 0.14 (0.12).
 constexpr PositionScale kPositionScales[] = {{2.0, 0.1}, {1.0, 0.1}, {0.5, 0.1}, {0.25, 0.1}, {0.125, 0.1}, {0.0, 0.5}};
 constexpr double kOctaveSigma = 1.0;
 
