@@ -28,12 +28,13 @@ Each forecast's position error is split into terms (docs/forecast.md, "Where the
 With --check: comet-2019 (CTest forecast.real_comet_2019) exits 1 unless each forecast's current is nearer
 the one the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two
 estimates), and each forecast's time within 5 min of the glider's (the issue's time goal); comet-2016
-(forecast.real_comet_2016) unless the waypoints are the glider's c_wpt (0 0 0 1 1 1) and from surfacing 2 on
-each forecast is within 0.5 km of the first fix and its current within 0.1 m/s of the glider's next update,
+(forecast.real_comet_2016) unless the waypoints are the glider's c_wpt (0 0 0 1 1 1), from surfacing 1 on
+each forecast is within 0.5 km of the first fix and from surfacing 2 its current within 0.1 m/s of the
+glider's next update,
 and with --from-glider each 8-half-yo dive's time (from surfacings 1-4) within 5 min.
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
        [--deployment comet-2019|comet-2016|all]
-       [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
+       [--current-prior evidence|fixed|off] [--prior-position-sigma M] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
        [--no-glider-dead-reckoning] [--no-depth-rate-calibration] [--depth-rate-drag] [--from-glider]
        [--check]
 """
