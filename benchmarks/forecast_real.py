@@ -28,12 +28,13 @@ Each forecast's position error is split into terms (docs/forecast.md, "Where the
 With --check: comet-2019 (CTest forecast.real_comet_2019) exits 1 unless each forecast's current is nearer
 the one the glider measured over the dive than persistence is, and within 0.1 m/s from surfacing 1 (two
 estimates), and each forecast's time within 5 min of the glider's (the issue's time goal); comet-2016
-(forecast.real_comet_2016) unless the waypoints are the glider's c_wpt (0 0 0 1 1 1) and from surfacing 2 on
-each forecast is within 0.5 km of the first fix and its current within 0.1 m/s of the glider's next update,
+(forecast.real_comet_2016) unless the waypoints are the glider's c_wpt (0 0 0 1 1 1), from surfacing 1 on
+each forecast is within 0.5 km of the first fix and from surfacing 2 its current within 0.1 m/s of the
+glider's next update,
 and with --from-glider each 8-half-yo dive's time (from surfacings 1-4) within 5 min.
 Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--runs N] [--waypoint N]
        [--deployment comet-2019|comet-2016|all]
-       [--current-prior evidence|fixed|off] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
+       [--current-prior evidence|fixed|off] [--prior-position-sigma M] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
        [--no-glider-dead-reckoning] [--no-depth-rate-calibration] [--depth-rate-drag] [--from-glider]
        [--check]
 """
@@ -194,7 +195,8 @@ def forecast_options(a):
             (["--pitch-calibration"] if a.pitch_calibration else []) +
             (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []) +
             (["--no-depth-rate-calibration"] if a.no_depth_rate_calibration else []) +
-            (["--depth-rate-drag"] if a.depth_rate_drag else []))
+            (["--depth-rate-drag"] if a.depth_rate_drag else []) +
+            (["--prior-position-sigma", str(a.prior_position_sigma)] if a.prior_position_sigma is not None else []))
 
 
 def t_utc(s):
@@ -450,6 +452,8 @@ def main():
     p.add_argument("--no-depth-rate-calibration", action="store_true",
                    help="glider-forecast's --no-depth-rate-calibration")
     p.add_argument("--depth-rate-drag", action="store_true", help="glider-forecast's --depth-rate-drag")
+    p.add_argument("--prior-position-sigma", type=float, default=None,
+                   help="glider-forecast's --prior-position-sigma (m; 0: the rule before session 37)")
     p.add_argument("--from-glider", action="store_true",
                    help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
@@ -517,8 +521,10 @@ def main():
         if a.waypoint is None and [c["waypoint"] for c in cases] != [0, 0, 0, 1, 1, 1]:
             failures.append("comet-2016 waypoints %s, the glider's c_wpt says 0 0 0 1 1 1" %
                             [c["waypoint"] for c in cases])
+        # From surfacing 1 too since session 37 (each estimate's position error over its segment: the
+        # 606 s dive's estimate no longer extrapolated as a tide, 2.03 -> 0.24 km; docs/forecast.md).
         for r in scored:
-            if r["k"] >= 2 and not r["pos"] <= 500.0:
+            if r["k"] >= 1 and not r["pos"] <= 500.0:
                 failures.append("comet-2016 from surfacing %d the position is %.0f m off (500 allowed)" %
                                 (r["k"], r["pos"]))
             if r["k"] >= 2 and not r["current_off"] < 0.1:

@@ -500,11 +500,13 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior);
   f.favoured = favoured_prior(samples, f.dive_utc_s, f.prior);
   if (f.prior.mode == PriorMode::kEvidence && !samples.empty()) {
-    char text[200];
+    char text[300];
     std::snprintf(text, sizeof text,
-                  "the estimates favour a mean current of +- %.3f m/s and an M2 tide of +- %.3f m/s per component "
-                  "(the prior's %.3f and %.3f, weighted by their evidence)",
-                  f.favoured.mean_sigma_m_s, f.favoured.m2_sigma_m_s, f.prior.mean_sigma_m_s, f.prior.m2_sigma_m_s);
+                  "the estimates favour a mean current of +- %.3f m/s and an M2 tide of +- %.3f m/s per component, "
+                  "each estimate off by +- %.0f m over its segment (the prior's %.3f, %.3f and %.0f, weighted by "
+                  "their evidence)",
+                  f.favoured.mean_sigma_m_s, f.favoured.m2_sigma_m_s, f.favoured.position_sigma_m,
+                  f.prior.mean_sigma_m_s, f.prior.m2_sigma_m_s, f.prior.position_sigma_m);
     f.notes.push_back(text);
   }
   f.baseline_current = last_current(current_samples(history, 1.0, expected_s));
@@ -591,7 +593,9 @@ nlohmann::json forecast_json(const Forecast& f) {
                       {"m2_sigma_m_s", f.prior.m2_sigma_m_s},
                       {"estimate_sigma_m_s", f.prior.estimate_sigma_m_s},
                       {"favoured_mean_sigma_m_s", f.favoured.mean_sigma_m_s},
-                      {"favoured_m2_sigma_m_s", f.favoured.m2_sigma_m_s}}}};
+                      {"favoured_m2_sigma_m_s", f.favoured.m2_sigma_m_s},
+                      {"position_sigma_m", f.prior.position_sigma_m},
+                      {"favoured_position_sigma_m", f.favoured.position_sigma_m}}}};
   out["depth_rate"] = {{"read", f.depth_rate_have},
                        {"applied", f.depth_rate_applied},
                        {"servo", f.depth_rate_servo},

@@ -43,11 +43,12 @@ TidalPrior current_prior(const fs::path& glider_dir, const PriorOverrides& overr
         double* target = key.str() == "mean_sigma_m_s"       ? &prior.mean_sigma_m_s
                          : key.str() == "m2_sigma_m_s"       ? &prior.m2_sigma_m_s
                          : key.str() == "estimate_sigma_m_s" ? &prior.estimate_sigma_m_s
+                         : key.str() == "position_sigma_m"   ? &prior.position_sigma_m
                                                              : nullptr;
         if (target == nullptr) {
           throw std::runtime_error(where +
                                    ": unknown key (allowed: mode, mean_sigma_m_s, m2_sigma_m_s, "
-                                   "estimate_sigma_m_s)");
+                                   "estimate_sigma_m_s, position_sigma_m)");
         }
         const std::optional<double> value = node.value<double>();
         if (!value) throw std::runtime_error(where + ": not a number");
@@ -56,6 +57,7 @@ TidalPrior current_prior(const fs::path& glider_dir, const PriorOverrides& overr
         one.mean_sigma_m_s = key.str() == "mean_sigma_m_s" ? *value : one.mean_sigma_m_s;
         one.m2_sigma_m_s = key.str() == "m2_sigma_m_s" ? *value : one.m2_sigma_m_s;
         one.estimate_sigma_m_s = key.str() == "estimate_sigma_m_s" ? *value : one.estimate_sigma_m_s;
+        one.position_sigma_m = key.str() == "position_sigma_m" ? *value : one.position_sigma_m;
         try {
           check_prior(one);
         } catch (const std::invalid_argument& e) {
@@ -69,6 +71,7 @@ TidalPrior current_prior(const fs::path& glider_dir, const PriorOverrides& overr
   if (overrides.mean_sigma_m_s) prior.mean_sigma_m_s = *overrides.mean_sigma_m_s;
   if (overrides.m2_sigma_m_s) prior.m2_sigma_m_s = *overrides.m2_sigma_m_s;
   if (overrides.estimate_sigma_m_s) prior.estimate_sigma_m_s = *overrides.estimate_sigma_m_s;
+  if (overrides.position_sigma_m) prior.position_sigma_m = *overrides.position_sigma_m;
   try {
     check_prior(prior);
   } catch (const std::invalid_argument& e) {

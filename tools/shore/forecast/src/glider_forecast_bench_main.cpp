@@ -177,6 +177,10 @@ int main(int argc, char** argv) {
   app.add_option("--current-prior", prior_mode, "the forecasts' current prior: evidence, fixed or off")
       ->check(CLI::IsMember({"evidence", "fixed", "off"}))
       ->capture_default_str();
+  double prior_position_m = fc::TidalPrior{}.position_sigma_m;
+  tool.add_number("--prior-position-sigma", prior_position_m, {0.0, 5000.0, "m"},
+                  "the forecasts' prior: each current estimate's position error over its segment (0: the rule off)")
+      ->capture_default_str();
   app.add_flag("--speed-correction", options.speed_correction,
                "the forecasts scale the model's drag to the glider's dead-reckoned speed, calibrated or not "
                "(default: only calibrated for its pitch sensor; docs/forecast.md)");
@@ -195,6 +199,10 @@ int main(int argc, char** argv) {
   app.add_flag("--truth-servo-on-sensor", truth_options.servo_on_sensor,
                "the truths' pitch servo holds the biased sensor's pitch at the mission's (as a real servo does), "
                "not the hull's");
+  tool.add_number("--truth-gps-noise", truth_options.gps_noise_m, {0.0, 1000.0, "m"},
+                  "the truths' GPS fixes, 1 sigma per axis (the SIL's 3 m; a real glider's fix as it dives and its "
+                  "DR's restart can be off by 100 m and more: each current estimate off by that over its dive)")
+      ->capture_default_str();
   tool.add_number("--truth-pitch-bias", truth_options.pitch_bias_max, {0.0, 0.5, ""},
                   "the truths' pitch sensor reads (1 + b) x the hull's pitch, b drawn uniform in [-this, this]")
       ->capture_default_str();
@@ -218,6 +226,7 @@ int main(int argc, char** argv) {
       seed = static_cast<std::int64_t>(std::random_device{}() % 1000000);
     }
     options.prior.mode = fc::parse_prior_mode(prior_mode);
+    options.prior.position_sigma_m = prior_position_m;
     truth_options.tide_amplitude_max_m_s = tide_max;
     truth_options.mean_current_max_m_s = mean_max;
     truth_options.mission = mission;

@@ -18,8 +18,8 @@ int main(int argc, char** argv) {
   std::string glider_dir;
   bool json = false;
   std::string prior_mode;
-  double prior_mean = 0.10, prior_m2 = 0.25, prior_estimate = 0.02;
-  std::vector<std::pair<CLI::Option*, int>> prior_options;  // 0 mean, 1 M2, 2 estimate
+  double prior_mean = 0.10, prior_m2 = 0.25, prior_estimate = 0.02, prior_position = 100.0;
+  std::vector<std::pair<CLI::Option*, int>> prior_options;  // 0 mean, 1 M2, 2 estimate, 3 position
   auto common = [&](CLI::App* command) {
     command->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER); required");
     command->add_option("--mission", options.mission,
@@ -70,6 +70,11 @@ int main(int argc, char** argv) {
     prior_options.emplace_back(tool.add_number(command, "--prior-estimate-sigma", prior_estimate, {0.001, 1.0, "m/s"},
                                                "each current estimate's own error, 1 sigma (default 0.02)"),
                                2);
+    prior_options.emplace_back(
+        tool.add_number(command, "--prior-position-sigma", prior_position, {0.0, 5000.0, "m"},
+                        "each current estimate's position error over its segment, 1 sigma per axis (default 100; 0: "
+                        "a short segment's estimate no noisier than a long one's)"),
+        3);
   };
   common(&app);
   tool.add_json_flag(json);
@@ -87,6 +92,7 @@ int main(int argc, char** argv) {
       if (which == 0) options.prior.mean_sigma_m_s = prior_mean;
       if (which == 1) options.prior.m2_sigma_m_s = prior_m2;
       if (which == 2) options.prior.estimate_sigma_m_s = prior_estimate;
+      if (which == 3) options.prior.position_sigma_m = prior_position;
     }
     if (*rehearse) {
       const glider::forecast::Rehearsal r = glider::forecast::rehearse(glider_dir, file, options);

@@ -84,6 +84,7 @@ Truth fly_truth(const TruthOptions& o) {
   opt.seed = o.seed;
   opt.environment = model::Environment{model::WaterColumn({model::ProfileNode{0.0, water}}, oscillation)};
   opt.peripherals.gps.launch = o.launch;
+  opt.peripherals.gps.noise_m = o.gps_noise_m;
   opt.max_sim_time_s = 3.0 * 86400.0;
   const fw::LocalFrame frame(o.launch);
   bool under = false;

@@ -38,6 +38,9 @@ struct TruthOptions {
   // mission's / (1 + b)); false: it holds the hull's (the sensor only logs).
   bool servo_on_sensor = false;
   double max_working_depth_m = 100.0;
+  // The GPS's noise, 1 sigma per axis (m): each fix the firmware dead-reckons
+  // from and updates its current with, and the shore's events, carry it.
+  double gps_noise_m = 3.0;
 };
 
 struct TruthSurfacing {

@@ -14,15 +14,23 @@
 //   M2 tide        cos and sin coefficients N(0, 0.25 m/s) per component
 //                  (mean amplitude 0.31 m/s),
 //   each estimate  off its segment's true mean by N(0, 0.02 m/s) (the DR's
-//                  speed error and the fix's noise over a segment).
+//                  speed error and the fix's noise over a segment),
+//                  and by a position error of N(0, 100 m) over the
+//                  segment's time (the fix it dived from, the DR's restart
+//                  as it dived, the drift before it: a distance, so a short
+//                  segment's estimate is the noisier one).
 // Mode "evidence" (the default) lets the estimates choose the widths: the
 // mean's and the tide's each scaled by 2, 1, 1/2 ... 1/32 (every pair a
 // hypothesis, equally likely beforehand: steady water, a pure tide, both, weak
 // or strong), each weighted by its marginal likelihood of the estimates so
 // far (Bayesian model averaging; the prediction is the mixture's mean and
-// variance). Weak water then stops paying for a shelf sea's tide after one
-// estimate, and a strong tide is not held back by the pilot's guess. Mode
-// "fixed" uses the widths as given; "off" uses no prior (persistence).
+// variance); the position error scaled by 2, 1, 1/2, 1/4, 1/8 (each 0.1
+// likely beforehand) or 0 (0.5: a precise glider), so two estimates that
+// differ are weighed as a tide's change against a noisy short segment, and
+// the prediction spread over both. Weak water then stops paying for a shelf
+// sea's tide after one estimate, and a strong tide is not held back by the
+// pilot's guess. Mode "fixed" uses the widths as given; "off" uses no prior
+// (persistence).
 #include <string>
 #include <vector>
 
@@ -39,6 +47,7 @@ struct TidalPrior {
   double mean_sigma_m_s = 0.10;
   double m2_sigma_m_s = 0.25;
   double estimate_sigma_m_s = 0.02;
+  double position_sigma_m = 100.0;  // per component, over the estimate's segment (span_s)
   PriorMode mode = PriorMode::kEvidence;
 };
 
@@ -47,7 +56,8 @@ const char* to_string(PriorMode mode);
 PriorMode parse_prior_mode(const std::string& text);
 
 // Allowed ranges (m/s): the widths 0-2 (0: that part absent), the estimate's
-// noise 0.001-1 (it keeps the regression well posed). Throws
+// noise 0.001-1 (it keeps the regression well posed), the position error
+// 0-5000 m. Throws
 // std::invalid_argument naming the field, the value and the range (NaN too).
 void check_prior(const TidalPrior& prior);
 
