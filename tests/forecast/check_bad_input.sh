@@ -65,6 +65,8 @@ prior_file() {  # NAME CONTENT PATTERN
 }
 prior_file prior_range '[current_prior]\nm2_sigma_m_s = 3.0\n' "forecast.toml:2: current_prior.m2_sigma_m_s = 3.000000 is outside \\[0.000000, 2.000000\\] m/s"
 prior_file prior_nan '[current_prior]\nmode = "fixed"\nmean_sigma_m_s = nan\n' "forecast.toml:3: current_prior.mean_sigma_m_s = nan is outside"
+prior_file prior_position_range '[current_prior]\nposition_sigma_m = 6000\n' "forecast.toml:2: current_prior.position_sigma_m = 6000.000000 is outside \\[0.000000, 5000.000000\\] m"
+prior_file prior_position_nan '[current_prior]\nposition_sigma_m = nan\n' "forecast.toml:2: current_prior.position_sigma_m = nan is outside"
 prior_file prior_key '[current_prior]\ntide = 0.3\n' "forecast.toml:2: current_prior.tide: unknown key"
 prior_file prior_mode '[current_prior]\nmode = "maybe"\n' "forecast.toml:2: current_prior.mode: 'maybe' is not a prior mode"
 prior_file prior_section '[prior]\nmode = "off"\n' "forecast.toml:1: key 'prior' is not a forecast setting"

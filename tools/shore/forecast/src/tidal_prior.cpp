@@ -171,19 +171,16 @@ PriorMode parse_prior_mode(const std::string& text) {
 }
 
 void check_prior(const TidalPrior& prior) {
-  auto check = [](const char* name, double value, double low, double high) {
+  auto check = [](const char* name, double value, double low, double high, const char* unit) {
     if (!(value >= low && value <= high)) {  // NaN fails too
       throw std::invalid_argument(std::string(name) + " = " + std::to_string(value) + " is outside [" +
-                                  std::to_string(low) + ", " + std::to_string(high) + "] m/s");
+                                  std::to_string(low) + ", " + std::to_string(high) + "] " + unit);
     }
   };
-  check("mean_sigma_m_s", prior.mean_sigma_m_s, 0.0, 2.0);
-  check("m2_sigma_m_s", prior.m2_sigma_m_s, 0.0, 2.0);
-  check("estimate_sigma_m_s", prior.estimate_sigma_m_s, 0.001, 1.0);
-  if (!(prior.position_sigma_m >= 0.0 && prior.position_sigma_m <= 5000.0)) {
-    throw std::invalid_argument("position_sigma_m = " + std::to_string(prior.position_sigma_m) +
-                                " is outside [0, 5000] m");
-  }
+  check("mean_sigma_m_s", prior.mean_sigma_m_s, 0.0, 2.0, "m/s");
+  check("m2_sigma_m_s", prior.m2_sigma_m_s, 0.0, 2.0, "m/s");
+  check("estimate_sigma_m_s", prior.estimate_sigma_m_s, 0.001, 1.0, "m/s");
+  check("position_sigma_m", prior.position_sigma_m, 0.0, 5000.0, "m");
 }
 
 CurrentEstimate predict_with_prior(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
