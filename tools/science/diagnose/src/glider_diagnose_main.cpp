@@ -374,7 +374,19 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "glider-diagnose: %.0f s, %zu rows: model fit %zu (%s)\n", elapsed_s, rows, fits,
                      fitting.c_str());
       };
-      // The heading plane first: a log it cannot read is said so, and the vertical plane still runs.
+      std::optional<glider::diagnose::Observations> obs;
+      std::optional<Diagnosis> vertical;
+      if (vertical_plane) {
+        obs = glider::diagnose::prepare_observations(log, observation_options);
+        vertical = glider::diagnose::diagnose(vehicle, *obs, options);
+      }
+      // The vehicle as the vertical plane found it (drag, lift, ... applied), health's flown vehicle: the heading
+      // plane's glide speed and the roll's yaw come from it, so a vertical change is not read as a heading one.
+      const glider::model::VehicleParams flown =
+          vertical ? glider::diagnose::apply(glider::diagnose::diagnosed_nominal(vehicle, *vertical),
+                                             vertical->extended, vertical->thermal_reference_c)
+                   : vehicle;
+      // The heading plane second, on the flown vehicle: a log it cannot read is said so, the vertical result stands.
       std::optional<glider::diagnose::HeadingDiagnosis> heading;
       ordered_json heading_object;
       if (heading_plane) {
@@ -383,7 +395,7 @@ int main(int argc, char** argv) {
                                glider::diagnose::any_decimated(glider::slocum::deployment_files(log_source.inputs));
         heading_options.track.fin_stored_on_change = decimated;
         glider::diagnose::HeadingPlane h = glider::diagnose::heading_plane(
-            vehicle,
+            flown,
             decimated ? glider::diagnose::hold_stored_columns(log, glider::diagnose::kStoredHoldMaxAgeS, false) : log,
             heading_options);
         if (!h.diagnosis) {
@@ -393,12 +405,6 @@ int main(int argc, char** argv) {
         }
         heading = std::move(h.diagnosis);
         heading_object = std::move(h.json);
-      }
-      std::optional<glider::diagnose::Observations> obs;
-      std::optional<Diagnosis> vertical;
-      if (vertical_plane) {
-        obs = glider::diagnose::prepare_observations(log, observation_options);
-        vertical = glider::diagnose::diagnose(vehicle, *obs, options);
       }
       const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       auto document = [&] {
@@ -423,10 +429,7 @@ int main(int argc, char** argv) {
         std::filesystem::create_directories(report_dir);
         if (vertical) write_plots(report_dir, vehicle, *obs, *vertical, log_path, options);
         glider::report::write_file(std::filesystem::path(report_dir) / "diagnosis.json", document().dump(2) + '\n');
-        glider::model::VehicleParams extended =
-            vertical ? glider::diagnose::apply(glider::diagnose::diagnosed_nominal(vehicle, *vertical),
-                                               vertical->extended, vertical->thermal_reference_c)
-                     : vehicle;
+        glider::model::VehicleParams extended = flown;
         if (heading) extended = glider::diagnose::apply(extended, *heading);
         extended.name = vehicle.name + "_extended";
         extended.description =
