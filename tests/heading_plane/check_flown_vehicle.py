@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""The heading plane flies the vertical plane's diagnosed vehicle (docs/science.md,
-"The heading plane flies the vertical plane's vehicle").
+"""The heading plane flies the vertical plane's findings (docs/science.md,
+"The heading plane flies the vertical plane's findings").
 
 Two fixed draws of the independent truth, shallow variant, a vertical drag
 change hidden and the heading clean, diagnosed as a black box

@@ -380,12 +380,11 @@ int main(int argc, char** argv) {
         obs = glider::diagnose::prepare_observations(log, observation_options);
         vertical = glider::diagnose::diagnose(vehicle, *obs, options);
       }
-      // The vehicle as the vertical plane found it (drag, lift, ... applied), health's flown vehicle: the heading
-      // plane's glide speed and the roll's yaw come from it, so a vertical change is not read as a heading one.
+      // The vehicle with the vertical plane's findings (drag, lift, ...) applied: the heading plane's glide speed
+      // and the roll's yaw come from it, so a vertical change is not read as a heading one. Not diagnosed_nominal's
+      // Reynolds prior: flown on logs without a vertical finding it grew the roll offsets read (docs/science.md).
       const glider::model::VehicleParams flown =
-          vertical ? glider::diagnose::apply(glider::diagnose::diagnosed_nominal(vehicle, *vertical),
-                                             vertical->extended, vertical->thermal_reference_c)
-                   : vehicle;
+          vertical ? glider::diagnose::apply(vehicle, vertical->extended, vertical->thermal_reference_c) : vehicle;
       // The heading plane second, on the flown vehicle: a log it cannot read is said so, the vertical result stands.
       std::optional<glider::diagnose::HeadingDiagnosis> heading;
       ordered_json heading_object;
@@ -429,7 +428,10 @@ int main(int argc, char** argv) {
         std::filesystem::create_directories(report_dir);
         if (vertical) write_plots(report_dir, vehicle, *obs, *vertical, log_path, options);
         glider::report::write_file(std::filesystem::path(report_dir) / "diagnosis.json", document().dump(2) + '\n');
-        glider::model::VehicleParams extended = flown;
+        glider::model::VehicleParams extended =
+            vertical ? glider::diagnose::apply(glider::diagnose::diagnosed_nominal(vehicle, *vertical),
+                                               vertical->extended, vertical->thermal_reference_c)
+                     : vehicle;
         if (heading) extended = glider::diagnose::apply(extended, *heading);
         extended.name = vehicle.name + "_extended";
         extended.description =
