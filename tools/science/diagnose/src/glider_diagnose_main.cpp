@@ -374,7 +374,18 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "glider-diagnose: %.0f s, %zu rows: model fit %zu (%s)\n", elapsed_s, rows, fits,
                      fitting.c_str());
       };
-      // The heading plane first: a log it cannot read is said so, and the vertical plane still runs.
+      std::optional<glider::diagnose::Observations> obs;
+      std::optional<Diagnosis> vertical;
+      if (vertical_plane) {
+        obs = glider::diagnose::prepare_observations(log, observation_options);
+        vertical = glider::diagnose::diagnose(vehicle, *obs, options);
+      }
+      // The vehicle with the vertical plane's findings (drag, lift, ...) applied: the heading plane's glide speed
+      // and the roll's yaw come from it, so a vertical change is not read as a heading one. Not diagnosed_nominal's
+      // Reynolds prior: flown on logs without a vertical finding it grew the roll offsets read (docs/science.md).
+      const glider::model::VehicleParams flown =
+          vertical ? glider::diagnose::apply(vehicle, vertical->extended, vertical->thermal_reference_c) : vehicle;
+      // The heading plane second, on the flown vehicle: a log it cannot read is said so, the vertical result stands.
       std::optional<glider::diagnose::HeadingDiagnosis> heading;
       ordered_json heading_object;
       if (heading_plane) {
@@ -383,7 +394,7 @@ int main(int argc, char** argv) {
                                glider::diagnose::any_decimated(glider::slocum::deployment_files(log_source.inputs));
         heading_options.track.fin_stored_on_change = decimated;
         glider::diagnose::HeadingPlane h = glider::diagnose::heading_plane(
-            vehicle,
+            flown,
             decimated ? glider::diagnose::hold_stored_columns(log, glider::diagnose::kStoredHoldMaxAgeS, false) : log,
             heading_options);
         if (!h.diagnosis) {
@@ -393,12 +404,6 @@ int main(int argc, char** argv) {
         }
         heading = std::move(h.diagnosis);
         heading_object = std::move(h.json);
-      }
-      std::optional<glider::diagnose::Observations> obs;
-      std::optional<Diagnosis> vertical;
-      if (vertical_plane) {
-        obs = glider::diagnose::prepare_observations(log, observation_options);
-        vertical = glider::diagnose::diagnose(vehicle, *obs, options);
       }
       const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       auto document = [&] {
