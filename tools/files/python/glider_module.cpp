@@ -101,7 +101,8 @@ py::object diagnose(const Log& log, const py::object& vehicle, const std::string
     const auto d = glider::diagnose::diagnose(params, observations, options);
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::ordered_json j = glider::diagnose::diagnosis_json(d, vehicle_source, wall_s);
-    j["heading"] = glider::diagnose::heading_plane(params, log.log).json;  // as glider-diagnose's default --plane both
+    // As glider-diagnose's default --plane both: the heading plane on the vertical plane's findings.
+    j["heading"] = glider::diagnose::heading_plane(glider::diagnose::heading_vehicle(params, d), log.log).json;
     text = j.dump();
   }
   return py::module_::import("json").attr("loads")(text);

@@ -380,11 +380,9 @@ int main(int argc, char** argv) {
         obs = glider::diagnose::prepare_observations(log, observation_options);
         vertical = glider::diagnose::diagnose(vehicle, *obs, options);
       }
-      // The vehicle with the vertical plane's findings (drag, lift, ...) applied: the heading plane's glide speed
-      // and the roll's yaw come from it, so a vertical change is not read as a heading one. Not diagnosed_nominal's
-      // Reynolds prior: flown on logs without a vertical finding it grew the roll offsets read (docs/science.md).
+      // The heading plane's glide speed and the roll's yaw from the vertical plane's findings (heading_vehicle).
       const glider::model::VehicleParams flown =
-          vertical ? glider::diagnose::apply(vehicle, vertical->extended, vertical->thermal_reference_c) : vehicle;
+          vertical ? glider::diagnose::heading_vehicle(vehicle, *vertical) : vehicle;
       // The heading plane second, on the flown vehicle: a log it cannot read is said so, the vertical result stands.
       std::optional<glider::diagnose::HeadingDiagnosis> heading;
       ordered_json heading_object;

@@ -253,4 +253,8 @@ std::string heading_text(const HeadingDiagnosis& d) {
   return out;
 }
 
+model::VehicleParams heading_vehicle(const model::VehicleParams& vehicle, const Diagnosis& vertical) {
+  return apply(vehicle, vertical.extended, vertical.thermal_reference_c);
+}
+
 }  // namespace glider::diagnose

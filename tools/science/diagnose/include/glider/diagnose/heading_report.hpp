@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/heading_diagnose.hpp"
 
 namespace glider::diagnose {
@@ -24,5 +25,14 @@ struct HeadingPlane {
 };
 HeadingPlane heading_plane(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
                            const HeadingDiagnoseOptions& options = {});
+
+// The vehicle the heading plane flies when the vertical plane diagnosed the
+// same log first (glider-diagnose's --plane both, the Python module): the
+// vertical findings (drag, lift, ...) applied, so that a vertical change is
+// not read as a heading one (a hidden drag read as a roll offset). Not
+// diagnosed_nominal's Reynolds prior: flown on logs without a vertical
+// finding it grew the roll offsets read (docs/science.md, "The heading plane
+// flies the vertical plane's findings").
+model::VehicleParams heading_vehicle(const model::VehicleParams& vehicle, const Diagnosis& vertical);
 
 }  // namespace glider::diagnose
