@@ -35,7 +35,9 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-void predict(const char* calibration, const char* unseen, bool unseen_water) {
+// must_hold: the case is a prediction the replay claims (within 4 deg); otherwise
+// a stated miss, whose figures are still checked against the file.
+void predict(const char* calibration, const char* unseen, bool unseen_water, bool must_hold = true) {
   const heading_study::UnseenCase with{calibration, unseen, unseen_water};
   const heading_study::UnseenRow row = heading_study::predict_unseen(GLIDER_SOURCE_DIR, with, GLIDER_TEST_OUTPUT_DIR);
   const std::string text = std::string("calibrated on ") + calibration + ", predicting " + unseen +
@@ -53,8 +55,10 @@ void predict(const char* calibration, const char* unseen, bool unseen_water) {
                      ("the dive's predicted error differs from " + doc).c_str());
   DOUBLES_EQUAL_TEXT(stated->climb_deg, row.predicted.climb_error_deg, kStatedToleranceDeg,
                      ("the climb's predicted error differs from " + doc).c_str());
-  CHECK(row.dive_holds());
-  CHECK(row.climb_holds());
+  if (must_hold) {
+    CHECK(row.dive_holds());
+    CHECK(row.climb_holds());
+  }
 }
 
 }  // namespace
@@ -81,4 +85,15 @@ TEST(HeadingReplayUnseen, Comet2019_154Predicts156InItsWater) {
 // by up to 3.8 deg before this test ran).
 TEST(HeadingReplayUnseen, Comet2019_156Predicts154InItsWater) {
   predict("comet-2019-222-02-156", "comet-2019-222-02-154", true);
+}
+
+// In the calibration log's own water the climb misses both ways (the file's
+// first and third rows): the water is the log's, not the glider's. Stated
+// misses, not predictions; their figures are checked so the docs cannot drift.
+TEST(HeadingReplayUnseen, Comet2019_154In154sWaterAsStated) {
+  predict("comet-2019-222-02-154", "comet-2019-222-02-156", false, false);
+}
+
+TEST(HeadingReplayUnseen, Comet2019_156In156sWaterAsStated) {
+  predict("comet-2019-222-02-156", "comet-2019-222-02-154", false, false);
 }
