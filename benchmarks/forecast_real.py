@@ -103,14 +103,6 @@ def event(glider, start, end, fix, dr, water, mission):
     return e
 
 
-def surface_fixes(rows, t_from, t_to):
-    """The call's fixes at the surface (shallower than 1 m: the receiver extrapolates as the glider dives),
-    oldest first, as the event's gps_fixes (session 38)."""
-    return [{"lat_deg": ddmm(r["m_gps_lat"]), "lon_deg": ddmm(r["m_gps_lon"]), "utc": utc(r["m_present_time"])}
-            for r in rows if r["m_gps_lat"] is not None and r["m_depth"] is not None and r["m_depth"] < 1.0
-            and t_from <= r["m_present_time"] <= t_to]
-
-
 def distance_m(lat1, lon1, lat2, lon2):
     return math.hypot(*offset_m(lat1, lon1, lat2, lon2))
 
@@ -204,7 +196,6 @@ def forecast_options(a):
             (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []) +
             (["--no-depth-rate-calibration"] if a.no_depth_rate_calibration else []) +
             (["--depth-rate-drag"] if a.depth_rate_drag else []) +
-            (["--no-surface-drift"] if a.no_surface_drift else []) +
             (["--prior-position-sigma", str(a.prior_position_sigma)] if a.prior_position_sigma is not None else []))
 
 
@@ -302,8 +293,6 @@ def comet_2019_cases(a, real, convert):
     call0 = min(start0, first_fix_time(convert, os.path.join(dbd_dir, "comet-2019-222-02-154.dbd")))
     events = [event("comet", call0, dive0, fix0, None, water0, "nsb3.mi"),
               event("comet", up1, dive1, fix1, dr1, water1, "nsb3.mi")]
-    events[0]["gps_fixes"] = surface_fixes(files[0], call0, dive0)
-    events[1]["gps_fixes"] = surface_fixes(files[0] + files[1], up1, dive1)
     truths = [(up1, first1, dr1, water1), (up2, first2, dr2, water2)]
     if a.waypoint is not None:
         wpts = [a.waypoint, a.waypoint]
@@ -397,7 +386,6 @@ def comet_2016_cases(a, real, convert):
     for k, c in enumerate(calls[:-1]):
         events.append(event("comet", c["arrival"], c["dive"], c["fix"], c["dr"] if k > 0 else None, c["water"],
                             "subex.mi"))
-        events[-1]["gps_fixes"] = surface_fixes(rows, c["arrival"], c["dive"])
     if a.waypoint is not None:
         wpts = [a.waypoint] * (len(calls) - 1)
     else:
@@ -464,7 +452,6 @@ def main():
     p.add_argument("--no-depth-rate-calibration", action="store_true",
                    help="glider-forecast's --no-depth-rate-calibration")
     p.add_argument("--depth-rate-drag", action="store_true", help="glider-forecast's --depth-rate-drag")
-    p.add_argument("--no-surface-drift", action="store_true", help="glider-forecast's --no-surface-drift")
     p.add_argument("--prior-position-sigma", type=float, default=None,
                    help="glider-forecast's --prior-position-sigma (m; 0: the rule before session 37)")
     p.add_argument("--from-glider", action="store_true",

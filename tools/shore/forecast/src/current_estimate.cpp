@@ -172,7 +172,7 @@ std::optional<CurrentEstimate> predict_fitted(const std::vector<CurrentSample>& 
 }  // namespace
 
 CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
-                                 const TidalPrior& prior, const std::vector<CurrentSample>& surface) {
+                                 const TidalPrior& prior) {
   const bool use_prior = prior.mode != PriorMode::kOff;
   const double floor = prior.mode == PriorMode::kEvidence ? favoured_prior(all, from_utc_s, prior).estimate_sigma_m_s
                                                           : prior.estimate_sigma_m_s;
@@ -235,15 +235,10 @@ CurrentEstimate estimate_current(const std::vector<CurrentSample>& all, double f
   // Without a prior (the pilot's "off") persistence alone.
   if (count[kLast] < 2 && !use_prior) return last_current(all, floor);
   if (count[kLast] < 2) {
-    std::vector<CurrentSample> read = all;
-    read.insert(read.end(), surface.begin(), surface.end());
-    CurrentEstimate e = predict_with_prior(read, from_utc_s, to_utc_s, prior);
+    CurrentEstimate e = predict_with_prior(all, from_utc_s, to_utc_s, prior);
     e.sigma_east_m_s = std::hypot(e.sigma_east_m_s, floor);
     e.sigma_north_m_s = std::hypot(e.sigma_north_m_s, floor);
     e.samples = static_cast<int>(all.size());
-    e.surface_readings = static_cast<int>(std::count_if(surface.begin(), surface.end(), [&](const CurrentSample& s) {
-      return s.utc_s > from_utc_s - 86400.0 && s.utc_s <= from_utc_s;
-    }));
     return e;
   }
   int best = kLast;

@@ -131,25 +131,6 @@ std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history
   return out;
 }
 
-// Each call's drift at the surface, from its first to its last fix (at
-// least a minute apart): the surface's water (and the wind's push) over the
-// call, a reading at another time than the dives' means (session 38).
-std::vector<CurrentSample> surface_drift_samples(const std::vector<Surfacing>& history) {
-  std::vector<CurrentSample> out;
-  for (const Surfacing& s : history) {
-    if (s.surface_fixes.size() < 2) continue;
-    const TimedFix& a = s.surface_fixes.front();
-    const TimedFix& b = s.surface_fixes.back();
-    const double span_s = b.utc_s - a.utc_s;
-    if (!(span_s >= 60.0)) continue;
-    const fw::EastNorth moved = fw::LocalFrame({a.lat_deg, a.lon_deg}).to_local({b.lat_deg, b.lon_deg});
-    CurrentSample c{0.5 * (a.utc_s + b.utc_s), moved.east_m / span_s, moved.north_m / span_s, span_s};
-    c.surface = true;
-    out.push_back(c);
-  }
-  return out;
-}
-
 void summarise(const std::vector<RunOutcome>& runs, const fw::LatLon& fix, Forecast& f) {
   std::vector<double> e, n, t;
   int aborts = 0;
@@ -516,20 +497,7 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   // its share of each estimate out.
   const double glider_dr_ratio = f.dr_speed_ratio * sensor_dr_factor;
   const std::vector<CurrentSample> samples = current_samples(history, glider_dr_ratio, expected_s);
-  const std::vector<CurrentSample> readings =
-      options.surface_drift ? surface_drift_samples(history) : std::vector<CurrentSample>{};
-  f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior, readings);
-  if (f.current.surface_readings > 0) {
-    std::vector<CurrentSample> read = samples;
-    read.insert(read.end(), readings.begin(), readings.end());
-    f.favoured_surface_sigma_m_s = favoured_prior(read, f.dive_utc_s, f.prior).surface_sigma_m_s;
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "the current read %d surface drift%s between a call's fixes too (the water at another time than "
-                  "the dives; off the depth average by +- %.3f m/s favoured, wind and shear)",
-                  f.current.surface_readings, f.current.surface_readings == 1 ? "" : "s", f.favoured_surface_sigma_m_s);
-    f.notes.push_back(text);
-  }
+  f.current = estimate_current(samples, f.dive_utc_s, f.dive_utc_s + expected_s, f.prior);
   f.favoured = favoured_prior(samples, f.dive_utc_s, f.prior);
   if (f.prior.mode == PriorMode::kEvidence && !samples.empty()) {
     char text[300];
@@ -627,11 +595,7 @@ nlohmann::json forecast_json(const Forecast& f) {
                       {"favoured_mean_sigma_m_s", f.favoured.mean_sigma_m_s},
                       {"favoured_m2_sigma_m_s", f.favoured.m2_sigma_m_s},
                       {"position_sigma_m", f.prior.position_sigma_m},
-                      {"favoured_position_sigma_m", f.favoured.position_sigma_m}}},
-                    {"surface_drift",
-                     {{"read", f.current.surface_readings},
-                      {"sigma_m_s", f.prior.surface_sigma_m_s},
-                      {"favoured_sigma_m_s", f.favoured_surface_sigma_m_s}}}};
+                      {"favoured_position_sigma_m", f.favoured.position_sigma_m}}}};
   out["depth_rate"] = {{"read", f.depth_rate_have},
                        {"applied", f.depth_rate_applied},
                        {"servo", f.depth_rate_servo},

@@ -44,12 +44,11 @@ TidalPrior current_prior(const fs::path& glider_dir, const PriorOverrides& overr
                          : key.str() == "m2_sigma_m_s"       ? &prior.m2_sigma_m_s
                          : key.str() == "estimate_sigma_m_s" ? &prior.estimate_sigma_m_s
                          : key.str() == "position_sigma_m"   ? &prior.position_sigma_m
-                         : key.str() == "surface_sigma_m_s"  ? &prior.surface_sigma_m_s
                                                              : nullptr;
         if (target == nullptr) {
           throw std::runtime_error(where +
                                    ": unknown key (allowed: mode, mean_sigma_m_s, m2_sigma_m_s, "
-                                   "estimate_sigma_m_s, position_sigma_m, surface_sigma_m_s)");
+                                   "estimate_sigma_m_s, position_sigma_m)");
         }
         const std::optional<double> value = node.value<double>();
         if (!value) throw std::runtime_error(where + ": not a number");
@@ -59,7 +58,6 @@ TidalPrior current_prior(const fs::path& glider_dir, const PriorOverrides& overr
         one.m2_sigma_m_s = key.str() == "m2_sigma_m_s" ? *value : one.m2_sigma_m_s;
         one.estimate_sigma_m_s = key.str() == "estimate_sigma_m_s" ? *value : one.estimate_sigma_m_s;
         one.position_sigma_m = key.str() == "position_sigma_m" ? *value : one.position_sigma_m;
-        one.surface_sigma_m_s = key.str() == "surface_sigma_m_s" ? *value : one.surface_sigma_m_s;
         try {
           check_prior(one);
         } catch (const std::invalid_argument& e) {
@@ -74,7 +72,6 @@ TidalPrior current_prior(const fs::path& glider_dir, const PriorOverrides& overr
   if (overrides.m2_sigma_m_s) prior.m2_sigma_m_s = *overrides.m2_sigma_m_s;
   if (overrides.estimate_sigma_m_s) prior.estimate_sigma_m_s = *overrides.estimate_sigma_m_s;
   if (overrides.position_sigma_m) prior.position_sigma_m = *overrides.position_sigma_m;
-  if (overrides.surface_sigma_m_s) prior.surface_sigma_m_s = *overrides.surface_sigma_m_s;
   try {
     check_prior(prior);
   } catch (const std::invalid_argument& e) {

@@ -196,16 +196,6 @@ int main(int argc, char** argv) {
   app.add_flag("--depth-rate-drag", options.depth_rate_drag,
                "with the battery fixed the forecasts fly the drag and buoyancy the depth rates read too (as "
                "glider-forecast)");
-  double prior_surface_m_s = fc::TidalPrior{}.surface_sigma_m_s;
-  tool.add_number("--prior-surface-sigma", prior_surface_m_s, {0.001, 2.0, "m/s"},
-                  "the forecasts' prior: a surface drift off the depth-averaged current (wind, shear)")
-      ->capture_default_str();
-  app.add_flag("!--no-surface-drift", options.surface_drift,
-               "the forecasts' current does not read the truths' drift between a call's fixes (as glider-forecast)");
-  tool.add_number("--truth-surface-wind", truth_options.surface_wind_sigma_m_s, {0.0, 2.0, "m/s"},
-                  "the truths' drift between a call's fixes is off the water's current by a wind drawn per call, "
-                  "1 sigma per component")
-      ->capture_default_str();
   app.add_flag("--truth-servo-on-sensor", truth_options.servo_on_sensor,
                "the truths' pitch servo holds the biased sensor's pitch at the mission's (as a real servo does), "
                "not the hull's");
@@ -237,7 +227,6 @@ int main(int argc, char** argv) {
     }
     options.prior.mode = fc::parse_prior_mode(prior_mode);
     options.prior.position_sigma_m = prior_position_m;
-    options.prior.surface_sigma_m_s = prior_surface_m_s;
     truth_options.tide_amplitude_max_m_s = tide_max;
     truth_options.mean_current_max_m_s = mean_max;
     truth_options.mission = mission;

@@ -18,8 +18,8 @@ int main(int argc, char** argv) {
   std::string glider_dir;
   bool json = false;
   std::string prior_mode;
-  double prior_mean = 0.10, prior_m2 = 0.25, prior_estimate = 0.02, prior_position = 100.0, prior_surface = 0.10;
-  std::vector<std::pair<CLI::Option*, int>> prior_options;  // 0 mean, 1 M2, 2 estimate, 3 position, 4 surface
+  double prior_mean = 0.10, prior_m2 = 0.25, prior_estimate = 0.02, prior_position = 100.0;
+  std::vector<std::pair<CLI::Option*, int>> prior_options;  // 0 mean, 1 M2, 2 estimate, 3 position
   auto common = [&](CLI::App* command) {
     command->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER); required");
     command->add_option("--mission", options.mission,
@@ -49,9 +49,6 @@ int main(int argc, char** argv) {
     command->add_flag("!--no-depth-rate-calibration", options.depth_rate_calibration,
                       "fly the model as the vehicle file says, not calibrated to the glider's steady-glide depth "
                       "rates read from from-glider/ (docs/forecast.md)");
-    command->add_flag("!--no-surface-drift", options.surface_drift,
-                      "the current does not read the glider's drift between a call's fixes (the events' gps_fixes; "
-                      "docs/forecast.md, session 38)");
     command->add_flag("--depth-rate-drag", options.depth_rate_drag,
                       "with the battery fixed, fly the drag and buoyancy the depth rates read too (default: said, "
                       "not flown; under the pitch servo the calibration is flown; docs/forecast.md)");
@@ -78,11 +75,6 @@ int main(int argc, char** argv) {
                         "each current estimate's position error over its segment, 1 sigma per axis (default 100; 0: "
                         "a short segment's estimate no noisier than a long one's)"),
         3);
-    prior_options.emplace_back(
-        tool.add_number(command, "--prior-surface-sigma", prior_surface, {0.001, 2.0, "m/s"},
-                        "a surface drift between a call's fixes off the depth-averaged current (wind, shear), 1 "
-                        "sigma per component (default 0.10)"),
-        4);
   };
   common(&app);
   tool.add_json_flag(json);
@@ -101,7 +93,6 @@ int main(int argc, char** argv) {
       if (which == 1) options.prior.m2_sigma_m_s = prior_m2;
       if (which == 2) options.prior.estimate_sigma_m_s = prior_estimate;
       if (which == 3) options.prior.position_sigma_m = prior_position;
-      if (which == 4) options.prior.surface_sigma_m_s = prior_surface;
     }
     if (*rehearse) {
       const glider::forecast::Rehearsal r = glider::forecast::rehearse(glider_dir, file, options);

@@ -86,8 +86,6 @@ Truth fly_truth(const TruthOptions& o) {
   opt.peripherals.gps.launch = o.launch;
   opt.peripherals.gps.noise_m = o.gps_noise_m;
   opt.max_sim_time_s = 3.0 * 86400.0;
-  // The calls' first fixes: their own stream, so the truths' flights are the ones before (session 38).
-  sil::PortableRandom surface_draw(sil::derived_seed(o.seed, 0x7375726661636549ULL));
   const fw::LocalFrame frame(o.launch);
   bool under = false;
   TruthSurfacing pending;
@@ -110,16 +108,6 @@ Truth fly_truth(const TruthOptions& o) {
       pending.have_current = nav.have_current();
       pending.water_vx = nav.current_m_s().east_m;
       pending.water_vy = nav.current_m_s().north_m;
-      // The call's first fix: where it came up (the GPS's noise), back by the wind's push over the call.
-      const double call_s = pending.dive_utc_s - pending.surfaced_utc_s;
-      const fw::EastNorth up = frame.to_local({pending.lat_deg, pending.lon_deg});
-      const double wind_e = o.surface_wind_sigma_m_s * surface_draw.gaussian();
-      const double wind_n = o.surface_wind_sigma_m_s * surface_draw.gaussian();
-      const fw::LatLon first =
-          frame.to_global({up.east_m + o.gps_noise_m * surface_draw.gaussian() - wind_e * call_s,
-                           up.north_m + o.gps_noise_m * surface_draw.gaussian() - wind_n * call_s});
-      pending.first_fix_lat_deg = first.lat_deg;
-      pending.first_fix_lon_deg = first.lon_deg;
       truth.surfacings.push_back(pending);
       return false;
     }
@@ -179,12 +167,6 @@ void write_glider_folder(const Truth& truth, const TruthOptions& o, const std::s
                          {"mission", {{"name", o.mission.filename().string()}}},
                          {"gps", {{"kind", "gps"}, {"lat_deg", s.fix_lat_deg}, {"lon_deg", s.fix_lon_deg}}}};
     if (s.have_dr) event["dr"] = {{"kind", "dr"}, {"lat_deg", s.dr_lat_deg}, {"lon_deg", s.dr_lon_deg}};
-    if (s.dive_utc_s - s.surfaced_utc_s >= 60.0 && (s.first_fix_lat_deg != 0.0 || s.first_fix_lon_deg != 0.0)) {
-      // The call's fixes: its first (where it came up) and the last it dived from.
-      event["gps_fixes"] = {
-          {{"lat_deg", s.first_fix_lat_deg}, {"lon_deg", s.first_fix_lon_deg}, {"utc", format_utc(s.surfaced_utc_s)}},
-          {{"lat_deg", s.fix_lat_deg}, {"lon_deg", s.fix_lon_deg}, {"utc", format_utc(s.dive_utc_s)}}};
-    }
     nlohmann::json sensors = nlohmann::json::array();
     if (s.have_current) {
       sensors.push_back({{"name", "m_water_vx"}, {"unit", "m/s"}, {"value", s.water_vx}});

@@ -85,24 +85,6 @@ Surfacing parse_surfacing(const fs::path& file) {
   };
   position("gps", s.lat_deg, s.lon_deg);
   position("dr", s.dr_lat_deg, s.dr_lon_deg);
-  if (event.contains("gps_fixes") && !event["gps_fixes"].is_null()) {
-    // The call's fixes (optional): each a position on the globe with its UTC time, oldest first.
-    if (!event["gps_fixes"].is_array()) throw std::runtime_error(where + ": gps_fixes: expected an array");
-    for (std::size_t i = 0; i < event["gps_fixes"].size(); ++i) {
-      const json& f = event["gps_fixes"][i];
-      const std::string key = "gps_fixes[" + std::to_string(i) + "]";
-      const std::optional<double> lat = finite_number(f, "lat_deg"), lon = finite_number(f, "lon_deg");
-      if (!lat || !lon || std::fabs(*lat) > 90.0 || std::fabs(*lon) > 180.0) {
-        throw std::runtime_error(where + ": " + key + ": lat_deg/lon_deg missing, not finite or off the globe");
-      }
-      if (!f.contains("utc") || !f["utc"].is_string()) throw std::runtime_error(where + ": " + key + ".utc: missing");
-      const double utc_s = parse_utc(f["utc"].get<std::string>(), where + ": " + key + ".utc");
-      if (!s.surface_fixes.empty() && utc_s < s.surface_fixes.back().utc_s) {
-        throw std::runtime_error(where + ": " + key + ".utc is before the fix before it (oldest first)");
-      }
-      s.surface_fixes.push_back({*lat, *lon, utc_s});
-    }
-  }
   s.water_vx_m_s = sensor(event, "m_water_vx");
   s.water_vy_m_s = sensor(event, "m_water_vy");
   for (const auto* v : {&s.water_vx_m_s, &s.water_vy_m_s}) {

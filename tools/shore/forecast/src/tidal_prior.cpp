@@ -31,10 +31,6 @@ struct PositionScale {
 // precise glider's 600 s estimate 0.009 -> 0.064 m/s RMS, this 0.009 -> 0.038, and a 100 m error's 0.33 -> 0.14 (0.12).
 constexpr PositionScale kPositionScales[] = {{2.0, 0.1}, {1.0, 0.1}, {0.5, 0.1}, {0.25, 0.1}, {0.125, 0.1}, {0.0, 0.5}};
 constexpr double kOctaveSigma = 1.0;
-// A surface-drift reading's noise (wind, the surface's shear) scaled by 4 ..
-// 1/2, equally likely: a calm day to a gale's push; only where the samples
-// hold a reading (otherwise the scale cannot matter).
-constexpr double kSurfaceScales[] = {4.0, 2.0, 1.0, 0.5};
 
 // A harmonic averaged over a span keeps sinc(omega span / 2) of its amplitude.
 double kept(double span_s) {
@@ -52,11 +48,6 @@ double covariance(double t1, double s1, double t2, double s2, const TidalPrior& 
 // An estimate's own error variance: the speed's noise and the position's
 // error over its segment (a point estimate, span 0: the speed's alone).
 double noise_variance(const CurrentSample& s, const TidalPrior& p) {
-  if (s.surface) {
-    // Two fixes' error over the drift's span, and the wind's push.
-    const double fixes = s.span_s > 0.0 ? std::numbers::sqrt2 * kSurfaceFixSigmaM / s.span_s : 0.0;
-    return p.surface_sigma_m_s * p.surface_sigma_m_s + fixes * fixes;
-  }
   const double position = s.span_s > 0.0 ? p.position_sigma_m / s.span_s : 0.0;
   return p.estimate_sigma_m_s * p.estimate_sigma_m_s + position * position;
 }
@@ -128,31 +119,23 @@ std::vector<Hypothesis> weigh(const std::vector<CurrentSample>& samples, double 
     out.push_back({prior, condition(samples, t_w, s_w, prior), 1.0});
     return out;
   }
-  const bool read_surface =
-      std::any_of(samples.begin(), samples.end(), [](const CurrentSample& s) { return s.surface; });
-  const std::vector<double> surface_scales =
-      read_surface ? std::vector<double>(std::begin(kSurfaceScales), std::end(kSurfaceScales))
-                   : std::vector<double>{1.0};
   for (int a = 0; a < kScales; ++a) {
     for (int b = 0; b < kScales; ++b) {
       for (int c = 0; c < kNoiseScales; ++c) {
         for (const PositionScale& position : kPositionScales) {
-          for (const double surface : surface_scales) {
-            Hypothesis h;
-            h.widths = prior;
-            h.widths.mean_sigma_m_s = prior.mean_sigma_m_s * std::ldexp(1.0, kScaleTop - a);
-            h.widths.m2_sigma_m_s = prior.m2_sigma_m_s * std::ldexp(1.0, kScaleTop - b);
-            h.widths.estimate_sigma_m_s = prior.estimate_sigma_m_s * std::ldexp(1.0, -c);
-            h.widths.position_sigma_m = prior.position_sigma_m * position.scale;
-            h.widths.surface_sigma_m_s = prior.surface_sigma_m_s * surface;
-            h.posterior = condition(samples, t_w, s_w, h.widths);
-            // The hyperprior: the pilot's widths the likeliest, each octave away
-            // less so (log-normal, kOctaveSigma octaves), the noises' uniform.
-            const double da = kScaleTop - a, db = kScaleTop - b;
-            h.posterior.log_evidence -= 0.5 * (da * da + db * db) / (kOctaveSigma * kOctaveSigma);
-            h.posterior.log_evidence += std::log(position.prior_weight);
-            if (h.posterior.ok) out.push_back(h);
-          }
+          Hypothesis h;
+          h.widths = prior;
+          h.widths.mean_sigma_m_s = prior.mean_sigma_m_s * std::ldexp(1.0, kScaleTop - a);
+          h.widths.m2_sigma_m_s = prior.m2_sigma_m_s * std::ldexp(1.0, kScaleTop - b);
+          h.widths.estimate_sigma_m_s = prior.estimate_sigma_m_s * std::ldexp(1.0, -c);
+          h.widths.position_sigma_m = prior.position_sigma_m * position.scale;
+          h.posterior = condition(samples, t_w, s_w, h.widths);
+          // The hyperprior: the pilot's widths the likeliest, each octave away
+          // less so (log-normal, kOctaveSigma octaves), the noises' uniform.
+          const double da = kScaleTop - a, db = kScaleTop - b;
+          h.posterior.log_evidence -= 0.5 * (da * da + db * db) / (kOctaveSigma * kOctaveSigma);
+          h.posterior.log_evidence += std::log(position.prior_weight);
+          if (h.posterior.ok) out.push_back(h);
         }
       }
     }
@@ -198,7 +181,6 @@ void check_prior(const TidalPrior& prior) {
   check("m2_sigma_m_s", prior.m2_sigma_m_s, 0.0, 2.0, "m/s");
   check("estimate_sigma_m_s", prior.estimate_sigma_m_s, 0.001, 1.0, "m/s");
   check("position_sigma_m", prior.position_sigma_m, 0.0, 5000.0, "m");
-  check("surface_sigma_m_s", prior.surface_sigma_m_s, 0.001, 2.0, "m/s");
 }
 
 CurrentEstimate predict_with_prior(const std::vector<CurrentSample>& all, double from_utc_s, double to_utc_s,
@@ -241,13 +223,11 @@ TidalPrior favoured_prior(const std::vector<CurrentSample>& samples, double from
   TidalPrior out = prior;
   if (prior.mode != PriorMode::kEvidence) return out;
   out.mean_sigma_m_s = out.m2_sigma_m_s = out.estimate_sigma_m_s = out.position_sigma_m = 0.0;
-  out.surface_sigma_m_s = 0.0;
   for (const Hypothesis& h : weigh(last_day(samples, from_utc_s), from_utc_s, 0.0, prior)) {
     out.mean_sigma_m_s += h.weight * h.widths.mean_sigma_m_s;
     out.m2_sigma_m_s += h.weight * h.widths.m2_sigma_m_s;
     out.estimate_sigma_m_s += h.weight * h.widths.estimate_sigma_m_s;
     out.position_sigma_m += h.weight * h.widths.position_sigma_m;
-    out.surface_sigma_m_s += h.weight * h.widths.surface_sigma_m_s;
   }
   return out;
 }

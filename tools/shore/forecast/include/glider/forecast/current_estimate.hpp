@@ -23,11 +23,6 @@ struct CurrentSample {
   double east_m_s = 0.0;
   double north_m_s = 0.0;
   double span_s = 0.0;  // the segment it is the mean over (0: a point in time)
-  // A reading of the glider's drift at the surface between two fixes of one
-  // call (session 38), not a dive's estimate: the surface current and the
-  // wind's push, so the tidal prior weighs it with a wind noise
-  // (tidal_prior.hpp). Only the tidal prior reads such samples.
-  bool surface = false;
 };
 
 struct CurrentEstimate {
@@ -37,19 +32,15 @@ struct CurrentEstimate {
   double sigma_north_m_s = 0.2;
   std::string method;  // "tidal fit", "trend", "last", "none"
   int samples = 0;
-  int surface_readings = 0;  // surface-drift readings of the last day the tidal prior read (0: none read)
 };
 
 struct TidalPrior;
 
 // The mean current over [from_utc_s, to_utc_s]; `prior` is the tidal prior
 // the fourth rule and the first estimates use (tidal_prior.hpp; its mode off:
-// persistence instead). `surface`: the calls' surface-drift readings, which
-// only the tidal prior's forecast from one or two estimates reads (the
-// tide's phase the one estimate cannot say); the rules and their hindcasts
-// use the dives' estimates alone.
+// persistence instead).
 CurrentEstimate estimate_current(const std::vector<CurrentSample>& samples, double from_utc_s, double to_utc_s,
-                                 const TidalPrior& prior, const std::vector<CurrentSample>& surface = {});
+                                 const TidalPrior& prior);
 CurrentEstimate estimate_current(const std::vector<CurrentSample>& samples, double from_utc_s, double to_utc_s);
 
 // The last sample (zero with a wide sigma when there is none).

@@ -66,11 +66,6 @@ struct ForecastOptions {
   // 68 -> 469 m) and on SIL the positions were mixed (docs/forecast.md).
   bool depth_rate_calibration = true;
   bool depth_rate_drag = false;
-  // The glider's drift at the surface between a call's first and last fix
-  // (the events' gps_fixes) read by the tidal prior as the water at another
-  // time than the dives' means, weighed as noisy (wind) by the evidence
-  // (tidal_prior.hpp, session 38; off: --no-surface-drift).
-  bool surface_drift = true;
 };
 
 struct RunOutcome {
@@ -109,10 +104,9 @@ struct Forecast {
   double baseline_lat_deg = 0.0, baseline_lon_deg = 0.0, baseline_time_utc_s = 0.0;
   double baseline_east_m = 0.0, baseline_north_m = 0.0;
   CurrentEstimate current, baseline_current;
-  TidalPrior prior;                         // the pilot's (or the default) prior the current used
-  TidalPrior favoured;                      // the widths the estimates favour (evidence mode)
-  double favoured_surface_sigma_m_s = 0.0;  // the surface readings' noise they favour (0: none read)
-  double dr_speed_ratio = 1.0;              // true over dead-reckoned speed through the water (the model's calibration)
+  TidalPrior prior;             // the pilot's (or the default) prior the current used
+  TidalPrior favoured;          // the widths the estimates favour (evidence mode)
+  double dr_speed_ratio = 1.0;  // true over dead-reckoned speed through the water (the model's calibration)
   // The glider's own dead-reckoned speed through the water over its recent
   // dives against the model's on the coming one (1: not measured; said, not applied).
   double glider_speed_ratio = 1.0;

@@ -21,7 +21,7 @@ namespace glider::forecast {
 // What the command line gave (unset: the file's, else the default).
 struct PriorOverrides {
   std::optional<PriorMode> mode;
-  std::optional<double> mean_sigma_m_s, m2_sigma_m_s, estimate_sigma_m_s, position_sigma_m, surface_sigma_m_s;
+  std::optional<double> mean_sigma_m_s, m2_sigma_m_s, estimate_sigma_m_s, position_sigma_m;
 };
 
 // The prior for this glider: defaults, then GLIDER/forecast.toml, then

@@ -41,12 +41,6 @@ struct TruthOptions {
   // The GPS's noise, 1 sigma per axis (m): each fix the firmware dead-reckons
   // from and updates its current with, and the shore's events, carry it.
   double gps_noise_m = 3.0;
-  // Each call's first fix (its event's gps_fixes, with the last) is where the
-  // glider came up, with the GPS's noise, moved back by a wind's push over
-  // the call: the drift between the two reads the current plus that wind,
-  // drawn per call, 1 sigma per component (a real glider's surface drift is
-  // the surface water's and the wind's, not the depth average).
-  double surface_wind_sigma_m_s = 0.10;
 };
 
 struct TruthSurfacing {
@@ -56,7 +50,6 @@ struct TruthSurfacing {
   double fix_lat_deg = 0.0, fix_lon_deg = 0.0;
   double dr_lat_deg = 0.0, dr_lon_deg = 0.0;
   bool have_dr = false;
-  double first_fix_lat_deg = 0.0, first_fix_lon_deg = 0.0;  // the call's first fix (at surfaced_utc_s)
   bool have_current = false;
   double water_vx = 0.0, water_vy = 0.0;
   double mission_time_s = 0.0;

@@ -12,11 +12,6 @@
 
 namespace glider::forecast {
 
-// One GPS fix of a call, with its time.
-struct TimedFix {
-  double lat_deg = 0.0, lon_deg = 0.0, utc_s = 0.0;
-};
-
 struct Surfacing {
   std::filesystem::path file;
   std::string glider;
@@ -31,10 +26,6 @@ struct Surfacing {
   std::string reasons;                       // why it surfaced (Because: lines)
   bool surfaced_by_abort = false;            // a Because: line names an abort
   std::string last_abort_cause;              // ABORT HISTORY's last cause (and details), "" if none said
-  // The call's valid fixes, oldest first (the event's optional `gps_fixes`,
-  // session 38): the glider's drift at the surface between the first and the
-  // last is a reading of the water at the call (forecast.cpp).
-  std::vector<TimedFix> surface_fixes;
   bool has_fix() const { return lat_deg && lon_deg; }
 };
 

@@ -31,15 +31,6 @@
 // sea's tide after one estimate, and a strong tide is not held back by the
 // pilot's guess. Mode "fixed" uses the widths as given; "off" uses no prior
 // (persistence).
-//
-// A surface-drift reading (CurrentSample::surface, session 38: the glider's
-// drift between two fixes of one call) is the current at another time than
-// the dives' means - the tide's phase one estimate cannot give - but it is
-// the surface's water and the wind's push, not the depth average: its noise
-// is `surface_sigma_m_s` (0.10 m/s per component by default; in evidence
-// mode scaled by 4, 2, 1, 1/2, equally likely, weighed by the evidence like
-// the other widths) and two fixes' error (kSurfaceFixSigmaM each) over its
-// span.
 #include <string>
 #include <vector>
 
@@ -49,8 +40,6 @@ namespace glider::forecast {
 
 // The principal lunar semidiurnal tide's period (12.42 h).
 inline constexpr double kM2PeriodS = 44714.16;
-// A surface fix's error, 1 sigma per axis (a Slocum's GPS at the surface).
-inline constexpr double kSurfaceFixSigmaM = 10.0;
 
 enum class PriorMode { kEvidence, kFixed, kOff };
 
@@ -59,7 +48,6 @@ struct TidalPrior {
   double m2_sigma_m_s = 0.25;
   double estimate_sigma_m_s = 0.02;
   double position_sigma_m = 100.0;  // per component, over the estimate's segment (span_s)
-  double surface_sigma_m_s = 0.10;  // a surface-drift reading off the depth-averaged current (wind, shear)
   PriorMode mode = PriorMode::kEvidence;
 };
 
@@ -69,7 +57,7 @@ PriorMode parse_prior_mode(const std::string& text);
 
 // Allowed ranges (m/s): the widths 0-2 (0: that part absent), the estimate's
 // noise 0.001-1 (it keeps the regression well posed), the position error
-// 0-5000 m, the surface reading's noise 0.001-2 m/s. Throws
+// 0-5000 m. Throws
 // std::invalid_argument naming the field, the value and the range (NaN too).
 void check_prior(const TidalPrior& prior);
 
