@@ -159,7 +159,7 @@ std::string joined(const std::vector<std::string>& words) {
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-Outcome run(const Draw& d, const std::string& dir) {
+Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg) {
   Outcome o;
   fs::remove_all(dir);
   const health::HealthOptions options = health_sil::health_options(dir, kHoursApart);
@@ -167,7 +167,8 @@ Outcome run(const Draw& d, const std::string& dir) {
   std::set<std::string> other_ids;
   health::HealthRun last;
   for (int k = 0; k < d.surfacings; ++k) {
-    o.error = health_sil::fly_surfacing(dir + "/sbd", d.plan, k, kHoursApart, d.seed + static_cast<std::uint64_t>(k));
+    o.error = health_sil::fly_surfacing(dir + "/sbd", d.plan, k, kHoursApart, d.seed + static_cast<std::uint64_t>(k),
+                                        {}, launch_spread_deg);
     if (!o.error.empty()) return o;
     const double cpu0 = cpu_seconds();
     const auto wall0 = std::chrono::steady_clock::now();
@@ -221,10 +222,14 @@ int main(int argc, char** argv) {
   constexpr std::size_t kAsDraws = 1001;  // --clean not given
   std::size_t draws = 4, clean = kAsDraws;
   std::uint64_t seed = 0;
+  int launch_spread_deg = health_sil::kDefaultLaunchSpreadDeg;
   std::string out = "build/release/benchmark/health";
   tool.add_integer("--draws", draws, 1, 1000, "", "deployments per fault kind");
   tool.add_integer("--clean", clean, 0, 1000, "", "clean 10-day deployments (default: as --draws; 0: none)");
   tool.add_integer("--seed", seed, 0, cli::kMaxSeed, "", "replay a run (default: a fresh seed, printed)");
+  tool.add_integer("--launch-spread", launch_spread_deg, 0, 180, "deg",
+                   "each surfacing starts heading 180 deg +- this (default 10: one long first turn, the box's "
+                   "first leg being north; 180: any heading)");
   app.add_option("--out", out, "scratch folder for the deployments' files");
   std::vector<std::string> kinds{"drag", "buoyancy", "fin", "pump"};
   app.add_option("--faults", kinds, "fault kinds drawn (default: all; a bounded run measures one)")
@@ -234,9 +239,9 @@ int main(int argc, char** argv) {
     if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;
     if (clean == kAsDraws) clean = draws;
     std::printf(
-        "bench_health --seed %llu --draws %zu --clean %zu --faults %s  (surfacings %g h apart, decimated .sbd: "
-        "tests/health/sbdlist.dat)\n",
-        static_cast<unsigned long long>(seed), draws, clean, joined(kinds).c_str(), kHoursApart);
+        "bench_health --seed %llu --draws %zu --clean %zu --faults %s --launch-spread %d  (surfacings %g h apart, "
+        "decimated .sbd: tests/health/sbdlist.dat)\n",
+        static_cast<unsigned long long>(seed), draws, clean, joined(kinds).c_str(), launch_spread_deg, kHoursApart);
     std::mt19937_64 rng(seed);
     std::vector<double> update_s, update_cpu_s;
     std::map<Fault, std::vector<std::pair<Draw, Outcome>>> results;
@@ -250,7 +255,7 @@ int main(int argc, char** argv) {
     std::size_t n = 0;
     for (Fault f : plan) {
       const Draw d = draw(f, rng);
-      const Outcome o = run(d, out + "/draw" + std::to_string(n++));
+      const Outcome o = run(d, out + "/draw" + std::to_string(n++), launch_spread_deg);
       std::printf("  %-48s ", d.text.c_str());
       if (!o.error.empty()) {
         std::printf("ERROR: %s\n", o.error.c_str());

@@ -3,6 +3,7 @@
 // updated one surfacing at a time through its state file, as the shore runs
 // it: the fault is alerted within 3 surfacings of its onset, sized within
 // 20 % with an interval that covers it, and nothing is alerted before it.
+// And the heading fit on surfacings launched anywhere (HealthHeadingFit).
 #include <CppUTest/TestHarness.h>
 
 #include <cmath>
@@ -122,4 +123,85 @@ TEST(HealthPumpLag, AlertedWithinThreeSurfacingsAndSized) {
   const health::Alert* a =
       alerted_within_three("pump_lag", plan, 7, plan.pump_lag_at, health::HealthEffect::kPumpLag, run);
   check_step_sized(*a, plan.pump_lag_s);
+}
+
+namespace {
+
+const health::EffectValue& value_of(const health::SegmentMeasurement& m, health::HealthEffect e) {
+  return m.effects[static_cast<std::size_t>(e)];
+}
+
+}  // namespace
+
+// Health's heading fit (fin effectiveness, roll offset) reads the SIL's
+// nominal fin whatever heading the glider starts a surfacing on, and does
+// not depend on the vertical plane's Reynolds prior (docs/health.md, "Fin
+// effectiveness on any launch heading", "The heading fit flies diagnose's
+// heading vehicle").
+TEST_GROUP(HealthHeadingFit){};
+
+// Launched heading 0, 90 and 270 deg (the box's first leg is north: no
+// long first turn, as the default launch of 180 deg +- 10 flies): the fin
+// is measured on every sample, so the box's turns count whichever yos they
+// fall in. The fit on alternate yos read the first 0.622 [0.463, 0.781]
+// for the nominal 1, its turns all on the held-out yos.
+TEST(HealthHeadingFit, ReadsTheNominalFinOnAnyLaunchHeading) {
+  const std::string dir = fresh_dir("heading_any_launch");
+  int k = 0;
+  for (const int heading_deg : {0, 90, 270}) {
+    // The launch heading is seed % 361 deg with a spread of 180 (sil_deployment.hpp).
+    const std::uint64_t seed = 2 * 361 + heading_deg;
+    const std::string error = health_sil::fly_surfacing(dir + "/sbd", {}, k++, kHoursApart, seed, {}, 180);
+    CHECK_TEXT(error.empty(), error.c_str());
+  }
+  const health::HealthRun run = health::update_health(health_sil::health_options(dir, kHoursApart));
+  int read = 0;
+  for (const health::SegmentMeasurement& m : run.segments) {
+    const health::EffectValue& fin = value_of(m, health::HealthEffect::kFinEffectiveness);
+    if (!fin.judged()) continue;
+    ++read;
+    char text[200];
+    std::snprintf(text, sizeof text, "%s: fin effectiveness %.4f [%.4f, %.4f] (truth 1)", m.name.c_str(), fin.value,
+                  fin.low, fin.high);
+    UT_PRINT(text);
+    CHECK_TEXT(std::abs(fin.value - 1.0) <= 0.05, text);
+    CHECK_TEXT(fin.low <= 1.0 && 1.0 <= fin.high, text);
+  }
+  CHECK_EQUAL(3, read);
+  CHECK_EQUAL(0u, run.assessment.alerts.size());
+}
+
+// The vertical plane flies the skin friction's Reynolds prior (exponent 0.1)
+// where the vehicle file is silent on it; the heading plane flies the file's
+// vehicle with the vertical findings applied (heading_vehicle), so its fin
+// and roll read the same either way. Flying diagnosed_nominal's prior there
+// read the fin 0.0063-0.0068 lower and the roll offsets ~10 % larger on the
+// SIL's .sbd (bench_health seed 546091495's first deployment).
+TEST(HealthHeadingFit, FinAndRollDoNotDependOnTheReynoldsPrior) {
+  const std::string dir = fresh_dir("heading_reynolds_prior");
+  const std::string error = health_sil::fly_surfacing(dir + "/sbd", {}, 0, kHoursApart, 610);
+  CHECK_TEXT(error.empty(), error.c_str());
+  health::HealthOptions stated = health_sil::health_options(dir, kHoursApart);
+  health::HealthOptions silent = stated;
+  silent.vehicle.hydro.cd0_reynolds_exponent_stated = false;
+  silent.state_path = dir + "/state_silent.json";
+  const health::HealthRun a = health::update_health(stated);
+  const health::HealthRun b = health::update_health(silent);
+  CHECK_EQUAL(a.segments.size(), b.segments.size());
+  int compared = 0;
+  for (std::size_t s = 0; s < a.segments.size(); ++s) {
+    const health::EffectValue& fin_a = value_of(a.segments[s], health::HealthEffect::kFinEffectiveness);
+    const health::EffectValue& fin_b = value_of(b.segments[s], health::HealthEffect::kFinEffectiveness);
+    const health::EffectValue& roll_a = value_of(a.segments[s], health::HealthEffect::kRollOffset);
+    const health::EffectValue& roll_b = value_of(b.segments[s], health::HealthEffect::kRollOffset);
+    if (!fin_a.judged()) continue;
+    ++compared;
+    char text[200];
+    std::snprintf(text, sizeof text, "fin %.5f stated, %.5f silent; roll %.5f, %.5f deg", fin_a.value, fin_b.value,
+                  roll_a.value, roll_b.value);
+    UT_PRINT(text);
+    CHECK_TEXT(std::abs(fin_a.value - fin_b.value) <= 0.002, text);
+    CHECK_TEXT(std::abs(roll_a.value - roll_b.value) <= 0.05 * std::abs(roll_a.value) + 2e-4, text);
+  }
+  CHECK_EQUAL(1, compared);
 }

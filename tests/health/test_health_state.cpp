@@ -91,11 +91,11 @@ TEST(HealthState, IncrementalAndNeverTrustedWhenDamaged) {
          const auto at = s.find("\"shared_shift\": ");
          return s.replace(at, 16, "\"shared_shift\": null, \"was\": ");
        }()},
-      {"measured by the version before (no shared shifts)",
+      {"measured by the version before (the heading fit on alternate yos)",
        [&] {
          std::string s = saved;
          const std::string now = "\"measurement_version\": " + std::to_string(health::kMeasurementVersion);
-         return s.replace(s.find(now), now.size(), "\"measurement_version\": 5");
+         return s.replace(s.find(now), now.size(), "\"measurement_version\": 6");
        }()},
       {"wrong schema",
        [&] {

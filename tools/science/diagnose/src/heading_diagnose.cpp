@@ -155,6 +155,7 @@ LinkFit run_link(HeadingLink link, const HeadingValues& nominal, const HeadingRe
   if (!options.fit_only.empty()) {
     select.fit_only = effects_of(link, options.fit_only);
     select.select = false;
+    select.fit_on_all_samples = options.fit_on_all_samples;
   }
   return select_heading_effects(link, candidates, nominal, residuals, samples, select);
 }

@@ -461,6 +461,14 @@ void judge_pairs(const Problem& problem, HeadingSelection& selection, const Effe
   }
 }
 
+// The samples with the held-out ones trained on too (both halves as thinned).
+LinkSamples on_all(const LinkSamples& samples) {
+  LinkSamples s = samples;
+  s.train.insert(s.train.end(), samples.heldout.begin(), samples.heldout.end());
+  std::sort(s.train.begin(), s.train.end());
+  return s;
+}
+
 double rms_of(const Problem& problem, const HeadingValues& v, const std::vector<std::size_t>& which) {
   return which.empty() ? kNaN : problem.rms(v, which);
 }
@@ -478,7 +486,9 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
   out.heldout_samples = samples.heldout.size();
   out.values = nominal;
   if (samples.train.empty() || samples.heldout.empty()) return out;
-  Problem problem(nominal, residuals, samples, options.intervals);
+  const LinkSamples fitted_on = options.fit_on_all_samples && !options.fit_only.empty() ? on_all(samples) : samples;
+  out.train_samples = fitted_on.train.size();
+  Problem problem(nominal, residuals, fitted_on, options.intervals);
   problem.set_penalty_scale(std::max(1e-6, problem.rms(nominal, samples.all)));
   out.baseline_rms = rms_of(problem, nominal, samples.all);
   out.baseline_rms_dive = rms_of(problem, nominal, samples.dives);

@@ -8,6 +8,7 @@
 
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/heading_diagnose.hpp"
+#include "glider/diagnose/heading_report.hpp"
 #include "glider/diagnose/observations.hpp"
 #include "glider/diagnose/trend.hpp"
 #include "glider/fitting_core/intervals.hpp"
@@ -37,8 +38,10 @@ EffectValue& at(EffectValues& values, HealthEffect e) { return values[static_cas
 
 // The vertical plane: drag and offset fitted jointly (+ the pump lag where
 // the dynamic model can run: it needs the turns sampled densely).
-// Returns the vehicle as this segment flew it (the nominal with the
-// segment's vertical findings): the heading plane's speeds come from it.
+// Returns the vehicle the heading plane flies on this segment: the vertical
+// findings applied as glider-diagnose applies them (heading_vehicle: the
+// file's vehicle, not diagnosed_nominal's Reynolds prior; docs/health.md,
+// "The heading fit flies diagnose's heading vehicle").
 model::VehicleParams measure_vertical(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
                                       SegmentMeasurement& m) {
   const diagnose::Observations obs = diagnose::prepare_observations(log);
@@ -70,7 +73,7 @@ model::VehicleParams measure_vertical(const model::VehicleParams& nominal, const
         "the inflections: steady glides only");
   }
   m.judged = at(m.effects, HealthEffect::kDragChange).judged();
-  return diagnose::apply(diagnose::diagnosed_nominal(nominal, d), d.extended, d.thermal_reference_c);
+  return diagnose::heading_vehicle(nominal, d);
 }
 
 // The segment with m_fin as the file stored it: the heading plane knows
@@ -97,6 +100,8 @@ void measure_heading(const model::VehicleParams& nominal, const flightlog::Fligh
     diagnose::HeadingDiagnoseOptions options;
     options.track.fin_stored_on_change = decimated;
     options.fit_only = {diagnose::HeadingEffect::kFinEffectiveness, diagnose::HeadingEffect::kRollOffset};
+    // A measurement: every turn counts, whichever yo it fell in.
+    options.fit_on_all_samples = true;
     const diagnose::HeadingDiagnosis d = diagnose::diagnose_heading(nominal, with_fin_as_stored(held, raw), options);
     const double logged_roll = d.roll_logged ? d.logged_roll_rad : 0.0;
     for (const diagnose::HeadingFinding& f : d.yaw.findings) {

@@ -88,6 +88,7 @@ struct HeadingDiagnoseOptions {
   // heading reading as logged).
   bool yaw_noise_model = true;
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
+  bool fit_on_all_samples = false;      // fit_only on the held-out yos too (HeadingSelectOptions)
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
   // Fly the closed-loop check (heading_closed_loop.hpp; not with fit_only).
   bool closed_loop = true;

@@ -70,6 +70,14 @@ struct HeadingSelectOptions {
   // LinkSamples::yo and phase name each sample's glide and yo).
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;
   bool select = true;  // false (and no fit_only): the baseline alone
+  // fit_only's effects fitted on every sample, the held-out yos too: a
+  // measurement of named effects selects nothing, and a split by yo can put
+  // every turn (what measures the fin) on the held-out side - health's box
+  // turns fell on alternate yos and left the fin to the straight glides'
+  // small corrections, read 0.55-1.01 (median 0.72) for 1 (docs/health.md
+  // "Fin effectiveness on any launch heading"). The held-out scores are
+  // then in-sample (no selection reads them).
+  bool fit_on_all_samples = false;
   // Identifiability: an unused candidate whose signature correlates with a
   // finding's at least this much is fitted in its place (the vertical plane's
   // DiagnoseOptions::ambiguity_screen_correlation).

@@ -25,8 +25,9 @@ inline constexpr const char* kStateSchema = "glider-health-state/1";
 // 6: the Reynolds prior's uncertainty in the intervals, intervals checked
 // against the residual's profile, the ballast's knot before a change (session
 // 36, which changed measurements without the bump), each value's shared shift
-// stored (session 37).
-inline constexpr int kMeasurementVersion = 6;
+// stored (session 37); 7: the heading fit on diagnose's heading vehicle and
+// on every yo (session 38).
+inline constexpr int kMeasurementVersion = 7;
 
 struct HealthState {
   std::string glider;
