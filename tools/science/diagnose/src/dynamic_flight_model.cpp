@@ -147,20 +147,28 @@ std::size_t DynamicFlightModel::last_needed(std::size_t end, std::size_t last_re
 // data). So the two body velocities at the start are nuisance
 // parameters, fitted (Gauss-Newton) to the measured depth over the
 // spin-up, which is never scored. The start state depends on the values
-// (the depth lag aside), the density source and the water's profile only:
-// they are remembered (kStartStates; a tenth of the start fits of a real log's
-// diagnosis repeat one: the Jacobian's depth-lag column, a refit), the
-// same bits.
+// (the depth lag and the water's velocity aside), the density source and
+// the water the spin-up meets only (RunFlight::spin_up_water): they are
+// remembered (kStartStateBytes; about a third of the start fits of a real
+// log's diagnosis repeat one: the Jacobian's depth-lag column and a
+// profile's bins below the spin-up, a refit), the same bits.
 void DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& x,
-                                     bool use_ctd, const VerticalVelocityProfile* profile, double& v1,
-                                     double& v3) const {
+                                     bool use_ctd, double& v1, double& v3) const {
   EffectValues start_key = x;
   start_key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;
-  const std::uint64_t hash = BitsHash().add(std::span<const double>(start_key)).add(use_ctd).add(profile).value();
+  start_key[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)] = 0.0;
+  const detail::RunFlight::SpinUpWater water = run_flight.spin_up_water();
+  const std::uint64_t hash = BitsHash()
+                                 .add(std::span<const double>(start_key))
+                                 .add(use_ctd)
+                                 .add(water.start_w)
+                                 .add(water.displacement)
+                                 .value();
   std::unordered_multimap<std::uint64_t, StartState>& starts = start_states_[run];
   for (auto [it, end] = starts.equal_range(hash); it != end; ++it) {
     const StartState& s = it->second;
-    if (same_bits(s.values, start_key) && s.use_ctd == use_ctd && same_profile(s.has_profile, s.profile, profile)) {
+    if (same_bits(s.values, start_key) && s.use_ctd == use_ctd &&
+        same_bits(std::span(&s.start_w, 1), std::span(&water.start_w, 1)) && same_bits(s.water, water.displacement)) {
       v1 = s.v1;
       v3 = s.v3;
       return;
@@ -169,10 +177,11 @@ void DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::s
   v1 = 0.0;
   v3 = 0.0;
   run_flight.fit_start(v1, v3, fit_buffer_, fit_relative_buffer_);
-  if (start_state_count_ >= kStartStates) return;
-  ++start_state_count_;
-  starts.emplace(hash, StartState{start_key, use_ctd, profile != nullptr,
-                                  profile != nullptr ? *profile : VerticalVelocityProfile{}, v1, v3});
+  const std::size_t bytes = sizeof(StartState) + water.displacement.size_bytes();
+  if (start_state_bytes_ + bytes > kStartStateBytes) return;
+  start_state_bytes_ += bytes;
+  starts.emplace(hash, StartState{start_key, use_ctd, water.start_w,
+                                  std::vector<double>(water.displacement.begin(), water.displacement.end()), v1, v3});
 }
 
 // The run's flight through the water, reused when only the water's
@@ -284,7 +293,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     while (next < samples.size() && samples[next] < end) ++next;
     AskedRun& a = asked.emplace_back(AskedRun{detail::RunFlight(conditions, t.run_first[run], end, run_stages_[run]),
                                               run, 0, end - 1, 0.0, 0.0, nullptr});
-    start_state(a.run_flight, run, x, use_ctd, profile, a.v1, a.v3);
+    start_state(a.run_flight, run, x, use_ctd, a.v1, a.v3);
     a.last = last_needed(end, samples.back());
     a.flight = kept_flight(run, key, use_ctd, a.v1, a.v3, a.last, with_speed);
   }

@@ -410,18 +410,19 @@ void RunFlight::cache_stages(std::size_t last) const {
 }
 
 void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {
-  const Track& t = t_;
+  integrate_water(flown);
   z.assign(rel.size(), kNaN);
-  z[0] = t.depth_m[first_] + rel[0];
-  double water = 0.0;
-  const bool bins_kept = c_.has_profile() && stages_.water.size() < flown - first_ && this->bins_kept();
-  for (std::size_t i = first_; i < flown; ++i) {
-    // The water's displacement, integrated once in this water (in order, as fly() caches its stages).
-    if (i - first_ < stages_.water.size()) {
-      water = stages_.water[i - first_];
-      z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
-      continue;
-    }
+  z[0] = t_.depth_m[first_] + rel[0];
+  for (std::size_t i = first_; i < flown; ++i)
+    z[i + 1 - first_] = t_.depth_m[first_] + rel[i + 1 - first_] + stages_.water[i - first_];
+}
+
+void RunFlight::integrate_water(std::size_t flown) const {
+  const Track& t = t_;
+  if (stages_.water.size() >= flown - first_) return;
+  double water = stages_.water.empty() ? 0.0 : stages_.water.back();
+  const bool bins_kept = c_.has_profile() && this->bins_kept();
+  for (std::size_t i = first_ + stages_.water.size(); i < flown; ++i) {
     const double dt = t.time_s[i + 1] - t.time_s[i];
     const int steps = c_.pitch.steps(i);
     const double h = dt / steps;
@@ -444,8 +445,12 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
     }
     stages_.water.push_back(water);
-    z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
   }
+}
+
+RunFlight::SpinUpWater RunFlight::spin_up_water() const {
+  integrate_water(spin_up_last_);
+  return {std::span<const double>(stages_.water).first(spin_up_last_ - first_), c_.water_w(in0_.depth_m)};
 }
 
 bool RunFlight::bins_kept() const {

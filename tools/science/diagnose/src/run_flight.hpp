@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "glider/diagnose/flight_model.hpp"
@@ -197,9 +198,21 @@ class RunFlight {
   // the measured depth, from the steady glide at the first pitch scaled to
   // the measured depth rate. `z` and `rel` are work buffers.
   void fit_start(double& v1, double& v3, std::vector<double>& z, std::vector<double>& rel) const;
+  // All of the water fit_start reads: its vertical displacement after each
+  // of the spin-up's intervals (as ground_depth integrates it; kept in the
+  // run's RunStages) and its velocity at the first depth (the guess's).
+  // The same bits here, the same start state from the same values.
+  struct SpinUpWater {
+    std::span<const double> displacement;
+    double start_w;
+  };
+  SpinUpWater spin_up_water() const;
 
  private:
   void guess_start(double& v1, double& v3) const;
+  // The water's vertical displacement after each interval up to sample
+  // `flown` into RunStages::water (in order; those kept are not integrated again).
+  void integrate_water(std::size_t flown) const;
   // N flights of fly() side by side through the same stages (each its own
   // start, z and stop_above; speeds u of the first only), each the same bits
   // as flown alone: a stage is a chain of dependent operations (a division,
