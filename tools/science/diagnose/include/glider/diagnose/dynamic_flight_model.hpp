@@ -22,6 +22,7 @@ namespace detail {
 class RunFlight;        // one run's flight (src/run_flight.hpp)
 class StagePitchTable;  // the track's pitch at every RK4 stage (src/run_flight.hpp)
 struct RunStages;       // a run's stage inputs, kept between its flights (src/run_flight.hpp)
+struct SpinUpEnd;       // where a flight stands at the spin-up's end (src/run_flight.hpp)
 }  // namespace detail
 
 class DynamicFlightModel final : public DepthRateModel {
@@ -52,8 +53,10 @@ class DynamicFlightModel final : public DepthRateModel {
 
   struct RelativeFlight;
   std::size_t last_needed(std::size_t end, std::size_t last_requested) const;
-  void start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& values, bool use_ctd,
-                   double& v1, double& v3) const;
+  // The run's start state into (v1, v3), and where its flight stands at the
+  // spin-up's end (kept here, or in `own`: null where there is none).
+  const detail::SpinUpEnd* start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& values,
+                                       bool use_ctd, double& v1, double& v3, detail::SpinUpEnd& own) const;
   const RelativeFlight* kept_flight(std::size_t run, const EffectValues& key, bool use_ctd, double v1, double v3,
                                     std::size_t last, bool with_speed) const;
   RelativeFlight& flight_slot(std::size_t run) const;
@@ -106,6 +109,7 @@ class DynamicFlightModel final : public DepthRateModel {
     double start_w = 0.0;
     std::vector<double> water;
     double v1 = 0.0, v3 = 0.0;
+    std::unique_ptr<detail::SpinUpEnd> end;  // where the flight from (v1, v3) stands at the spin-up's end
   };
   static constexpr std::size_t kStartStateBytes = std::size_t{48} << 20;
   mutable std::vector<std::unordered_multimap<std::uint64_t, StartState>> start_states_;
