@@ -147,32 +147,47 @@ std::size_t DynamicFlightModel::last_needed(std::size_t end, std::size_t last_re
 // data). So the two body velocities at the start are nuisance
 // parameters, fitted (Gauss-Newton) to the measured depth over the
 // spin-up, which is never scored. The start state depends on the values
-// (the depth lag aside), the density source and the water's profile only:
-// they are remembered (kStartStates; a tenth of the start fits of a real log's
-// diagnosis repeat one: the Jacobian's depth-lag column, a refit), the
-// same bits.
-void DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& x,
-                                     bool use_ctd, const VerticalVelocityProfile* profile, double& v1,
-                                     double& v3) const {
+// (the depth lag and the water's velocity aside), the density source and
+// the water the spin-up meets only (RunFlight::spin_up_water): they are
+// remembered (kStartStateBytes; about a third of the start fits of a real
+// log's diagnosis repeat one: the Jacobian's depth-lag column and a
+// profile's bins below the spin-up, a refit), the same bits.
+const detail::SpinUpEnd* DynamicFlightModel::start_state(const detail::RunFlight& run_flight, std::size_t run,
+                                                         const EffectValues& x, bool use_ctd, double& v1, double& v3,
+                                                         detail::SpinUpEnd& own) const {
   EffectValues start_key = x;
   start_key[static_cast<std::size_t>(Effect::kDepthLag)] = 0.0;
-  const std::uint64_t hash = BitsHash().add(std::span<const double>(start_key)).add(use_ctd).add(profile).value();
+  start_key[static_cast<std::size_t>(Effect::kVerticalWaterVelocity)] = 0.0;
+  const detail::RunFlight::SpinUpWater water = run_flight.spin_up_water();
+  const std::uint64_t hash = BitsHash()
+                                 .add(std::span<const double>(start_key))
+                                 .add(use_ctd)
+                                 .add(water.start_w)
+                                 .add(water.displacement)
+                                 .value();
   std::unordered_multimap<std::uint64_t, StartState>& starts = start_states_[run];
   for (auto [it, end] = starts.equal_range(hash); it != end; ++it) {
     const StartState& s = it->second;
-    if (same_bits(s.values, start_key) && s.use_ctd == use_ctd && same_profile(s.has_profile, s.profile, profile)) {
+    if (same_bits(s.values, start_key) && s.use_ctd == use_ctd &&
+        same_bits(std::span(&s.start_w, 1), std::span(&water.start_w, 1)) && same_bits(s.water, water.displacement)) {
       v1 = s.v1;
       v3 = s.v3;
-      return;
+      return s.end.get();
     }
   }
   v1 = 0.0;
   v3 = 0.0;
-  run_flight.fit_start(v1, v3, fit_buffer_, fit_relative_buffer_);
-  if (start_state_count_ >= kStartStates) return;
-  ++start_state_count_;
-  starts.emplace(hash, StartState{start_key, use_ctd, profile != nullptr,
-                                  profile != nullptr ? *profile : VerticalVelocityProfile{}, v1, v3});
+  run_flight.fit_start(v1, v3, fit_buffer_, fit_relative_buffer_, own);
+  const std::size_t bytes = sizeof(StartState) + water.displacement.size_bytes() + own.rel.size() * sizeof(double);
+  if (start_state_bytes_ + bytes > kStartStateBytes) return &own;
+  start_state_bytes_ += bytes;
+  StartState& kept =
+      starts
+          .emplace(hash, StartState{start_key, use_ctd, water.start_w,
+                                    std::vector<double>(water.displacement.begin(), water.displacement.end()), v1, v3,
+                                    std::make_unique<detail::SpinUpEnd>(std::move(own))})
+          ->second;
+  return kept.end.get();
 }
 
 // The run's flight through the water, reused when only the water's
@@ -274,6 +289,8 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     std::size_t run, last, fly_to;
     double v1, v3;
     const RelativeFlight* flight;  // null: to fly
+    detail::SpinUpEnd own;         // the spin-up's end where the start states do not keep it
+    const detail::SpinUpEnd* spin_up;
   };
   std::vector<AskedRun> asked;
   asked.reserve(t.run_first.size());
@@ -283,8 +300,15 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     if (samples[next] >= end) continue;  // nothing requested in this run (every sample is in a run)
     while (next < samples.size() && samples[next] < end) ++next;
     AskedRun& a = asked.emplace_back(AskedRun{detail::RunFlight(conditions, t.run_first[run], end, run_stages_[run]),
-                                              run, 0, end - 1, 0.0, 0.0, nullptr});
-    start_state(a.run_flight, run, x, use_ctd, profile, a.v1, a.v3);
+                                              run,
+                                              0,
+                                              end - 1,
+                                              0.0,
+                                              0.0,
+                                              nullptr,
+                                              {},
+                                              nullptr});
+    a.spin_up = start_state(a.run_flight, run, x, use_ctd, a.v1, a.v3, a.own);
     a.last = last_needed(end, samples.back());
     a.flight = kept_flight(run, key, use_ctd, a.v1, a.v3, a.last, with_speed);
   }
@@ -309,7 +333,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     for (std::size_t k = 0; k < N; ++k) {
       AskedRun& a = *group[k];
       slots[k] = &flight_slot(a.run);
-      q[k] = {&a.run_flight, a.v1, a.v3, a.fly_to, &slots[k]->depth};
+      q[k] = {&a.run_flight, a.v1, a.v3, a.fly_to, &slots[k]->depth, a.spin_up};
     }
     const std::array<std::size_t, N> flown = detail::RunFlight::fly_runs<N>(q);
     for (std::size_t k = 0; k < N; ++k) keep(*group[k], *slots[k], flown[k]);
@@ -317,11 +341,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   std::span<AskedRun* const> left(ready);
   for (; left.size() >= kRunsTogether; left = left.subspan(kRunsTogether)) fly_together(left.first<kRunsTogether>());
   if (left.size() == 2) fly_together(left.first<2>());
-  if (left.size() == 1) {
-    AskedRun& a = *left[0];
-    RelativeFlight& slot = flight_slot(a.run);
-    keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.fly_to, slot.depth, nullptr));
-  }
+  if (left.size() == 1) fly_together(left.first<1>());
   next = 0;
   for (const AskedRun& a : asked)
     next = read_run(a.run_flight, *a.flight, a.last, depth_lag_s, samples, next, depth_rate, speed);

@@ -123,6 +123,8 @@ RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t e
   }
   in0_ = inputs(first, 0, 1, cc_to_m3(t_.ballast_cc[first]), 0);
   while (spin_up_last_ + 1 < end_ && t_.time_s[spin_up_last_ + 1] - t_.time_s[first_] <= t_.spin_up_s) ++spin_up_last_;
+  for (std::size_t i = first_; i < spin_up_last_; ++i)
+    spin_up_stage_ += 3 * static_cast<std::size_t>(c_.pitch.steps(i));
 }
 
 model::PrescribedPitchInputs RunFlight::inputs(std::size_t i, int k, int n, double lagged0, int k0) const {
@@ -190,7 +192,8 @@ std::size_t RunFlight::fly(double v1, double v3, std::size_t last, std::vector<d
 template <std::size_t N>
 std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3,
                                             std::size_t last, const std::array<std::vector<double>*, N>& z,
-                                            std::vector<double>* u, const std::array<double, N>& stop_above) const {
+                                            std::vector<double>* u, const std::array<double, N>& stop_above,
+                                            std::array<SpinUpEnd, N>* ends) const {
   const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
   refresh_pumped(last);  // the cached stages it reads, for this flight's pump lag
   // Each flight's own skin-friction anchors, fresh: a function of its (v1, v3) and the run alone, whatever flew
@@ -279,6 +282,12 @@ std::array<std::size_t, N> RunFlight::fly_n(const std::array<double, N>& v1, con
     if (u != nullptr && flying[0])
       (*u)[i + 1 - first_] = dynamics.velocities(p[0], inputs(i, 2 * steps, steps, lagged, 2 * steps)).norm();
   }
+  for (std::size_t k = 0; k < N && ends != nullptr; ++k) {
+    (*ends)[k].friction.reset();
+    if (!flying[k] || flown[k] != last) continue;
+    (*ends)[k].p = p[k];
+    (*ends)[k].friction.emplace(friction[k]);
+  }
   return flown;
 }
 
@@ -335,8 +344,11 @@ std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>&
   for (std::size_t k = 0; k < N; ++k) {
     if (k > 0) copies[k].emplace(q[k].run->c_.dynamics);
     const model::PrescribedPitchDynamics& dynamics = k > 0 ? *copies[k] : q[k].run->c_.dynamics;
-    cursors[k].emplace(StepCursor{q[k].run->view(), dynamics, dynamics.skin_friction(), *q[k].z, q[k].last,
-                                  dynamics.impulse(q[k].v1, q[k].v3, q[k].run->in0_)});
+    const SpinUpEnd* from = q[k].from;
+    const bool resume = from != nullptr && from->friction.has_value();
+    cursors[k].emplace(StepCursor{q[k].run->view(), dynamics, resume ? *from->friction : dynamics.skin_friction(),
+                                  *q[k].z, q[k].last,
+                                  resume ? from->p : Impulse(dynamics.impulse(q[k].v1, q[k].v3, q[k].run->in0_))});
   }
   std::array<StepCursor*, N> f;
   for (std::size_t k = 0; k < N; ++k) {
@@ -345,7 +357,14 @@ std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>&
     c.z.assign(c.last - c.view.first + 1, kNaN);
     c.z[0] = 0.0;
     c.i = c.view.first;
-    c.flown = c.view.first;
+    const SpinUpEnd* from = q[k].from;
+    if (from != nullptr && from->friction.has_value()) {  // on from the spin-up's end
+      const RunFlight& run = *q[k].run;
+      std::copy(from->rel.begin(), from->rel.end(), c.z.begin());
+      c.i = run.spin_up_last_;
+      c.stage = run.spin_up_stage_;
+    }
+    c.flown = c.i;
     c.open_interval();
   }
   const Derivative kIdle{Impulse::Zero(), 0.0};
@@ -389,6 +408,7 @@ std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>&
   return flown;
 }
 
+template std::array<std::size_t, 1> RunFlight::fly_runs<1>(const std::array<RunQuestion, 1>&);
 template std::array<std::size_t, 2> RunFlight::fly_runs<2>(const std::array<RunQuestion, 2>&);
 template std::array<std::size_t, 3> RunFlight::fly_runs<3>(const std::array<RunQuestion, 3>&);
 
@@ -410,18 +430,19 @@ void RunFlight::cache_stages(std::size_t last) const {
 }
 
 void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, std::vector<double>& z) const {
-  const Track& t = t_;
+  integrate_water(flown);
   z.assign(rel.size(), kNaN);
-  z[0] = t.depth_m[first_] + rel[0];
-  double water = 0.0;
-  const bool bins_kept = c_.has_profile() && stages_.water.size() < flown - first_ && this->bins_kept();
-  for (std::size_t i = first_; i < flown; ++i) {
-    // The water's displacement, integrated once in this water (in order, as fly() caches its stages).
-    if (i - first_ < stages_.water.size()) {
-      water = stages_.water[i - first_];
-      z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
-      continue;
-    }
+  z[0] = t_.depth_m[first_] + rel[0];
+  for (std::size_t i = first_; i < flown; ++i)
+    z[i + 1 - first_] = t_.depth_m[first_] + rel[i + 1 - first_] + stages_.water[i - first_];
+}
+
+void RunFlight::integrate_water(std::size_t flown) const {
+  const Track& t = t_;
+  if (stages_.water.size() >= flown - first_) return;
+  double water = stages_.water.empty() ? 0.0 : stages_.water.back();
+  const bool bins_kept = c_.has_profile() && this->bins_kept();
+  for (std::size_t i = first_ + stages_.water.size(); i < flown; ++i) {
     const double dt = t.time_s[i + 1] - t.time_s[i];
     const int steps = c_.pitch.steps(i);
     const double h = dt / steps;
@@ -444,8 +465,12 @@ void RunFlight::ground_depth(std::size_t flown, const std::vector<double>& rel, 
       water += h / 6.0 * (wa + 2.0 * wb + 2.0 * wb + wc);
     }
     stages_.water.push_back(water);
-    z[i + 1 - first_] = t.depth_m[first_] + rel[i + 1 - first_] + water;
   }
+}
+
+RunFlight::SpinUpWater RunFlight::spin_up_water() const {
+  integrate_water(spin_up_last_);
+  return {std::span<const double>(stages_.water).first(spin_up_last_ - first_), c_.water_w(in0_.depth_m)};
 }
 
 bool RunFlight::bins_kept() const {
@@ -493,7 +518,9 @@ void RunFlight::guess_start(double& v1, double& v3) const {
   }
 }
 
-void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::vector<double>& rel) const {
+void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::vector<double>& rel,
+                          SpinUpEnd& end) const {
+  end.friction.reset();
   guess_start(v1, v3);
   const Track& t = t_;
   const std::size_t fit_last = spin_up_last_;
@@ -522,8 +549,16 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
   std::vector<double>* const trial_flights_all[] = {&rel, &rel_a, &rel_b, &rel_c};
   std::array<std::vector<double>*, kTrialsTogether> trial_flights;
   std::copy_n(std::begin(trial_flights_all), kTrialsTogether, trial_flights.begin());
+  std::array<SpinUpEnd, 3> guess_ends;
   const std::array<std::size_t, 3> flown = fly_n<3>({v1, v1 + kDelta, v1}, {v3, v3, v3 + kDelta}, fit_last,
-                                                    {&rel, &rel_a, &rel_b}, nullptr, {kInf, kInf, kInf});
+                                                    {&rel, &rel_a, &rel_b}, nullptr, {kInf, kInf, kInf}, &guess_ends);
+  // Where the flight from the start state stands at the spin-up's end: the guess's, then each step taken.
+  auto stood = [&](const SpinUpEnd& e, const std::vector<double>& flight) {
+    end.p = e.p;
+    end.friction = e.friction;
+    end.rel.assign(flight.begin(), flight.end());
+  };
+  stood(guess_ends[0], rel);
   if (!(residual(flown[0], rel, r) && residual(flown[1], rel_a, r_a) && residual(flown[2], rel_b, r_b))) return;
   Eigen::MatrixXd jac(r.size(), 2);
   jac.col(0) = (r_a - r) / kDelta;
@@ -558,9 +593,11 @@ void RunFlight::fit_start(double& v1, double& v3, std::vector<double>& zf, std::
       }
       std::array<double, kTrialsTogether> bound;
       bound.fill(stop_above);
-      const auto reached = fly_n<kTrialsTogether>(a, b, fit_last, trial_flights, nullptr, bound);
+      std::array<SpinUpEnd, kTrialsTogether> trial_ends;
+      const auto reached = fly_n<kTrialsTogether>(a, b, fit_last, trial_flights, nullptr, bound, &trial_ends);
       for (std::size_t k = 0; k < kTrialsTogether; ++k) {
         if (residual(reached[k], *trial_flights[k], r_trial) && r_trial.squaredNorm() <= r.squaredNorm()) {
+          stood(trial_ends[k], *trial_flights[k]);
           v1 = a[k];
           v3 = b[k];
           r.swap(r_trial);

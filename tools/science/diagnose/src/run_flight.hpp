@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "glider/diagnose/flight_model.hpp"
@@ -125,6 +127,17 @@ struct RunStages {
   std::vector<std::uint32_t> bins;
 };
 
+// Where the start-state fit's flight from the fitted start state stood at
+// the spin-up's last sample: its impulses, its skin-friction anchors and its
+// relative depth at each sample so far. A main flight from that start state
+// goes on from there (RunFlight::fly_runs) instead of flying the spin-up
+// again: the same stages in the same order, so the same bits.
+struct SpinUpEnd {
+  model::PrescribedPitchDynamics::Impulse p = model::PrescribedPitchDynamics::Impulse::Zero();
+  std::optional<model::SkinFrictionFactor> friction;  // empty: nothing to go on from
+  std::vector<double> rel;
+};
+
 class RunFlight {
  public:
   // The run of samples [first, end); `stages` is kept by the caller between
@@ -178,12 +191,15 @@ class RunFlight {
   // it. Every run's stages must be cached up to its `last`
   // (cache_stages); no speeds, no misfit bound. The flights after the
   // first get their own copy of the dynamics (its stage cache). Returns
-  // each flight's last sample reached.
+  // each flight's last sample reached. `from` (optional, its friction
+  // set): the flight goes on from the spin-up's end, (v1, v3) the start
+  // state the fit flew it from.
   struct RunQuestion {
     const RunFlight* run;
     double v1, v3;
     std::size_t last;
     std::vector<double>* z;
+    const SpinUpEnd* from = nullptr;
   };
   template <std::size_t N>
   static std::array<std::size_t, N> fly_runs(const std::array<RunQuestion, N>& q);
@@ -195,21 +211,38 @@ class RunFlight {
 
   // The start state (body velocities) that flies the spin-up closest to
   // the measured depth, from the steady glide at the first pitch scaled to
-  // the measured depth rate. `z` and `rel` are work buffers.
-  void fit_start(double& v1, double& v3, std::vector<double>& z, std::vector<double>& rel) const;
+  // the measured depth rate. `z` and `rel` are work buffers. `end`: where
+  // the flight from the fitted start state stood at the spin-up's last
+  // sample (its friction left empty where none flew there).
+  void fit_start(double& v1, double& v3, std::vector<double>& z, std::vector<double>& rel, SpinUpEnd& end) const;
+  // All of the water fit_start reads: its vertical displacement after each
+  // of the spin-up's intervals (as ground_depth integrates it; kept in the
+  // run's RunStages) and its velocity at the first depth (the guess's).
+  // The same bits here, the same start state from the same values.
+  struct SpinUpWater {
+    std::span<const double> displacement;
+    double start_w;
+  };
+  SpinUpWater spin_up_water() const;
 
  private:
   void guess_start(double& v1, double& v3) const;
+  // The water's vertical displacement after each interval up to sample
+  // `flown` into RunStages::water (in order; those kept are not integrated again).
+  void integrate_water(std::size_t flown) const;
   // N flights of fly() side by side through the same stages (each its own
   // start, z and stop_above; speeds u of the first only), each the same bits
   // as flown alone: a stage is a chain of dependent operations (a division,
   // a square root, the skin friction's series, atan2) that leaves the core
   // mostly idle, and independent flights fill it. Returns each flight's
   // last sample reached.
+  // ends (optional): where each flight that reached `last` stood there
+  // (the others' friction left as it was).
   template <std::size_t N>
   std::array<std::size_t, N> fly_n(const std::array<double, N>& v1, const std::array<double, N>& v3, std::size_t last,
                                    const std::array<std::vector<double>*, N>& z, std::vector<double>* u,
-                                   const std::array<double, N>& stop_above) const;
+                                   const std::array<double, N>& stop_above,
+                                   std::array<SpinUpEnd, N>* ends = nullptr) const;
   // Whether the profile's bins are kept (RunStages::bins; a profile with
   // bins), for its geometry: once per ground_depth.
   bool bins_kept() const;
@@ -224,6 +257,7 @@ class RunFlight {
   model::PrescribedPitchInputs in0_;
   // The spin-up's last sample (the start-state fit flies [first_, spin_up_last_]).
   std::size_t spin_up_last_;
+  std::size_t spin_up_stage_ = 0;  // the first of RunStages::stages after it
   RunStages& stages_;
 };
 

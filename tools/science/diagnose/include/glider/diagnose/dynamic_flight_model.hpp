@@ -22,6 +22,7 @@ namespace detail {
 class RunFlight;        // one run's flight (src/run_flight.hpp)
 class StagePitchTable;  // the track's pitch at every RK4 stage (src/run_flight.hpp)
 struct RunStages;       // a run's stage inputs, kept between its flights (src/run_flight.hpp)
+struct SpinUpEnd;       // where a flight stands at the spin-up's end (src/run_flight.hpp)
 }  // namespace detail
 
 class DynamicFlightModel final : public DepthRateModel {
@@ -52,8 +53,10 @@ class DynamicFlightModel final : public DepthRateModel {
 
   struct RelativeFlight;
   std::size_t last_needed(std::size_t end, std::size_t last_requested) const;
-  void start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& values, bool use_ctd,
-                   const VerticalVelocityProfile* profile, double& v1, double& v3) const;
+  // The run's start state into (v1, v3), and where its flight stands at the
+  // spin-up's end (kept here, or in `own`: null where there is none).
+  const detail::SpinUpEnd* start_state(const detail::RunFlight& run_flight, std::size_t run, const EffectValues& values,
+                                       bool use_ctd, double& v1, double& v3, detail::SpinUpEnd& own) const;
   const RelativeFlight* kept_flight(std::size_t run, const EffectValues& key, bool use_ctd, double v1, double v3,
                                     std::size_t last, bool with_speed) const;
   RelativeFlight& flight_slot(std::size_t run) const;
@@ -89,22 +92,28 @@ class DynamicFlightModel final : public DepthRateModel {
   };
   mutable std::vector<RunRelativeFlights> relative_flights_;
   // Each run's start states (the body velocities fitted on its spin-up) by
-  // what they depend on: the values but the depth lag, the density source,
-  // the water's profile. Up to kStartStates of them (a few hundred bytes
-  // each; comet-2016's diagnosis fits ~20000): a start state is a function
-  // of that key alone
-  // (a flight's bits are its question's, run_flight.hpp), so a remembered
-  // one is the one the fit would give again. Keyed by a hash of the key's
-  // bits, compared bit for bit.
+  // what they depend on: the values but the depth lag and the water's
+  // velocity, the density source, and the water as the spin-up meets it
+  // (its vertical displacement after each of the spin-up's intervals and
+  // its velocity at the first depth: RunFlight::spin_up_water). A depth
+  // profile's bins the spin-up never reaches leave that water the same bits,
+  // so a profile's Jacobian column of such a bin is no new start fit (a
+  // quarter of comet-2016's start fits). Up to kStartStateBytes of them
+  // (comet-2016's diagnosis fits ~21000, ~15000 of them different): a start
+  // state is a function of that key alone (a flight's bits are its
+  // question's, run_flight.hpp), so a remembered one is the one the fit
+  // would give again. Keyed by a hash of the key's bits, compared bit for bit.
   struct StartState {
     EffectValues values{};
-    bool use_ctd = false, has_profile = false;
-    VerticalVelocityProfile profile;
+    bool use_ctd = false;
+    double start_w = 0.0;
+    std::vector<double> water;
     double v1 = 0.0, v3 = 0.0;
+    std::unique_ptr<detail::SpinUpEnd> end;  // where the flight from (v1, v3) stands at the spin-up's end
   };
-  static constexpr std::size_t kStartStates = 200000;  // ~40 MB
+  static constexpr std::size_t kStartStateBytes = std::size_t{48} << 20;
   mutable std::vector<std::unordered_multimap<std::uint64_t, StartState>> start_states_;
-  mutable std::size_t start_state_count_ = 0;
+  mutable std::size_t start_state_bytes_ = 0;
   mutable std::vector<detail::RunStages> run_stages_;  // per run
   // The flights' answers, by their whole question: a selection asks the same
   // values at the same samples again (a fit's start point, a refit of a set
