@@ -19,24 +19,14 @@ offset together (docs/science.md, "the CTD's density flown from the start"):
 Each must name the CTD's density and the offset within 15 % with an
 interval that holds it, and no thermal expansion.
 """
-import json
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import findings, fly_and_diagnose  # noqa: E402
 
 DRAWS = [('shallow', 8490527760697439514, 67.9466049), ('deep', 7891877463615551685, 51.8400814)]
 VEHICLES = {'shallow': 'slocum_shallow.toml', 'deep': 'slocum_we01.toml'}
-
-
-def diagnose(truth, program, vehicles, out, variant, seed, offset_g):
-    log = os.path.join(out, 'offset_%d.csv' % seed)
-    subprocess.run([truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log,
-                    '--effect', 'buoyancy_offset=%.9g' % offset_g], check=True, capture_output=True, timeout=120)
-    run = subprocess.run([program, log, '--vehicle', os.path.join(vehicles, VEHICLES[variant]), '--plane', 'vertical',
-                          '--json'], capture_output=True, text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    return json.loads(run.stdout)
 
 
 def main():
@@ -44,7 +34,8 @@ def main():
     os.makedirs(out, exist_ok=True)
     failures = []
     for variant, seed, hidden in DRAWS:
-        found = {f['effect']: f for f in diagnose(truth, program, vehicles, out, variant, seed, hidden)['findings']}
+        found = findings(fly_and_diagnose(truth, program, os.path.join(vehicles, VEHICLES[variant]), out, 'offset',
+                                          variant, seed, {'buoyancy_offset': hidden}))
         print('seed %d (%s, %+.2f g hidden): %s' % (seed, variant, hidden, ', '.join(
             '%s %.4g' % (e, f['value']) for e, f in found.items())))
         if 'water_density' not in found:

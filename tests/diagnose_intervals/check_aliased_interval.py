@@ -15,24 +15,16 @@ deep variant, diagnosed as a black box (`glider-diagnose --plane vertical
 - a buoyancy offset of +48.2 g alone: the joint fits with its aliases see
   nothing, and the interval stays the conditional one (no `ci95_holds_with`).
 """
-import json
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import findings, fly_and_diagnose  # noqa: E402
 
 
 def diagnose(truth, program, vehicle, out, seed, effects):
-    log = os.path.join(out, 'aliased_%d.csv' % seed)
-    command = [truth, '--variant', 'deep', '--seed', str(seed), '--yos', '6', '--out', log,
-               '--truth', os.path.join(out, 'aliased_%d.json' % seed)]
-    for effect, value in effects.items():
-        command += ['--effect', '%s=%.9g' % (effect, value)]
-    subprocess.run(command, check=True, capture_output=True, timeout=120)
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'vertical', '--json'], capture_output=True,
-                         text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    return {f['effect']: f for f in json.loads(run.stdout)['findings']}
+    """A deep draw of 6 yos with the hidden `effects`: its findings by effect."""
+    return findings(fly_and_diagnose(truth, program, vehicle, out, 'aliased', 'deep', seed, effects))
 
 
 def main():

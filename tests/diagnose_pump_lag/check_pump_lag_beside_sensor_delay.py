@@ -19,30 +19,17 @@ Each must come out within 15 % of the truth with an interval that holds it
 and is not zero-width; the delay fitted beside it is in the extended
 vehicle's parameters, not among the findings.
 """
-import json
 import os
-import subprocess
 import sys
 
 from lag_checks import check_reading
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import findings, fly_and_diagnose  # noqa: E402
+
 DRAWS = [('shallow', 6119193044091381611, {'pump_lag': 10.7617069, 'depth_lag': 3.10057961}),
          ('deep', 5294563063785569109, {'pump_lag': 19.6257713, 'depth_lag': 0.506734563})]
 VEHICLES = {'shallow': 'slocum_shallow.toml', 'deep': 'slocum_we01.toml'}
-
-
-def diagnose(truth, program, vehicles, out, variant, seed, effects):
-    log = os.path.join(out, 'sensor_delay_%d.csv' % seed)
-    command = [truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log,
-               '--truth', os.path.join(out, 'sensor_delay_%d.json' % seed)]
-    for effect, value in effects.items():
-        command += ['--effect', '%s=%.9g' % (effect, value)]
-    subprocess.run(command, check=True, capture_output=True, timeout=120)
-    run = subprocess.run([program, log, '--vehicle', os.path.join(vehicles, VEHICLES[variant]), '--plane', 'vertical',
-                          '--json'], capture_output=True, text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    return json.loads(run.stdout)
 
 
 def main():
@@ -50,8 +37,9 @@ def main():
     os.makedirs(out, exist_ok=True)
     failures = []
     for variant, seed, effects in DRAWS:
-        document = diagnose(truth, program, vehicles, out, variant, seed, effects)
-        found = {f['effect']: f for f in document['findings']}
+        document = fly_and_diagnose(truth, program, os.path.join(vehicles, VEHICLES[variant]), out, 'sensor_delay',
+                                    variant, seed, effects)
+        found = findings(document)
         hidden = effects['pump_lag']
         lag = found.get('pump_lag')
         if lag is None:

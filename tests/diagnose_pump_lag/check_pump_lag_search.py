@@ -18,10 +18,10 @@ vertical --json`):
 import os
 import sys
 
-# The truth-then-diagnose step of the aliased-partner test (same deep variant, 6 yos, --plane vertical --json).
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose_intervals'))
-from check_aliased_interval import diagnose  # noqa: E402
-from lag_checks import check_reading  # noqa: E402
+from lag_checks import check_reading
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import findings, fly_and_diagnose  # noqa: E402
 
 DRAWS = [(1915810096203935661, 14.6797123), (2608585677694957494, 18.8629718)]
 
@@ -31,7 +31,8 @@ def main():
     os.makedirs(out, exist_ok=True)
     failures = []
     for seed, hidden in DRAWS:
-        lag = diagnose(truth, program, vehicle, out, seed, {'pump_lag': hidden}).get('pump_lag')
+        lag = findings(fly_and_diagnose(truth, program, vehicle, out, 'pump_lag', 'deep', seed,
+                                        {'pump_lag': hidden})).get('pump_lag')
         if lag is None:
             failures.append('seed %d: a %.2f s pump lag not named' % (seed, hidden))
             continue

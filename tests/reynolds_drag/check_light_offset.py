@@ -18,19 +18,17 @@ as a black box):
 """
 import json
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, findings, fly  # noqa: E402
 
 HIDDEN = -60.0
 
 
 def offset(program, log, vehicle, extra):
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'vertical', '--json', '--fit',
-                          'buoyancy_offset,water_density'] + extra, capture_output=True, text=True, timeout=60)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    document = json.loads(run.stdout)
-    found = {f['effect']: f for f in document['findings']}
+    document = diagnose_log(program, log, vehicle, ['--fit', 'buoyancy_offset,water_density'] + extra)
+    found = findings(document)
     if 'buoyancy_offset' not in found:
         sys.exit('FAIL no buoyancy_offset fitted (%s)' % extra)
     f = found['buoyancy_offset']
@@ -42,8 +40,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     log = os.path.join(out, 'light_offset.csv')
     truth_json = os.path.join(out, 'light_offset.json')
-    subprocess.run([truth, '--variant', 'shallow', '--seed', '8', '--yos', '6', '--out', log, '--truth', truth_json,
-                    '--effect', 'buoyancy_offset=%g' % HIDDEN], check=True, capture_output=True, timeout=60)
+    fly(truth, 'shallow', 8, {'buoyancy_offset': HIDDEN}, log, truth_json=truth_json)
     with open(truth_json) as f:
         exponent = json.load(f)['unmodelled']['drag_reynolds_exponent']
     failures = []

@@ -30,17 +30,15 @@ import math
 import os
 import random
 import secrets
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, findings, fly  # noqa: E402
 
 
 def fitted(program, log, vehicle, extra):
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'vertical', '--json', '--fit',
-                          'drag_change,water_density'] + extra, capture_output=True, text=True, timeout=60)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    document = json.loads(run.stdout)
-    found = {f['effect']: f for f in document['findings']}
+    document = diagnose_log(program, log, vehicle, ['--fit', 'drag_change,water_density'] + extra)
+    found = findings(document)
     if 'drag_change' not in found:
         sys.exit('FAIL no drag_change fitted (%s)' % extra)
     f = found['drag_change']
@@ -68,9 +66,7 @@ def main():
         print('log %d: truth seed %d, hidden drag_change %.4f' % (attempt + 1, log_seed, drag))
         log = os.path.join(args.out, 'prior_interval.csv')
         truth_json = os.path.join(args.out, 'prior_interval.json')
-        subprocess.run([args.truth, '--variant', 'deep', '--seed', str(log_seed), '--yos', '6', '--out', log,
-                        '--truth', truth_json, '--effect', 'drag_change=%.9g' % drag], check=True,
-                       capture_output=True, timeout=60)
+        fly(args.truth, 'deep', log_seed, {'drag_change': drag}, log, truth_json=truth_json)
         with open(truth_json) as f:
             exponent = json.load(f)['unmodelled']['drag_reynolds_exponent']
         prior = fitted(args.diagnose, log, args.vehicle, [])

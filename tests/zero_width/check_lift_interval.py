@@ -12,26 +12,19 @@ value wide (the profile's is ~2x the value) and holds the fitted value.
 
 Usage: check_lift_interval.py GLIDER_TRUTH GLIDER_DIAGNOSE VEHICLE WORKDIR
 """
-import json
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, fly  # noqa: E402
 
 
 def main(truth, diagnose, vehicle, workdir):
     os.makedirs(workdir, exist_ok=True)
     log = os.path.join(workdir, 'lift_change_1002.csv')
-    made = subprocess.run([truth, '--variant', 'shallow', '--seed', '1002', '--yos', '6', '--out', log,
-                           '--effect', 'lift_change=0.8'], capture_output=True, text=True, timeout=60)
-    if made.returncode != 0:
-        print('FAIL: glider-truth:', made.stderr.strip()[-300:])
-        return 1
-    done = subprocess.run([diagnose, log, '--vehicle', vehicle, '--json', '--plane', 'vertical', '--fit',
-                           'lift_change'], capture_output=True, text=True, timeout=60)
-    if done.returncode != 0:
-        print('FAIL: glider-diagnose exit', done.returncode, done.stderr.strip()[-300:])
-        return 1
-    found = [f for f in json.loads(done.stdout)['findings'] if f['effect'] == 'lift_change']
+    fly(truth, 'shallow', 1002, {'lift_change': 0.8}, log)
+    found = [f for f in diagnose_log(diagnose, log, vehicle, ['--fit', 'lift_change'])['findings']
+             if f['effect'] == 'lift_change']
     if not found:
         print('FAIL: no lift_change finding from a forced fit')
         return 1
