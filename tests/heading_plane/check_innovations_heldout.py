@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """The fin measured on the heading's innovations stands only where it also
-predicts the held-out yos' innovations (docs/science.md, "The innovations'
-terms judged on the held-out yos").
+predicts the held-out yos' innovations (docs/science.md, "the fin on the
+innovations judged on the held-out yos").
 
 Fixed draws of the independent truth (tools/science/truth), diagnosed as a
 black box (`glider-diagnose --plane heading --json`), regression cases on
