@@ -45,16 +45,30 @@ double interpolate_from(std::span<const double> time, std::span<const double> x,
 
 double value(const HeadingValues& v, HeadingEffect e) { return at(v, e); }
 
-// The fin between two readings as the servo moves it: the command that the
-// next reading shows went out at the end of the cycle of this one, so the
-// fin leaves at the servo's speed and then holds (a straight line between
-// readings 4 s apart would lag a fin move by ~1.5 s and blur it, which a
-// fit reads as less fin authority).
-double fin_between_rows(std::span<const double> time, std::span<const double> fin, double t, double rate) {
+// The fin between two readings as the servo moves it: a command goes out at
+// each reading and reaches the servo its dead time later, so the fin leaves
+// this reading when the first command does that arrives before the next one
+// (at this reading itself where the servo has no dead time), or earlier
+// where only that reaches the next reading at the servo's speed; it moves at
+// that speed and then holds (a straight line between readings 4 s apart
+// would lag a fin move by ~1.5 s and blur it, which a fit reads as less fin
+// authority; a fin leaving at the reading behind a dead time of 10.6 s on a
+// 6.8 s cycle left 3.8 s early, which the fit read as a yaw delay of 4.1 s:
+// docs/science.md "The fin between readings behind the servo's dead time").
+double fin_between_rows(std::span<const double> time, std::span<const double> fin, double t, double rate,
+                        double dead_time) {
   const std::size_t j = row_at_or_before(time, t);
   if (j == SIZE_MAX) return kNaN;
   if (j + 1 >= time.size() || !std::isfinite(fin[j + 1])) return fin[j];
-  return fin[j] + std::clamp(fin[j + 1] - fin[j], -rate * (t - time[j]), rate * (t - time[j]));
+  const double step = fin[j + 1] - fin[j];
+  double leaves = time[j];
+  if (dead_time > 0.0) {
+    const auto sent = std::lower_bound(time.begin(), time.end(), time[j] - dead_time);
+    const double arrives = *sent + dead_time;
+    if (arrives < time[j + 1]) leaves = std::max(time[j], std::min(arrives, time[j + 1] - std::abs(step) / rate));
+  }
+  const double moved = rate * std::max(0.0, t - leaves);
+  return fin[j] + std::clamp(step, -moved, moved);
 }
 
 void pick(const std::vector<double>& series, std::span<const std::size_t> at_index, std::vector<double>& out) {
@@ -230,6 +244,7 @@ struct YawPlant {
   const HeadingTrack& t;
   const model::HeadingModel& hd;
   double delay, fin_gain, roll_offset, tau, fin_rate;
+  double fin_dead_time;  // the servo's (its link's finding): when the fin leaves a reading
   YawPlant(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values)
       : t(track),
         hd(vehicle.heading),
@@ -237,7 +252,8 @@ struct YawPlant {
         fin_gain(vehicle.heading.fin_yaw_gain_per_m * value(values, HeadingEffect::kFinEffectiveness)),
         roll_offset(value(values, HeadingEffect::kRollOffset)),
         tau(std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)))),
-        fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9) {}
+        fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9),
+        fin_dead_time(std::abs(value(values, HeadingEffect::kFinDelay))) {}
   // The roll as logged between samples k and k + 1, with the offset: the
   // fin rolls the glider and the roll turns it back against the fin (the
   // independent truth's 0-0.2 rad of roll per rad of fin read as a fin
@@ -251,7 +267,7 @@ struct YawPlant {
     const double speed = t.speed_m_s[k] + w * (t.speed_m_s[k + 1] - t.speed_m_s[k]);
     const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
     const double roll = roll_at(k, w);
-    const double fin = fin_between_rows(t.row_time_s, t.row_fin_filled_rad, now - delay, fin_rate);
+    const double fin = fin_between_rows(t.row_time_s, t.row_fin_filled_rad, now - delay, fin_rate, fin_dead_time);
     return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
   }
 };
