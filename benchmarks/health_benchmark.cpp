@@ -97,6 +97,8 @@ struct Outcome {
   double size = 0.0, low = 0.0, high = 0.0;
   std::vector<std::string> false_alarms;  // other alerts (distinct ids), with the surfacing
   double glider_days = 0.0;
+  int fin_not_judged = 0;  // segments whose fin turned too little to judge
+  double min_fin_spread_deg = std::nan("");
   std::vector<double> update_s;  // wall time of each surfacing's update
   std::vector<double> update_cpu_s;
   std::string error;
@@ -190,6 +192,11 @@ Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg) {
     }
   }
   o.glider_days = d.surfacings / kPerDay;
+  for (const health::SegmentMeasurement& m : last.segments) {
+    if (m.judged && !m.effects[static_cast<std::size_t>(HealthEffect::kFinEffectiveness)].judged()) ++o.fin_not_judged;
+    if (std::isfinite(m.fin_spread_deg) && !(m.fin_spread_deg >= o.min_fin_spread_deg))
+      o.min_fin_spread_deg = m.fin_spread_deg;
+  }
   // The size at the last surfacing: the drag's rate from its line alert,
   // the others' step.
   for (const health::Alert& a : last.assessment.alerts) {
@@ -214,6 +221,68 @@ double percentile(std::vector<double> v, double p) {
   return v[static_cast<std::size_t>(std::min<double>(v.size() - 1, std::floor(p * static_cast<double>(v.size()))))];
 }
 
+// One clean deployment whose surfacings are drawn among the box launched
+// anywhere, a straight transect (no turn at all) and a transect launched off
+// its heading by 1-40 deg (one small turn): the fin judged only where the
+// segment turned (docs/health.md, "The fin is judged only on segments that
+// turn"). Prints each segment's route, fin spread and fin reading; returns
+// the fin alerts raised (a clean deployment: each one false) or -1.
+int run_transects(std::uint64_t seed, const std::string& dir, int surfacings) {
+  fs::remove_all(dir);
+  const health::HealthOptions options = health_sil::health_options(dir, kHoursApart);
+  std::mt19937_64 rng(seed);
+  std::set<std::string> fin_ids;
+  int other_alerts = 0;
+  std::vector<std::string> routes;
+  health::HealthRun last;
+  for (int k = 0; k < surfacings; ++k) {
+    const std::uint64_t s = rng();
+    const int kind = static_cast<int>(rng() % 3);
+    const int turn = kind == 1 ? 0 : static_cast<int>(1 + rng() % 40) * (rng() % 2 ? 1 : -1);
+    std::string error;
+    char route[64];
+    if (kind == 0) {
+      error = health_sil::fly_surfacing(dir + "/sbd", {}, k, kHoursApart, s, {}, 180);
+      std::snprintf(route, sizeof route, "box, launched %llu deg", static_cast<unsigned long long>(s % 361));
+    } else {
+      error = health_sil::fly_transect(dir + "/sbd", {}, k, kHoursApart, s, turn);
+      std::snprintf(route, sizeof route, "transect, turn %+d deg", turn);
+    }
+    if (!error.empty()) {
+      std::printf("    surfacing %d: ERROR %s\n", k, error.c_str());
+      return -1;
+    }
+    routes.emplace_back(route);
+    last = health::update_health(options);
+    for (const health::Alert& a : last.assessment.alerts) {
+      if (a.effect == HealthEffect::kFinEffectiveness) {
+        if (fin_ids.insert(a.id).second) std::printf("    surfacing %d: FIN ALERT %s\n", k, a.message.c_str());
+      } else {
+        ++other_alerts;
+      }
+    }
+  }
+  for (const health::SegmentMeasurement& m : last.segments) {
+    // The surfacing of a file <vehicle>-1970-000-<k>-<segment>.
+    const std::string name = m.name.substr(0, m.name.rfind('-'));
+    const auto k = static_cast<std::size_t>(std::stoi(name.substr(name.rfind('-') + 1)));
+    const health::EffectValue& fin = m.effects[static_cast<std::size_t>(HealthEffect::kFinEffectiveness)];
+    if (!m.judged) continue;
+    std::printf("    %-26s %s fin spread %6.2f deg  ", k < routes.size() ? routes[k].c_str() : "?",
+                m.name.substr(m.name.size() - 3).c_str(), m.fin_spread_deg);
+    if (fin.judged()) {
+      std::printf("fin %.4f [%.4f, %.4f]\n", fin.value, fin.low, fin.high);
+    } else {
+      std::printf("not judged: %s\n", fin.why.c_str());
+    }
+  }
+  const health::EffectAssessment& fin =
+      last.assessment.effects[static_cast<std::size_t>(HealthEffect::kFinEffectiveness)];
+  std::printf("    fin level %.4f [%.4f, %.4f]%s%s; fin alerts %zu, other alerts %d\n", fin.value, fin.low, fin.high,
+              fin.judged ? "" : ", cannot judge: ", fin.judged ? "" : fin.why.c_str(), fin_ids.size(), other_alerts);
+  return static_cast<int>(fin_ids.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -231,6 +300,10 @@ int main(int argc, char** argv) {
                    "each surfacing starts heading 180 deg +- this (default 10: one long first turn, the box's "
                    "first leg being north; 180: any heading)");
   app.add_option("--out", out, "scratch folder for the deployments' files");
+  std::size_t transects = 0;
+  tool.add_integer("--transects", transects, 0, 1000, "",
+                   "instead: this many clean 3-day deployments mixing the box, straight transects and transects "
+                   "with one small turn (the fin on segments that turn too little)");
   std::vector<std::string> kinds{"drag", "buoyancy", "fin", "pump"};
   app.add_option("--faults", kinds, "fault kinds drawn (default: all; a bounded run measures one)")
       ->delimiter(',')
@@ -238,6 +311,23 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&]() -> int {
     if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;
     if (clean == kAsDraws) clean = draws;
+    if (transects > 0) {
+      std::printf("bench_health --seed %llu --transects %zu  (surfacings %g h apart)\n",
+                  static_cast<unsigned long long>(seed), transects, kHoursApart);
+      std::mt19937_64 rng(seed);
+      int fin_alerts = 0, failed = 0;
+      for (std::size_t i = 0; i < transects; ++i) {
+        const std::uint64_t s = rng();
+        std::printf("  deployment %zu (seed %llu):\n", i, static_cast<unsigned long long>(s));
+        const int n = run_transects(s, out + "/transects" + std::to_string(i), 9);
+        if (n < 0) ++failed;
+        fin_alerts += std::max(n, 0);
+        std::fflush(stdout);
+      }
+      std::printf("\nfin alerts in %zu clean deployments (3 days each): %d (%d failed to fly)\n", transects, fin_alerts,
+                  failed);
+      return 0;
+    }
     std::printf(
         "bench_health --seed %llu --draws %zu --clean %zu --faults %s --launch-spread %d  (surfacings %g h apart, "
         "decimated .sbd: tests/health/sbdlist.dat)\n",
@@ -264,7 +354,8 @@ int main(int argc, char** argv) {
           std::printf("alerted at %d (onset %d)", o.detected, d.onset);
           if (o.sized) std::printf(", size %.4g [%.4g, %.4g] (truth %.4g)", o.size, o.low, o.high, d.truth);
         }
-        std::printf("; other alerts %zu\n", o.false_alarms.size());
+        std::printf("; other alerts %zu; fin not judged on %d segments (smallest fin spread %.2f deg)\n",
+                    o.false_alarms.size(), o.fin_not_judged, o.min_fin_spread_deg);
         for (const std::string& fa : o.false_alarms) std::printf("      other: %s\n", fa.c_str());
         update_s.insert(update_s.end(), o.update_s.begin(), o.update_s.end());
         update_cpu_s.insert(update_cpu_s.end(), o.update_cpu_s.begin(), o.update_cpu_s.end());

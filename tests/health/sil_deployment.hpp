@@ -67,13 +67,12 @@ constexpr int kDefaultLaunchSpreadDeg = 10;
 
 // Flies surfacing k into `dir` (files <vehicle>-1970-000-<k>-<segment>.sbd,
 // times from 0: place them with seconds_apart). Empty string: done; else why not.
-// `sbdlist`: the .sbd's list (empty: tests/health/sbdlist.dat). The glider
-// starts heading 180 deg +- `launch_spread_deg` (whole degrees drawn from
-// the seed; 180: any heading, as a pilot's glider surfaces wherever the
-// mission left it).
-inline std::string fly_surfacing(const std::string& dir, const FaultPlan& plan, int k, double hours_apart,
-                                 std::uint64_t seed, std::string_view sbdlist = {},
-                                 int launch_spread_deg = kDefaultLaunchSpreadDeg) {
+// `sbdlist`: the .sbd's list (empty: tests/health/sbdlist.dat). The mission
+// is `mission_path` under tests/health/missions, launched heading
+// `heading_deg`: fly_surfacing and fly_transect below.
+inline std::string fly_mission(const std::string& dir, const FaultPlan& plan, int k, double hours_apart,
+                               std::uint64_t seed, std::string_view sbdlist, const std::string& mission_path,
+                               double heading_deg) {
   const model::VehicleParams flown = flown_vehicle(plan, k, hours_apart);
   // The firmware is set up for the nominal vehicle (what the pilot's files say).
   const model::VehicleParams nominal = nominal_vehicle();
@@ -83,7 +82,7 @@ inline std::string fly_surfacing(const std::string& dir, const FaultPlan& plan, 
   const fw::app::VehicleSetup setup =
       sil::vehicle_setup(nominal, options.fitted, 100.0, false, options.environment.water.at(0.0, 0.0).density_kg_m3);
   const fw::app::PreparedMission mission = fw::app::prepare_mission(
-      GLIDER_SOURCE_DIR "/tests/health/missions/health_box/missions/box.mi", setup, fw::app::MissionOptions{});
+      GLIDER_SOURCE_DIR "/tests/health/missions/" + mission_path, setup, fw::app::MissionOptions{});
   if (!mission.config) return "mission refused: " + mission.refusal;
   const fw::SlocumListResult sbd = sbdlist.empty() ? fw::read_slocum_list(GLIDER_SOURCE_DIR "/tests/health/sbdlist.dat")
                                                    : fw::parse_slocum_list(sbdlist, "sbdlist");
@@ -91,11 +90,10 @@ inline std::string fly_surfacing(const std::string& dir, const FaultPlan& plan, 
   std::filesystem::create_directories(dir);
   const fw::SlocumMissionNumbers numbers = fw::next_slocum_mission(dir, nominal.name, 0);
   options.max_sim_time_s = 6.0 * 3600.0;
-  const auto spread = static_cast<std::uint64_t>(launch_spread_deg);
-  options.heading_deg = 180.0 + static_cast<double>(seed % (2 * spread + 1)) - static_cast<double>(spread);
+  options.heading_deg = heading_deg;
   options.slocum_directory = dir;
   options.slocum.vehicle = nominal.name;
-  options.slocum.mission_name = "box.mi";
+  options.slocum.mission_name = std::filesystem::path(mission_path).filename().string();
   options.slocum.mission_of_day = numbers.mission_of_day;
   options.slocum.mission_number = numbers.mission_number;
   options.slocum.sbd = sbd.selection;
@@ -107,6 +105,26 @@ inline std::string fly_surfacing(const std::string& dir, const FaultPlan& plan, 
     if (entry.path().extension() == ".dbd") std::filesystem::remove(entry.path());
   }
   return {};
+}
+
+// The box (missions/health_box). The glider starts heading 180 deg +-
+// `launch_spread_deg` (whole degrees drawn from the seed; 180: any heading,
+// as a pilot's glider surfaces wherever the mission left it).
+inline std::string fly_surfacing(const std::string& dir, const FaultPlan& plan, int k, double hours_apart,
+                                 std::uint64_t seed, std::string_view sbdlist = {},
+                                 int launch_spread_deg = kDefaultLaunchSpreadDeg) {
+  const auto spread = static_cast<std::uint64_t>(launch_spread_deg);
+  const double heading_deg = 180.0 + static_cast<double>(seed % (2 * spread + 1)) - static_cast<double>(spread);
+  return fly_mission(dir, plan, k, hours_apart, seed, sbdlist, "health_box/missions/box.mi", heading_deg);
+}
+
+// Flies surfacing k as a straight transect (missions/health_line: ~3 h of
+// the same yos towards a waypoint due south, never reached), launched heading
+// 180 + `turn_deg`: 0 never turns, else one turn of that size at the start
+// (docs/health.md, "The fin is judged only on segments that turn").
+inline std::string fly_transect(const std::string& dir, const FaultPlan& plan, int k, double hours_apart,
+                                std::uint64_t seed, double turn_deg) {
+  return fly_mission(dir, plan, k, hours_apart, seed, {}, "health_line/missions/line.mi", 180.0 + turn_deg);
 }
 
 // Health's options for a deployment flown into dir/sbd, its state dir/state.json.

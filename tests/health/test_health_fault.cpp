@@ -12,6 +12,7 @@
 #include <string>
 
 #include "glider/health/health.hpp"
+#include "glider/health/output.hpp"
 #include "sil_deployment.hpp"
 
 using namespace glider;
@@ -204,4 +205,48 @@ TEST(HealthHeadingFit, FinAndRollDoNotDependOnTheReynoldsPrior) {
     CHECK_TEXT(std::abs(roll_a.value - roll_b.value) <= 0.05 * std::abs(roll_a.value) + 2e-4, text);
   }
   CHECK_EQUAL(1, compared);
+}
+
+// A segment that does not turn tells nothing of the fin: its fin makes only
+// the autopilot's small corrections, which the closed loop reads weak
+// (0.57-0.83 for 1 on straight SIL transects, spread 0.5-1.3 deg; the box's
+// turns 4.7-5.2 deg). Such a segment's fin is "too thin to judge" and stays
+// out of the fin's level, step and alert; a turning one is judged as before
+// (docs/health.md, "The fin is judged only on segments that turn").
+TEST_GROUP(HealthFinTurns){};
+
+TEST(HealthFinTurns, AStraightTransectsFinIsNotJudged) {
+  const std::string dir = fresh_dir("fin_turns");
+  std::string error = health_sil::fly_transect(dir + "/sbd", {}, 0, kHoursApart, 901, 0.0);
+  CHECK_TEXT(error.empty(), error.c_str());
+  error = health_sil::fly_surfacing(dir + "/sbd", {}, 1, kHoursApart, 902);
+  CHECK_TEXT(error.empty(), error.c_str());
+  const health::HealthRun run = health::update_health(health_sil::health_options(dir, kHoursApart));
+  int straight = 0, turning = 0;
+  for (const health::SegmentMeasurement& m : run.segments) {
+    if (!m.judged) continue;
+    const health::EffectValue& fin = value_of(m, health::HealthEffect::kFinEffectiveness);
+    char text[400];
+    std::snprintf(text, sizeof text, "%s: fin spread %.2f deg, fin %.4f [%.4f, %.4f] %s", m.name.c_str(),
+                  m.fin_spread_deg, fin.value, fin.low, fin.high, fin.why.c_str());
+    UT_PRINT(text);
+    if (m.name.find("-000-00-") != std::string::npos) {
+      ++straight;
+      CHECK_TEXT(!fin.judged(), text);
+      CHECK_TEXT(fin.why.find("too thin to judge") != std::string::npos, text);
+      CHECK_TEXT(m.fin_spread_deg < health::kMinFinSpreadDeg, text);
+    } else {
+      ++turning;
+      CHECK_TEXT(fin.judged(), text);
+      CHECK_TEXT(std::abs(fin.value - 1.0) <= 0.05, text);
+    }
+  }
+  CHECK(straight >= 1);  // the transect's files (one or two segments)
+  CHECK_EQUAL(1, turning);
+  // The pilot reads why, in the text and in the JSON's segment.
+  CHECK(health::health_text(run).find("fin_effectiveness not judged on") != std::string::npos);
+  const std::string json = health::health_json(run);
+  const std::size_t not_judged = json.find("\"not_judged\"");
+  CHECK(not_judged != std::string::npos);
+  CHECK(json.find("too thin to judge: the fin moved", not_judged) != std::string::npos);
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "glider/diagnose/diagnose.hpp"
@@ -115,6 +116,15 @@ void measure_heading(const model::VehicleParams& nominal, const flightlog::Fligh
     for (HealthEffect e : {HealthEffect::kFinEffectiveness, HealthEffect::kRollOffset}) {
       if (!at(m.effects, e).judged()) at(m.effects, e) = not_judged("the heading fit gave no value");
     }
+    const EffectValue& fin = at(m.effects, HealthEffect::kFinEffectiveness);
+    if (fin.judged() && m.fin_spread_deg < kMinFinSpreadDeg) {
+      char why[256];
+      std::snprintf(why, sizeof why,
+                    "too thin to judge: the fin moved %.2f deg (sd under water, at least %.1f needed), too little "
+                    "turning to tell its effect (it read %.3f [%.3f, %.3f])",
+                    m.fin_spread_deg, kMinFinSpreadDeg, fin.value, fin.low, fin.high);
+      at(m.effects, HealthEffect::kFinEffectiveness) = not_judged(why);
+    }
   } catch (const std::exception& error) {
     for (HealthEffect e : {HealthEffect::kFinEffectiveness, HealthEffect::kRollOffset}) {
       at(m.effects, e) = not_judged(error.what());
@@ -123,6 +133,23 @@ void measure_heading(const model::VehicleParams& nominal, const flightlog::Fligh
 }
 
 }  // namespace
+
+double fin_spread_deg(const flightlog::FlightLog& log) {
+  const flightlog::Column* fin = log.find("m_fin");
+  const flightlog::Column* depth = log.find("m_depth");
+  if (fin == nullptr || depth == nullptr) return std::nan("");
+  std::vector<double> under;
+  for (std::size_t i = 0; i < log.rows(); ++i) {
+    if (std::isfinite((*fin)[i]) && (*depth)[i] > 2.0) under.push_back((*fin)[i] * kDeg);
+  }
+  if (under.size() < 10) return std::nan("");
+  double mean = 0.0;
+  for (double f : under) mean += f;
+  mean /= static_cast<double>(under.size());
+  double sum2 = 0.0;
+  for (double f : under) sum2 += (f - mean) * (f - mean);
+  return std::sqrt(sum2 / static_cast<double>(under.size() - 1));
+}
 
 EffectValue pump_rate(const flightlog::FlightLog& raw) {
   const flightlog::Column* pumped = raw.find("m_ballast_pumped");
@@ -254,6 +281,7 @@ SegmentMeasurement measure_segment(const model::VehicleParams& nominal, const Lo
         at(m.effects, e) = not_judged(m.why);
       }
     }
+    m.fin_spread_deg = fin_spread_deg(log);
     measure_heading(flown, log, *segment.raw, segment.files.decimated, m);
     at(m.effects, HealthEffect::kPumpRate) = pump_rate(*segment.raw);
     at(m.effects, HealthEffect::kBatteryPerKm) = battery_per_km(log);

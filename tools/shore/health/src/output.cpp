@@ -55,12 +55,21 @@ json alert_json(const Alert& a) {
 std::string health_json(const HealthRun& run) {
   json segments = json::array();
   for (const SegmentMeasurement& m : run.segments) {
+    // Each effect this segment gives no value for, and why (a fin that
+    // turned too little: docs/health.md, "The fin is judged only on
+    // segments that turn").
+    json not_judged = json::object();
+    for (std::size_t i = 0; i < kHealthEffectCount; ++i) {
+      if (!m.effects[i].judged()) not_judged[info(health_effect(i)).id] = m.effects[i].why;
+    }
     segments.push_back({{"name", m.name},
                         {"files", m.files},
                         {"start_utc", utc_iso(m.start_s)},
                         {"end_utc", utc_iso(m.end_s)},
                         {"judged", m.judged},
-                        {"why", m.why.empty() ? json(nullptr) : json(m.why)}});
+                        {"why", m.why.empty() ? json(nullptr) : json(m.why)},
+                        {"fin_spread_deg", number_or_null(m.fin_spread_deg)},
+                        {"not_judged", not_judged}});
   }
   json effects = json::array();
   for (const EffectAssessment& a : run.assessment.effects) {
@@ -144,6 +153,10 @@ std::string health_text(const HealthRun& run) {
       out << "; cannot judge: " << a.why;
     }
     out << "\n";
+  }
+  for (const SegmentMeasurement& m : run.segments) {
+    const EffectValue& fin = m.effects[static_cast<std::size_t>(HealthEffect::kFinEffectiveness)];
+    if (m.judged && !fin.judged()) out << "  fin_effectiveness not judged on " << m.name << ": " << fin.why << "\n";
   }
   for (const std::string& note : run.notes) out << "  note: " << note << "\n";
   return out.str();

@@ -6,6 +6,7 @@
 // dynamic model) come from the diagnosis core (glider::diagnose::diagnose,
 // fit_only); the fin effectiveness and roll from its heading plane; the pump
 // rate and the charge per km are read off the logged values.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,28 @@ struct SegmentMeasurement {
   bool judged = false;                // the vertical plane could be fitted
   std::string why;                    // not judged: why (names the file)
   EffectValues effects;
+  // The fin's spread under water (deg, NaN: no m_fin): the turns that tell
+  // the fin's effect on the yaw rate (fin_spread_deg; below kMinFinSpreadDeg
+  // the fin is not judged on this segment).
+  double fin_spread_deg = std::numeric_limits<double>::quiet_NaN();
   double cost_s = 0.0;  // wall time of the measurement
 };
+
+// A segment whose fin moved less than this (its standard deviation under
+// water) turned too little to tell the fin's effectiveness: a straight
+// transect's fin makes only the loop's small corrections, which the closed
+// loop reads weak. Designed on SIL segments (bench_health --transects 3,
+// seed 321276411): transects with no turn or one turn of up to 38 deg moved
+// the fin 0.52-1.34 deg and read it 0.57-0.83 for 1; the box's turns
+// 4.70-5.30 deg, reading 0.997-1.000. The threshold sits between them (their
+// geometric middle; docs/health.md, "The fin is judged only on segments
+// that turn").
+inline constexpr double kMinFinSpreadDeg = 2.5;
+
+// The standard deviation (deg) of the stored m_fin below 2 m: the excitation
+// of the yaw rate that the heading fit reads the fin from. NaN with fewer
+// than 10 such values or no m_fin.
+double fin_spread_deg(const flightlog::FlightLog& log);
 
 // Never throws for the data (a segment with no dives, too thin, a vehicle
 // that cannot fly it: judged = false and `why`).
