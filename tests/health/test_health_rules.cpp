@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <random>
 #include <string>
 #include <utility>
@@ -240,4 +241,28 @@ TEST(HealthRules, AStepsLevelAfterCarriesTheSharedBiasButNotItsChange) {
   DOUBLES_EQUAL(a0.alerts[0].high, a1.alerts[0].high, 0.0);
   DOUBLES_EQUAL(a0.value, a1.value, 0.0);
   DOUBLES_EQUAL(std::hypot(0.5 * (a0.high - a0.low), 1.96 * 0.02), 0.5 * (a1.high - a1.low), 1e-9);
+}
+
+// The fin's spread (health's turn measure, docs/health.md "The fin is judged
+// only on segments that turn") counts only values under water (below 2 m) and
+// is NaN with fewer than 10 of them - which the measurement then reads as
+// "too thin to judge", never as evidence of turns.
+TEST(HealthRules, FinSpreadCountsTheFinUnderWaterAndIsNaNWhenTooFew) {
+  const double nan = std::nan("");
+  const double rad = std::numbers::pi / 180.0;
+  // 10 values under water alternating +-3 deg (sd 3.16 deg), one at the
+  // surface at 20 deg and one not logged (stored on change): neither counts.
+  flightlog::Column time, fin, depth;
+  for (int i = 0; i < 12; ++i) {
+    time.push_back(i * 4.0);
+    fin.push_back(i == 10 ? 20.0 * rad : i == 11 ? nan : (i % 2 == 0 ? 3.0 : -3.0) * rad);
+    depth.push_back(i == 10 ? 0.5 : 10.0);
+  }
+  const auto log_of = [&](const flightlog::Column& f) {
+    return flightlog::FlightLog("spread.csv", {}, {"time", "m_fin", "m_depth"}, {time, f, depth}, 0);
+  };
+  DOUBLES_EQUAL(3.0 * std::sqrt(10.0 / 9.0), health::fin_spread_deg(log_of(fin)), 1e-9);
+  flightlog::Column nine = fin;
+  nine[0] = nan;  // 9 under water
+  CHECK(std::isnan(health::fin_spread_deg(log_of(nine))));
 }

@@ -117,12 +117,22 @@ void measure_heading(const model::VehicleParams& nominal, const flightlog::Fligh
       if (!at(m.effects, e).judged()) at(m.effects, e) = not_judged("the heading fit gave no value");
     }
     const EffectValue& fin = at(m.effects, HealthEffect::kFinEffectiveness);
-    if (fin.judged() && m.fin_spread_deg < kMinFinSpreadDeg) {
+    // NaN (fewer than 10 fin values under water: a decimated file stores
+    // m_fin on change, so a fin that hardly moved leaves few) is not judged
+    // either: a spread that cannot be measured is no evidence of turns.
+    if (fin.judged() && !(m.fin_spread_deg >= kMinFinSpreadDeg)) {
       char why[256];
-      std::snprintf(why, sizeof why,
-                    "too thin to judge: the fin moved %.2f deg (sd under water, at least %.1f needed), too little "
-                    "turning to tell its effect (it read %.3f [%.3f, %.3f])",
-                    m.fin_spread_deg, kMinFinSpreadDeg, fin.value, fin.low, fin.high);
+      if (std::isnan(m.fin_spread_deg)) {
+        std::snprintf(why, sizeof why,
+                      "too thin to judge: fewer than 10 fin values under water, no measure of its turns (it read "
+                      "%.3f [%.3f, %.3f])",
+                      fin.value, fin.low, fin.high);
+      } else {
+        std::snprintf(why, sizeof why,
+                      "too thin to judge: the fin moved %.2f deg (sd under water, at least %.1f needed), too little "
+                      "turning to tell its effect (it read %.3f [%.3f, %.3f])",
+                      m.fin_spread_deg, kMinFinSpreadDeg, fin.value, fin.low, fin.high);
+      }
       at(m.effects, HealthEffect::kFinEffectiveness) = not_judged(why);
     }
   } catch (const std::exception& error) {
