@@ -261,53 +261,6 @@ double heldout_block_rms(const SampleSet& set, std::span<const std::size_t> held
   return block_rms(time, glide, h, block_s);
 }
 
-// The lift's second start: the lift alone on a grid over its plausible range
-// (every other effect nominal, the candidate's density input), as a lag's
-// global step (lag_grid_start; cached with them). From the nominal lift a
-// joint fit with the drag stopped in another valley on the independent truth
-// (a 0.756 lift beside a 1.21 drag read 0.469 beside 0.841, the held-out
-// error 11.7 against 7.6 mm/s; docs/science.md, "the vertical plane's lift
-// change").
-double lift_grid_start(const SampleSet& set, bool ctd, std::span<const std::size_t> train) {
-  const Effect e = Effect::kLiftChange;
-  if (const auto it = set.lag_start.find({e, ctd}); it != set.lag_start.end()) return it->second;
-  constexpr int kSteps = 15;  // 0.5 to 2.0 every 0.1
-  double best = info(e).nominal;
-  double best_rss = std::numeric_limits<double>::infinity();
-  for (int i = 0; i <= kSteps; ++i) {
-    const double lift = 0.5 + 0.1 * i;
-    Parameters x{nominal_values(), std::nullopt};
-    x.values[static_cast<std::size_t>(e)] = lift;
-    const double rss = train_rss_at(set, x, ctd, train);
-    if (rss < best_rss) best = lift, best_rss = rss;
-  }
-  set.lag_start.emplace(std::pair{e, ctd}, best);
-  return best;
-}
-
-// Where the lift started nominal, the fit once more from the lift's grid
-// start (lift_grid_start), `p` the one of the lower training RSS: never a
-// worse fit than the nominal start's.
-void refit_from_lift_grid_start(const SampleSet& set, const Candidate& candidate, const Layout& layout,
-                                std::span<const std::size_t> train, const Eigen::VectorXd& start, Eigen::VectorXd& p) {
-  const Effect e = Effect::kLiftChange;
-  const auto lift = std::find(candidate.fitted.begin(), candidate.fitted.end(), e);
-  if (lift == candidate.fitted.end()) return;
-  const auto o = static_cast<Eigen::Index>(layout.offset[static_cast<std::size_t>(lift - candidate.fitted.begin())]);
-  const double grid = lift_grid_start(set, candidate.ctd_density, train);
-  if (start[o] != 0.0 || grid == info(e).nominal) return;
-  Eigen::VectorXd q = start;
-  q[o] = (grid - info(e).nominal) / info(e).scale;
-  const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
-  Eigen::LevenbergMarquardt<const ForwardDifference<FitFunctor>> lm(functor);
-  lm.parameters.maxfev = 400;
-  lm.minimize(q);
-  if (train_rss_at(set, unpack(candidate, layout, q), candidate.ctd_density, train) <
-      train_rss_at(set, unpack(candidate, layout, p), candidate.ctd_density, train)) {
-    p = q;
-  }
-}
-
 // `from`, where given: a fit of some of the candidate's effects (the rest start
 // as below), its values the start.
 FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const std::size_t> train,
@@ -347,9 +300,7 @@ FitResult fit(const SampleSet& set, const Candidate& candidate, std::span<const 
     const ForwardDifference<FitFunctor> functor(FitFunctor{{}, set, candidate, layout, train, {}});
     Eigen::LevenbergMarquardt<const ForwardDifference<FitFunctor>> lm(functor);
     lm.parameters.maxfev = 400;
-    const Eigen::VectorXd start = p;
     lm.minimize(p);
-    refit_from_lift_grid_start(set, candidate, layout, train, start, p);
   }
   result.parameters = unpack(candidate, layout, p);
   std::vector<double> h;
