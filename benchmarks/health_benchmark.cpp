@@ -166,7 +166,10 @@ std::string disturbance_args(const health_sil::Disturbance& sea) {
   if (sea.yaw_deg_s > 0.0)
     std::snprintf(t, sizeof t, " --yaw-disturbance %g --yaw-correlation %g", sea.yaw_deg_s, sea.yaw_correlation_s);
   std::string text = t;
-  if (sea.compass_noise_deg >= 0.0) text += " --compass-noise " + std::to_string(sea.compass_noise_deg);
+  if (sea.compass_noise_deg >= 0.0) {
+    std::snprintf(t, sizeof t, " --compass-noise %g", sea.compass_noise_deg);
+    text += t;
+  }
   return text;
 }
 
@@ -238,7 +241,8 @@ double percentile(std::vector<double> v, double p) {
 // anywhere, a straight transect (no turn at all) and a transect launched off
 // its heading by 1-40 deg (one small turn): the fin judged only where the
 // segment turned (docs/health.md, "The fin is judged only on segments that
-// turn"). Prints each segment's route, fin spread and fin reading; returns
+// turn"; in disturbed water, "The fin in disturbed water"). Prints each
+// segment's route, fin and heading spreads and fin reading; returns
 // the fin alerts raised (a clean deployment: each one false) or -1.
 int run_transects(std::uint64_t seed, const std::string& dir, int surfacings, const health_sil::Disturbance& sea) {
   fs::remove_all(dir);
