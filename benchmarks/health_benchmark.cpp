@@ -99,6 +99,7 @@ struct Outcome {
   double glider_days = 0.0;
   int fin_not_judged = 0;  // segments whose fin turned too little to judge
   double min_fin_spread_deg = std::nan("");
+  double min_heading_spread_deg = std::nan("");
   std::vector<double> update_s;  // wall time of each surfacing's update
   std::vector<double> update_cpu_s;
   std::string error;
@@ -159,6 +160,19 @@ std::string joined(const std::vector<std::string>& words) {
   return text;
 }
 
+// The disturbance options as given (empty: still water), for the replay line.
+std::string disturbance_args(const health_sil::Disturbance& sea) {
+  char t[160] = "";
+  if (sea.yaw_deg_s > 0.0)
+    std::snprintf(t, sizeof t, " --yaw-disturbance %g --yaw-correlation %g", sea.yaw_deg_s, sea.yaw_correlation_s);
+  std::string text = t;
+  if (sea.compass_noise_deg >= 0.0) {
+    std::snprintf(t, sizeof t, " --compass-noise %g", sea.compass_noise_deg);
+    text += t;
+  }
+  return text;
+}
+
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg) {
@@ -196,6 +210,8 @@ Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg) {
     if (m.judged && !m.effects[static_cast<std::size_t>(HealthEffect::kFinEffectiveness)].judged()) ++o.fin_not_judged;
     if (std::isfinite(m.fin_spread_deg) && !(m.fin_spread_deg >= o.min_fin_spread_deg))
       o.min_fin_spread_deg = m.fin_spread_deg;
+    if (std::isfinite(m.heading_spread_deg) && !(m.heading_spread_deg >= o.min_heading_spread_deg))
+      o.min_heading_spread_deg = m.heading_spread_deg;
   }
   // The size at the last surfacing: the drag's rate from its line alert,
   // the others' step.
@@ -225,9 +241,10 @@ double percentile(std::vector<double> v, double p) {
 // anywhere, a straight transect (no turn at all) and a transect launched off
 // its heading by 1-40 deg (one small turn): the fin judged only where the
 // segment turned (docs/health.md, "The fin is judged only on segments that
-// turn"). Prints each segment's route, fin spread and fin reading; returns
+// turn"; in disturbed water, "The fin in disturbed water"). Prints each
+// segment's route, fin and heading spreads and fin reading; returns
 // the fin alerts raised (a clean deployment: each one false) or -1.
-int run_transects(std::uint64_t seed, const std::string& dir, int surfacings) {
+int run_transects(std::uint64_t seed, const std::string& dir, int surfacings, const health_sil::Disturbance& sea) {
   fs::remove_all(dir);
   const health::HealthOptions options = health_sil::health_options(dir, kHoursApart);
   std::mt19937_64 rng(seed);
@@ -235,6 +252,8 @@ int run_transects(std::uint64_t seed, const std::string& dir, int surfacings) {
   int other_alerts = 0;
   std::vector<std::string> routes;
   health::HealthRun last;
+  health_sil::FaultPlan plan;
+  plan.disturbance = sea;
   for (int k = 0; k < surfacings; ++k) {
     const std::uint64_t s = rng();
     const int kind = static_cast<int>(rng() % 3);
@@ -242,10 +261,10 @@ int run_transects(std::uint64_t seed, const std::string& dir, int surfacings) {
     std::string error;
     char route[64];
     if (kind == 0) {
-      error = health_sil::fly_surfacing(dir + "/sbd", {}, k, kHoursApart, s, {}, 180);
+      error = health_sil::fly_surfacing(dir + "/sbd", plan, k, kHoursApart, s, {}, 180);
       std::snprintf(route, sizeof route, "box, launched %llu deg", static_cast<unsigned long long>(s % 361));
     } else {
-      error = health_sil::fly_transect(dir + "/sbd", {}, k, kHoursApart, s, turn);
+      error = health_sil::fly_transect(dir + "/sbd", plan, k, kHoursApart, s, turn);
       std::snprintf(route, sizeof route, "transect, turn %+d deg", turn);
     }
     if (!error.empty()) {
@@ -268,8 +287,9 @@ int run_transects(std::uint64_t seed, const std::string& dir, int surfacings) {
     const auto k = static_cast<std::size_t>(std::stoi(name.substr(name.rfind('-') + 1)));
     const health::EffectValue& fin = m.effects[static_cast<std::size_t>(HealthEffect::kFinEffectiveness)];
     if (!m.judged) continue;
-    std::printf("    %-26s %s fin spread %6.2f deg  ", k < routes.size() ? routes[k].c_str() : "?",
-                m.name.substr(m.name.size() - 3).c_str(), m.fin_spread_deg);
+    std::printf("    %-26s %s fin spread %5.2f deg, heading spread %6.2f deg  ",
+                k < routes.size() ? routes[k].c_str() : "?", m.name.substr(m.name.size() - 3).c_str(), m.fin_spread_deg,
+                m.heading_spread_deg);
     if (fin.judged()) {
       std::printf("fin %.4f [%.4f, %.4f]\n", fin.value, fin.low, fin.high);
     } else {
@@ -304,6 +324,15 @@ int main(int argc, char** argv) {
   tool.add_integer("--transects", transects, 0, 1000, "",
                    "instead: this many clean 3-day deployments mixing the box, straight transects and transects "
                    "with one small turn (the fin on segments that turn too little)");
+  health_sil::Disturbance sea;
+  app.add_option("--yaw-disturbance", sea.yaw_deg_s,
+                 "a random yaw rate of this RMS (deg/s) in every surfacing (default 0: still water; the comet "
+                 "logs' calibration 0.34-0.82)")
+      ->check(CLI::Range(0.0, 5.0));
+  app.add_option("--yaw-correlation", sea.yaw_correlation_s, "its correlation time (s, default 4)")
+      ->check(CLI::Range(0.1, 3600.0));
+  app.add_option("--compass-noise", sea.compass_noise_deg, "the compass's white noise (deg; default: the SIL's 0.2)")
+      ->check(CLI::Range(0.0, 20.0));
   std::vector<std::string> kinds{"drag", "buoyancy", "fin", "pump"};
   app.add_option("--faults", kinds, "fault kinds drawn (default: all; a bounded run measures one)")
       ->delimiter(',')
@@ -312,14 +341,14 @@ int main(int argc, char** argv) {
     if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;
     if (clean == kAsDraws) clean = draws;
     if (transects > 0) {
-      std::printf("bench_health --seed %llu --transects %zu  (surfacings %g h apart)\n",
-                  static_cast<unsigned long long>(seed), transects, kHoursApart);
+      std::printf("bench_health --seed %llu --transects %zu%s  (surfacings %g h apart)\n",
+                  static_cast<unsigned long long>(seed), transects, disturbance_args(sea).c_str(), kHoursApart);
       std::mt19937_64 rng(seed);
       int fin_alerts = 0, failed = 0;
       for (std::size_t i = 0; i < transects; ++i) {
         const std::uint64_t s = rng();
         std::printf("  deployment %zu (seed %llu):\n", i, static_cast<unsigned long long>(s));
-        const int n = run_transects(s, out + "/transects" + std::to_string(i), 9);
+        const int n = run_transects(s, out + "/transects" + std::to_string(i), 9, sea);
         if (n < 0) ++failed;
         fin_alerts += std::max(n, 0);
         std::fflush(stdout);
@@ -329,9 +358,10 @@ int main(int argc, char** argv) {
       return 0;
     }
     std::printf(
-        "bench_health --seed %llu --draws %zu --clean %zu --faults %s --launch-spread %d  (surfacings %g h apart, "
+        "bench_health --seed %llu --draws %zu --clean %zu --faults %s --launch-spread %d%s  (surfacings %g h apart, "
         "decimated .sbd: tests/health/sbdlist.dat)\n",
-        static_cast<unsigned long long>(seed), draws, clean, joined(kinds).c_str(), launch_spread_deg, kHoursApart);
+        static_cast<unsigned long long>(seed), draws, clean, joined(kinds).c_str(), launch_spread_deg,
+        disturbance_args(sea).c_str(), kHoursApart);
     std::mt19937_64 rng(seed);
     std::vector<double> update_s, update_cpu_s;
     std::map<Fault, std::vector<std::pair<Draw, Outcome>>> results;
@@ -344,7 +374,8 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < clean; ++i) plan.push_back(Fault::kNone);
     std::size_t n = 0;
     for (Fault f : plan) {
-      const Draw d = draw(f, rng);
+      Draw d = draw(f, rng);
+      d.plan.disturbance = sea;
       const Outcome o = run(d, out + "/draw" + std::to_string(n++), launch_spread_deg);
       std::printf("  %-48s ", d.text.c_str());
       if (!o.error.empty()) {
@@ -354,8 +385,10 @@ int main(int argc, char** argv) {
           std::printf("alerted at %d (onset %d)", o.detected, d.onset);
           if (o.sized) std::printf(", size %.4g [%.4g, %.4g] (truth %.4g)", o.size, o.low, o.high, d.truth);
         }
-        std::printf("; other alerts %zu; fin not judged on %d segments (smallest fin spread %.2f deg)\n",
-                    o.false_alarms.size(), o.fin_not_judged, o.min_fin_spread_deg);
+        std::printf(
+            "; other alerts %zu; fin not judged on %d segments (smallest fin spread %.2f deg, heading spread %.1f "
+            "deg)\n",
+            o.false_alarms.size(), o.fin_not_judged, o.min_fin_spread_deg, o.min_heading_spread_deg);
         for (const std::string& fa : o.false_alarms) std::printf("      other: %s\n", fa.c_str());
         update_s.insert(update_s.end(), o.update_s.begin(), o.update_s.end());
         update_cpu_s.insert(update_cpu_s.end(), o.update_cpu_s.begin(), o.update_cpu_s.end());

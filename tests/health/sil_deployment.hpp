@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -24,6 +25,18 @@
 
 namespace glider::health_sil {
 
+// Heading disturbances that move the fin without a commanded turn (docs/
+// health.md, "The fin in disturbed water"): none by default, so a plan
+// without them flies bit-identically as before. The SIL's own models: the
+// vehicle's random yaw (heading.yaw_disturbance_*: first-order Gauss-
+// Markov; the comet logs' calibration is 0.34-0.82 deg/s RMS over 4 s,
+// docs/heading-control.md) and the compass's white noise (SensorNoise).
+struct Disturbance {
+  double yaw_deg_s = 0.0;           // RMS of the random yaw rate (0: none)
+  double yaw_correlation_s = 4.0;   // its correlation time
+  double compass_noise_deg = -1.0;  // the compass's noise (< 0: the SIL's default, 0.2 deg)
+};
+
 // The hidden faults. A surfacing index k flies from day k * hours_apart / 24.
 struct FaultPlan {
   double drag_per_day = 0.0;    // cd0 grows by this fraction of nominal per day ...
@@ -36,6 +49,7 @@ struct FaultPlan {
   int pump_at = -1;
   double pump_lag_s = 0.0;  // the displaced volume lags the pump by this ...
   int pump_lag_at = -1;     // ... from this surfacing on
+  Disturbance disturbance;  // the water and compass every surfacing flies in (not a fault)
 };
 
 inline model::VehicleParams nominal_vehicle() {
@@ -57,6 +71,10 @@ inline model::VehicleParams flown_vehicle(const FaultPlan& plan, int k, double h
   if (plan.fin_at >= 0 && k >= plan.fin_at) v.heading.fin_yaw_gain_per_m *= plan.fin_factor;
   if (plan.pump_at >= 0 && k >= plan.pump_at) v.ballast.rate_m3_s *= plan.pump_factor;
   if (plan.pump_lag_at >= 0 && k >= plan.pump_lag_at) v.ballast.lag_s = plan.pump_lag_s;
+  if (plan.disturbance.yaw_deg_s > 0.0) {
+    v.heading.yaw_disturbance_rad_s = plan.disturbance.yaw_deg_s * std::numbers::pi / 180.0;
+    v.heading.yaw_disturbance_correlation_s = plan.disturbance.yaw_correlation_s;
+  }
   return v;
 }
 
@@ -79,6 +97,8 @@ inline std::string fly_mission(const std::string& dir, const FaultPlan& plan, in
   sil::ScenarioOptions options;
   options.seed = seed;
   options.environment = model::still_water(nominal.trim_density_kg_m3);
+  if (plan.disturbance.compass_noise_deg >= 0.0)
+    options.noise.heading_rad = plan.disturbance.compass_noise_deg * std::numbers::pi / 180.0;
   const fw::app::VehicleSetup setup =
       sil::vehicle_setup(nominal, options.fitted, 100.0, false, options.environment.water.at(0.0, 0.0).density_kg_m3);
   const fw::app::PreparedMission mission = fw::app::prepare_mission(

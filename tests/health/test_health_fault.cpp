@@ -250,3 +250,49 @@ TEST(HealthFinTurns, AStraightTransectsFinIsNotJudged) {
   CHECK(not_judged != std::string::npos);
   CHECK(json.find("too thin to judge: the fin moved", not_judged) != std::string::npos);
 }
+
+// The fin in disturbed water: a random yaw (waves, turbulence) makes the
+// autopilot move the fin without turning the glider, which the closed loop
+// reads weak (0.28-0.45 for 1 on straight SIL transects whose fin moved 3-8
+// deg, past the fin spread's 2.5 deg). Such a segment's fin is not judged:
+// its heading did not turn (docs/health.md, "The fin in disturbed water").
+TEST_GROUP(HealthFinDisturbed){};
+
+// A straight transect and the box, both in the comet logs' strongest water
+// (random yaw 0.8 deg/s over 4 s, compass noise 1.9 deg): the transect's fin
+// moves past the fin spread's threshold but its heading does not turn, so
+// its fin is not judged; the box's is.
+TEST(HealthFinDisturbed, AFinChasingARandomYawIsNotJudged) {
+  const std::string dir = fresh_dir("fin_disturbed");
+  health_sil::FaultPlan water;
+  water.disturbance.yaw_deg_s = 0.8;
+  water.disturbance.compass_noise_deg = 1.9;
+  std::string error = health_sil::fly_transect(dir + "/sbd", water, 0, kHoursApart, 911, 0.0);
+  CHECK_TEXT(error.empty(), error.c_str());
+  error = health_sil::fly_surfacing(dir + "/sbd", water, 1, kHoursApart, 912, {}, 180);
+  CHECK_TEXT(error.empty(), error.c_str());
+  const health::HealthRun run = health::update_health(health_sil::health_options(dir, kHoursApart));
+  int straight = 0, turning = 0;
+  for (const health::SegmentMeasurement& m : run.segments) {
+    if (!m.judged) continue;
+    const health::EffectValue& fin = m.effects[static_cast<std::size_t>(health::HealthEffect::kFinEffectiveness)];
+    char text[500];
+    std::snprintf(text, sizeof text, "%s: fin spread %.2f deg, heading spread %.2f deg, fin %.4f [%.4f, %.4f] %s",
+                  m.name.c_str(), m.fin_spread_deg, m.heading_spread_deg, fin.value, fin.low, fin.high,
+                  fin.why.c_str());
+    UT_PRINT(text);
+    if (m.name.find("-000-00-") != std::string::npos) {
+      ++straight;
+      CHECK_TEXT(m.fin_spread_deg >= health::kMinFinSpreadDeg, text);  // the fin's spread alone would judge it
+      CHECK_TEXT(m.heading_spread_deg < health::kMinHeadingSpreadDeg, text);
+      CHECK_TEXT(!fin.judged(), text);
+      CHECK_TEXT(fin.why.find("the heading turned") != std::string::npos, text);
+    } else {
+      ++turning;
+      CHECK_TEXT(m.heading_spread_deg >= health::kMinHeadingSpreadDeg, text);
+      CHECK_TEXT(fin.judged(), text);
+    }
+  }
+  CHECK(straight >= 1);
+  CHECK_EQUAL(1, turning);
+}

@@ -266,3 +266,26 @@ TEST(HealthRules, FinSpreadCountsTheFinUnderWaterAndIsNaNWhenTooFew) {
   nine[0] = nan;  // 9 under water
   CHECK(std::isnan(health::fin_spread_deg(log_of(nine))));
 }
+
+// The heading's spread is circular (headings either side of north are close)
+// and counts only headings under water; NaN with fewer than 10 of them.
+TEST(HealthRules, HeadingSpreadIsCircularAndCountsTheHeadingUnderWater) {
+  const double rad = std::numbers::pi / 180.0;
+  flightlog::Column time, heading, depth;
+  for (int i = 0; i < 12; ++i) {
+    time.push_back(i * 4.0);
+    // 10 under water at 357 and 3 deg; one at the surface at 180 deg; one not logged.
+    heading.push_back(i == 10 ? 180.0 * rad : i == 11 ? std::nan("") : (i % 2 == 0 ? 357.0 : 3.0) * rad);
+    depth.push_back(i == 10 ? 0.5 : 10.0);
+  }
+  const auto log_of = [&](const flightlog::Column& h) {
+    return flightlog::FlightLog("heading.csv", {}, {"time", "m_heading", "m_depth"}, {time, h, depth}, 0);
+  };
+  // R = cos(3 deg): sqrt(-2 ln R) = 3.0011 deg.
+  DOUBLES_EQUAL(std::sqrt(-2.0 * std::log(std::cos(3.0 * rad))) / rad, health::heading_spread_deg(log_of(heading)),
+                1e-9);
+  CHECK(health::heading_spread_deg(log_of(heading)) < 3.01);
+  flightlog::Column nine = heading;
+  nine[0] = std::nan("");
+  CHECK(std::isnan(health::heading_spread_deg(log_of(nine))));
+}

@@ -95,6 +95,29 @@ flightlog::FlightLog with_fin_as_stored(const flightlog::FlightLog& held, const 
   return flightlog::FlightLog(held.source(), held.metadata(), names, std::move(columns), time_index);
 }
 
+// Why a segment's fin is too thin to judge (empty: it can be judged). NaN
+// spreads (too few values under water: a decimated file stores m_fin on
+// change, so a fin that hardly moved leaves few) are no evidence of turns.
+std::string fin_too_thin(double fin_spread, double heading_spread) {
+  char why[256];
+  if (std::isnan(fin_spread)) return "too thin to judge: fewer than 10 fin values under water, no measure of its turns";
+  if (!(fin_spread >= kMinFinSpreadDeg)) {
+    std::snprintf(why, sizeof why,
+                  "too thin to judge: the fin moved %.2f deg (sd under water, at least %.1f needed), too little "
+                  "turning to tell its effect",
+                  fin_spread, kMinFinSpreadDeg);
+    return why;
+  }
+  if (!(heading_spread >= kMinHeadingSpreadDeg)) {
+    std::snprintf(why, sizeof why,
+                  "too thin to judge: the heading turned %.2f deg (circular sd under water, at least %.0f needed) "
+                  "while the fin moved %.2f deg: a fin holding against a random yaw or compass noise, not turning",
+                  heading_spread, kMinHeadingSpreadDeg, fin_spread);
+    return why;
+  }
+  return {};
+}
+
 void measure_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& held,
                      const flightlog::FlightLog& raw, bool decimated, SegmentMeasurement& m) {
   try {
@@ -117,23 +140,11 @@ void measure_heading(const model::VehicleParams& nominal, const flightlog::Fligh
       if (!at(m.effects, e).judged()) at(m.effects, e) = not_judged("the heading fit gave no value");
     }
     const EffectValue& fin = at(m.effects, HealthEffect::kFinEffectiveness);
-    // NaN (fewer than 10 fin values under water: a decimated file stores
-    // m_fin on change, so a fin that hardly moved leaves few) is not judged
-    // either: a spread that cannot be measured is no evidence of turns.
-    if (fin.judged() && !(m.fin_spread_deg >= kMinFinSpreadDeg)) {
-      char why[256];
-      if (std::isnan(m.fin_spread_deg)) {
-        std::snprintf(why, sizeof why,
-                      "too thin to judge: fewer than 10 fin values under water, no measure of its turns (it read "
-                      "%.3f [%.3f, %.3f])",
-                      fin.value, fin.low, fin.high);
-      } else {
-        std::snprintf(why, sizeof why,
-                      "too thin to judge: the fin moved %.2f deg (sd under water, at least %.1f needed), too little "
-                      "turning to tell its effect (it read %.3f [%.3f, %.3f])",
-                      m.fin_spread_deg, kMinFinSpreadDeg, fin.value, fin.low, fin.high);
-      }
-      at(m.effects, HealthEffect::kFinEffectiveness) = not_judged(why);
+    const std::string too_thin = fin_too_thin(m.fin_spread_deg, m.heading_spread_deg);
+    if (fin.judged() && !too_thin.empty()) {
+      char read[96];
+      std::snprintf(read, sizeof read, " (it read %.3f [%.3f, %.3f])", fin.value, fin.low, fin.high);
+      at(m.effects, HealthEffect::kFinEffectiveness) = not_judged(too_thin + read);
     }
   } catch (const std::exception& error) {
     for (HealthEffect e : {HealthEffect::kFinEffectiveness, HealthEffect::kRollOffset}) {
@@ -159,6 +170,25 @@ double fin_spread_deg(const flightlog::FlightLog& log) {
   double sum2 = 0.0;
   for (double f : under) sum2 += (f - mean) * (f - mean);
   return std::sqrt(sum2 / static_cast<double>(under.size() - 1));
+}
+
+double heading_spread_deg(const flightlog::FlightLog& log) {
+  const flightlog::Column* heading = log.find("m_heading");
+  const flightlog::Column* depth = log.find("m_depth");
+  if (heading == nullptr || depth == nullptr) return std::nan("");
+  double c = 0.0, s = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < log.rows(); ++i) {
+    if (!std::isfinite((*heading)[i]) || !((*depth)[i] > 2.0)) continue;
+    c += std::cos((*heading)[i]);
+    s += std::sin((*heading)[i]);
+    ++n;
+  }
+  if (n < 10) return std::nan("");
+  // The mean resultant length R of the headings; sqrt(-2 ln R) is the
+  // circular standard deviation (the ordinary one for a small spread).
+  const double r = std::hypot(c, s) / static_cast<double>(n);
+  return std::sqrt(-2.0 * std::log(std::clamp(r, 1e-300, 1.0))) * kDeg;
 }
 
 EffectValue pump_rate(const flightlog::FlightLog& raw) {
@@ -292,6 +322,7 @@ SegmentMeasurement measure_segment(const model::VehicleParams& nominal, const Lo
       }
     }
     m.fin_spread_deg = fin_spread_deg(log);
+    m.heading_spread_deg = heading_spread_deg(log);
     measure_heading(flown, log, *segment.raw, segment.files.decimated, m);
     at(m.effects, HealthEffect::kPumpRate) = pump_rate(*segment.raw);
     at(m.effects, HealthEffect::kBatteryPerKm) = battery_per_km(log);

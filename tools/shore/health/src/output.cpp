@@ -69,6 +69,7 @@ std::string health_json(const HealthRun& run) {
                         {"judged", m.judged},
                         {"why", m.why.empty() ? json(nullptr) : json(m.why)},
                         {"fin_spread_deg", number_or_null(m.fin_spread_deg)},
+                        {"heading_spread_deg", number_or_null(m.heading_spread_deg)},
                         {"not_judged", not_judged}});
   }
   json effects = json::array();

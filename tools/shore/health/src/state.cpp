@@ -76,6 +76,7 @@ std::string state_json(const HealthState& state) {
                         {"why", m.why},
                         {"cost_s", m.cost_s},
                         {"fin_spread_deg", number_or_null(m.fin_spread_deg)},
+                        {"heading_spread_deg", number_or_null(m.heading_spread_deg)},
                         {"effects", effects}});
   }
   json alerts = json::array();
@@ -128,6 +129,7 @@ std::optional<HealthState> read_state(const std::string& path, std::string& prob
       seg.why = m.at("why").get<std::string>();
       seg.cost_s = finite_number(m, "cost_s");
       if (!m.at("fin_spread_deg").is_null()) seg.fin_spread_deg = finite_number(m, "fin_spread_deg");
+      if (!m.at("heading_spread_deg").is_null()) seg.heading_spread_deg = finite_number(m, "heading_spread_deg");
       if (seg.end_s < seg.start_s || seg.time_s < seg.start_s || seg.time_s > seg.end_s) {
         throw std::runtime_error("segment " + seg.name + ": times not in order");
       }

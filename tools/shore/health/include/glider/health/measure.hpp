@@ -31,6 +31,10 @@ struct SegmentMeasurement {
   // the fin's effect on the yaw rate (fin_spread_deg; below kMinFinSpreadDeg
   // the fin is not judged on this segment).
   double fin_spread_deg = std::numeric_limits<double>::quiet_NaN();
+  // The heading's spread under water (deg, NaN: no m_heading): the turning
+  // the fin's motion made (heading_spread_deg; below kMinHeadingSpreadDeg the
+  // fin is not judged on this segment either).
+  double heading_spread_deg = std::numeric_limits<double>::quiet_NaN();
   double cost_s = 0.0;  // wall time of the measurement
 };
 
@@ -49,6 +53,24 @@ inline constexpr double kMinFinSpreadDeg = 2.5;
 // of the yaw rate that the heading fit reads the fin from. NaN with fewer
 // than 10 such values or no m_fin.
 double fin_spread_deg(const flightlog::FlightLog& log);
+
+// A segment whose heading turned less than this (its circular standard
+// deviation under water) is not judged on the fin either, however much the
+// fin moved: a fin that chases a random yaw (waves, turbulence) or compass
+// noise moves without turning the glider, and the closed loop reads it weak.
+// Designed on SIL segments in disturbed water (bench_health --transects N
+// --yaw-disturbance 0.3-0.8 --compass-noise 1-1.9, seeds 126609804,
+// 392876965, 833719070, 483023233): 128 straight or one-turn transects moved
+// the fin 2.97-8.19 deg (past kMinFinSpreadDeg) but turned 2.04-5.99 deg and
+// read the fin 0.28-0.45 for 1 (3 false fin alerts in 9 deployments); the box
+// turned 158 deg or more. The threshold is 1.7 times the largest straight
+// one, far below the box (docs/health.md, "The fin in disturbed water").
+inline constexpr double kMinHeadingSpreadDeg = 10.0;
+
+// The circular standard deviation (deg) of m_heading below 2 m: how far the
+// segment's heading turned. NaN with fewer than 10 such values or no
+// m_heading.
+double heading_spread_deg(const flightlog::FlightLog& log);
 
 // Never throws for the data (a segment with no dives, too thin, a vehicle
 // that cannot fly it: judged = false and `why`).

@@ -27,8 +27,9 @@ inline constexpr const char* kStateSchema = "glider-health-state/1";
 // 36, which changed measurements without the bump), each value's shared shift
 // stored (session 37); 7: the heading fit on diagnose's heading vehicle and
 // on every yo (session 38); 8: the fin not judged on a segment that turned
-// too little (fin_spread_deg stored, session 38).
-inline constexpr int kMeasurementVersion = 8;
+// too little (fin_spread_deg stored, session 38); 9: nor on one whose heading
+// turned too little (heading_spread_deg stored, session 39).
+inline constexpr int kMeasurementVersion = 9;
 
 struct HealthState {
   std::string glider;
