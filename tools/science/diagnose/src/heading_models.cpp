@@ -160,7 +160,15 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
 
 // Slocum's law replayed on the logged heading: the error and rate are read
 // a delay before each command; the integrator runs from the log's start and
-// is held while the fin is centred (surface, turns), as the firmware's.
+// is held while the fin is centred (surface, turns), as the firmware's. The
+// law steps at every cycle, logged or not: a gap of k cycles between two
+// rows (a glider does not log every cycle; the independent truth drops 2 %)
+// is stepped k times on the heading interpolated between them. Stepped once
+// over the gap, the integrator takes the later error for the whole gap and
+// the rate the gap's mean: in a turn, with the error a radian and the fin at
+// its limit, a few hundredths of a radian of integrator gained or lost that
+// show only when the fin leaves its limit, and stay (docs/science.md "The
+// autopilot's unlogged cycles").
 AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSettings& settings, double fin_max_rad) {
   AutopilotLaw law;
   law.kp = value(values, HeadingEffect::kAutopilotGain);
@@ -172,12 +180,38 @@ AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSett
   return law;
 }
 
-AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings)
-    : track_(track), settings_(settings) {}
+namespace {
 
-const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay) {
+// The log's cycle: the median interval between rows where the law steps
+// (0 where there are none).
+double logged_cycle_s(const HeadingTrack& t) {
+  std::vector<double> dt;
+  for (std::size_t i = 1; i < t.row_time_s.size(); ++i) {
+    const bool both = std::isfinite(t.row_command_rad[i]) && t.row_gliding[i] &&
+                      std::isfinite(t.row_command_rad[i - 1]) && t.row_gliding[i - 1];
+    if (both && t.row_time_s[i] > t.row_time_s[i - 1]) dt.push_back(t.row_time_s[i] - t.row_time_s[i - 1]);
+  }
+  if (dt.empty()) return 0.0;
+  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
+  return dt[dt.size() / 2];
+}
+
+// Cycles the law stepped between two rows dt apart: at most this many (a
+// longer gap is not a run of unlogged cycles but a stop).
+constexpr int kMaxCyclesPerGap = 8;
+int cycles_between(double dt, double cycle) {
+  if (!(cycle > 0.0) || !(dt > 0.0)) return 1;
+  return std::clamp(static_cast<int>(std::lround(dt / cycle)), 1, kMaxCyclesPerGap);
+}
+
+}  // namespace
+
+AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings)
+    : track_(track), settings_(settings), cycle_s_(logged_cycle_s(track)) {}
+
+const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
   for (const Inputs& cached : cache_) {
-    if (cached.delay == delay) return cached.rows;
+    if (cached.delay == delay) return cached;
   }
   if (cache_.size() >= kCachedDelays) cache_.erase(cache_.begin());
   Inputs& made = cache_.emplace_back();
@@ -187,7 +221,12 @@ const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay)
   made.rows.resize(n);
   const std::span<const double> time(t.row_time_s);
   double last_heading = kNaN;
-  std::size_t after = 0;  // first row later than `when`: `when` only grows (rows sorted), so it only advances
+  // The heading read a delay before `at`; NaN before the log's start.
+  auto read = [&](double at) {
+    const double when = at - delay;
+    const auto after = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), when) - time.begin());
+    return after == 0 ? kNaN : interpolate_from(time, t.row_heading_rad, after - 1, when, true);
+  };
   for (std::size_t i = 0; i < n; ++i) {
     Input& in = made.rows[i];
     if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
@@ -195,36 +234,53 @@ const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay)
       in.kind = Input::kCentre;
       continue;
     }
-    const double when = time[i] - delay;
-    while (after < n && time[after] <= when) ++after;
-    const std::size_t c = after == 0 ? SIZE_MAX : after - 1;  // row_at_or_before(time, when)
-    const double heading = interpolate_from(time, t.row_heading_rad, c, when, true);
+    const double heading = read(time[i]);
     // The command is the current one (the mission sets it, nothing delays
     // it); only the heading is read late.
-    const double command = c == SIZE_MAX ? kNaN : t.row_command_rad[i];
+    const double command = t.row_command_rad[i];
     if (!std::isfinite(heading) || !std::isfinite(command)) {
       in.kind = Input::kNone;
       continue;
     }
+    const double gap = i > 0 ? time[i] - time[i - 1] : 0.0;
+    // The unlogged cycles before this row, where the previous row's law ran on.
+    const int cycles = std::isfinite(last_heading) ? cycles_between(gap, cycle_s_) : 1;
+    const double dt = gap / cycles;
+    in.first_unlogged = made.unlogged.size();
+    for (int m = 1; m < cycles; ++m) {
+      Input& step = made.unlogged.emplace_back();
+      const double h = read(time[i - 1] + m * dt);
+      step.kind = Input::kStep;
+      step.error = wrap_pi(t.row_command_rad[i - 1] - h);
+      step.dt = dt;
+      step.rate = wrap_pi(h - last_heading) / dt;
+      last_heading = h;
+    }
+    in.unlogged = made.unlogged.size() - in.first_unlogged;
     in.kind = Input::kStep;
     in.error = wrap_pi(command - heading);
-    in.dt = i > 0 ? time[i] - time[i - 1] : 0.0;
-    in.rate = std::isfinite(last_heading) && in.dt > 0.0 ? wrap_pi(heading - last_heading) / in.dt : 0.0;
+    in.dt = dt;
+    in.rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
     last_heading = heading;
   }
-  return made.rows;
+  return made;
 }
 
 void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::size_t> rows,
                               std::vector<double>& out) {
-  const std::vector<Input>& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
+  const Inputs& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
   AutopilotLaw law = AutopilotLaw::from(values, settings_, track_.fin_max_rad);
-  predicted_.assign(in.size(), kNaN);
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    if (in[i].kind == Input::kCentre) {
+  predicted_.assign(in.rows.size(), kNaN);
+  for (std::size_t i = 0; i < in.rows.size(); ++i) {
+    const Input& row = in.rows[i];
+    if (row.kind == Input::kCentre) {
       law.output = 0.0;
-    } else if (in[i].kind == Input::kStep) {
-      predicted_[i] = law.step(in[i].error, in[i].rate, in[i].dt);
+    } else if (row.kind == Input::kStep) {
+      for (std::size_t k = row.first_unlogged; k < row.first_unlogged + row.unlogged; ++k) {
+        const Input& step = in.unlogged[k];
+        law.step(step.error, step.rate, step.dt);
+      }
+      predicted_[i] = law.step(row.error, row.rate, row.dt);
     }
   }
   pick(predicted_, rows, out);

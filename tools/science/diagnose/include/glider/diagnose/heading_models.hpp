@@ -77,15 +77,18 @@ class AutopilotReplay {
   struct Input {
     enum Kind : unsigned char { kCentre, kNone, kStep } kind = kNone;  // fin centred / no prediction / a law step
     double error = 0.0, rate = 0.0, dt = 0.0;
+    std::size_t first_unlogged = 0, unlogged = 0;  // the law's steps at unlogged cycles before this row
   };
   struct Inputs {
     double delay = 0.0;
     std::vector<Input> rows;
+    std::vector<Input> unlogged;  // the steps at cycles the log does not hold, in order
   };
   static constexpr std::size_t kCachedDelays = 4;
-  const std::vector<Input>& inputs(double delay);
+  const Inputs& inputs(double delay);
   const HeadingTrack& track_;
   AutopilotSettings settings_;
+  double cycle_s_ = 0.0;  // the log's cycle: a gap of k of them is k steps of the law
   std::vector<Inputs> cache_;
   std::vector<double> predicted_;
 };
