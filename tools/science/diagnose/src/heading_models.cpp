@@ -163,7 +163,7 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
 // is held while the fin is centred (surface, turns), as the firmware's. The
 // law steps at every cycle, logged or not: a gap of k cycles between two
 // rows (a glider does not log every cycle; the independent truth drops 2 %)
-// is stepped k times on the heading interpolated between them. Stepped once
+// - k cycles within the cycle's own jitter - is stepped k times on the heading interpolated between them. Stepped once
 // over the gap, the integrator takes the later error for the whole gap and
 // the rate the gap's mean: in a turn, with the error a radian and the fin at
 // its limit, a few hundredths of a radian of integrator gained or lost that
@@ -182,32 +182,52 @@ AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSett
 
 namespace {
 
-// The log's cycle: the median interval between rows where the law steps
-// (0 where there are none).
-double logged_cycle_s(const HeadingTrack& t) {
+// The log's cycle: the median interval between rows where the law steps,
+// and half the spread of those intervals (5th to 95th percentile of the
+// ones under 1.5 cycles): the cycle's own jitter. Zero where there are none.
+struct LoggedCycle {
+  double cycle_s = 0.0, half_spread_s = 0.0;
+};
+LoggedCycle logged_cycle(const HeadingTrack& t) {
   std::vector<double> dt;
   for (std::size_t i = 1; i < t.row_time_s.size(); ++i) {
     const bool both = std::isfinite(t.row_command_rad[i]) && t.row_gliding[i] &&
                       std::isfinite(t.row_command_rad[i - 1]) && t.row_gliding[i - 1];
     if (both && t.row_time_s[i] > t.row_time_s[i - 1]) dt.push_back(t.row_time_s[i] - t.row_time_s[i - 1]);
   }
-  if (dt.empty()) return 0.0;
-  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
-  return dt[dt.size() / 2];
+  if (dt.empty()) return {};
+  std::sort(dt.begin(), dt.end());
+  LoggedCycle c;
+  c.cycle_s = dt[dt.size() / 2];
+  const auto regular = static_cast<std::size_t>(std::upper_bound(dt.begin(), dt.end(), 1.5 * c.cycle_s) - dt.begin());
+  const auto at = [&](double q) { return dt[static_cast<std::size_t>(q * static_cast<double>(regular - 1))]; };
+  c.half_spread_s = 0.5 * (at(0.95) - at(0.05));
+  return c;
 }
 
-// Cycles the law stepped between two rows dt apart: at most this many (a
-// longer gap is not a run of unlogged cycles but a stop).
+// Cycles the law stepped between two rows dt apart: k where dt is k cycles
+// within k times the cycle's own jitter (the sum of k jittered cycles), else
+// 1 - a longer cycle, not unlogged ones (the real comet logs' few gaps are
+// 1.5-3.4 cycles, off a whole number by 2-10 times their jitter). At most
+// this many (a longer gap is a stop).
 constexpr int kMaxCyclesPerGap = 8;
-int cycles_between(double dt, double cycle) {
-  if (!(cycle > 0.0) || !(dt > 0.0)) return 1;
-  return std::clamp(static_cast<int>(std::lround(dt / cycle)), 1, kMaxCyclesPerGap);
+int cycles_between(double dt, const LoggedCycle& c) {
+  if (!(c.cycle_s > 0.0) || !(dt > 1.5 * c.cycle_s)) return 1;
+  const long k = std::lround(dt / c.cycle_s);
+  if (k > kMaxCyclesPerGap || std::abs(dt - static_cast<double>(k) * c.cycle_s) > static_cast<double>(k) * c.half_spread_s) {
+    return 1;
+  }
+  return static_cast<int>(k);
 }
 
 }  // namespace
 
 AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings)
-    : track_(track), settings_(settings), cycle_s_(logged_cycle_s(track)) {}
+    : track_(track), settings_(settings) {
+  const LoggedCycle c = logged_cycle(track);
+  cycle_s_ = c.cycle_s;
+  half_spread_s_ = c.half_spread_s;
+}
 
 const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
   for (const Inputs& cached : cache_) {
@@ -244,7 +264,7 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     }
     const double gap = i > 0 ? time[i] - time[i - 1] : 0.0;
     // The unlogged cycles before this row, where the previous row's law ran on.
-    const int cycles = std::isfinite(last_heading) ? cycles_between(gap, cycle_s_) : 1;
+    const int cycles = std::isfinite(last_heading) ? cycles_between(gap, {cycle_s_, half_spread_s_}) : 1;
     const double dt = gap / cycles;
     in.first_unlogged = made.unlogged.size();
     for (int m = 1; m < cycles; ++m) {

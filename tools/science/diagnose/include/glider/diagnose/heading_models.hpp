@@ -88,7 +88,9 @@ class AutopilotReplay {
   const Inputs& inputs(double delay);
   const HeadingTrack& track_;
   AutopilotSettings settings_;
-  double cycle_s_ = 0.0;  // the log's cycle: a gap of k of them is k steps of the law
+  // The log's cycle and half its jitter's spread: a gap of k cycles is k
+  // steps of the law.
+  double cycle_s_ = 0.0, half_spread_s_ = 0.0;
   std::vector<Inputs> cache_;
   std::vector<double> predicted_;
 };
