@@ -214,7 +214,8 @@ constexpr int kMaxCyclesPerGap = 8;
 int cycles_between(double dt, const LoggedCycle& c) {
   if (!(c.cycle_s > 0.0) || !(dt > 1.5 * c.cycle_s)) return 1;
   const long k = std::lround(dt / c.cycle_s);
-  if (k > kMaxCyclesPerGap || std::abs(dt - static_cast<double>(k) * c.cycle_s) > static_cast<double>(k) * c.half_spread_s) {
+  if (k > kMaxCyclesPerGap ||
+      std::abs(dt - static_cast<double>(k) * c.cycle_s) > static_cast<double>(k) * c.half_spread_s) {
     return 1;
   }
   return static_cast<int>(k);
