@@ -228,6 +228,52 @@ AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSetti
   const LoggedCycle c = logged_cycle(track);
   cycle_s_ = c.cycle_s;
   half_spread_s_ = c.half_spread_s;
+  // Where the log holds a command change between two consecutive cycles
+  // the change happened at the later row's depth: the change depth lies
+  // between the two rows' depths. Every such change must move the same way
+  // and their brackets overlap, else the command does not change at one
+  // depth (a waypoint reached, an operator's new heading) and an unlogged
+  // cycle keeps the earlier command.
+  const std::vector<double>& z = track.row_depth_m;
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  int direction = 0;
+  bool one_depth = true;
+  for (std::size_t i = 1; i < track.row_time_s.size() && one_depth && cycle_s_ > 0.0; ++i) {
+    const double before = track.row_command_rad[i - 1], after = track.row_command_rad[i];
+    const bool gliding = track.row_gliding[i] && track.row_gliding[i - 1];
+    const double gap = track.row_time_s[i] - track.row_time_s[i - 1];
+    if (!gliding || !std::isfinite(before) || !std::isfinite(after) || before == after || gap > 1.5 * cycle_s_)
+      continue;
+    if (!std::isfinite(z[i]) || !std::isfinite(z[i - 1]) || z[i] == z[i - 1]) {
+      one_depth = false;
+      break;
+    }
+    const int way = z[i] > z[i - 1] ? 1 : -1;
+    if (direction != 0 && way != direction) one_depth = false;
+    direction = way;
+    lo = std::max(lo, std::min(z[i], z[i - 1]));
+    hi = std::min(hi, std::max(z[i], z[i - 1]));
+  }
+  if (one_depth && direction != 0 && lo <= hi) {
+    change_depth_lo_m_ = lo;
+    change_depth_hi_m_ = hi;
+    change_direction_ = direction;
+  }
+}
+
+// The command at an unlogged cycle `fraction` of the way from row - 1 to
+// row: the earlier row's, unless the command changed across the gap and the
+// depth (interpolated) had passed the log's change depth by then - the
+// cycle where a dive starts is unlogged, and the new heading's error (a
+// radian) ran the integrator there.
+double AutopilotReplay::unlogged_command(std::size_t row, double fraction) const {
+  const double before = track_.row_command_rad[row - 1], after = track_.row_command_rad[row];
+  if (before == after || change_direction_ == 0) return before;
+  const std::vector<double>& z = track_.row_depth_m;
+  const double depth = z[row - 1] + fraction * (z[row] - z[row - 1]);
+  const double change = 0.5 * (change_depth_lo_m_ + change_depth_hi_m_);
+  const bool passed = change_direction_ < 0 ? depth <= change : depth >= change;
+  return passed ? after : before;
 }
 
 const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
@@ -272,7 +318,7 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
       Input& step = made.unlogged.emplace_back();
       const double h = read(time[i - 1] + m * dt);
       step.kind = Input::kStep;
-      step.error = wrap_pi(t.row_command_rad[i - 1] - h);
+      step.error = wrap_pi(unlogged_command(i, static_cast<double>(m) / cycles) - h);
       step.dt = dt;
       step.rate = wrap_pi(h - last_heading) / dt;
       last_heading = h;

@@ -91,6 +91,13 @@ class AutopilotReplay {
   // The log's cycle and half its jitter's spread: a gap of k cycles is k
   // steps of the law.
   double cycle_s_ = 0.0, half_spread_s_ = 0.0;
+  // The depth at which the command changes (a Slocum's new heading at the
+  // dive's start, when the climb passes its climb-to depth), bracketed by
+  // the changes the log holds between two consecutive cycles, and the way
+  // the depth moves through it (-1 rising, +1 sinking, 0: no single depth).
+  double change_depth_lo_m_ = 0.0, change_depth_hi_m_ = 0.0;
+  int change_direction_ = 0;
+  double unlogged_command(std::size_t row, double fraction) const;
   std::vector<Inputs> cache_;
   std::vector<double> predicted_;
 };
