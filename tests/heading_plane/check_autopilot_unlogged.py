@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """The autopilot replay steps the law at every cycle, logged or not
-(docs/science.md, "The autopilot's unlogged cycles").
+(docs/science.md, "The autopilot replay's unlogged dive start, and the
+truth's nominal cycle").
 
 Fixed draws of the independent truth (tools/science/truth), diagnosed as a
 black box (`glider-diagnose --plane heading --json`), regression cases on

@@ -168,7 +168,7 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
 // the rate the gap's mean: in a turn, with the error a radian and the fin at
 // its limit, a few hundredths of a radian of integrator gained or lost that
 // show only when the fin leaves its limit, and stay (docs/science.md "The
-// autopilot's unlogged cycles").
+// autopilot replay's unlogged dive start, and the truth's nominal cycle").
 AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSettings& settings, double fin_max_rad) {
   AutopilotLaw law;
   law.kp = value(values, HeadingEffect::kAutopilotGain);
