@@ -223,8 +223,8 @@ int cycles_between(double dt, const LoggedCycle& c) {
 
 }  // namespace
 
-AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings)
-    : track_(track), settings_(settings) {
+AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings, AutopilotClock clock)
+    : track_(track), settings_(settings), clock_(clock) {
   const LoggedCycle c = logged_cycle(track);
   cycle_s_ = c.cycle_s;
   half_spread_s_ = c.half_spread_s;
@@ -312,11 +312,14 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     const double gap = i > 0 ? time[i] - time[i - 1] : 0.0;
     // The unlogged cycles before this row, where the previous row's law ran on.
     const int cycles = std::isfinite(last_heading) ? cycles_between(gap, {cycle_s_, half_spread_s_}) : 1;
-    const double dt = gap / cycles;
+    // Each step's interval: its share of the gap, or the log's cycle.
+    const bool nominal = clock_ == AutopilotClock::kNominal && cycle_s_ > 0.0;
+    const double spacing = gap / cycles;  // when the unlogged cycles read the heading
+    const double dt = nominal ? cycle_s_ : spacing;
     in.first_unlogged = made.unlogged.size();
     for (int m = 1; m < cycles; ++m) {
       Input& step = made.unlogged.emplace_back();
-      const double h = read(time[i - 1] + m * dt);
+      const double h = read(time[i - 1] + m * spacing);
       step.kind = Input::kStep;
       step.error = wrap_pi(unlogged_command(i, static_cast<double>(m) / cycles) - h);
       step.dt = dt;

@@ -68,9 +68,17 @@ void predict_autopilot_fin(const HeadingTrack& track, const AutopilotSettings& s
 // kept) and each call only steps the law - same bits, a fraction of the
 // cost (the replay was 2/3 of a heading diagnosis). Holds a reference to
 // the track; not for use from two threads at once.
+// The clock the law integrates over: each step's own interval (measured,
+// the time since the last cycle: this project's firmware) or the log's
+// median cycle at every step (nominal: a law written for its cycle time).
+// Which one a Slocum's uses is not known (its source is not public; the
+// comet logs cannot tell: docs/science.md "The autopilot's clock").
+enum class AutopilotClock : unsigned char { kMeasured, kNominal };
+
 class AutopilotReplay {
  public:
-  AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings);
+  AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings,
+                  AutopilotClock clock = AutopilotClock::kMeasured);
   void predict(const HeadingValues& values, std::span<const std::size_t> rows, std::vector<double>& out);
 
  private:
@@ -88,6 +96,7 @@ class AutopilotReplay {
   const Inputs& inputs(double delay);
   const HeadingTrack& track_;
   AutopilotSettings settings_;
+  AutopilotClock clock_ = AutopilotClock::kMeasured;
   // The log's cycle and half its jitter's spread: a gap of k cycles is k
   // steps of the law.
   double cycle_s_ = 0.0, half_spread_s_ = 0.0;
