@@ -2,12 +2,13 @@
 #pragma once
 // The autopilot link under the two clocks its law may integrate over
 // (heading_models.hpp AutopilotClock): the log's measured intervals, or its
-// median cycle at every step. No public source says which a Slocum uses and
-// the comet logs cannot tell them apart (docs/science.md "The autopilot's
-// clock"); on the independent truth, whose cycles jitter +-5 %, the clock
-// moves the integrator by a few hundredths of a radian per wind-up - enough
-// to name a spurious delay or deadband under the wrong clock, and to leave a
-// narrow interval off the truth.
+// median cycle at every step. No public source says which a Slocum uses;
+// two of the three comet logs cannot tell them apart, one prefers the
+// measured (docs/science.md "The autopilot's clock"); on the independent
+// truth, which integrates over its nominal cycle while its cycles jitter
+// +-5 %, the clock moves the integrator by a few hundredths of a radian per
+// wind-up - enough to name a spurious delay or deadband under the wrong
+// clock, and to leave a narrow interval off the truth.
 #include <vector>
 
 #include "glider/diagnose/heading_fit.hpp"

@@ -71,8 +71,9 @@ void predict_autopilot_fin(const HeadingTrack& track, const AutopilotSettings& s
 // The clock the law integrates over: each step's own interval (measured,
 // the time since the last cycle: this project's firmware) or the log's
 // median cycle at every step (nominal: a law written for its cycle time).
-// Which one a Slocum's uses is not known (its source is not public; the
-// comet logs cannot tell: docs/science.md "The autopilot's clock").
+// Which one a Slocum's uses is not known (its source is not public; two
+// comet logs cannot tell, one prefers the measured: docs/science.md "The
+// autopilot's clock").
 enum class AutopilotClock : unsigned char { kMeasured, kNominal };
 
 class AutopilotReplay {
