@@ -239,6 +239,7 @@ int main(int argc, char** argv) {
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
   std::string autopilot_integrator = "per-glide";
+  std::string autopilot_clock = "both";
   double drag_reynolds_exponent = glider::diagnose::kDragReynoldsExponentPrior;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
   glider::diagnose::PitchCalibration pitch_calibration;
@@ -278,6 +279,13 @@ int main(int argc, char** argv) {
                  "docs/science.md)")
       ->check(CLI::IsMember({"per-glide", "replayed"}))
       ->capture_default_str();
+  app.add_option("--autopilot-clock", autopilot_clock,
+                 "the clock the heading autopilot's law integrates over: measured (each cycle's interval, the rule "
+                 "before), nominal (the log's median cycle), both (both fitted: what both name, intervals over "
+                 "both) or held-out (the held-out rows choose where they tell the clocks apart, else both; "
+                 "docs/science.md \"The autopilot's clock\")")
+      ->check(CLI::IsMember({"measured", "nominal", "both", "held-out"}))
+      ->capture_default_str();
   app.add_option("--fit", fit_only,
                  "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
       ->delimiter(',');
@@ -316,6 +324,11 @@ int main(int argc, char** argv) {
     glider::diagnose::HeadingDiagnoseOptions heading_options;
     heading_options.intervals = options.intervals;
     heading_options.autopilot_integrator_per_glide = autopilot_integrator == "per-glide";
+    using glider::diagnose::AutopilotClockRule;
+    heading_options.autopilot_clock = autopilot_clock == "measured"   ? AutopilotClockRule::kMeasured
+                                      : autopilot_clock == "nominal"  ? AutopilotClockRule::kNominal
+                                      : autopilot_clock == "held-out" ? AutopilotClockRule::kHeldOut
+                                                                      : AutopilotClockRule::kBoth;
     std::vector<std::string> depth_rate_ids;
     for (const std::string& id : fit_only) {
       bool heading_id = false;

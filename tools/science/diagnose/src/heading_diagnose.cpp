@@ -645,7 +645,9 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
                              track.row_fin_rad),
                      servo_samples, options);
   const LinkSamples autopilot_samples = row_split(autopilot_rows(track));
-  AutopilotReplay autopilot_replay(track, d.configured);
+  const AutopilotClock clock =
+      options.autopilot_clock == AutopilotClockRule::kNominal ? AutopilotClock::kNominal : AutopilotClock::kMeasured;
+  AutopilotReplay autopilot_replay(track, d.configured, clock);
   const HeadingResiduals replayed_residuals =
       against([&](const HeadingValues& v, std::span<const std::size_t> w,
                   std::vector<double>& o) { autopilot_replay.predict(v, w, o); },
@@ -727,6 +729,24 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
         d.autopilot_integrator_per_glide = false;
       }
     }
+  }
+  // The autopilot link again under the log's median cycle, the two fits one
+  // reading (heading_autopilot_clock.hpp); the closed-loop check flew the
+  // measured clock's.
+  const bool merge =
+      options.autopilot_clock == AutopilotClockRule::kBoth || options.autopilot_clock == AutopilotClockRule::kHeldOut;
+  if (merge && options.fit_only.empty()) {
+    AutopilotReplay nominal_replay(track, d.configured, AutopilotClock::kNominal);
+    const HeadingResiduals nominal_residuals = against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                                                           std::vector<double>& o) { nominal_replay.predict(v, w, o); },
+                                                       track.row_fin_command_rad);
+    const LinkFit nominal_clock = run_link(
+        HeadingLink::kAutopilot, base,
+        d.autopilot_integrator_per_glide ? integrator_per_glide(nominal_residuals, track, track.row_fin_command_rad)
+                                         : nominal_residuals,
+        autopilot_samples, options);
+    d.autopilot = merge_autopilot_clocks(d.autopilot, nominal_clock, base, options.autopilot_clock,
+                                         min_absolute_improvement(HeadingLink::kAutopilot), d.autopilot_clock);
   }
   const UnexplainedYaw left = unexplained_yaw(track, nominal, d.yaw.values, &d.current_shear);
   d.unexplained_yaw_rate_rad_s = left.rms_rad_s;

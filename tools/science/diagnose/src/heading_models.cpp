@@ -160,7 +160,15 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
 
 // Slocum's law replayed on the logged heading: the error and rate are read
 // a delay before each command; the integrator runs from the log's start and
-// is held while the fin is centred (surface, turns), as the firmware's.
+// is held while the fin is centred (surface, turns), as the firmware's. The
+// law steps at every cycle, logged or not: a gap of k cycles between two
+// rows (a glider does not log every cycle; the independent truth drops 2 %)
+// - k cycles within the cycle's own jitter - is stepped k times on the heading interpolated between them. Stepped once
+// over the gap, the integrator takes the later error for the whole gap and
+// the rate the gap's mean: in a turn, with the error a radian and the fin at
+// its limit, a few hundredths of a radian of integrator gained or lost that
+// show only when the fin leaves its limit, and stay (docs/science.md "The
+// autopilot replay's unlogged dive start, and the truth's nominal cycle").
 AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSettings& settings, double fin_max_rad) {
   AutopilotLaw law;
   law.kp = value(values, HeadingEffect::kAutopilotGain);
@@ -172,12 +180,105 @@ AutopilotLaw AutopilotLaw::from(const HeadingValues& values, const AutopilotSett
   return law;
 }
 
-AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings)
-    : track_(track), settings_(settings) {}
+namespace {
 
-const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay) {
+// The log's cycle: the median interval between rows where the law steps,
+// and half the spread of those intervals (5th to 95th percentile of the
+// ones under 1.5 cycles): the cycle's own jitter. Zero where there are none.
+struct LoggedCycle {
+  double cycle_s = 0.0, half_spread_s = 0.0;
+};
+LoggedCycle logged_cycle(const HeadingTrack& t) {
+  std::vector<double> dt;
+  for (std::size_t i = 1; i < t.row_time_s.size(); ++i) {
+    const bool both = std::isfinite(t.row_command_rad[i]) && t.row_gliding[i] &&
+                      std::isfinite(t.row_command_rad[i - 1]) && t.row_gliding[i - 1];
+    if (both && t.row_time_s[i] > t.row_time_s[i - 1]) dt.push_back(t.row_time_s[i] - t.row_time_s[i - 1]);
+  }
+  if (dt.empty()) return {};
+  std::sort(dt.begin(), dt.end());
+  LoggedCycle c;
+  c.cycle_s = dt[dt.size() / 2];
+  const auto regular = static_cast<std::size_t>(std::upper_bound(dt.begin(), dt.end(), 1.5 * c.cycle_s) - dt.begin());
+  const auto at = [&](double q) { return dt[static_cast<std::size_t>(q * static_cast<double>(regular - 1))]; };
+  c.half_spread_s = 0.5 * (at(0.95) - at(0.05));
+  return c;
+}
+
+// Cycles the law stepped between two rows dt apart: k where dt is k cycles
+// within k times the cycle's own jitter (the sum of k jittered cycles), else
+// 1 - a longer cycle, not unlogged ones (the real comet logs' few gaps are
+// 1.5-3.4 cycles, off a whole number by 2-10 times their jitter). At most
+// this many (a longer gap is a stop).
+constexpr int kMaxCyclesPerGap = 8;
+int cycles_between(double dt, const LoggedCycle& c) {
+  if (!(c.cycle_s > 0.0) || !(dt > 1.5 * c.cycle_s)) return 1;
+  const long k = std::lround(dt / c.cycle_s);
+  if (k > kMaxCyclesPerGap ||
+      std::abs(dt - static_cast<double>(k) * c.cycle_s) > static_cast<double>(k) * c.half_spread_s) {
+    return 1;
+  }
+  return static_cast<int>(k);
+}
+
+}  // namespace
+
+AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings, AutopilotClock clock)
+    : track_(track), settings_(settings), clock_(clock) {
+  const LoggedCycle c = logged_cycle(track);
+  cycle_s_ = c.cycle_s;
+  half_spread_s_ = c.half_spread_s;
+  // Where the log holds a command change between two consecutive cycles
+  // the change happened at the later row's depth: the change depth lies
+  // between the two rows' depths. Every such change must move the same way
+  // and their brackets overlap, else the command does not change at one
+  // depth (a waypoint reached, an operator's new heading) and an unlogged
+  // cycle keeps the earlier command.
+  const std::vector<double>& z = track.row_depth_m;
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  int direction = 0;
+  bool one_depth = true;
+  for (std::size_t i = 1; i < track.row_time_s.size() && one_depth && cycle_s_ > 0.0; ++i) {
+    const double before = track.row_command_rad[i - 1], after = track.row_command_rad[i];
+    const bool gliding = track.row_gliding[i] && track.row_gliding[i - 1];
+    const double gap = track.row_time_s[i] - track.row_time_s[i - 1];
+    if (!gliding || !std::isfinite(before) || !std::isfinite(after) || before == after || gap > 1.5 * cycle_s_)
+      continue;
+    if (!std::isfinite(z[i]) || !std::isfinite(z[i - 1]) || z[i] == z[i - 1]) {
+      one_depth = false;
+      break;
+    }
+    const int way = z[i] > z[i - 1] ? 1 : -1;
+    if (direction != 0 && way != direction) one_depth = false;
+    direction = way;
+    lo = std::max(lo, std::min(z[i], z[i - 1]));
+    hi = std::min(hi, std::max(z[i], z[i - 1]));
+  }
+  if (one_depth && direction != 0 && lo <= hi) {
+    change_depth_lo_m_ = lo;
+    change_depth_hi_m_ = hi;
+    change_direction_ = direction;
+  }
+}
+
+// The command at an unlogged cycle `fraction` of the way from row - 1 to
+// row: the earlier row's, unless the command changed across the gap and the
+// depth (interpolated) had passed the log's change depth by then - the
+// cycle where a dive starts is unlogged, and the new heading's error (a
+// radian) ran the integrator there.
+double AutopilotReplay::unlogged_command(std::size_t row, double fraction) const {
+  const double before = track_.row_command_rad[row - 1], after = track_.row_command_rad[row];
+  if (before == after || change_direction_ == 0) return before;
+  const std::vector<double>& z = track_.row_depth_m;
+  const double depth = z[row - 1] + fraction * (z[row] - z[row - 1]);
+  const double change = 0.5 * (change_depth_lo_m_ + change_depth_hi_m_);
+  const bool passed = change_direction_ < 0 ? depth <= change : depth >= change;
+  return passed ? after : before;
+}
+
+const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
   for (const Inputs& cached : cache_) {
-    if (cached.delay == delay) return cached.rows;
+    if (cached.delay == delay) return cached;
   }
   if (cache_.size() >= kCachedDelays) cache_.erase(cache_.begin());
   Inputs& made = cache_.emplace_back();
@@ -187,7 +288,12 @@ const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay)
   made.rows.resize(n);
   const std::span<const double> time(t.row_time_s);
   double last_heading = kNaN;
-  std::size_t after = 0;  // first row later than `when`: `when` only grows (rows sorted), so it only advances
+  // The heading read a delay before `at`; NaN before the log's start.
+  auto read = [&](double at) {
+    const double when = at - delay;
+    const auto after = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), when) - time.begin());
+    return after == 0 ? kNaN : interpolate_from(time, t.row_heading_rad, after - 1, when, true);
+  };
   for (std::size_t i = 0; i < n; ++i) {
     Input& in = made.rows[i];
     if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
@@ -195,36 +301,56 @@ const std::vector<AutopilotReplay::Input>& AutopilotReplay::inputs(double delay)
       in.kind = Input::kCentre;
       continue;
     }
-    const double when = time[i] - delay;
-    while (after < n && time[after] <= when) ++after;
-    const std::size_t c = after == 0 ? SIZE_MAX : after - 1;  // row_at_or_before(time, when)
-    const double heading = interpolate_from(time, t.row_heading_rad, c, when, true);
+    const double heading = read(time[i]);
     // The command is the current one (the mission sets it, nothing delays
     // it); only the heading is read late.
-    const double command = c == SIZE_MAX ? kNaN : t.row_command_rad[i];
+    const double command = t.row_command_rad[i];
     if (!std::isfinite(heading) || !std::isfinite(command)) {
       in.kind = Input::kNone;
       continue;
     }
+    const double gap = i > 0 ? time[i] - time[i - 1] : 0.0;
+    // The unlogged cycles before this row, where the previous row's law ran on.
+    const int cycles = std::isfinite(last_heading) ? cycles_between(gap, {cycle_s_, half_spread_s_}) : 1;
+    // Each step's interval: its share of the gap, or the log's cycle.
+    const bool nominal = clock_ == AutopilotClock::kNominal && cycle_s_ > 0.0;
+    const double spacing = gap / cycles;  // when the unlogged cycles read the heading
+    const double dt = nominal ? cycle_s_ : spacing;
+    in.first_unlogged = made.unlogged.size();
+    for (int m = 1; m < cycles; ++m) {
+      Input& step = made.unlogged.emplace_back();
+      const double h = read(time[i - 1] + m * spacing);
+      step.kind = Input::kStep;
+      step.error = wrap_pi(unlogged_command(i, static_cast<double>(m) / cycles) - h);
+      step.dt = dt;
+      step.rate = wrap_pi(h - last_heading) / dt;
+      last_heading = h;
+    }
+    in.unlogged = made.unlogged.size() - in.first_unlogged;
     in.kind = Input::kStep;
     in.error = wrap_pi(command - heading);
-    in.dt = i > 0 ? time[i] - time[i - 1] : 0.0;
-    in.rate = std::isfinite(last_heading) && in.dt > 0.0 ? wrap_pi(heading - last_heading) / in.dt : 0.0;
+    in.dt = dt;
+    in.rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
     last_heading = heading;
   }
-  return made.rows;
+  return made;
 }
 
 void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::size_t> rows,
                               std::vector<double>& out) {
-  const std::vector<Input>& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
+  const Inputs& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
   AutopilotLaw law = AutopilotLaw::from(values, settings_, track_.fin_max_rad);
-  predicted_.assign(in.size(), kNaN);
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    if (in[i].kind == Input::kCentre) {
+  predicted_.assign(in.rows.size(), kNaN);
+  for (std::size_t i = 0; i < in.rows.size(); ++i) {
+    const Input& row = in.rows[i];
+    if (row.kind == Input::kCentre) {
       law.output = 0.0;
-    } else if (in[i].kind == Input::kStep) {
-      predicted_[i] = law.step(in[i].error, in[i].rate, in[i].dt);
+    } else if (row.kind == Input::kStep) {
+      for (std::size_t k = row.first_unlogged; k < row.first_unlogged + row.unlogged; ++k) {
+        const Input& step = in.unlogged[k];
+        law.step(step.error, step.rate, step.dt);
+      }
+      predicted_[i] = law.step(row.error, row.rate, row.dt);
     }
   }
   pick(predicted_, rows, out);

@@ -98,6 +98,16 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
   j["runs"] = d.runs;
   j["roll_logged"] = d.roll_logged;
   j["autopilot_integrator"] = d.autopilot_integrator_per_glide ? "per-glide" : "replayed";
+  if (d.autopilot_clock.fitted) {
+    ordered_json one = ordered_json::array();
+    for (const HeadingFinding& x : d.autopilot_clock.one_clock_only) {
+      one.push_back({{"effect", info(x.effect).id}, {"value", x.value}, {"ci95", {x.ci95_low, x.ci95_high}}});
+    }
+    j["autopilot_clock"] = {{"kept", d.autopilot_clock.kept},
+                            {"measured_heldout_rms", d.autopilot_clock.measured_heldout_rms},
+                            {"nominal_heldout_rms", d.autopilot_clock.nominal_heldout_rms},
+                            {"named_under_one_clock_only", one}};
+  }
   j["logged_roll_rad"] = d.logged_roll_rad;
   j["fin_max_rad"] = d.fin_max_rad;
   j["heading_noise_rad"] = d.heading_noise_rad;

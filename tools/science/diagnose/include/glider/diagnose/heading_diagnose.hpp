@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "glider/diagnose/heading_autopilot_clock.hpp"
 #include "glider/diagnose/heading_closed_loop.hpp"
 #include "glider/diagnose/heading_fit.hpp"
 #include "glider/diagnose/heading_models.hpp"
@@ -36,6 +37,7 @@ struct HeadingDiagnosis {
   // The autopilot link's integrator a state per glide (false: replayed from
   // the log's start; HeadingDiagnoseOptions::autopilot_integrator_per_glide).
   bool autopilot_integrator_per_glide = false;
+  AutopilotClockCheck autopilot_clock;  // the autopilot link under both clocks
   // The heading's cycle-to-cycle jitter on the glides, as white noise
   // (sqrt(2/3) x the RMS of half the second difference): compass noise and
   // yaw faster than the cycle, which no link explains. The SIL's compass
@@ -100,6 +102,9 @@ struct HeadingDiagnoseOptions {
   // glide. false: replayed (the rule before; docs/science.md "The
   // autopilot's integrator at each glide's start").
   bool autopilot_integrator_per_glide = true;
+  // The clock the autopilot's law integrates over (heading_autopilot_clock.hpp;
+  // not with fit_only: a measurement of named effects keeps the measured one).
+  AutopilotClockRule autopilot_clock = AutopilotClockRule::kBoth;
 };
 
 struct UnexplainedYaw {

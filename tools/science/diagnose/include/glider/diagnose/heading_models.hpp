@@ -68,24 +68,46 @@ void predict_autopilot_fin(const HeadingTrack& track, const AutopilotSettings& s
 // kept) and each call only steps the law - same bits, a fraction of the
 // cost (the replay was 2/3 of a heading diagnosis). Holds a reference to
 // the track; not for use from two threads at once.
+// The clock the law integrates over: each step's own interval (measured,
+// the time since the last cycle: this project's firmware) or the log's
+// median cycle at every step (nominal: a law written for its cycle time).
+// Which one a Slocum's uses is not known (its source is not public; two
+// comet logs cannot tell, one prefers the measured: docs/science.md "The
+// autopilot's clock").
+enum class AutopilotClock : unsigned char { kMeasured, kNominal };
+
 class AutopilotReplay {
  public:
-  AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings);
+  AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings,
+                  AutopilotClock clock = AutopilotClock::kMeasured);
   void predict(const HeadingValues& values, std::span<const std::size_t> rows, std::vector<double>& out);
 
  private:
   struct Input {
     enum Kind : unsigned char { kCentre, kNone, kStep } kind = kNone;  // fin centred / no prediction / a law step
     double error = 0.0, rate = 0.0, dt = 0.0;
+    std::size_t first_unlogged = 0, unlogged = 0;  // the law's steps at unlogged cycles before this row
   };
   struct Inputs {
     double delay = 0.0;
     std::vector<Input> rows;
+    std::vector<Input> unlogged;  // the steps at cycles the log does not hold, in order
   };
   static constexpr std::size_t kCachedDelays = 4;
-  const std::vector<Input>& inputs(double delay);
+  const Inputs& inputs(double delay);
   const HeadingTrack& track_;
   AutopilotSettings settings_;
+  AutopilotClock clock_ = AutopilotClock::kMeasured;
+  // The log's cycle and half its jitter's spread: a gap of k cycles is k
+  // steps of the law.
+  double cycle_s_ = 0.0, half_spread_s_ = 0.0;
+  // The depth at which the command changes (a Slocum's new heading at the
+  // dive's start, when the climb passes its climb-to depth), bracketed by
+  // the changes the log holds between two consecutive cycles, and the way
+  // the depth moves through it (-1 rising, +1 sinking, 0: no single depth).
+  double change_depth_lo_m_ = 0.0, change_depth_hi_m_ = 0.0;
+  int change_direction_ = 0;
+  double unlogged_command(std::size_t row, double fraction) const;
   std::vector<Inputs> cache_;
   std::vector<double> predicted_;
 };
