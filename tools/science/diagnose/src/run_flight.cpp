@@ -98,6 +98,40 @@ double FlightConditions::battery(std::size_t k) const {
   return std::isfinite(track.battpos_in[k]) ? in_to_m(track.battpos_in[k]) : 0.0;
 }
 
+void RunFlight::switch_pump_lag(double lag_s) {
+  RunStages& stages = stages_;
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  std::vector<RunStages::KeptPumped>& kept = stages.kept_pumped;
+  auto find = [&](double lag) {
+    return std::find_if(kept.begin(), kept.end(), [&](const RunStages::KeptPumped& k) { return same(k.lag_s, lag); });
+  };
+  // The lag left: its volumes kept (over an older copy of the same lag's), the oldest dropped.
+  if (stages.pumped > 0) {
+    RunStages::KeptPumped left;
+    if (const auto it = find(stages.key.pump_lag_s); it != kept.end()) {
+      left = std::move(*it);
+      kept.erase(it);
+    } else if (kept.size() == RunStages::kKeptPumpLags) {
+      left = std::move(kept.front());
+      kept.erase(kept.begin());
+    }
+    left.lag_s = stages.key.pump_lag_s;
+    left.intervals = stages.pumped;
+    left.m3.clear();
+    // The stages are in order: those of the first `pumped` intervals come first.
+    const std::size_t count = stages_before(first_ + stages.pumped);
+    left.m3.resize(count);
+    for (std::size_t k = 0; k < count; ++k) left.m3[k] = stages.stages[k].pumped_volume_m3;
+    kept.push_back(std::move(left));
+  }
+  stages.pumped = 0;
+  // The lag come back to: its volumes read back (refresh_pumped goes on from there).
+  if (const auto it = find(lag_s); it != kept.end()) {
+    for (std::size_t k = 0; k < it->m3.size(); ++k) stages.stages[k].pumped_volume_m3 = it->m3[k];
+    stages.pumped = it->intervals;
+  }
+}
+
 int rk4_steps(double dt, double max_step_s) { return std::max(1, static_cast<int>(std::ceil(dt / max_step_s - 1e-9))); }
 
 RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end, RunStages& stages)
@@ -107,12 +141,13 @@ RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t e
     FlightConditions::InputKey but_lag = key;
     but_lag.pump_lag_s = stages_.key.pump_lag_s;
     if (stages_.valid && std::memcmp(&stages_.key, &but_lag, sizeof key) == 0) {
-      stages_.pumped = 0;  // the pump lag alone changed: its volumes only (refresh_pumped)
+      switch_pump_lag(key.pump_lag_s);  // the pump lag alone changed: its volumes only
     } else {
       stages_.valid = true;
       stages_.stages.clear();
       stages_.intervals = 0;
       stages_.pumped = 0;
+      stages_.kept_pumped.clear();
     }
     stages_.key = key;
   }
@@ -162,13 +197,17 @@ double RunFlight::pumped_volume_m3(std::size_t i, int k, int n, double lagged0, 
                                 c_.vehicle.ballast.lag_s));
 }
 
+std::size_t RunFlight::stages_before(std::size_t i) const {
+  // The stages are three a sub-step, in order from the run's first interval.
+  std::size_t stage = 0;
+  for (std::size_t k = first_; k < i; ++k) stage += 3 * static_cast<std::size_t>(c_.pitch.steps(k));
+  return stage;
+}
+
 void RunFlight::refresh_pumped(std::size_t last) const {
   const std::size_t upto = std::min(stages_.intervals, last > first_ ? last - first_ : 0);
   if (stages_.pumped >= upto) return;
-  // The stages are three a sub-step, in order: the first stage of interval `pumped`.
-  std::size_t stage = 0;
-  for (std::size_t i = first_; i < first_ + stages_.pumped; ++i)
-    stage += 3 * static_cast<std::size_t>(c_.pitch.steps(i));
+  std::size_t stage = stages_before(first_ + stages_.pumped);
   // The pumped volume lagged from the last refreshed stage's, as cache_stages carries it.
   double lagged = stage == 0 ? in0_.pumped_volume_m3 : stages_.stages[stage - 1].pumped_volume_m3;
   for (std::size_t i = first_ + stages_.pumped; i < first_ + upto; ++i) {

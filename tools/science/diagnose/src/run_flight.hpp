@@ -111,6 +111,18 @@ struct RunStages {
   // at every flight) recomputes only the pumped volumes (RunFlight::
   // refresh_pumped), the rest of a stage's inputs do not depend on it.
   std::size_t pumped = 0;
+  // The pumped volumes of the last lags left (kKeptPumpLags, the latest
+  // last): the pump lag's Jacobian column and each LM step go back to a lag
+  // just left (half of a 24 h log's refreshes, 98 % of comet-2016's), whose
+  // volumes are then read back instead of worked out again: the same values,
+  // the same bits. Each holds the stages of its first `intervals`.
+  struct KeptPumped {
+    double lag_s = 0.0;
+    std::size_t intervals = 0;
+    std::vector<double> m3;
+  };
+  static constexpr std::size_t kKeptPumpLags = 4;
+  std::vector<KeptPumped> kept_pumped;
   // The water's vertical displacement after each interval (ground_depth),
   // for the water it was integrated in: its own key.
   bool water_valid = false, water_has_profile = false;
@@ -227,6 +239,12 @@ class RunFlight {
 
  private:
   void guess_start(double& v1, double& v3) const;
+  // The stages' pump lag becomes `lag_s` (the other inputs unchanged): the
+  // lag left's volumes kept, the lag come back to's read back
+  // (RunStages::kept_pumped), the rest refreshed as flown (refresh_pumped).
+  void switch_pump_lag(double lag_s);
+  // How many of RunStages::stages lie before interval i's.
+  std::size_t stages_before(std::size_t i) const;
   // The water's vertical displacement after each interval up to sample
   // `flown` into RunStages::water (in order; those kept are not integrated again).
   void integrate_water(std::size_t flown) const;
