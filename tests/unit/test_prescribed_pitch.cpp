@@ -109,3 +109,71 @@ TEST(PrescribedPitch, SimulatorLagsTheDisplacedVolumeBehindThePump) {
   DOUBLES_EQUAL(prompt.truth().pumped_volume_m3, lagged.truth().pumped_volume_m3, 1e-12);
   CHECK(lagged.truth().net_buoyancy_kg > prompt.truth().net_buoyancy_kg + 0.05);
 }
+
+// The diagnosis keeps a track's stage masses (stage_mass) for the dynamics
+// of one mass_key and reads them back for every flight with the same key:
+// so every change of the vehicle that moves a stage's masses must move the
+// key, and the stage from kept masses must be the same bits as computed.
+TEST(PrescribedPitch, TheMassKeyMovesWithEveryNumberTheStageMassesRead) {
+  const VehicleParams nominal = we01();
+  PrescribedPitchInputs in;
+  in.theta_rad = -0.4;
+  in.q_rad_s = 0.001;
+  in.pumped_volume_m3 = -2.1e-4;
+  in.battery_pos_m = 0.004;
+  in.depth_m = 0.1;  // partly immersed: the hull's diameter read too
+  in.density_kg_m3 = 1026.3;
+  in.temperature_c = 14.0;
+  const PrescribedPitchDynamics base(nominal);
+  const auto bits = [](const auto& v) {
+    return std::vector<unsigned char>(reinterpret_cast<const unsigned char*>(&v),
+                                      reinterpret_cast<const unsigned char*>(&v) + sizeof v);
+  };
+  const std::vector<void (*)(VehicleParams&)> changes = {
+      [](VehicleParams& v) { v.hull_mass_kg += 0.1; },
+      [](VehicleParams& v) { v.hull_inertia_kg_m2 += 0.1; },
+      [](VehicleParams& v) { v.hull_diameter_m += 0.01; },
+      [](VehicleParams& v) { v.hull_compressibility_per_pa += 1e-10; },
+      [](VehicleParams& v) { v.hull_thermal_expansion_per_k += 1e-5; },
+      [](VehicleParams& v) { v.hull_reference_temperature_c += 1.0; },
+      [](VehicleParams& v) { v.offset.mass_kg += 0.1; },
+      [](VehicleParams& v) { v.offset.x_m += 0.01; },
+      [](VehicleParams& v) { v.offset.z_m += 0.01; },
+      [](VehicleParams& v) { v.battery.mass_kg += 0.1; },
+      [](VehicleParams& v) { v.battery.x_at_zero_m += 0.01; },
+      [](VehicleParams& v) { v.battery.z_m += 0.01; },
+      [](VehicleParams& v) { v.second_mass.mass_kg += 0.1; },
+      [](VehicleParams& v) { v.second_mass.x_at_zero_m += 0.01; },
+      [](VehicleParams& v) { v.second_mass.z_m += 0.01; },
+      [](VehicleParams& v) { v.ballast.x_m += 0.01; },
+      [](VehicleParams& v) { v.ballast.z_m += 0.01; },
+      [](VehicleParams& v) { v.ballast.lag_s += 1.0; },
+      [](VehicleParams& v) { v.added_mass_x_kg += 0.1; },
+      [](VehicleParams& v) { v.added_mass_z_kg += 0.1; },
+      [](VehicleParams& v) { v.added_inertia_kg_m2 += 0.1; },
+      [](VehicleParams& v) { v.hydro.cd0 *= 1.1; },
+      [](VehicleParams& v) { v.hydro.cl_alpha *= 1.1; },
+      [](VehicleParams& v) { v.trim_density_kg_m3 += 1.0; },
+      [](VehicleParams& v) { v.buoyancy_offset_kg += 0.03; },
+  };
+  int mass_moved = 0, key_missed = 0;
+  for (const auto& change : changes) {
+    VehicleParams v = nominal;
+    change(v);
+    const PrescribedPitchDynamics changed(v);
+    const bool mass_differs = bits(changed.stage_mass(in)) != bits(base.stage_mass(in));
+    const bool key_differs = changed.mass_key() != base.mass_key();
+    mass_moved += mass_differs ? 1 : 0;
+    key_missed += mass_differs && !key_differs ? 1 : 0;
+  }
+  CHECK(mass_moved >= 15);  // the test sees the masses move
+  LONGS_EQUAL(0, key_missed);
+
+  // Each with fresh skin-friction anchors (the first speed asked anchors them).
+  const SkinFrictionFactor friction = base.skin_friction(), friction_kept = base.skin_friction();
+  const PrescribedPitchDynamics::Impulse p(60.0, 2.0);
+  const auto computed = base.derivative(p, in, friction);
+  const auto kept = PrescribedPitchDynamics(nominal).derivative(p, in, base.stage_mass(in), friction_kept);
+  CHECK(bits(computed.p_dot) == bits(kept.p_dot));
+  CHECK(bits(computed.depth_rate_m_s) == bits(kept.depth_rate_m_s));
+}

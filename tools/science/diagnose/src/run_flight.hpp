@@ -123,6 +123,14 @@ struct RunStages {
   };
   static constexpr std::size_t kKeptPumpLags = 4;
   std::vector<KeptPumped> kept_pumped;
+  // The masses of the first masses.size() stages (PrescribedPitchDynamics::
+  // stage_mass) for the dynamics of `mass_key`: they depend on the stage's
+  // inputs and a few of the vehicle's numbers only, which the fits of drag,
+  // lift, the lags and the water leave alone, so main flights read them here
+  // instead of working them out at every stage (the same bits). Cleared with
+  // the stages and wherever their pumped volumes change.
+  model::PrescribedPitchDynamics::MassKey mass_key{};
+  std::vector<model::PrescribedPitchDynamics::StageMass> masses;
   // The water's vertical displacement after each interval (ground_depth),
   // for the water it was integrated in: its own key.
   bool water_valid = false, water_has_profile = false;
@@ -186,6 +194,7 @@ class RunFlight {
     std::size_t first;
     const StagePitchTable& pitch;
     const model::PrescribedPitchInputs* stages;
+    const model::PrescribedPitchDynamics::StageMass* masses;  // of each stage (RunStages::masses)
   };
 
   // Computes the stages fly() would up to `last` into the run's cache
@@ -267,7 +276,9 @@ class RunFlight {
   // The profile's bin at ground_depth's three stages a step of interval i
   // (RunStages::bins, bins_kept()), or nullptr where they are not kept.
   const std::uint32_t* stage_bins(std::size_t i, int steps) const;
-  StagesView view() const { return {t_.time_s, first_, c_.pitch, stages_.stages.data()}; }
+  // The stages' masses up to sample `last` brought into RunStages::masses, for this flight's dynamics.
+  void cache_masses(std::size_t last) const;
+  StagesView view() const { return {t_.time_s, first_, c_.pitch, stages_.stages.data(), stages_.masses.data()}; }
 
   const FlightConditions& c_;
   const Track& t_;
