@@ -100,11 +100,12 @@ TEST(FlightDeterminism, ARunIsAFunctionOfItsOwnSamples) {
   LONGS_EQUAL(0, differing);
 }
 
-// What a run keeps between flights - the pumped volumes of the last pump lags
-// left, the stages' masses for the last mass-changing values - is read back
+// What a run keeps between flights - two sets of stage inputs, the pumped
+// volumes of the last pump lags left, the stages' masses for the last
+// mass-changing values - is read back
 // only where it is what would be worked out again: a new question after
-// other pump lags and buoyancies (each of which replaces, restores or keeps
-// those) is the same bits as asked of a fresh model. (A new question each
+// other pump lags, buoyancies and density sources (each of which replaces,
+// restores or keeps those) is the same bits as asked of a fresh model. (A new question each
 // time: one asked before is answered from the model's memo, unflown.)
 TEST(FlightDeterminism, AFlightAfterOtherLagsAndMassesIsTheSameBits) {
   const Observations obs = comet_2019_154();
@@ -112,10 +113,10 @@ TEST(FlightDeterminism, AFlightAfterOtherLagsAndMassesIsTheSameBits) {
   const std::vector<std::size_t>& samples = obs.track.scored;
   const DynamicFlightModel model(vehicle, obs.track);
   int differing = 0, questions = 0;
-  auto check = [&](const EffectValues& question) {
+  auto check = [&](const EffectValues& question, bool use_ctd = true) {
     std::vector<double> fresh, out;
-    DynamicFlightModel(vehicle, obs.track).predict(question, true, samples, fresh);
-    model.predict(question, true, samples, out);
+    DynamicFlightModel(vehicle, obs.track).predict(question, use_ctd, samples, fresh);
+    model.predict(question, use_ctd, samples, out);
     differing += same_bits(out, fresh) ? 0 : 1;
     ++questions;
   };
@@ -130,8 +131,10 @@ TEST(FlightDeterminism, AFlightAfterOtherLagsAndMassesIsTheSameBits) {
       check(next(question));                                     // back: the volumes read back, the masses not
       check(next(with(question, Effect::kBuoyancyOffset, buoyancy - 7.0)));  // other masses
       check(next(question));
+      check(next(question), false);  // the constant density's stages (the run's other set)
+      check(next(question));
     }
   }
-  LONGS_EQUAL(30, questions);
+  LONGS_EQUAL(42, questions);
   LONGS_EQUAL(0, differing);
 }
