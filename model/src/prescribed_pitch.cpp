@@ -64,41 +64,6 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
   return derivative(p, in, skin_friction_);
 }
 
-PrescribedPitchDynamics::StageMass PrescribedPitchDynamics::stage_mass(const PrescribedPitchInputs& in) const {
-  const WaterSample water = water_of(in);
-  const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
-  const TranslationalMass a = translational(dynamics_.vehicle(), m);
-  return {a.a11, a.a33, a.a13, a.a23, m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water)};
-}
-
-PrescribedPitchDynamics::MassKey PrescribedPitchDynamics::mass_key() const {
-  // GliderDynamics::rigid_masses (the masses and their positions, the slide's
-  // zero) and displaced_volume_m3 (the volume at the trim density, the hull's
-  // compressibility, thermal expansion and diameter, the gravity), and the
-  // added masses of `translational`.
-  const VehicleParams& v = dynamics_.vehicle();
-  return {v.hull_mass_kg,
-          v.offset.mass_kg,
-          v.offset.x_m,
-          v.offset.z_m,
-          v.ballast.x_m,
-          v.ballast.z_m,
-          v.battery.mass_kg,
-          v.battery.x_at_zero_m,
-          v.battery.z_m,
-          v.second_mass.mass_kg,
-          v.second_mass.x_at_zero_m,
-          v.second_mass.z_m,
-          v.added_mass_x_kg,
-          v.added_mass_z_kg,
-          v.hull_diameter_m,
-          v.hull_compressibility_per_pa,
-          v.hull_thermal_expansion_per_k,
-          v.hull_reference_temperature_c,
-          model::displaced_volume_m3(v),
-          dynamics_.environment().gravity_m_s2};
-}
-
 PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p,
                                                                         const PrescribedPitchInputs& in,
                                                                         const SkinFrictionFactor& friction) const {
@@ -109,22 +74,25 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
                     eq(in.pumped_volume_m3, k.pumped_volume_m3) && eq(in.battery_pos_m, k.battery_pos_m) &&
                     eq(in.depth_m, k.depth_m) && eq(in.density_kg_m3, k.density_kg_m3) &&
                     eq(in.temperature_c, k.temperature_c);
-  if (!same) stage_ = {true, in, stage_mass(in)};
-  return derivative(p, in, stage_.mass, friction);
-}
-
-PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Impulse& p,
-                                                                        const PrescribedPitchInputs& in,
-                                                                        const StageMass& mass,
-                                                                        const SkinFrictionFactor& friction) const {
-  auto eq = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  if (!same) {
+    const WaterSample water = water_of(in);
+    const auto m = dynamics_.rigid_masses(masses_of(in), in.density_kg_m3);
+    const TranslationalMass a = translational(dynamics_.vehicle(), m);
+    stage_ = {true,
+              in,
+              a.a11,
+              a.a33,
+              a.a13,
+              a.a23,
+              m.total_kg - in.density_kg_m3 * dynamics_.displaced_volume_m3(in.depth_m, water)};
+  }
   if (!std::isnan(in.sin_theta)) {
     pitch_ = {true, in.theta_rad, in.sin_theta, in.cos_theta};
   } else if (!(pitch_.valid && eq(in.theta_rad, pitch_.theta_rad))) {
     pitch_ = {true, in.theta_rad, std::sin(in.theta_rad), std::cos(in.theta_rad)};
   }
-  const Eigen::Vector2d v = velocities_from({mass.a11, mass.a33, mass.a13, mass.a23}, p, in.q_rad_s);
-  const double net_kg = mass.net_kg;
+  const Eigen::Vector2d v = velocities_from({stage_.a11, stage_.a33, stage_.a13, stage_.a23}, p, in.q_rad_s);
+  const double net_kg = stage_.net_kg;
   const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
   const FlowForces flow = detail::flow_forces_at_speed(dynamics_.vehicle().hydro, slopes_, in.density_kg_m3, v[0], v[1],
                                                        speed, false, friction(speed));

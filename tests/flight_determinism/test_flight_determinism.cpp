@@ -100,13 +100,15 @@ TEST(FlightDeterminism, ARunIsAFunctionOfItsOwnSamples) {
   LONGS_EQUAL(0, differing);
 }
 
-// What a run keeps between flights - two sets of stage inputs, the pumped
-// volumes of the last pump lags left, the stages' masses for the last
-// mass-changing values - is read back
-// only where it is what would be worked out again: a new question after
-// other pump lags, buoyancies and density sources (each of which replaces,
-// restores or keeps those) is the same bits as asked of a fresh model. (A new question each
-// time: one asked before is answered from the model's memo, unflown.)
+// What a run keeps between flights - its stage inputs by input key (a new
+// density source resets them), their pumped volumes for the last pump lag
+// (another lag refreshes them), the start states - is read back only where it
+// is what would be worked out again: a new question after other pump lags,
+// buoyancies and density sources is the same bits as asked of a fresh model.
+// (A new question each time: one asked before is answered from the model's
+// memo, unflown.) Written with session 39's speed2 (a kept copy of the
+// pumped volumes per lag, and of the stages' masses, were tried and not
+// kept: docs/science.md); it checks the caches as they are.
 TEST(FlightDeterminism, AFlightAfterOtherLagsAndMassesIsTheSameBits) {
   const Observations obs = comet_2019_154();
   const glider::model::VehicleParams vehicle = comet_with_prior();

@@ -14,7 +14,6 @@
 // replaced by the measurement. The slide's own impulse (b) is neglected: the
 // battery moves at ~1 mm/s.
 #include <Eigen/Core>
-#include <array>
 #include <limits>
 
 #include "glider/model/dynamics.hpp"
@@ -56,23 +55,6 @@ class PrescribedPitchDynamics {
   // through the same stages, each the same bits as flown alone (their
   // stages' independent chains of operations then overlap in the core).
   Derivative derivative(const Impulse& p, const PrescribedPitchInputs& in, const SkinFrictionFactor& friction) const;
-  // What a stage needs of its inputs alone, besides the pitch: the
-  // translational masses (dynamics.hpp's A(0,0), A(1,1), A(0,2), A(1,2)) and
-  // the net weight in water (kg).
-  struct StageMass {
-    double a11 = 0.0, a33 = 0.0, a13 = 0.0, a23 = 0.0, net_kg = 0.0;
-  };
-  StageMass stage_mass(const PrescribedPitchInputs& in) const;
-  // Every number of the vehicle and the environment stage_mass reads: two
-  // dynamics whose keys are the same bits give the same StageMass bits for
-  // the same inputs (a table of a track's stage masses then serves every
-  // flight of an effect that leaves the masses alone: drag, lift, lags).
-  using MassKey = std::array<double, 20>;
-  MassKey mass_key() const;
-  // The stage with its masses given (stage_mass(in), the same bits from a
-  // table): no masses computed, none remembered.
-  Derivative derivative(const Impulse& p, const PrescribedPitchInputs& in, const StageMass& mass,
-                        const SkinFrictionFactor& friction) const;
   // A skin-friction state for one flight, without anchors (as start_flight()
   // leaves this object's own).
   SkinFrictionFactor skin_friction() const {
@@ -112,7 +94,8 @@ class PrescribedPitchDynamics {
   struct StageInputs {
     bool valid = false;
     PrescribedPitchInputs in;
-    StageMass mass;
+    double a11 = 0.0, a33 = 0.0, a13 = 0.0, a23 = 0.0;  // translational mass (A(0,0), A(1,1), A(0,2), A(1,2))
+    double net_kg = 0.0;
   };
   mutable StageInputs stage_;
   // The pitch's sine and cosine, for the last pitch: a step's first stage

@@ -61,8 +61,7 @@ DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, cons
       stage_pitch_(std::make_unique<detail::StagePitchTable>(track, max_step_s)),
       relative_flights_(track.run_first.size()),
       start_states_(track.run_first.size()),
-      run_stages_(2 * track.run_first.size()),
-      run_stages_last_(track.run_first.size(), 0) {}
+      run_stages_(track.run_first.size()) {}
 
 DynamicFlightModel::~DynamicFlightModel() = default;
 
@@ -120,28 +119,6 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
   a.samples.assign(samples.begin(), samples.end());
   if (depth_rate != nullptr) a.depth_rate_out = *depth_rate;
   if (speed != nullptr) a.speed_out = *speed;
-}
-
-// The run's set of stage inputs with these conditions' input key, else
-// one with that key but the pump lag (RunFlight switches the lag), else the
-// one used less lately (RunFlight resets it).
-detail::RunStages& DynamicFlightModel::run_stages(std::size_t run, const detail::FlightConditions& conditions) const {
-  using Key = detail::FlightConditions::InputKey;
-  const Key key = conditions.input_key();
-  auto matches = [&](const detail::RunStages& s, bool but_lag) {
-    Key k = key;
-    if (but_lag) k.pump_lag_s = s.key.pump_lag_s;
-    return s.valid && std::memcmp(&k, &s.key, sizeof k) == 0;
-  };
-  std::size_t pick = 1U - run_stages_last_[run];
-  for (const bool but_lag : {false, true}) {
-    if (matches(run_stages_[2 * run], but_lag) || matches(run_stages_[2 * run + 1], but_lag)) {
-      pick = matches(run_stages_[2 * run], but_lag) ? 0 : 1;
-      break;
-    }
-  }
-  run_stages_last_[run] = static_cast<unsigned char>(pick);
-  return run_stages_[2 * run + pick];
 }
 
 // Fly up to the last requested sample of a run and on through its
@@ -322,16 +299,15 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     const std::size_t end = t.run_end(run);
     if (samples[next] >= end) continue;  // nothing requested in this run (every sample is in a run)
     while (next < samples.size() && samples[next] < end) ++next;
-    AskedRun& a =
-        asked.emplace_back(AskedRun{detail::RunFlight(conditions, t.run_first[run], end, run_stages(run, conditions)),
-                                    run,
-                                    0,
-                                    end - 1,
-                                    0.0,
-                                    0.0,
-                                    nullptr,
-                                    {},
-                                    nullptr});
+    AskedRun& a = asked.emplace_back(AskedRun{detail::RunFlight(conditions, t.run_first[run], end, run_stages_[run]),
+                                              run,
+                                              0,
+                                              end - 1,
+                                              0.0,
+                                              0.0,
+                                              nullptr,
+                                              {},
+                                              nullptr});
     a.spin_up = start_state(a.run_flight, run, x, use_ctd, a.v1, a.v3, a.own);
     a.last = last_needed(end, samples.back());
     a.flight = kept_flight(run, key, use_ctd, a.v1, a.v3, a.last, with_speed);

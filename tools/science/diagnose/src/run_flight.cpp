@@ -98,41 +98,6 @@ double FlightConditions::battery(std::size_t k) const {
   return std::isfinite(track.battpos_in[k]) ? in_to_m(track.battpos_in[k]) : 0.0;
 }
 
-void RunFlight::switch_pump_lag(double lag_s) {
-  RunStages& stages = stages_;
-  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
-  std::vector<RunStages::KeptPumped>& kept = stages.kept_pumped;
-  auto find = [&](double lag) {
-    return std::find_if(kept.begin(), kept.end(), [&](const RunStages::KeptPumped& k) { return same(k.lag_s, lag); });
-  };
-  // The lag left: its volumes kept (over an older copy of the same lag's), the oldest dropped.
-  if (stages.pumped > 0) {
-    RunStages::KeptPumped left;
-    if (const auto it = find(stages.key.pump_lag_s); it != kept.end()) {
-      left = std::move(*it);
-      kept.erase(it);
-    } else if (kept.size() == RunStages::kKeptPumpLags) {
-      left = std::move(kept.front());
-      kept.erase(kept.begin());
-    }
-    left.lag_s = stages.key.pump_lag_s;
-    left.intervals = stages.pumped;
-    left.m3.clear();
-    // The stages are in order: those of the first `pumped` intervals come first.
-    const std::size_t count = stages_before(first_ + stages.pumped);
-    left.m3.resize(count);
-    for (std::size_t k = 0; k < count; ++k) left.m3[k] = stages.stages[k].pumped_volume_m3;
-    kept.push_back(std::move(left));
-  }
-  stages.pumped = 0;
-  stages.masses.clear();  // of the volumes of the lag left
-  // The lag come back to: its volumes read back (refresh_pumped goes on from there).
-  if (const auto it = find(lag_s); it != kept.end()) {
-    for (std::size_t k = 0; k < it->m3.size(); ++k) stages.stages[k].pumped_volume_m3 = it->m3[k];
-    stages.pumped = it->intervals;
-  }
-}
-
 int rk4_steps(double dt, double max_step_s) { return std::max(1, static_cast<int>(std::ceil(dt / max_step_s - 1e-9))); }
 
 RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t end, RunStages& stages)
@@ -142,14 +107,12 @@ RunFlight::RunFlight(const FlightConditions& c, std::size_t first, std::size_t e
     FlightConditions::InputKey but_lag = key;
     but_lag.pump_lag_s = stages_.key.pump_lag_s;
     if (stages_.valid && std::memcmp(&stages_.key, &but_lag, sizeof key) == 0) {
-      switch_pump_lag(key.pump_lag_s);  // the pump lag alone changed: its volumes only
+      stages_.pumped = 0;  // the pump lag alone changed: its volumes only (refresh_pumped)
     } else {
       stages_.valid = true;
       stages_.stages.clear();
       stages_.intervals = 0;
       stages_.pumped = 0;
-      stages_.kept_pumped.clear();
-      stages_.masses.clear();
     }
     stages_.key = key;
   }
@@ -199,18 +162,13 @@ double RunFlight::pumped_volume_m3(std::size_t i, int k, int n, double lagged0, 
                                 c_.vehicle.ballast.lag_s));
 }
 
-std::size_t RunFlight::stages_before(std::size_t i) const {
-  // The stages are three a sub-step, in order from the run's first interval.
-  std::size_t stage = 0;
-  for (std::size_t k = first_; k < i; ++k) stage += 3 * static_cast<std::size_t>(c_.pitch.steps(k));
-  return stage;
-}
-
 void RunFlight::refresh_pumped(std::size_t last) const {
   const std::size_t upto = std::min(stages_.intervals, last > first_ ? last - first_ : 0);
   if (stages_.pumped >= upto) return;
-  std::size_t stage = stages_before(first_ + stages_.pumped);
-  if (stages_.masses.size() > stage) stages_.masses.resize(stage);  // those after of the volumes replaced
+  // The stages are three a sub-step, in order: the first stage of interval `pumped`.
+  std::size_t stage = 0;
+  for (std::size_t i = first_; i < first_ + stages_.pumped; ++i)
+    stage += 3 * static_cast<std::size_t>(c_.pitch.steps(i));
   // The pumped volume lagged from the last refreshed stage's, as cache_stages carries it.
   double lagged = stage == 0 ? in0_.pumped_volume_m3 : stages_.stages[stage - 1].pumped_volume_m3;
   for (std::size_t i = first_ + stages_.pumped; i < first_ + upto; ++i) {
@@ -378,25 +336,12 @@ struct StepCursor {
 
 }  // namespace
 
-void RunFlight::cache_masses(std::size_t last) const {
-  const model::PrescribedPitchDynamics& dynamics = c_.dynamics;
-  const model::PrescribedPitchDynamics::MassKey key = dynamics.mass_key();
-  if (std::memcmp(key.data(), stages_.mass_key.data(), sizeof key) != 0) {
-    stages_.mass_key = key;
-    stages_.masses.clear();
-  }
-  const std::size_t needed = stages_before(last);
-  for (std::size_t k = stages_.masses.size(); k < needed; ++k)
-    stages_.masses.push_back(dynamics.stage_mass(stages_.stages[k]));
-}
-
 template <std::size_t N>
 std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>& q) {
   // Each flight after the first its own copy of the dynamics (its stage cache).
   std::array<std::optional<model::PrescribedPitchDynamics>, N> copies;
   std::array<std::optional<StepCursor>, N> cursors;
   for (std::size_t k = 0; k < N; ++k) {
-    q[k].run->cache_masses(q[k].last);
     if (k > 0) copies[k].emplace(q[k].run->c_.dynamics);
     const model::PrescribedPitchDynamics& dynamics = k > 0 ? *copies[k] : q[k].run->c_.dynamics;
     const SpinUpEnd* from = q[k].from;
@@ -426,28 +371,23 @@ std::array<std::size_t, N> RunFlight::fly_runs(const std::array<RunQuestion, N>&
   while (std::any_of(f.begin(), f.end(), [](const StepCursor* c) { return c->flying; })) {
     // One RK4 step of each flight still flying, stage by stage across them.
     std::array<const model::PrescribedPitchInputs*, N> in{};
-    std::array<const model::PrescribedPitchDynamics::StageMass*, N> mass{};
     std::array<Derivative, N> d1, d2, d3, d4;
     for (std::size_t k = 0; k < N; ++k) {
       const StepCursor& c = *f[k];
       in[k] = c.flying ? &c.view.stages[c.stage] : nullptr;
-      mass[k] = c.flying ? &c.view.masses[c.stage] : nullptr;
-      d1[k] = c.flying ? c.dynamics.derivative(c.p, in[k][0], mass[k][0], c.friction) : kIdle;
+      d1[k] = c.flying ? c.dynamics.derivative(c.p, in[k][0], c.friction) : kIdle;
     }
     for (std::size_t k = 0; k < N; ++k) {
       const StepCursor& c = *f[k];
-      d2[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d1[k].p_dot), in[k][1], mass[k][1], c.friction)
-                       : kIdle;
+      d2[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d1[k].p_dot), in[k][1], c.friction) : kIdle;
     }
     for (std::size_t k = 0; k < N; ++k) {
       const StepCursor& c = *f[k];
-      d3[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d2[k].p_dot), in[k][1], mass[k][1], c.friction)
-                       : kIdle;
+      d3[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + 0.5 * c.h * d2[k].p_dot), in[k][1], c.friction) : kIdle;
     }
     for (std::size_t k = 0; k < N; ++k) {
       const StepCursor& c = *f[k];
-      d4[k] =
-          c.flying ? c.dynamics.derivative(Impulse(c.p + c.h * d3[k].p_dot), in[k][2], mass[k][2], c.friction) : kIdle;
+      d4[k] = c.flying ? c.dynamics.derivative(Impulse(c.p + c.h * d3[k].p_dot), in[k][2], c.friction) : kIdle;
     }
     for (std::size_t k = 0; k < N; ++k) {
       StepCursor& c = *f[k];

@@ -111,26 +111,6 @@ struct RunStages {
   // at every flight) recomputes only the pumped volumes (RunFlight::
   // refresh_pumped), the rest of a stage's inputs do not depend on it.
   std::size_t pumped = 0;
-  // The pumped volumes of the last lags left (kKeptPumpLags, the latest
-  // last): the pump lag's Jacobian column and each LM step go back to a lag
-  // just left (half of a 24 h log's refreshes, 98 % of comet-2016's), whose
-  // volumes are then read back instead of worked out again: the same values,
-  // the same bits. Each holds the stages of its first `intervals`.
-  struct KeptPumped {
-    double lag_s = 0.0;
-    std::size_t intervals = 0;
-    std::vector<double> m3;
-  };
-  static constexpr std::size_t kKeptPumpLags = 4;
-  std::vector<KeptPumped> kept_pumped;
-  // The masses of the first masses.size() stages (PrescribedPitchDynamics::
-  // stage_mass) for the dynamics of `mass_key`: they depend on the stage's
-  // inputs and a few of the vehicle's numbers only, which the fits of drag,
-  // lift, the lags and the water leave alone, so main flights read them here
-  // instead of working them out at every stage (the same bits). Cleared with
-  // the stages and wherever their pumped volumes change.
-  model::PrescribedPitchDynamics::MassKey mass_key{};
-  std::vector<model::PrescribedPitchDynamics::StageMass> masses;
   // The water's vertical displacement after each interval (ground_depth),
   // for the water it was integrated in: its own key.
   bool water_valid = false, water_has_profile = false;
@@ -194,7 +174,6 @@ class RunFlight {
     std::size_t first;
     const StagePitchTable& pitch;
     const model::PrescribedPitchInputs* stages;
-    const model::PrescribedPitchDynamics::StageMass* masses;  // of each stage (RunStages::masses)
   };
 
   // Computes the stages fly() would up to `last` into the run's cache
@@ -248,12 +227,6 @@ class RunFlight {
 
  private:
   void guess_start(double& v1, double& v3) const;
-  // The stages' pump lag becomes `lag_s` (the other inputs unchanged): the
-  // lag left's volumes kept, the lag come back to's read back
-  // (RunStages::kept_pumped), the rest refreshed as flown (refresh_pumped).
-  void switch_pump_lag(double lag_s);
-  // How many of RunStages::stages lie before interval i's.
-  std::size_t stages_before(std::size_t i) const;
   // The water's vertical displacement after each interval up to sample
   // `flown` into RunStages::water (in order; those kept are not integrated again).
   void integrate_water(std::size_t flown) const;
@@ -276,9 +249,7 @@ class RunFlight {
   // The profile's bin at ground_depth's three stages a step of interval i
   // (RunStages::bins, bins_kept()), or nullptr where they are not kept.
   const std::uint32_t* stage_bins(std::size_t i, int steps) const;
-  // The stages' masses up to sample `last` brought into RunStages::masses, for this flight's dynamics.
-  void cache_masses(std::size_t last) const;
-  StagesView view() const { return {t_.time_s, first_, c_.pitch, stages_.stages.data(), stages_.masses.data()}; }
+  StagesView view() const { return {t_.time_s, first_, c_.pitch, stages_.stages.data()}; }
 
   const FlightConditions& c_;
   const Track& t_;

@@ -19,11 +19,10 @@
 namespace glider::diagnose {
 
 namespace detail {
-class RunFlight;         // one run's flight (src/run_flight.hpp)
-class StagePitchTable;   // the track's pitch at every RK4 stage (src/run_flight.hpp)
-struct RunStages;        // a run's stage inputs, kept between its flights (src/run_flight.hpp)
-class FlightConditions;  // what every run of one flight shares (src/run_flight.hpp)
-struct SpinUpEnd;        // where a flight stands at the spin-up's end (src/run_flight.hpp)
+class RunFlight;        // one run's flight (src/run_flight.hpp)
+class StagePitchTable;  // the track's pitch at every RK4 stage (src/run_flight.hpp)
+struct RunStages;       // a run's stage inputs, kept between its flights (src/run_flight.hpp)
+struct SpinUpEnd;       // where a flight stands at the spin-up's end (src/run_flight.hpp)
 }  // namespace detail
 
 class DynamicFlightModel final : public DepthRateModel {
@@ -115,14 +114,7 @@ class DynamicFlightModel final : public DepthRateModel {
   static constexpr std::size_t kStartStateBytes = std::size_t{48} << 20;
   mutable std::vector<std::unordered_multimap<std::uint64_t, StartState>> start_states_;
   mutable std::size_t start_state_bytes_ = 0;
-  // Two sets of stage inputs per run (run 2r and 2r + 1), and which of a
-  // run's two was used last: a selection goes back and forth between the
-  // CTD's density and the constant one (comet-2016: 1908 of its 1944 resets
-  // of a run's stages were that), and each set is a function of its input
-  // key and the track alone, so the set of the key asked is read as kept.
-  mutable std::vector<detail::RunStages> run_stages_;
-  mutable std::vector<unsigned char> run_stages_last_;
-  detail::RunStages& run_stages(std::size_t run, const detail::FlightConditions& conditions) const;
+  mutable std::vector<detail::RunStages> run_stages_;  // per run
   // The flights' answers, by their whole question: a selection asks the same
   // values at the same samples again (a fit's start point, a refit of a set
   // already fitted, an interval's profile), and a flight is a deterministic
