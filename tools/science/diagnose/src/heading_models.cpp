@@ -3,7 +3,9 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -288,10 +290,17 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
   made.rows.resize(n);
   const std::span<const double> time(t.row_time_s);
   double last_heading = kNaN;
-  // The heading read a delay before `at`; NaN before the log's start.
+  // The heading read a delay before `at`; NaN before the log's start. The
+  // reads go forward in time, so the first row after each is found from
+  // the last one's (the same row std::upper_bound finds, without its
+  // search: the search was a third of a heading diagnosis).
+  std::size_t after = 0;
   auto read = [&](double at) {
     const double when = at - delay;
-    const auto after = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), when) - time.begin());
+    if (std::isnan(when) || (after > 0 && !(time[after - 1] <= when))) {
+      after = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), when) - time.begin());
+    }
+    while (after < n && time[after] <= when) ++after;
     return after == 0 ? kNaN : interpolate_from(time, t.row_heading_rad, after - 1, when, true);
   };
   for (std::size_t i = 0; i < n; ++i) {
@@ -338,6 +347,23 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
 
 void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::size_t> rows,
                               std::vector<double>& out) {
+  // The law reads these effects alone; a fit asks again for the values it
+  // last asked for (its fit and held-out rows, a step it did not take):
+  // the last replay answers, same bits.
+  std::array<std::uint64_t, kLawEffects.size()> law_bits{};
+  for (std::size_t k = 0; k < law_bits.size(); ++k)
+    law_bits[k] = std::bit_cast<std::uint64_t>(value(values, kLawEffects[k]));
+  if (replayed_ && law_bits == replayed_law_) {
+    pick(predicted_, rows, out);
+    return;
+  }
+  replay(values);
+  replayed_law_ = law_bits;
+  replayed_ = true;
+  pick(predicted_, rows, out);
+}
+
+void AutopilotReplay::replay(const HeadingValues& values) {
   const Inputs& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
   AutopilotLaw law = AutopilotLaw::from(values, settings_, track_.fin_max_rad);
   predicted_.assign(in.rows.size(), kNaN);
@@ -353,7 +379,6 @@ void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::
       predicted_[i] = law.step(row.error, row.rate, row.dt);
     }
   }
-  pick(predicted_, rows, out);
 }
 
 void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& values,

@@ -10,7 +10,9 @@
 // - the autopilot: c_fin from the logged heading and command by Slocum's law
 //   (fin = gain e + integral + dgain r, clamped; firmware/heading_controller).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -109,6 +111,14 @@ class AutopilotReplay {
   int change_direction_ = 0;
   double unlogged_command(std::size_t row, double fraction) const;
   std::vector<Inputs> cache_;
+  // The effects the law reads (AutopilotLaw::from and the delay), and their
+  // bits at the last replay, whose predictions predicted_ holds.
+  static constexpr std::array<HeadingEffect, 5> kLawEffects = {
+      HeadingEffect::kAutopilotGain, HeadingEffect::kAutopilotIntegral, HeadingEffect::kAutopilotDgain,
+      HeadingEffect::kAutopilotDelay, HeadingEffect::kAutopilotDeadband};
+  std::array<std::uint64_t, kLawEffects.size()> replayed_law_{};
+  bool replayed_ = false;
+  void replay(const HeadingValues& values);
   std::vector<double> predicted_;
 };
 void predict_yaw_rate(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
