@@ -35,16 +35,6 @@ std::size_t row_at_or_before(std::span<const double> time, double t) {
   return it == time.begin() ? SIZE_MAX : static_cast<std::size_t>(it - time.begin()) - 1;
 }
 
-// Linear interpolation of a row series at t from row j, the last at or
-// before t (row_at_or_before; NaN outside or across a NaN); `angle`: across
-// the shorter way round.
-double interpolate_from(std::span<const double> time, std::span<const double> x, std::size_t j, double t, bool angle) {
-  if (j == SIZE_MAX || j + 1 >= time.size()) return j + 1 == time.size() && time[j] == t ? x[j] : kNaN;
-  const double w = (t - time[j]) / (time[j + 1] - time[j]);
-  const double step = angle ? wrap_pi(x[j + 1] - x[j]) : x[j + 1] - x[j];
-  return x[j] + w * step;
-}
-
 double value(const HeadingValues& v, HeadingEffect e) { return at(v, e); }
 
 // The fin between two readings as the servo moves it: a command goes out at
@@ -261,6 +251,21 @@ AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSetti
     change_depth_hi_m_ = hi;
     change_direction_ = direction;
   }
+  // What inputs() reads at every delay, worked out once: where the law
+  // steps, the cycles in each row's gap, the rows' spans and heading steps.
+  const std::size_t n = track.row_time_s.size();
+  active_.resize(n);
+  gap_cycles_.assign(n, 1);
+  row_span_.assign(n, kNaN);
+  heading_step_.assign(n, kNaN);
+  for (std::size_t i = 0; i < n; ++i) {
+    active_[i] = std::isfinite(track.row_command_rad[i]) && track.row_gliding[i];
+    if (i > 0) gap_cycles_[i] = cycles_between(track.row_time_s[i] - track.row_time_s[i - 1], c);
+    if (i + 1 < n) {
+      row_span_[i] = track.row_time_s[i + 1] - track.row_time_s[i];
+      heading_step_[i] = wrap_pi(track.row_heading_rad[i + 1] - track.row_heading_rad[i]);
+    }
+  }
 }
 
 // The command at an unlogged cycle `fraction` of the way from row - 1 to
@@ -282,15 +287,21 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
   for (const Inputs& cached : cache_) {
     if (cached.delay == delay) return cached;
   }
-  if (cache_.size() >= kCachedDelays) cache_.erase(cache_.begin());
-  Inputs& made = cache_.emplace_back();
+  // The oldest delay's buffers take the new one's (no allocation).
+  if (cache_.size() >= kCachedDelays) std::rotate(cache_.begin(), cache_.begin() + 1, cache_.end());
+  if (cache_.size() < kCachedDelays) cache_.emplace_back();
+  Inputs& made = cache_.back();
   made.delay = delay;
+  made.unlogged.clear();
   const HeadingTrack& t = track_;
   const std::size_t n = t.row_time_s.size();
   made.rows.resize(n);
   const std::span<const double> time(t.row_time_s);
+  const std::vector<double>& heading_at = t.row_heading_rad;
   double last_heading = kNaN;
-  // The heading read a delay before `at`; NaN before the log's start. The
+  // The heading read a delay before `at`, linear between rows (across the
+  // shorter way round); NaN before the log's start, after its end, across
+  // a NaN. The
   // reads go forward in time, so the first row after each is found from
   // the last one's (the same row std::upper_bound finds, without its
   // search: the search was a third of a heading diagnosis).
@@ -301,11 +312,14 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
       after = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), when) - time.begin());
     }
     while (after < n && time[after] <= when) ++after;
-    return after == 0 ? kNaN : interpolate_from(time, t.row_heading_rad, after - 1, when, true);
+    if (after == 0) return kNaN;
+    const std::size_t j = after - 1;
+    if (j + 1 >= n) return time[j] == when ? heading_at[j] : kNaN;
+    return heading_at[j] + (when - time[j]) / row_span_[j] * heading_step_[j];
   };
   for (std::size_t i = 0; i < n; ++i) {
     Input& in = made.rows[i];
-    if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
+    if (!active_[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
       in.kind = Input::kCentre;
       continue;
@@ -314,13 +328,13 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     // The command is the current one (the mission sets it, nothing delays
     // it); only the heading is read late.
     const double command = t.row_command_rad[i];
-    if (!std::isfinite(heading) || !std::isfinite(command)) {
+    if (!std::isfinite(heading)) {
       in.kind = Input::kNone;
       continue;
     }
     const double gap = i > 0 ? time[i] - time[i - 1] : 0.0;
     // The unlogged cycles before this row, where the previous row's law ran on.
-    const int cycles = std::isfinite(last_heading) ? cycles_between(gap, {cycle_s_, half_spread_s_}) : 1;
+    const int cycles = std::isfinite(last_heading) ? gap_cycles_[i] : 1;
     // Each step's interval: its share of the gap, or the log's cycle.
     const bool nominal = clock_ == AutopilotClock::kNominal && cycle_s_ > 0.0;
     const double spacing = gap / cycles;  // when the unlogged cycles read the heading

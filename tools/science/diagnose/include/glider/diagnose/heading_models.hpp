@@ -110,6 +110,12 @@ class AutopilotReplay {
   double change_depth_lo_m_ = 0.0, change_depth_hi_m_ = 0.0;
   int change_direction_ = 0;
   double unlogged_command(std::size_t row, double fraction) const;
+  // Per row, whatever the delay: the law steps (a heading command, gliding),
+  // the cycles in the gap before it, the span and the heading's step
+  // (shorter way round) to the next row.
+  std::vector<bool> active_;
+  std::vector<int> gap_cycles_;
+  std::vector<double> row_span_, heading_step_;
   std::vector<Inputs> cache_;
   // The effects the law reads (AutopilotLaw::from and the delay), and their
   // bits at the last replay, whose predictions predicted_ holds.
