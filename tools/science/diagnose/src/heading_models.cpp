@@ -317,6 +317,11 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     if (j + 1 >= n) return time[j] == when ? heading_at[j] : kNaN;
     return heading_at[j] + (when - time[j]) / row_span_[j] * heading_step_[j];
   };
+  const double rate_deadband = settings_.rate_deadband_rad_s;
+  auto read_still = [&](Input& step) {
+    step.still = std::abs(step.rate) < rate_deadband;
+    if (step.still) step.rate = 0.0;
+  };
   for (std::size_t i = 0; i < n; ++i) {
     Input& in = made.rows[i];
     if (!active_[i]) {
@@ -347,6 +352,7 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
       step.error = wrap_pi(unlogged_command(i, static_cast<double>(m) / cycles) - h);
       step.dt = dt;
       step.rate = wrap_pi(h - last_heading) / dt;
+      read_still(step);
       last_heading = h;
     }
     in.unlogged = made.unlogged.size() - in.first_unlogged;
@@ -354,6 +360,7 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     in.error = wrap_pi(command - heading);
     in.dt = dt;
     in.rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
+    read_still(in);
     last_heading = heading;
   }
   return made;
@@ -388,9 +395,9 @@ void AutopilotReplay::replay(const HeadingValues& values) {
     } else if (row.kind == Input::kStep) {
       for (std::size_t k = row.first_unlogged; k < row.first_unlogged + row.unlogged; ++k) {
         const Input& step = in.unlogged[k];
-        law.step(step.error, step.rate, step.dt);
+        law.step_read(step.error, step.rate, step.still, step.dt);
       }
-      predicted_[i] = law.step(row.error, row.rate, row.dt);
+      predicted_[i] = law.step_read(row.error, row.rate, row.still, row.dt);
     }
   }
 }

@@ -40,10 +40,15 @@ struct AutopilotLaw {
   // The law with the values' gains, deadband and this log's fin limit.
   static AutopilotLaw from(const HeadingValues& values, const AutopilotSettings& settings, double fin_max_rad);
   double step(double error, double rate, double dt) {
-    if (std::abs(rate) < rate_deadband) {
-      rate = 0.0;
-      if (std::abs(error) < hold_below) return output;
-    }
+    const bool still = std::abs(rate) < rate_deadband;
+    return step_read(error, still ? 0.0 : rate, still, dt);
+  }
+  // One cycle on a rate already read against the rate deadband (`still`:
+  // inside it, the rate 0): the replay reads it once per delay, and the
+  // test on the heading deadband (0 unless fitted) goes first - it is the
+  // one a branch predictor can guess.
+  double step_read(double error, double rate, bool still, double dt) {
+    if (std::abs(error) < hold_below && still) return output;
     integrator += ki * error * dt;
     output = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
     return output;
@@ -87,6 +92,7 @@ class AutopilotReplay {
  private:
   struct Input {
     enum Kind : unsigned char { kCentre, kNone, kStep } kind = kNone;  // fin centred / no prediction / a law step
+    bool still = false;  // the rate inside the law's rate deadband (AutopilotLaw::step_read)
     double error = 0.0, rate = 0.0, dt = 0.0;
     std::size_t first_unlogged = 0, unlogged = 0;  // the law's steps at unlogged cycles before this row
   };
