@@ -3,7 +3,9 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -31,16 +33,6 @@ constexpr double kStepS = 0.25;
 std::size_t row_at_or_before(std::span<const double> time, double t) {
   const auto it = std::upper_bound(time.begin(), time.end(), t);
   return it == time.begin() ? SIZE_MAX : static_cast<std::size_t>(it - time.begin()) - 1;
-}
-
-// Linear interpolation of a row series at t from row j, the last at or
-// before t (row_at_or_before; NaN outside or across a NaN); `angle`: across
-// the shorter way round.
-double interpolate_from(std::span<const double> time, std::span<const double> x, std::size_t j, double t, bool angle) {
-  if (j == SIZE_MAX || j + 1 >= time.size()) return j + 1 == time.size() && time[j] == t ? x[j] : kNaN;
-  const double w = (t - time[j]) / (time[j + 1] - time[j]);
-  const double step = angle ? wrap_pi(x[j + 1] - x[j]) : x[j + 1] - x[j];
-  return x[j] + w * step;
 }
 
 double value(const HeadingValues& v, HeadingEffect e) { return at(v, e); }
@@ -259,6 +251,21 @@ AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSetti
     change_depth_hi_m_ = hi;
     change_direction_ = direction;
   }
+  // What inputs() reads at every delay, worked out once: where the law
+  // steps, the cycles in each row's gap, the rows' spans and heading steps.
+  const std::size_t n = track.row_time_s.size();
+  active_.resize(n);
+  gap_cycles_.assign(n, 1);
+  row_span_.assign(n, kNaN);
+  heading_step_.assign(n, kNaN);
+  for (std::size_t i = 0; i < n; ++i) {
+    active_[i] = std::isfinite(track.row_command_rad[i]) && track.row_gliding[i];
+    if (i > 0) gap_cycles_[i] = cycles_between(track.row_time_s[i] - track.row_time_s[i - 1], c);
+    if (i + 1 < n) {
+      row_span_[i] = track.row_time_s[i + 1] - track.row_time_s[i];
+      heading_step_[i] = wrap_pi(track.row_heading_rad[i + 1] - track.row_heading_rad[i]);
+    }
+  }
 }
 
 // The command at an unlogged cycle `fraction` of the way from row - 1 to
@@ -280,23 +287,44 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
   for (const Inputs& cached : cache_) {
     if (cached.delay == delay) return cached;
   }
-  if (cache_.size() >= kCachedDelays) cache_.erase(cache_.begin());
-  Inputs& made = cache_.emplace_back();
+  // The oldest delay's buffers take the new one's (no allocation).
+  if (cache_.size() >= kCachedDelays) std::rotate(cache_.begin(), cache_.begin() + 1, cache_.end());
+  if (cache_.size() < kCachedDelays) cache_.emplace_back();
+  Inputs& made = cache_.back();
   made.delay = delay;
+  made.unlogged.clear();
   const HeadingTrack& t = track_;
   const std::size_t n = t.row_time_s.size();
   made.rows.resize(n);
   const std::span<const double> time(t.row_time_s);
+  const std::vector<double>& heading_at = t.row_heading_rad;
   double last_heading = kNaN;
-  // The heading read a delay before `at`; NaN before the log's start.
+  // The heading read a delay before `at`, linear between rows (across the
+  // shorter way round); NaN before the log's start, after its end, across
+  // a NaN. The
+  // reads go forward in time, so the first row after each is found from
+  // the last one's (the same row std::upper_bound finds, without its
+  // search: the search was a third of a heading diagnosis).
+  std::size_t after = 0;
   auto read = [&](double at) {
     const double when = at - delay;
-    const auto after = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), when) - time.begin());
-    return after == 0 ? kNaN : interpolate_from(time, t.row_heading_rad, after - 1, when, true);
+    if (std::isnan(when) || (after > 0 && !(time[after - 1] <= when))) {
+      after = static_cast<std::size_t>(std::upper_bound(time.begin(), time.end(), when) - time.begin());
+    }
+    while (after < n && time[after] <= when) ++after;
+    if (after == 0) return kNaN;
+    const std::size_t j = after - 1;
+    if (j + 1 >= n) return time[j] == when ? heading_at[j] : kNaN;
+    return heading_at[j] + (when - time[j]) / row_span_[j] * heading_step_[j];
+  };
+  const double rate_deadband = settings_.rate_deadband_rad_s;
+  auto read_still = [&](Input& step) {
+    step.still = std::abs(step.rate) < rate_deadband;
+    if (step.still) step.rate = 0.0;
   };
   for (std::size_t i = 0; i < n; ++i) {
     Input& in = made.rows[i];
-    if (!std::isfinite(t.row_command_rad[i]) || !t.row_gliding[i]) {
+    if (!active_[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
       in.kind = Input::kCentre;
       continue;
@@ -305,13 +333,13 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     // The command is the current one (the mission sets it, nothing delays
     // it); only the heading is read late.
     const double command = t.row_command_rad[i];
-    if (!std::isfinite(heading) || !std::isfinite(command)) {
+    if (!std::isfinite(heading)) {
       in.kind = Input::kNone;
       continue;
     }
     const double gap = i > 0 ? time[i] - time[i - 1] : 0.0;
     // The unlogged cycles before this row, where the previous row's law ran on.
-    const int cycles = std::isfinite(last_heading) ? cycles_between(gap, {cycle_s_, half_spread_s_}) : 1;
+    const int cycles = std::isfinite(last_heading) ? gap_cycles_[i] : 1;
     // Each step's interval: its share of the gap, or the log's cycle.
     const bool nominal = clock_ == AutopilotClock::kNominal && cycle_s_ > 0.0;
     const double spacing = gap / cycles;  // when the unlogged cycles read the heading
@@ -324,6 +352,7 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
       step.error = wrap_pi(unlogged_command(i, static_cast<double>(m) / cycles) - h);
       step.dt = dt;
       step.rate = wrap_pi(h - last_heading) / dt;
+      read_still(step);
       last_heading = h;
     }
     in.unlogged = made.unlogged.size() - in.first_unlogged;
@@ -331,6 +360,7 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     in.error = wrap_pi(command - heading);
     in.dt = dt;
     in.rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
+    read_still(in);
     last_heading = heading;
   }
   return made;
@@ -338,6 +368,23 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
 
 void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::size_t> rows,
                               std::vector<double>& out) {
+  // The law reads these effects alone; a fit asks again for the values it
+  // last asked for (its fit and held-out rows, a step it did not take):
+  // the last replay answers, same bits.
+  std::array<std::uint64_t, kLawEffects.size()> law_bits{};
+  for (std::size_t k = 0; k < law_bits.size(); ++k)
+    law_bits[k] = std::bit_cast<std::uint64_t>(value(values, kLawEffects[k]));
+  if (replayed_ && law_bits == replayed_law_) {
+    pick(predicted_, rows, out);
+    return;
+  }
+  replay(values);
+  replayed_law_ = law_bits;
+  replayed_ = true;
+  pick(predicted_, rows, out);
+}
+
+void AutopilotReplay::replay(const HeadingValues& values) {
   const Inputs& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
   AutopilotLaw law = AutopilotLaw::from(values, settings_, track_.fin_max_rad);
   predicted_.assign(in.rows.size(), kNaN);
@@ -348,12 +395,11 @@ void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::
     } else if (row.kind == Input::kStep) {
       for (std::size_t k = row.first_unlogged; k < row.first_unlogged + row.unlogged; ++k) {
         const Input& step = in.unlogged[k];
-        law.step(step.error, step.rate, step.dt);
+        law.step_read(step.error, step.rate, step.still, step.dt);
       }
-      predicted_[i] = law.step(row.error, row.rate, row.dt);
+      predicted_[i] = law.step_read(row.error, row.rate, row.still, row.dt);
     }
   }
-  pick(predicted_, rows, out);
 }
 
 void predict_autopilot_fin(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& values,

@@ -10,7 +10,9 @@
 // - the autopilot: c_fin from the logged heading and command by Slocum's law
 //   (fin = gain e + integral + dgain r, clamped; firmware/heading_controller).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -38,10 +40,15 @@ struct AutopilotLaw {
   // The law with the values' gains, deadband and this log's fin limit.
   static AutopilotLaw from(const HeadingValues& values, const AutopilotSettings& settings, double fin_max_rad);
   double step(double error, double rate, double dt) {
-    if (std::abs(rate) < rate_deadband) {
-      rate = 0.0;
-      if (std::abs(error) < hold_below) return output;
-    }
+    const bool still = std::abs(rate) < rate_deadband;
+    return step_read(error, still ? 0.0 : rate, still, dt);
+  }
+  // One cycle on a rate already read against the rate deadband (`still`:
+  // inside it, the rate 0): the replay reads it once per delay, and the
+  // test on the heading deadband (0 unless fitted) goes first - it is the
+  // one a branch predictor can guess.
+  double step_read(double error, double rate, bool still, double dt) {
+    if (std::abs(error) < hold_below && still) return output;
     integrator += ki * error * dt;
     output = std::clamp(kp * error + integrator + kd * rate, -fin_max, fin_max);
     return output;
@@ -85,6 +92,7 @@ class AutopilotReplay {
  private:
   struct Input {
     enum Kind : unsigned char { kCentre, kNone, kStep } kind = kNone;  // fin centred / no prediction / a law step
+    bool still = false;  // the rate inside the law's rate deadband (AutopilotLaw::step_read)
     double error = 0.0, rate = 0.0, dt = 0.0;
     std::size_t first_unlogged = 0, unlogged = 0;  // the law's steps at unlogged cycles before this row
   };
@@ -108,7 +116,21 @@ class AutopilotReplay {
   double change_depth_lo_m_ = 0.0, change_depth_hi_m_ = 0.0;
   int change_direction_ = 0;
   double unlogged_command(std::size_t row, double fraction) const;
+  // Per row, whatever the delay: the law steps (a heading command, gliding),
+  // the cycles in the gap before it, the span and the heading's step
+  // (shorter way round) to the next row.
+  std::vector<bool> active_;
+  std::vector<int> gap_cycles_;
+  std::vector<double> row_span_, heading_step_;
   std::vector<Inputs> cache_;
+  // The effects the law reads (AutopilotLaw::from and the delay), and their
+  // bits at the last replay, whose predictions predicted_ holds.
+  static constexpr std::array<HeadingEffect, 5> kLawEffects = {
+      HeadingEffect::kAutopilotGain, HeadingEffect::kAutopilotIntegral, HeadingEffect::kAutopilotDgain,
+      HeadingEffect::kAutopilotDelay, HeadingEffect::kAutopilotDeadband};
+  std::array<std::uint64_t, kLawEffects.size()> replayed_law_{};
+  bool replayed_ = false;
+  void replay(const HeadingValues& values);
   std::vector<double> predicted_;
 };
 void predict_yaw_rate(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
