@@ -49,11 +49,42 @@ inline ForceCoefficients force_coefficients(const Hydrodynamics& h, const PolarS
   return {w * fit.lift + (1.0 - w) * cross.lift, w * fit.drag + (1.0 - w) * cross.drag};
 }
 
-inline FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density,
-                                       double v1, double v3, double speed_m_s, bool with_moment, double cd0_factor) {
+// atan2(v3, v1) for the prescribed-pitch stage, whose flights glide at a few
+// degrees of attack: there atan(t), t = v3 / v1 with |t| <= 1/4 (14 deg), is
+// its Taylor series to t^23 (the first term left out is below t * 6e-18, far
+// under an ulp), summed in Estrin's scheme so that the terms do not wait on
+// each other; outside, glibc's atan2. The stage's chain of dependent operations
+// sets a flight's time, and glibc's atan2 (with its rounding-mode save and
+// errno wrapper) was about a sixth of it (docs/science.md, speed4). Within a
+// few ulps of atan2, not the same bits.
+inline double small_angle_atan2(double v3, double v1) {
+  constexpr double kMaxRatio = 0.25;
+  if (!(v1 > 0.0) || !(std::abs(v3) <= kMaxRatio * v1)) return std::atan2(v3, v1);
+  const double t = v3 / v1;
+  const double s = t * t;
+  const double s2 = s * s;
+  const double s4 = s2 * s2;
+  const double s8 = s4 * s4;
+  // (-1)^k / (2k + 1), k = 0..11, in pairs.
+  const double q0 = 1.0 + (-1.0 / 3.0) * s;
+  const double q1 = 1.0 / 5.0 + (-1.0 / 7.0) * s;
+  const double q2 = 1.0 / 9.0 + (-1.0 / 11.0) * s;
+  const double q3 = 1.0 / 13.0 + (-1.0 / 15.0) * s;
+  const double q4 = 1.0 / 17.0 + (-1.0 / 19.0) * s;
+  const double q5 = 1.0 / 21.0 + (-1.0 / 23.0) * s;
+  const double r0 = q0 + q1 * s2;
+  const double r1 = q2 + q3 * s2;
+  const double r2 = q4 + q5 * s2;
+  return t * ((r0 + r1 * s4) + r2 * s8);
+}
+
+// The flow forces at a known angle of attack alpha_rad = atan2(v3, v1).
+inline FlowForces flow_forces_at_angle(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density,
+                                       double v1, double v3, double speed_m_s, double alpha_rad, bool with_moment,
+                                       double cd0_factor) {
   FlowForces out;
   out.speed_m_s = speed_m_s;
-  out.alpha_rad = std::atan2(v3, v1);
+  out.alpha_rad = alpha_rad;
   if (!(out.speed_m_s > 0.0)) return out;
   const ForceCoefficients c = detail::force_coefficients(h, slopes, out.alpha_rad, cd0_factor);
   const double dyn = 0.5 * water_density * h.reference_area_m2 * out.speed_m_s * out.speed_m_s;
@@ -66,6 +97,12 @@ inline FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes
   out.f3 = -out.lift_n * cos_a - out.drag_n * sin_a;
   if (with_moment) out.moment_nm = dyn * moment_coefficient(h, out.alpha_rad);
   return out;
+}
+
+inline FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density,
+                                       double v1, double v3, double speed_m_s, bool with_moment, double cd0_factor) {
+  return flow_forces_at_angle(h, slopes, water_density, v1, v3, speed_m_s, std::atan2(v3, v1), with_moment,
+                              cd0_factor);
 }
 
 }  // namespace glider::model::detail

@@ -94,8 +94,9 @@ PrescribedPitchDynamics::Derivative PrescribedPitchDynamics::derivative(const Im
   const Eigen::Vector2d v = velocities_from({stage_.a11, stage_.a33, stage_.a13, stage_.a23}, p, in.q_rad_s);
   const double net_kg = stage_.net_kg;
   const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
-  const FlowForces flow = detail::flow_forces_at_speed(dynamics_.vehicle().hydro, slopes_, in.density_kg_m3, v[0], v[1],
-                                                       speed, false, friction(speed));
+  const FlowForces flow =
+      detail::flow_forces_at_angle(dynamics_.vehicle().hydro, slopes_, in.density_kg_m3, v[0], v[1], speed,
+                                   detail::small_angle_atan2(v[1], v[0]), false, friction(speed));
   const double g = dynamics_.environment().gravity_m_s2;
   const double sin_theta = pitch_.sin_theta, cos_theta = pitch_.cos_theta;
   const double f1 = -net_kg * g * sin_theta + flow.f1;
