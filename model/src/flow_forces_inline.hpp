@@ -101,8 +101,7 @@ inline FlowForces flow_forces_at_angle(const Hydrodynamics& h, const PolarSlopes
 
 inline FlowForces flow_forces_at_speed(const Hydrodynamics& h, const PolarSlopes& slopes, double water_density,
                                        double v1, double v3, double speed_m_s, bool with_moment, double cd0_factor) {
-  return flow_forces_at_angle(h, slopes, water_density, v1, v3, speed_m_s, std::atan2(v3, v1), with_moment,
-                              cd0_factor);
+  return flow_forces_at_angle(h, slopes, water_density, v1, v3, speed_m_s, std::atan2(v3, v1), with_moment, cd0_factor);
 }
 
 }  // namespace glider::model::detail

@@ -53,8 +53,8 @@ TEST(SmallAngleAtan2, WithinFourUlpsOfAtan2InsideTheSeriesRange) {
 
 TEST(SmallAngleAtan2, Atan2BitForBitOutsideIt) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double cases[][2] = {{0.2501, 1.0}, {-0.26, 1.0},  {1.0, 1.0},  {0.1, -1.0}, {-0.1, -1.0},
-                             {0.0, -1.0},   {1.0, 0.0},    {0.0, 0.0},  {3.0, 0.5},  {-0.0, -0.0}};
+  const double cases[][2] = {{0.2501, 1.0}, {-0.26, 1.0}, {1.0, 1.0}, {0.1, -1.0}, {-0.1, -1.0},
+                             {0.0, -1.0},   {1.0, 0.0},   {0.0, 0.0}, {3.0, 0.5},  {-0.0, -0.0}};
   for (const auto& c : cases) CHECK(same_bits(small_angle_atan2(c[0], c[1]), std::atan2(c[0], c[1])));
   CHECK(std::isnan(small_angle_atan2(nan, 1.0)));
   CHECK(std::isnan(small_angle_atan2(0.1, nan)));
