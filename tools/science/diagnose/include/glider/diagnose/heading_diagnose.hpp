@@ -89,6 +89,19 @@ struct HeadingDiagnoseOptions {
   // headings are interpolated between readings: the innovations need every
   // heading reading as logged).
   bool yaw_noise_model = true;
+  // With yaw_noise_model, where the vehicle link's rate error names no yaw
+  // time constant: the lag, then the yaw's delay, probed on the innovations
+  // (each alone beside the fin); the lag stands where the held-out yos'
+  // innovations are better predicted with it by the selection's margins and
+  // better than with the delay alone (or the delay stands too: then the
+  // better of the two is named, the other stated where the margins cannot
+  // tell them apart). The probe runs only where a cheap screen (the lag
+  // alone on its grid, the noise refined once) predicts the held-out
+  // innovations better by half the selection's margin. false: the rule
+  // before, the lag and delay measured only
+  // where the rate error named them (docs/science.md "The yaw's lag probed
+  // on the innovations").
+  bool yaw_dynamics_probe = true;
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
   bool fit_on_all_samples = false;      // fit_only on the held-out yos too (HeadingSelectOptions)
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions
