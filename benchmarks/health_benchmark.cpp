@@ -15,6 +15,8 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <random>
 #include <set>
@@ -175,7 +177,7 @@ std::string disturbance_args(const health_sil::Disturbance& sea) {
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg) {
+Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg, const std::string& sbdlist) {
   Outcome o;
   fs::remove_all(dir);
   const health::HealthOptions options = health_sil::health_options(dir, kHoursApart);
@@ -184,7 +186,7 @@ Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg) {
   health::HealthRun last;
   for (int k = 0; k < d.surfacings; ++k) {
     o.error = health_sil::fly_surfacing(dir + "/sbd", d.plan, k, kHoursApart, d.seed + static_cast<std::uint64_t>(k),
-                                        {}, launch_spread_deg);
+                                        sbdlist, launch_spread_deg);
     if (!o.error.empty()) return o;
     const double cpu0 = cpu_seconds();
     const auto wall0 = std::chrono::steady_clock::now();
@@ -244,7 +246,8 @@ double percentile(std::vector<double> v, double p) {
 // turn"; in disturbed water, "The fin in disturbed water"). Prints each
 // segment's route, fin and heading spreads and fin reading; returns
 // the fin alerts raised (a clean deployment: each one false) or -1.
-int run_transects(std::uint64_t seed, const std::string& dir, int surfacings, const health_sil::Disturbance& sea) {
+int run_transects(std::uint64_t seed, const std::string& dir, int surfacings, const health_sil::Disturbance& sea,
+                  const std::string& sbdlist) {
   fs::remove_all(dir);
   const health::HealthOptions options = health_sil::health_options(dir, kHoursApart);
   std::mt19937_64 rng(seed);
@@ -261,7 +264,7 @@ int run_transects(std::uint64_t seed, const std::string& dir, int surfacings, co
     std::string error;
     char route[64];
     if (kind == 0) {
-      error = health_sil::fly_surfacing(dir + "/sbd", plan, k, kHoursApart, s, {}, 180);
+      error = health_sil::fly_surfacing(dir + "/sbd", plan, k, kHoursApart, s, sbdlist, 180);
       std::snprintf(route, sizeof route, "box, launched %llu deg", static_cast<unsigned long long>(s % 361));
     } else {
       error = health_sil::fly_transect(dir + "/sbd", plan, k, kHoursApart, s, turn);
@@ -333,6 +336,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 3600.0));
   app.add_option("--compass-noise", sea.compass_noise_deg, "the compass's white noise (deg; default: the SIL's 0.2)")
       ->check(CLI::Range(0.0, 20.0));
+  std::string sbdlist_path;
+  app.add_option("--sbdlist", sbdlist_path,
+                 "the box's .sbd list (default tests/health/sbdlist.dat; a list without decimation keeps every "
+                 "cycle: the decimation's part in a reading)")
+      ->check(CLI::ExistingFile);
   std::vector<std::string> kinds{"drag", "buoyancy", "fin", "pump"};
   app.add_option("--faults", kinds, "fault kinds drawn (default: all; a bounded run measures one)")
       ->delimiter(',')
@@ -340,15 +348,21 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&]() -> int {
     if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;
     if (clean == kAsDraws) clean = draws;
+    std::string sbdlist;
+    if (!sbdlist_path.empty()) {
+      std::ifstream in(sbdlist_path);
+      sbdlist.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
     if (transects > 0) {
-      std::printf("bench_health --seed %llu --transects %zu%s  (surfacings %g h apart)\n",
-                  static_cast<unsigned long long>(seed), transects, disturbance_args(sea).c_str(), kHoursApart);
+      std::printf("bench_health --seed %llu --transects %zu%s  (surfacings %g h apart, the box's .sbd: %s)\n",
+                  static_cast<unsigned long long>(seed), transects, disturbance_args(sea).c_str(), kHoursApart,
+                  sbdlist_path.empty() ? "tests/health/sbdlist.dat" : sbdlist_path.c_str());
       std::mt19937_64 rng(seed);
       int fin_alerts = 0, failed = 0;
       for (std::size_t i = 0; i < transects; ++i) {
         const std::uint64_t s = rng();
         std::printf("  deployment %zu (seed %llu):\n", i, static_cast<unsigned long long>(s));
-        const int n = run_transects(s, out + "/transects" + std::to_string(i), 9, sea);
+        const int n = run_transects(s, out + "/transects" + std::to_string(i), 9, sea, sbdlist);
         if (n < 0) ++failed;
         fin_alerts += std::max(n, 0);
         std::fflush(stdout);
@@ -359,9 +373,10 @@ int main(int argc, char** argv) {
     }
     std::printf(
         "bench_health --seed %llu --draws %zu --clean %zu --faults %s --launch-spread %d%s  (surfacings %g h apart, "
-        "decimated .sbd: tests/health/sbdlist.dat)\n",
+        ".sbd: %s)\n",
         static_cast<unsigned long long>(seed), draws, clean, joined(kinds).c_str(), launch_spread_deg,
-        disturbance_args(sea).c_str(), kHoursApart);
+        disturbance_args(sea).c_str(), kHoursApart,
+        sbdlist_path.empty() ? "tests/health/sbdlist.dat" : sbdlist_path.c_str());
     std::mt19937_64 rng(seed);
     std::vector<double> update_s, update_cpu_s;
     std::map<Fault, std::vector<std::pair<Draw, Outcome>>> results;
@@ -376,7 +391,7 @@ int main(int argc, char** argv) {
     for (Fault f : plan) {
       Draw d = draw(f, rng);
       d.plan.disturbance = sea;
-      const Outcome o = run(d, out + "/draw" + std::to_string(n++), launch_spread_deg);
+      const Outcome o = run(d, out + "/draw" + std::to_string(n++), launch_spread_deg, sbdlist);
       std::printf("  %-48s ", d.text.c_str());
       if (!o.error.empty()) {
         std::printf("ERROR: %s\n", o.error.c_str());

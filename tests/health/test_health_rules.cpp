@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "glider/firmware/log/slocum_list.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/health/assess.hpp"
 #include "glider/health/measure.hpp"
@@ -288,4 +289,18 @@ TEST(HealthRules, HeadingSpreadIsCircularAndCountsTheHeadingUnderWater) {
   flightlog::Column nine = heading;
   nine[0] = std::nan("");
   CHECK(std::isnan(health::heading_spread_deg(log_of(nine))));
+}
+
+// bench_health --sbdlist tests/health/sbdlist_every_cycle.dat measures the
+// decimation's part in a reading (docs/health.md, "The fin's bias in a
+// random yaw"): the same sensors as the health tests' .sbd, every cycle.
+TEST(HealthRules, TheEveryCycleSbdListIsTheHealthListWithoutDecimation) {
+  const fw::SlocumListResult decimated = fw::read_slocum_list(GLIDER_SOURCE_DIR "/tests/health/sbdlist.dat");
+  const fw::SlocumListResult every = fw::read_slocum_list(GLIDER_SOURCE_DIR "/tests/health/sbdlist_every_cycle.dat");
+  CHECK_TEXT(decimated.error.empty(), decimated.error.c_str());
+  CHECK_TEXT(every.error.empty(), every.error.c_str());
+  CHECK(decimated.selection.logged == every.selection.logged);
+  CHECK(std::any_of(decimated.selection.interval_s.begin(), decimated.selection.interval_s.end(),
+                    [](double s) { return s > 0.0; }));
+  for (double s : every.selection.interval_s) CHECK_EQUAL(0.0, s);
 }
