@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glider/circular_statistics/circular_statistics.hpp"
 #include "glider/flightlog/flight_log.hpp"
 #include "glider/forecast/from_glider.hpp"
 
@@ -37,7 +38,7 @@ double course_straightness(const std::vector<HeadingSample>& samples, double fro
                                      [](double t, const HeadingSample& s) { return t < s.time_utc_s; });
   const std::ptrdiff_t n = last - first;
   if (n < kCourseMinSamples) return nan;
-  double east = 0.0, north = 0.0, covered = 0.0;
+  circular_statistics::MeanResultant course;
   for (auto it = first; it != last; ++it) {
     // Half the time to each neighbour in the span, none across a gap.
     double weight = 0.0;
@@ -45,12 +46,10 @@ double course_straightness(const std::vector<HeadingSample>& samples, double fro
       weight += 0.5 * (it->time_utc_s - (it - 1)->time_utc_s);
     if (it + 1 != last && (it + 1)->time_utc_s - it->time_utc_s <= kCourseMaxGapS)
       weight += 0.5 * ((it + 1)->time_utc_s - it->time_utc_s);
-    east += weight * std::sin(it->heading_rad);
-    north += weight * std::cos(it->heading_rad);
-    covered += weight;
+    course.add(it->heading_rad, weight);
   }
-  if (!(covered >= kCourseMinCover * (to_utc_s - from_utc_s))) return nan;
-  return std::hypot(east, north) / covered;
+  if (!(course.total_weight() >= kCourseMinCover * (to_utc_s - from_utc_s))) return nan;
+  return course.length();
 }
 
 }  // namespace glider::forecast

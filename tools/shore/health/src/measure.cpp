@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "glider/circular_statistics/circular_statistics.hpp"
 #include "glider/diagnose/diagnose.hpp"
 #include "glider/diagnose/heading_diagnose.hpp"
 #include "glider/diagnose/heading_report.hpp"
@@ -176,19 +177,14 @@ double heading_spread_deg(const flightlog::FlightLog& log) {
   const flightlog::Column* heading = log.find("m_heading");
   const flightlog::Column* depth = log.find("m_depth");
   if (heading == nullptr || depth == nullptr) return std::nan("");
-  double c = 0.0, s = 0.0;
-  std::size_t n = 0;
+  circular_statistics::MeanResultant headings;
   for (std::size_t i = 0; i < log.rows(); ++i) {
     if (!std::isfinite((*heading)[i]) || !((*depth)[i] > 2.0)) continue;
-    c += std::cos((*heading)[i]);
-    s += std::sin((*heading)[i]);
-    ++n;
+    headings.add((*heading)[i]);
   }
-  if (n < 10) return std::nan("");
-  // The mean resultant length R of the headings; sqrt(-2 ln R) is the
-  // circular standard deviation (the ordinary one for a small spread).
-  const double r = std::hypot(c, s) / static_cast<double>(n);
-  return std::sqrt(-2.0 * std::log(std::clamp(r, 1e-300, 1.0))) * kDeg;
+  if (headings.total_weight() < 10.0) return std::nan("");
+  // The circular standard deviation (the ordinary one for a small spread).
+  return circular_statistics::circular_sd_rad(headings.length()) * kDeg;
 }
 
 EffectValue pump_rate(const flightlog::FlightLog& raw) {
