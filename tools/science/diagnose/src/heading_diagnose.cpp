@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "glider/diagnose/heading_select_resolution.hpp"
 #include "glider/diagnose/thin.hpp"
 
 namespace glider::diagnose {
@@ -827,6 +828,10 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   if (options.yaw_noise_model && options.fit_only.empty() && !options.track.fin_stored_on_change) {
     measure_fin_then_reselect(track, nominal, vehicle_base, yaw_error, yaw_samples, d, options);
   }
+  // A lag the fast dynamics the first-order yaw lacks account for is not
+  // named (heading_select_resolution.hpp); not where the caller fixed the
+  // set to fit.
+  if (options.fit_only.empty()) drop_lag_within_resolution(d.yaw, vehicle_base);
 
   // The current's shear, on what the vehicle link leaves (every glide
   // sample once the pitch-over is done: the scored ones alone never see

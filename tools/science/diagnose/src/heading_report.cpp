@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "glider/diagnose/heading_select_resolution.hpp"
 #include "glider/units.hpp"
 
 namespace glider::diagnose {
@@ -63,6 +64,17 @@ ordered_json link_json(const LinkFit& f) {
                      : "not selected again with the fin held at its measurement on the heading's innovations"}});
   }
   j["refuted"] = refuted;
+  // Named, then left at the nominal: the yaw's lag within the dynamics a
+  // first-order yaw lumps into it (heading_select_resolution.hpp).
+  ordered_json within = ordered_json::array();
+  for (const HeadingFinding& x : f.within_resolution) {
+    within.push_back({{"effect", info(x.effect).id},
+                      {"value", x.value},
+                      {"nominal", x.nominal},
+                      {"ci95", {x.ci95_low, x.ci95_high}},
+                      {"resolution", kYawLagResolutionS}});
+  }
+  j["within_resolution"] = within;
   ordered_json pairs = ordered_json::array();
   for (const HeadingAmbiguity& a : f.identifiability) {
     pairs.push_back({{"chosen", info(a.chosen).id},
@@ -221,6 +233,12 @@ std::string heading_text(const HeadingDiagnosis& d) {
       add("            not %-16s %+.4g %s (95%% CI %.4g .. %.4g on the heading's innovations, noise modelled: holds "
           "%.4g)\n",
           info(x.effect).id, x.value, info(x.effect).unit, x.ci95_low, x.ci95_high, x.nominal);
+    }
+    for (const HeadingFinding& x : f->within_resolution) {
+      add("            not %-16s %+.4g %s (95%% CI %.4g .. %.4g): within %.3g %s of the nominal %.4g, the fast "
+          "dynamics a first-order yaw lumps into its lag\n",
+          info(x.effect).id, x.value, info(x.effect).unit, x.ci95_low, x.ci95_high, kYawLagResolutionS,
+          info(x.effect).unit, x.nominal);
     }
   }
   if (d.closed_loop.heldout_glides > 0) {

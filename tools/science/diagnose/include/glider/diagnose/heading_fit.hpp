@@ -47,8 +47,10 @@ struct LinkFit {
   std::size_t samples = 0, train_samples = 0, heldout_samples = 0;
   double baseline_rms = 0.0, baseline_rms_dive = 0.0, baseline_rms_climb = 0.0;  // all samples
   double baseline_heldout_rms = 0.0;
-  std::vector<HeadingFinding> findings;           // strongest first
-  std::vector<HeadingFinding> dropped;            // chosen, then refuted (heading_diagnose.hpp yaw_noise_model)
+  std::vector<HeadingFinding> findings;  // strongest first
+  std::vector<HeadingFinding> dropped;   // chosen, then refuted (heading_diagnose.hpp yaw_noise_model)
+  // Named, then left at the nominal: within the model's resolution (heading_select_resolution.hpp).
+  std::vector<HeadingFinding> within_resolution;
   std::vector<HeadingAmbiguity> identifiability;  // every pair judged (selected links only)
   // Every finding against every unused candidate: their signatures'
   // correlation, judged at or above the screen, stated below it.
