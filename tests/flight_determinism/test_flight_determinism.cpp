@@ -140,3 +140,66 @@ TEST(FlightDeterminism, AFlightAfterOtherLagsAndMassesIsTheSameBits) {
   LONGS_EQUAL(42, questions);
   LONGS_EQUAL(0, differing);
 }
+
+// A main flight from another start state under the same flight key joins a
+// traced one where their impulses and skin-friction anchors meet bit for bit,
+// and takes its depth increments from there (run_flight.hpp's FlightTrace,
+// session 40's speed5): the same bits as flown throughout by a fresh model,
+// which has no trace to join. Every run traced here (traced_samples 0; the
+// diagnosis traces runs of 1000 samples and more). The water's vertical
+// velocity moves the start state but not the flight's key: the joins.
+TEST(FlightDeterminism, AFlightJoiningAnotherIsTheSameBits) {
+  const Observations obs = comet_2019_154();
+  const glider::model::VehicleParams vehicle = comet_with_prior();
+  const std::vector<std::size_t>& samples = obs.track.scored;
+  const DynamicFlightModel model(vehicle, obs.track, 1.0, 0);
+  int differing = 0, questions = 0;
+  for (const double drag : {1.0, 1.2}) {
+    for (const double w : {0.0, 0.002, -0.003, 0.004, 0.0021}) {
+      const EffectValues question =
+          with(with(nominal_values(), Effect::kDragChange, drag), Effect::kVerticalWaterVelocity, w);
+      std::vector<double> fresh, out;
+      DynamicFlightModel(vehicle, obs.track, 1.0, 0).predict(question, true, samples, fresh);
+      model.predict(question, true, samples, out);
+      differing += same_bits(out, fresh) ? 0 : 1;
+      ++questions;
+    }
+  }
+  LONGS_EQUAL(10, questions);
+  LONGS_EQUAL(0, differing);
+  CHECK(model.joined_flights() > 0);  // the joins happened (a run's flights, not its questions)
+}
+
+// A kept flight's slot reused by a flight with speeds (flown by fly(), which
+// keeps no trace) must not keep its old trace under the new key: a later
+// flight of that key would join another flight's trace. The track's ballast
+// is held for the first half of each run, so flights of two pump lags are the
+// same bits there and differ after: the lag 0's trace, left in the slot that
+// the lag 30 s's speed flight takes (the oldest of 8, round robin), would be
+// joined by a lag 30 s flight from another start state in the first half and
+// hand it the lag 0's increments in the second.
+TEST(FlightDeterminism, AStaleTraceIsNeverJoined) {
+  const Observations obs = comet_2019_154();
+  const glider::model::VehicleParams vehicle = comet_with_prior();
+  Track track = obs.track;
+  for (std::size_t run = 0; run < track.run_first.size(); ++run) {
+    const std::size_t first = track.run_first[run], mid = first + (track.run_end(run) - first) / 2;
+    for (std::size_t i = first; i <= mid; ++i) track.ballast_cc[i] = track.ballast_cc[first];
+  }
+  const std::vector<std::size_t>& samples = track.scored;
+  const DynamicFlightModel model(vehicle, track, 1.0, 0);
+  std::vector<double> out;
+  for (int k = 0; k < 8; ++k)  // lag 0 (the oldest slot), then 7 other drags
+    model.predict(with(nominal_values(), Effect::kDragChange, 1.0 + 0.01 * k), true, samples, out);
+  const EffectValues lag30 = with(nominal_values(), Effect::kPumpLag, 30.0);
+  model.predict_speed(lag30, true, samples, out);  // into the lag 0's slot
+  int differing = 0;
+  for (const double w : {0.001, -0.002, 0.003}) {
+    const EffectValues question = with(lag30, Effect::kVerticalWaterVelocity, w);
+    std::vector<double> fresh;
+    DynamicFlightModel(vehicle, track, 1.0, 0).predict(question, true, samples, fresh);
+    model.predict(question, true, samples, out);
+    differing += same_bits(out, fresh) ? 0 : 1;
+  }
+  LONGS_EQUAL(0, differing);
+}

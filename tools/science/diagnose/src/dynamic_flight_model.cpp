@@ -54,14 +54,16 @@ bool same_profile(bool has_profile, const VerticalVelocityProfile& kept, const V
 
 }  // namespace
 
-DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s)
+DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s,
+                                       std::size_t traced_samples)
     : nominal_(nominal),
       track_(track),
       max_step_s_(max_step_s),
       stage_pitch_(std::make_unique<detail::StagePitchTable>(track, max_step_s)),
       relative_flights_(track.run_first.size()),
       start_states_(track.run_first.size()),
-      run_stages_(track.run_first.size()) {}
+      run_stages_(track.run_first.size()),
+      traced_samples_(traced_samples) {}
 
 DynamicFlightModel::~DynamicFlightModel() = default;
 
@@ -214,6 +216,21 @@ DynamicFlightModel::RelativeFlight& DynamicFlightModel::flight_slot(std::size_t 
   return flight;
 }
 
+// A kept main flight's trace that a new flight of the run under `key` and
+// the density source may join (FlightTrace): the same key bit for bit (the
+// same vehicle and stage inputs), traced to the run's end, not in `slot`
+// (the one the new flight is about to overwrite). Null where none is.
+const detail::FlightTrace* DynamicFlightModel::joinable_trace(std::size_t run, const EffectValues& key, bool use_ctd,
+                                                              const RelativeFlight& slot) const {
+  for (const RelativeFlight& flight : relative_flights_[run].flights) {
+    if (&flight == &slot || !flight.valid || flight.use_ctd != use_ctd || flight.trace == nullptr ||
+        flight.trace->last == 0 || !same_bits(flight.key, key))
+      continue;
+    return flight.trace.get();
+  }
+  return nullptr;
+}
+
 // The key a run's flight through the water depends on: the values but the
 // water's velocity and the depth lag (the sensor's, not the flight's).
 EffectValues DynamicFlightModel::flight_key(const EffectValues& x) {
@@ -313,7 +330,17 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     a.flight = kept_flight(run, key, use_ctd, a.v1, a.v3, a.last, with_speed);
   }
   auto keep = [&](AskedRun& a, RelativeFlight& slot, std::size_t flown) {
-    slot = {true, key, use_ctd, a.v1, a.v3, a.fly_to, flown, with_speed, std::move(slot.depth), std::move(slot.speed)};
+    slot = {true,
+            key,
+            use_ctd,
+            a.v1,
+            a.v3,
+            a.fly_to,
+            flown,
+            with_speed,
+            std::move(slot.depth),
+            std::move(slot.speed),
+            std::move(slot.trace)};
     a.flight = &slot;
   };
   std::vector<AskedRun*> ready;  // to fly side by side (their stages cached)
@@ -321,6 +348,7 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
     if (a.flight != nullptr) continue;
     if (with_speed) {
       RelativeFlight& slot = flight_slot(a.run);
+      if (slot.trace != nullptr) slot.trace->last = 0;  // fly() keeps none: the slot's old one is not this flight's
       keep(a, slot, a.run_flight.fly(a.v1, a.v3, a.fly_to, slot.depth, &slot.speed));
     } else {
       a.run_flight.cache_stages(a.fly_to);  // the run's first flight under these inputs: its stages now
@@ -334,9 +362,18 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
       AskedRun& a = *group[k];
       slots[k] = &flight_slot(a.run);
       q[k] = {&a.run_flight, a.v1, a.v3, a.fly_to, &slots[k]->depth, a.spin_up};
+      if (slots[k]->trace != nullptr) slots[k]->trace->last = 0;  // the slot's old flight's
+      if (a.fly_to - a.run_flight.first() >= traced_samples_) {
+        if (slots[k]->trace == nullptr) slots[k]->trace = std::make_unique<detail::FlightTrace>();
+        q[k].trace = slots[k]->trace.get();
+        q[k].join = joinable_trace(a.run, key, use_ctd, *slots[k]);
+      }
     }
     const std::array<std::size_t, N> flown = detail::RunFlight::fly_runs<N>(q);
-    for (std::size_t k = 0; k < N; ++k) keep(*group[k], *slots[k], flown[k]);
+    for (std::size_t k = 0; k < N; ++k) {
+      keep(*group[k], *slots[k], flown[k]);
+      if (q[k].trace != nullptr && q[k].trace->joined_at != 0) ++joined_flights_;
+    }
   };
   std::span<AskedRun* const> left(ready);
   for (; left.size() >= kRunsTogether; left = left.subspan(kRunsTogether)) fly_together(left.first<kRunsTogether>());

@@ -138,6 +138,29 @@ struct SpinUpEnd {
   std::vector<double> rel;
 };
 
+// A main flight's trace (RunFlight::fly_runs), for a later main flight of
+// the same run, flight key and density source (the same vehicle, the same
+// stage inputs) from another start state: the flight is damped, so the two
+// come to the same impulses and skin-friction anchors bit for bit, in the
+// 24 h SIL log after 800 of its 85,000 samples (a water velocity's Jacobian
+// column or a new velocity moves the start state, not the flight's key). From
+// there the later flight's every step is the traced one's, so it takes the
+// traced depth increments instead of flying them: the same sums in the same
+// order onto its own depth, the same bits.
+struct FlightTrace {
+  // Where the traced flight stood after closing sample first + kEvery * m
+  // (empty before it was flown there: a flight on from the spin-up's end).
+  static constexpr std::size_t kEvery = 16;
+  struct Checkpoint {
+    model::PrescribedPitchDynamics::Impulse p;
+    model::SkinFrictionFactor friction;
+  };
+  std::vector<std::optional<Checkpoint>> checkpoints;
+  std::vector<double> increments;  // each RK4 step's depth increment, by step (its first stage / 3)
+  std::size_t last = 0;            // the sample the trace reaches (0: none)
+  std::size_t joined_at = 0;       // the sample where this flight joined another's (0: flown throughout)
+};
+
 class RunFlight {
  public:
   // The run of samples [first, end); `stages` is kept by the caller between
@@ -200,6 +223,11 @@ class RunFlight {
     std::size_t last;
     std::vector<double>* z;
     const SpinUpEnd* from = nullptr;
+    // This flight's own trace (null: none kept), and another's of the same
+    // run, flight key and density source to join where their states meet
+    // (null: none); not the same object.
+    FlightTrace* trace = nullptr;
+    const FlightTrace* join = nullptr;
   };
   template <std::size_t N>
   static std::array<std::size_t, N> fly_runs(const std::array<RunQuestion, N>& q);

@@ -23,13 +23,19 @@ class RunFlight;        // one run's flight (src/run_flight.hpp)
 class StagePitchTable;  // the track's pitch at every RK4 stage (src/run_flight.hpp)
 struct RunStages;       // a run's stage inputs, kept between its flights (src/run_flight.hpp)
 struct SpinUpEnd;       // where a flight stands at the spin-up's end (src/run_flight.hpp)
+struct FlightTrace;     // a main flight's states and depth increments (src/run_flight.hpp)
 }  // namespace detail
 
 class DynamicFlightModel final : public DepthRateModel {
  public:
   // Integration step: at most max_step_s (RK4); the log's cycles are split
   // into equal sub-steps.
-  DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s = 1.0);
+  // Runs of at least traced_samples samples keep their main flights'
+  // traces, for later flights from another start state to join (run_flight.hpp's
+  // FlightTrace; the same bits either way).
+  static constexpr std::size_t kTracedSamples = 1000;
+  DynamicFlightModel(const model::VehicleParams& nominal, const Track& track, double max_step_s = 1.0,
+                     std::size_t traced_samples = kTracedSamples);
   ~DynamicFlightModel() override;
 
   // Depth rate (m/s, + down) at `samples` (indices into the track, sorted);
@@ -43,6 +49,9 @@ class DynamicFlightModel final : public DepthRateModel {
 
   // Density at the deepest CTD sample of the track minus the nominal.
   double ctd_density_anomaly() const override;
+
+  // Main flights that joined a traced one (FlightTrace) so far.
+  std::size_t joined_flights() const { return joined_flights_; }
 
  private:
   void fly(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
@@ -60,6 +69,8 @@ class DynamicFlightModel final : public DepthRateModel {
   const RelativeFlight* kept_flight(std::size_t run, const EffectValues& key, bool use_ctd, double v1, double v3,
                                     std::size_t last, bool with_speed) const;
   RelativeFlight& flight_slot(std::size_t run) const;
+  const detail::FlightTrace* joinable_trace(std::size_t run, const EffectValues& key, bool use_ctd,
+                                            const RelativeFlight& slot) const;
   static EffectValues flight_key(const EffectValues& x);
   std::size_t read_run(const detail::RunFlight& run_flight, const RelativeFlight& flight, std::size_t last,
                        double depth_lag_s, std::span<const std::size_t> samples, std::size_t next,
@@ -80,6 +91,10 @@ class DynamicFlightModel final : public DepthRateModel {
     std::size_t last = 0, flown = 0;
     bool has_speed = false;
     std::vector<double> depth, speed;
+    // Its trace (FlightTrace::last 0: none, a flight with speeds), for a
+    // later flight of the same key and density source from another start
+    // state to join (joinable_trace).
+    std::unique_ptr<detail::FlightTrace> trace;
   };
   // A run's last kRelativeFlights flights (round robin): an LM Jacobian's
   // columns alternate between effects that change the flight and ones that
@@ -131,6 +146,8 @@ class DynamicFlightModel final : public DepthRateModel {
   static constexpr std::size_t kFlightMemoBytes = std::size_t{64} << 20, kFlightMemoSamples = 20000;
   mutable std::unordered_multimap<std::uint64_t, FlightAnswer> answers_;
   mutable std::size_t answer_bytes_ = 0;
+  std::size_t traced_samples_;
+  mutable std::size_t joined_flights_ = 0;
 };
 
 }  // namespace glider::diagnose
