@@ -542,6 +542,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
         pair.chosen = chosen_probe.finding.effect;
         pair.alternative = other.finding.effect;
         pair.correlation = kNaN;  // judged on the held-out innovations, not by the signatures
+        pair.on_innovations = true;
         pair.alternative_value = other.finding.value;
         pair.chosen_heldout_rms = chosen_probe.heldout_rms;
         pair.alternative_heldout_rms = other.heldout_rms;

@@ -79,7 +79,8 @@ ordered_json link_json(const LinkFit& f) {
   for (const HeadingAmbiguity& a : f.identifiability) {
     pairs.push_back({{"chosen", info(a.chosen).id},
                      {"alternative", info(a.alternative).id},
-                     {"correlation", a.correlation},
+                     {"correlation", number_or_null(a.correlation)},
+                     {"judged_on", a.on_innovations ? "heading innovations" : "rate error"},
                      {"alternative_value", a.alternative_value},
                      {"chosen_heldout_rms", a.chosen_heldout_rms},
                      {"alternative_heldout_rms", a.alternative_heldout_rms},

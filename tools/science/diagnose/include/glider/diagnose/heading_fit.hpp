@@ -39,6 +39,10 @@ struct HeadingAmbiguity {
   double alternative_value = 0.0;
   double chosen_heldout_rms = 0.0, alternative_heldout_rms = 0.0;
   bool ambiguous = false;
+  // Judged on the heading's held-out innovations (the yaw-lag probe's pair):
+  // no signatures, so no correlation (NaN), and the held-out RMS are of the
+  // innovations (rad), not of the rate error.
+  bool on_innovations = false;
 };
 
 struct LinkFit {
