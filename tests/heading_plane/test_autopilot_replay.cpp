@@ -82,9 +82,74 @@ int differing(const HeadingTrack& t, const std::vector<HeadingValues>& asked) {
   return differ;
 }
 
+// The law stepped row by row through AutopilotLaw::step on the heading as
+// logged (no autopilot delay, every cycle logged: what the replay reads is
+// then the rows themselves, but before a NaN, read across it), the
+// measured clock.
+std::vector<double> stepped_law(const HeadingTrack& t, const AutopilotSettings& settings, const HeadingValues& v) {
+  AutopilotLaw law = AutopilotLaw::from(v, settings, t.fin_max_rad);
+  std::vector<double> out(t.row_time_s.size(), std::nan(""));
+  double last = std::nan("");
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (!t.row_gliding[i]) {
+      law.output = 0.0;
+      last = std::nan("");
+      continue;
+    }
+    // Read between this row and the next (0 s past this one): NaN where
+    // the next heading is NaN.
+    const bool next_nan = i + 1 < out.size() && !std::isfinite(t.row_heading_rad[i + 1]);
+    const double heading = next_nan ? std::nan("") : t.row_heading_rad[i];
+    if (!std::isfinite(heading)) continue;
+    const double dt = i > 0 ? t.row_time_s[i] - t.row_time_s[i - 1] : 0.0;
+    const double rate = std::isfinite(last) && dt > 0.0 ? std::remainder(heading - last, 2.0 * M_PI) / dt : 0.0;
+    out[i] = law.step(std::remainder(t.row_command_rad[i] - heading, 2.0 * M_PI), rate, dt);
+    last = heading;
+  }
+  return out;
+}
+
 }  // namespace
 
 TEST_GROUP(AutopilotReplay){};
+
+// On a log of every cycle (a steady 4 s cycle with jitter: no unlogged
+// ones) and no autopilot delay, the replay's outputs are the law's stepped
+// row by row, bit for bit: without a heading deadband (the integrator summed
+// apart from the output) and with one that holds the fin at some steps.
+TEST(AutopilotReplay, TheReplayIsTheLawStepped) {
+  HeadingTrack t;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> jitter(0.0, 0.1), wander(0.0, 0.01);
+  double time = 0.0, heading = 0.25;
+  for (std::size_t i = 0; i < 500; ++i) {
+    time += 4.0 + jitter(rng);
+    heading += wander(rng);
+    const bool centred = i % 100 < 4;
+    t.row_time_s.push_back(time);
+    t.row_heading_rad.push_back(i % 100 == 50 ? std::nan("") : heading);
+    t.row_command_rad.push_back((i / 100) % 2 == 0 ? 0.3 : 0.2);
+    t.row_gliding.push_back(!centred);
+    t.row_depth_m.push_back(centred ? 0.0 : 5.0);
+  }
+  t.fin_max_rad = 0.45;
+  const std::vector<std::size_t> rows = all_rows(t);
+  const AutopilotSettings settings;
+  AutopilotReplay replay(t, settings);
+  int held = 0;  // laws whose deadband moved the outputs (held the fin at some steps)
+  for (const double deadband : {0.0, 0.02, 0.06}) {
+    for (const double gain : {0.5, 1.5, 4.0}) {
+      for (const double integral : {0.0, 0.02, 0.1}) {
+        const HeadingValues v = law(gain, integral, -4.0, 0.0, deadband);
+        std::vector<double> replayed;
+        replay.predict(v, rows, replayed);
+        CHECK_TRUE(same_bits(replayed, stepped_law(t, settings, v)));
+        held += same_bits(replayed, stepped_law(t, settings, law(gain, integral, -4.0, 0.0, 0.0))) ? 0 : 1;
+      }
+    }
+  }
+  LONGS_EQUAL(18, held);
+}
 
 // Six delays of one integral gain, more than the replay keeps (four): a
 // delay's buffers taken by another must not answer with the integrator
