@@ -15,12 +15,18 @@ benchmarks/diagnose_truth_coverage.py), diagnosed as a black box
   vehicle link must state the pair yaw_delay / fin_delay judged on the rate
   error (the other side at the same value), its verdict following from its
   own held-out errors.
+- shallow, a fin delay of 2.39 s and a yaw delay of 2.85 s, 7.35 s between
+  rows: the servo names no dead time and the vehicle link a yaw delay of
+  about their sum (5.71 s [4, 7]: the hidden yaw delay outside). The rows
+  allow every split of the sum over the part the servo cannot place, so the
+  vehicle link must state that part (delay_split_s > 0) and the yaw delay's
+  interval hold the hidden 2.85 s.
 - shallow, a yaw delay of 5.86 s alone, 2.04 s between rows: a servo dead
   time that long would show in the fin logged at the next rows, so the yaw
   delay stands and no fin delay is named or offered.
 
-The first fails with the code before the rule (lead 1c8032b's binary: no
-such pair).
+The first two fail with the code before the rule (lead 1c8032b's binary:
+no such pair, no split stated, the interval [4, 7]).
 """
 import json
 import os
@@ -79,6 +85,16 @@ def main():
                                                                                  VEHICLE_ABSOLUTE)
         if ambiguous != (a['verdict'] == 'ambiguous') or a['chosen_heldout_rms'] > a['alternative_heldout_rms']:
             failures.append('a verdict its own numbers contradict: %s' % a)
+    fin, yaw = 2.39191957, 2.84941796
+    print('shallow, fin delay %.3f s + yaw delay %.3f s, 7.35 s rows:' % (fin, yaw))
+    links = links_of(truth, program, source, out, 'shallow', 7146950650491974220, {'fin_delay': fin, 'yaw_delay': yaw})
+    named = {f['effect']: f for link in links.values() for f in link['findings']}
+    split = links['vehicle'].get('delay_split_s')
+    print('  delay_split_s', split)
+    if not split or split <= 0.0:
+        failures.append('the part of the delay the servo rows cannot place not stated')
+    if 'yaw_delay' not in named or not named['yaw_delay']['ci95'][0] <= yaw <= named['yaw_delay']['ci95'][1]:
+        failures.append('the yaw delay %.3f not named within its interval' % yaw)
     yaw = 5.85882544
     print('shallow, yaw delay %.3f s, 2.04 s rows:' % yaw)
     links = links_of(truth, program, source, out, 'shallow', 1019075078229184451, {'yaw_delay': yaw})

@@ -843,6 +843,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
     const DelaySides sides{servo_error, servo_samples, {.absolute = min_absolute_improvement(HeadingLink::kServo)},
                            yaw_error,   yaw_samples,   yaw_select};
     choose_delay_side(d.yaw, d.servo, sides);
+    bound_delay_split(d.yaw, d.servo, sides);
   }
 
   // The current's shear, on what the vehicle link leaves (every glide

@@ -75,6 +75,7 @@ ordered_json link_json(const LinkFit& f) {
                       {"resolution", kYawLagResolutionS}});
   }
   j["within_resolution"] = within;
+  if (f.link == HeadingLink::kVehicle) j["delay_split_s"] = f.delay_split_s;
   ordered_json pairs = ordered_json::array();
   for (const HeadingAmbiguity& a : f.identifiability) {
     pairs.push_back({{"chosen", info(a.chosen).id},

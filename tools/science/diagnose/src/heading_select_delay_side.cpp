@@ -118,4 +118,18 @@ bool choose_delay_side(LinkFit& yaw, const LinkFit& servo, const DelaySides& s) 
   return servo_wins;
 }
 
+double bound_delay_split(LinkFit& yaw, LinkFit& servo, const DelaySides& s) {
+  const auto delay = finding_of(yaw.findings, kYaw);
+  if (delay == yaw.findings.end()) return 0.0;
+  const double dead_time = at(servo.values, kServo), total = std::abs(delay->value);
+  constexpr double kStepS = 0.25;
+  double unseen = 0.0;
+  for (double x = kStepS; x <= total + 1e-9 && servo_blind_to(servo, dead_time + x, s); x += kStepS) unseen = x;
+  if (unseen <= 0.0) return 0.0;
+  delay->ci95_low = std::max(0.0, delay->ci95_low - unseen);
+  if (const auto fin = finding_of(servo.findings, kServo); fin != servo.findings.end()) fin->ci95_high += unseen;
+  yaw.delay_split_s = unseen;
+  return unseen;
+}
+
 }  // namespace glider::diagnose

@@ -37,4 +37,13 @@ struct DelaySides {
 // servo's side (a fin_delay finding of the vehicle link).
 bool choose_delay_side(LinkFit& yaw, const LinkFit& servo, const DelaySides& sides);
 
+// Where a yaw delay stands beside the servo's dead time (named or nominal),
+// the part of it the servo's rows cannot place: the longest extra dead time
+// (0.25 s steps, up to the yaw delay) that its fin error cannot reject. The
+// rows then allow every split of the two delays' sum over that part, so the
+// yaw delay's 95 % interval reaches down by it and the servo's named dead
+// time's up by it (the union of the intervals over the splits), and the
+// vehicle link states it (LinkFit::delay_split_s). Returns the part (s).
+double bound_delay_split(LinkFit& yaw, LinkFit& servo, const DelaySides& sides);
+
 }  // namespace glider::diagnose
