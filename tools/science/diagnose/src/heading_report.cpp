@@ -242,6 +242,11 @@ std::string heading_text(const HeadingDiagnosis& d) {
           info(x.effect).id, x.value, info(x.effect).unit, x.ci95_low, x.ci95_high, kYawLagResolutionS,
           info(x.effect).unit, x.nominal);
     }
+    if (f->delay_split_s > 0.0) {
+      add("            %.2f s of the yaw delay the servo's rows cannot place on either side of the fin (both "
+          "intervals span it)\n",
+          f->delay_split_s);
+    }
   }
   if (d.closed_loop.heldout_glides > 0) {
     const ClosedLoopCheck& c = d.closed_loop;
