@@ -139,7 +139,7 @@ TEST(RememberedFits, EverySelectionAnswersAsOnThePlainResiduals) {
   HeadingSelectOptions select;
   select.margins.absolute = 0.002;
   auto both = [&](const HeadingValues& from, const HeadingSelectOptions& options, long* kept_calls) {
-    const LinkFit a = select_heading_effects(HeadingLink::kAutopilot, candidates, from, plain, log.samples, options);
+    LinkFit a = select_heading_effects(HeadingLink::kAutopilot, candidates, from, plain, log.samples, options);
     const long before = calls;
     const LinkFit b = select_heading_effects(HeadingLink::kAutopilot, candidates, from, kept, log.samples, options);
     if (kept_calls != nullptr) *kept_calls = calls - before;
