@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numbers>
 
 #include "glider/diagnose/heading_select_delay_side.hpp"
@@ -126,26 +127,57 @@ HeadingResiduals integrator_per_glide(HeadingResiduals residuals, const HeadingT
   const double limit = (1.0 - 1e-3) * t.fin_max_rad;
   const std::vector<int> glide = autopilot_glides(t);
   const int glides = glide.empty() ? 0 : *std::max_element(glide.begin(), glide.end()) + 1;
-  return [residuals = std::move(residuals), glide, glides, limit, &measured](
-             const HeadingValues& v, std::span<const std::size_t> which, std::vector<double>& out) {
+  // Per row, its glide where the logged fin is off its limit (else -1): the
+  // half of the test that does not move with the values, made once. The
+  // sums and counts per glide and each sample's glide (-1: not free) are
+  // kept between calls (sized once; a fit calls this thousands of times).
+  std::vector<int> free_glide(glide.size(), -1);
+  for (std::size_t i = 0; i < glide.size(); ++i) {
+    if (glide[i] >= 0 && std::abs(measured[i]) < limit) free_glide[i] = glide[i];
+  }
+  struct Scratch {
+    std::vector<double> sum;
+    std::vector<std::size_t> n;
+    std::vector<int> sample_glide;
+  };
+  // The fits on it kept (remembering_fits): the closed-loop check refits
+  // the sets the selection fitted on these residuals.
+  return remembering_fits([residuals = std::move(residuals), free_glide = std::move(free_glide), glides, limit,
+                           &measured, scratch = std::make_shared<Scratch>()](
+                              const HeadingValues& v, std::span<const std::size_t> which, std::vector<double>& out) {
     residuals(v, which, out);
-    std::vector<double> sum(static_cast<std::size_t>(glides), 0.0);
-    std::vector<std::size_t> n(static_cast<std::size_t>(glides), 0);
-    std::vector<bool> free(which.size(), false);
+    Scratch& s = *scratch;
+    s.sum.assign(static_cast<std::size_t>(glides), 0.0);
+    s.n.assign(static_cast<std::size_t>(glides), 0);
+    s.sample_glide.assign(which.size(), -1);
+    // The glide's sum is carried in a register while its samples follow one
+    // another (the same additions in the same order: the same bits), stored
+    // when another glide's sample comes.
+    int at = -1;
+    double sum = 0.0;
     for (std::size_t k = 0; k < which.size(); ++k) {
       const std::size_t i = which[k];
-      if (glide[i] < 0 || !std::isfinite(out[k])) continue;
-      const double logged = measured[i], predicted = out[k] + logged;
-      if (!(std::abs(logged) < limit && std::abs(predicted) < limit)) continue;
-      free[k] = true;
-      sum[static_cast<std::size_t>(glide[i])] += out[k];
-      ++n[static_cast<std::size_t>(glide[i])];
+      const int g = free_glide[i];
+      if (g < 0 || !std::isfinite(out[k])) continue;
+      const double predicted = out[k] + measured[i];
+      if (!(std::abs(predicted) < limit)) continue;
+      s.sample_glide[k] = g;
+      if (g != at) {
+        if (at >= 0) s.sum[static_cast<std::size_t>(at)] = sum;
+        at = g;
+        sum = s.sum[static_cast<std::size_t>(g)];
+      }
+      sum += out[k];
+      ++s.n[static_cast<std::size_t>(g)];
     }
+    if (at >= 0) s.sum[static_cast<std::size_t>(at)] = sum;
     for (std::size_t k = 0; k < which.size(); ++k) {
-      const auto g = static_cast<std::size_t>(glide[which[k]]);
-      if (free[k] && n[g] >= kMinRows) out[k] -= sum[g] / static_cast<double>(n[g]);
+      const int g = s.sample_glide[k];
+      if (g < 0) continue;
+      const auto gi = static_cast<std::size_t>(g);
+      if (s.n[gi] >= kMinRows) out[k] -= s.sum[gi] / static_cast<double>(s.n[gi]);
     }
-  };
+  });
 }
 
 LinkFit run_link(HeadingLink link, const HeadingValues& nominal, const HeadingResiduals& residuals,
@@ -791,10 +823,12 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   const AutopilotClock clock =
       options.autopilot_clock == AutopilotClockRule::kNominal ? AutopilotClock::kNominal : AutopilotClock::kMeasured;
   AutopilotReplay autopilot_replay(track, d.configured, clock);
+  // The fits on it kept (remembering_fits): the replayed integrator's
+  // closed-loop check refits the sets its selection fitted.
   const HeadingResiduals replayed_residuals =
-      against([&](const HeadingValues& v, std::span<const std::size_t> w,
-                  std::vector<double>& o) { autopilot_replay.predict(v, w, o); },
-              track.row_fin_command_rad);
+      remembering_fits(against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                                   std::vector<double>& o) { autopilot_replay.predict(v, w, o); },
+                               track.row_fin_command_rad));
   const HeadingResiduals per_glide_residuals =
       integrator_per_glide(replayed_residuals, track, track.row_fin_command_rad);
   const bool per_glide = options.autopilot_integrator_per_glide;

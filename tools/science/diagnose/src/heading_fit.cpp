@@ -4,7 +4,9 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <memory>
@@ -63,6 +65,55 @@ struct Trial {
   bool profiled = false;  // profile_intervals done
 };
 
+// The fits kept for one residual function (remembering_fits), per problem
+// context: what a Problem holds besides its nominal values. A smooth fit is
+// keyed by the bits of its nominal values, its set and its start; a
+// training RSS by the bits of its values.
+struct FitContext {
+  std::vector<std::size_t> train, heldout;
+  std::vector<int> yo, phase;
+  IntervalRule intervals = IntervalRule::kLag1;
+  std::uint64_t penalty_scale = 0;
+  std::map<std::vector<std::uint64_t>, Trial> smooth;
+  std::map<std::vector<std::uint64_t>, double> train_rss;
+};
+
+struct FitMemo {
+  std::vector<std::unique_ptr<FitContext>> contexts;
+  FitContext& context(const LinkSamples& s, IntervalRule intervals, double penalty_scale) {
+    const auto penalty = std::bit_cast<std::uint64_t>(penalty_scale);
+    for (const auto& c : contexts) {
+      if (c->intervals == intervals && c->penalty_scale == penalty && c->train == s.train && c->heldout == s.heldout &&
+          c->yo == s.yo && c->phase == s.phase) {
+        return *c;
+      }
+    }
+    auto c = std::make_unique<FitContext>();
+    c->train = s.train;
+    c->heldout = s.heldout;
+    c->yo = s.yo;
+    c->phase = s.phase;
+    c->intervals = intervals;
+    c->penalty_scale = penalty;
+    contexts.push_back(std::move(c));
+    return *contexts.back();
+  }
+};
+
+// What remembering_fits returns: the residuals, and where their fits are kept
+// (shared by the copies, which compute the same function).
+struct RememberingResiduals {
+  HeadingResiduals residuals;
+  std::shared_ptr<FitMemo> memo;
+  void operator()(const HeadingValues& v, std::span<const std::size_t> which, std::vector<double>& out) const {
+    residuals(v, which, out);
+  }
+};
+
+void append_bits(std::vector<std::uint64_t>& key, const HeadingValues& v) {
+  for (double x : v) key.push_back(std::bit_cast<std::uint64_t>(x));
+}
+
 class Problem {
  public:
   Problem(const HeadingValues& nominal, const HeadingResiduals& residuals, const LinkSamples& samples,
@@ -96,11 +147,23 @@ class Problem {
   }
 
   void set_penalty_scale(double s) { penalty_scale_ = s; }
+  // Fits kept from the residuals' earlier selections (remembering_fits),
+  // once the penalty's scale is set; none: every fit made.
+  void remember_in(FitMemo* memo) {
+    memo_ = memo == nullptr ? nullptr : &memo->context(samples_, intervals_, penalty_scale_);
+  }
+  FitContext* memo() const { return memo_; }
   double train_rss(const HeadingValues& v) const {
+    std::vector<std::uint64_t> key;
+    if (memo_ != nullptr) {
+      append_bits(key, v);
+      if (const auto it = memo_->train_rss.find(key); it != memo_->train_rss.end()) return it->second;
+    }
     std::vector<double> r;
     residuals(v, samples_.train, r);
     double s = 0.0;
     for (double x : r) s += x * x;
+    if (memo_ != nullptr) memo_->train_rss.emplace(std::move(key), s);
     return s;
   }
   // The global step of a delay's global-then-local search: the delay alone
@@ -144,6 +207,7 @@ class Problem {
   const LinkSamples& samples_;
   IntervalRule intervals_;
   double penalty_scale_ = 1.0;
+  FitContext* memo_ = nullptr;
   std::shared_ptr<std::map<HeadingEffect, double>> delay_start_ = std::make_shared<std::map<HeadingEffect, double>>();
 };
 
@@ -287,6 +351,16 @@ Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitte
     const double start = problem.delay_start(e);
     if (start > 0.0) p[j] = (start - at(problem.nominal(), e)) / info(e).scale;
   }
+  // Everything from here on is a function of the problem, the set and the
+  // start: kept (the delays' starts above are looked up first either way,
+  // so the problem's cache of them fills as it would without).
+  std::vector<std::uint64_t> key;
+  if (FitContext* memo = problem.memo(); memo != nullptr) {
+    append_bits(key, problem.nominal());
+    for (HeadingEffect e : fitted) key.push_back(static_cast<std::uint64_t>(e));
+    for (Eigen::Index j = 0; j < k; ++j) key.push_back(std::bit_cast<std::uint64_t>(p[j]));
+    if (const auto it = memo->smooth.find(key); it != memo->smooth.end()) return it->second;
+  }
   Functor functor{{}, problem, fitted, {}};
   if (k > 0) {
     // Clamps (a saturated integrator, a fin at its limit) flatten the
@@ -329,6 +403,7 @@ Trial fit_smooth(const Problem& problem, const std::vector<HeadingEffect>& fitte
     }
   }
   trial.heldout_rms = problem.rms(trial.values, problem.samples().heldout);
+  if (FitContext* memo = problem.memo(); memo != nullptr) memo->smooth.emplace(std::move(key), trial);
   return trial;
 }
 
@@ -475,6 +550,10 @@ double rms_of(const Problem& problem, const HeadingValues& v, const std::vector<
 
 }  // namespace
 
+HeadingResiduals remembering_fits(HeadingResiduals residuals) {
+  return RememberingResiduals{std::move(residuals), std::make_shared<FitMemo>()};
+}
+
 LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect>& candidates,
                                const HeadingValues& nominal, const HeadingResiduals& residuals,
                                const LinkSamples& samples, const HeadingSelectOptions& options) {
@@ -490,6 +569,9 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
   out.train_samples = fitted_on.train.size();
   Problem problem(nominal, residuals, fitted_on, options.intervals);
   problem.set_penalty_scale(std::max(1e-6, problem.rms(nominal, samples.all)));
+  if (const auto* remembering = residuals.target<RememberingResiduals>(); remembering != nullptr) {
+    problem.remember_in(remembering->memo.get());
+  }
   out.baseline_rms = rms_of(problem, nominal, samples.all);
   out.baseline_rms_dive = rms_of(problem, nominal, samples.dives);
   out.baseline_rms_climb = rms_of(problem, nominal, samples.climbs);

@@ -100,6 +100,17 @@ struct LinkSamples {
   std::vector<int> yo, phase;
 };
 
+// The residuals with the fits made on them kept: a later
+// select_heading_effects on these residuals (or a copy of them) with the
+// same samples, interval rule and penalty reads each fit it asks again - a
+// set from the same start, with the same values held - instead of refitting
+// it (the closed-loop check's fit_only selections refit the sets the
+// selection fitted). A fit is a function of those inputs alone, so the
+// answers are the same bits. For residuals that are a function of the
+// values alone; the fits kept grow with the distinct fits asked (a few
+// thousand on a real log, each a few hundred bytes).
+HeadingResiduals remembering_fits(HeadingResiduals residuals);
+
 LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect>& candidates,
                                const HeadingValues& nominal, const HeadingResiduals& residuals,
                                const LinkSamples& samples, const HeadingSelectOptions& options);
