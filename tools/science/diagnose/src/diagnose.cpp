@@ -1233,6 +1233,21 @@ bool choose_depth_lag_form(const SampleSet& sensed, const Split& s, const Diagno
   return sensor;
 }
 
+// Where the held-out yos do not tell the depth lag's two forms apart, the
+// log does not say which lag it has: the interval also holds the other
+// form's reading, with the width of its own (the same data and effects; its
+// own Jacobian is not flown). ci95_conditional keeps the chosen form's.
+void hold_other_depth_lag_form(Diagnosis& d) {
+  if (!d.depth_lag_form || d.depth_lag_form->told_apart) return;
+  const DepthLagFormChoice& c = *d.depth_lag_form;
+  const double other = c.form == DepthLagForm::kFirstOrder ? c.delay_s : c.first_order_s;
+  for (Finding& f : d.findings) {
+    if (f.effect != Effect::kDepthLag || !f.fitted) continue;
+    f.ci95_low = std::max(0.0, std::min(f.ci95_low, other - (f.value - f.ci95_low)));
+    f.ci95_high = std::max(f.ci95_high, other + (f.ci95_high - f.value));
+  }
+}
+
 // A lift whose interval reaches the lifts where the glides flown get a
 // stalled steady state (stall_branch.hpp): there the dynamic model's misfit
 // jumps wherever one glide changes branch, and the interval from its local
@@ -1337,6 +1352,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     if (f.fitted && j < prior_shift.size()) f.reynolds_prior_shift = prior_shift[j];
   }
   hold_aliased_readings(set, s, options, current, current_fit, aliases, d);
+  hold_other_depth_lag_form(d);
   if (dynamic) widen_lift_at_stall(nominal, obs.track, d);
 
   const std::vector<double> r_ext = residuals_by_sample(set, current_fit.parameters, current.ctd_density, s.all);

@@ -84,6 +84,7 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
           {"first_order_heldout_block_rms_depth_rate_m_s", c.first_order_heldout_score_m_s},
           {"delay_heldout_rms_depth_rate_m_s", c.delay_heldout_rms_m_s},
           {"first_order_heldout_rms_depth_rate_m_s", c.first_order_heldout_rms_m_s}};
+      if (!c.told_apart) findings.back()["ci95_conditional"] = {f.ci95_conditional_low, f.ci95_conditional_high};
     }
   }
   j["findings"] = findings;
