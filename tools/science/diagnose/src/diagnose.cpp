@@ -1023,7 +1023,8 @@ std::string what_separates(Effect a, Effect b) {
 // Returns the screened pairs (finding, alternative).
 std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                                                 const std::vector<Effect>& pool, const Candidate& current,
-                                                const FitResult& current_fit, Diagnosis& d) {
+                                                const FitResult& current_fit, const FitResult* delay_form_fit,
+                                                Diagnosis& d) {
   if (current.fitted.empty()) return {};
   std::vector<double> base;
   residuals(set, current_fit.parameters, current.ctd_density, s.train, base);
@@ -1076,6 +1077,17 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
     // error, the held-out yos cannot tell them apart.
     amb.ambiguous = indistinguishable(HeldOut{f.heldout_score, f.heldout_rms},
                                       HeldOut{current_fit.heldout_score, current_fit.heldout_rms}, options.margins);
+    // A depth lag read as a first-order sensor where the held-out yos do
+    // not tell that from a delay: the delay's fit is a reading the log
+    // allows too, and an alternative in the lag's place (a fit without the
+    // lag, so of no form) that the yos cannot tell from it is not ruled out
+    // either (a short pump lag beside the lag: choose_depth_lag_form).
+    if (effect == Effect::kDepthLag && delay_form_fit != nullptr) {
+      amb.ambiguous =
+          amb.ambiguous ||
+          indistinguishable(HeldOut{f.heldout_score, f.heldout_rms},
+                            HeldOut{delay_form_fit->heldout_score, delay_form_fit->heldout_rms}, options.margins);
+    }
     // An implausible alternative is still stated: what rules it out is then
     // the prior (flight_model.cpp's plausible ranges), not this log.
     amb.ruled_out_by_prior = !plausible(alternative, value);
@@ -1204,9 +1216,11 @@ void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const 
 // lag as one 4-5.5 s depth lag (docs/science.md, session 40 vtherm); a
 // delay fits a science computer's late time stamps better than a sensor
 // (gliderflight-adcp's held-out RMS 10.77 -> 10.99 mm/s as a sensor).
-// Returns true where the first-order form is taken (current_fit is then its fit).
+// Returns true where the first-order form is taken (current_fit is then its
+// fit); `tied_delay` then keeps the delay's fit where the two forms tie.
 bool choose_depth_lag_form(const SampleSet& sensed, const Split& s, const DiagnoseOptions& options,
-                           const Candidate& current, FitResult& current_fit, Diagnosis& d) {
+                           const Candidate& current, FitResult& current_fit, std::optional<FitResult>& tied_delay,
+                           Diagnosis& d) {
   if (std::find(current.fitted.begin(), current.fitted.end(), Effect::kDepthLag) == current.fitted.end()) return false;
   const auto index = static_cast<std::size_t>(Effect::kDepthLag);
   FitResult f = fit_reported(sensed, current, s.train, s.heldout, options, &current_fit);
@@ -1227,6 +1241,7 @@ bool choose_depth_lag_form(const SampleSet& sensed, const Split& s, const Diagno
       finding.heldout_rms_m_s = f.heldout_rms;
       finding.gain = 1.0 - f.heldout_rms / d.baseline.heldout_rms_m_s;
     }
+    if (!choice.told_apart) tied_delay = current_fit;
     current_fit = std::move(f);
   }
   d.depth_lag_form = choice;
@@ -1329,11 +1344,15 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   SampleSet sensor_set = dynamic_set(sensed, obs.track);
   sensor_set.usable = delay_set.usable;        // the depth window's (split_samples)
   sensor_set.lag_start = delay_set.lag_start;  // each fit from here starts at the selected fit's values
-  const bool sensor = dynamic && choose_depth_lag_form(sensor_set, s, options, current, current_fit, d);
+  std::optional<FitResult> tied_delay;
+  const bool sensor = dynamic && choose_depth_lag_form(sensor_set, s, options, current, current_fit, tied_delay, d);
   const SampleSet& set = sensor ? sensor_set : delay_set;
   add_intervals(set, current, s.train, options.intervals, current_fit);
   std::vector<ScreenedPair> aliases;
-  if (options.fit_only.empty()) aliases = state_identifiability(set, s, options, pool, current, current_fit, d);
+  if (options.fit_only.empty()) {
+    aliases =
+        state_identifiability(set, s, options, pool, current, current_fit, tied_delay ? &*tied_delay : nullptr, d);
+  }
   if (options.fit_only.empty() && dynamic)
     read_pump_lag_beside_depth_lag(set, s, options, aliases, current, current_fit);
   check_by_heldout_replicate(set, s, options, current, current_fit);
