@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The depth lag in two forms (depth_lag.hpp): a first-order sensor's
 // reading is exact for a depth straight between samples, and one dynamic
-// flight model read through both views keeps their answers apart though it
-// remembers answers by the values' bits.
+// flight model read through both views (dynamic_flight_model.hpp) keeps
+// their answers apart though it remembers answers and shares its flights.
 #include <CppUTest/TestHarness.h>
 
 #include <cmath>
@@ -51,13 +51,15 @@ TEST(DepthLagForm, AFirstOrderSensorIsExactThroughASlopeChange) {
     const double exact = tk <= t0 ? z[k] - lag * s1 : z[k] - lag * s2 - lag * (s1 - s2) * std::exp(-(tk - t0) / lag);
     DOUBLES_EQUAL(exact, read[k], 1e-9);
   }
-  // No lag leaves the depth; outside any view delay_depth is the delay.
-  std::vector<double> same = z, delayed = z, delay = z;
+  // No lag leaves the depth; read_depth_late reads each form as its own function.
+  std::vector<double> same = z, delayed = z, delay = z, sensed = z;
   first_order_lag(t, same, 0.0);
   CHECK(same_bits(z, same));
-  delay_depth(t, delayed, lag);
-  delay_only(t, delay, lag);
+  read_depth_late(DepthLagForm::kDelay, t, delayed, lag);
+  delay_depth(t, delay, lag);
   CHECK(same_bits(delay, delayed));
+  read_depth_late(DepthLagForm::kFirstOrder, t, sensed, lag);
+  CHECK(same_bits(read, sensed));
 }
 
 TEST(DepthLagForm, OneModelThroughBothViewsKeepsTheFormsApart) {
@@ -91,8 +93,13 @@ TEST(DepthLagForm, OneModelThroughBothViewsKeepsTheFormsApart) {
   CHECK(same_bits(sensor_alone, b));
   CHECK(same_bits(delay_alone, c));
   CHECK(same_bits(sensor_alone, d));
-  // The model asked directly (no view) reads a delay, as before the views.
-  std::vector<double> direct;
+  // The model asked directly: without a form it reads a delay, as before the
+  // views; with one, that form's, whichever form it was asked in before.
+  std::vector<double> direct, direct_sensor, direct_delay;
   model.predict(with_depth_lag(3.0), true, samples, direct);
   CHECK(same_bits(delay_alone, direct));
+  model.predict(with_depth_lag(3.0), DepthLagForm::kFirstOrder, true, samples, direct_sensor);
+  CHECK(same_bits(sensor_alone, direct_sensor));
+  model.predict(with_depth_lag(3.0), DepthLagForm::kDelay, true, samples, direct_delay);
+  CHECK(same_bits(delay_alone, direct_delay));
 }

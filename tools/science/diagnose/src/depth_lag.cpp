@@ -6,36 +6,17 @@
 
 namespace glider::diagnose {
 
-namespace {
-
-// The form delay_depth reads in: set by a DepthLagView for the length of
-// its call into the model (per thread: a diagnosis is one thread's).
-thread_local DepthLagForm read_form = DepthLagForm::kDelay;
-
-class FormWhileCalled {
- public:
-  explicit FormWhileCalled(DepthLagForm form) : before_(read_form) { read_form = form; }
-  ~FormWhileCalled() { read_form = before_; }
-  FormWhileCalled(const FormWhileCalled&) = delete;
-  FormWhileCalled& operator=(const FormWhileCalled&) = delete;
-
- private:
-  DepthLagForm before_;
-};
-
-}  // namespace
-
 const char* to_string(DepthLagForm form) { return form == DepthLagForm::kFirstOrder ? "first_order" : "delay"; }
 
-void delay_depth(std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
-  if (read_form == DepthLagForm::kFirstOrder) {
+void read_depth_late(DepthLagForm form, std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
+  if (form == DepthLagForm::kFirstOrder) {
     first_order_lag(time_s, depth_m, lag_s);
   } else {
-    delay_only(time_s, depth_m, lag_s);
+    delay_depth(time_s, depth_m, lag_s);
   }
 }
 
-void delay_only(std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
+void delay_depth(std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
   const std::size_t n = depth_m.size();
   if (lag_s <= 0.0 || n < 2) return;
   // From the last sample back: the depth at k - lag only reads samples up to
@@ -63,7 +44,7 @@ void first_order_lag(std::span<const double> time_s, std::span<double> depth_m, 
   // samples: over a step dt of slope s, exactly
   //   y1 = z1 - lag s + (y0 - z0 + lag s) exp(-dt / lag).
   // The decay is taken again only where dt changes (a log's cycle is mostly
-  // regular). Times only as differences (see delay_only).
+  // regular). Times only as differences (see delay_depth).
   double z0 = depth_m[0];
   const double dt0 = time_s[1] - time_s[0];
   double y = z0 - (dt0 > 0.0 ? lag_s * (depth_m[1] - z0) / dt0 : 0.0);
@@ -80,24 +61,6 @@ void first_order_lag(std::span<const double> time_s, std::span<double> depth_m, 
     depth_m[k] = y;
     z0 = z1;
   }
-}
-
-EffectValues DepthLagView::signed_lag(const EffectValues& values) const {
-  EffectValues x = values;
-  double& lag = x[static_cast<std::size_t>(Effect::kDepthLag)];
-  lag = form_ == DepthLagForm::kFirstOrder ? -std::abs(lag) : std::abs(lag);
-  return x;
-}
-
-void DepthLagView::predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-                           std::vector<double>& out, const VerticalVelocityProfile* profile) const {
-  const FormWhileCalled form(form_);
-  model_.predict(signed_lag(values), use_ctd_density, samples, out, profile);
-}
-
-void DepthLagView::predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-                                 std::vector<double>& out) const {
-  model_.predict_speed(signed_lag(values), use_ctd_density, samples, out);
 }
 
 }  // namespace glider::diagnose

@@ -17,9 +17,6 @@
 // diagnosis fits the form the held-out yos prefer (diagnose.cpp,
 // choose_depth_lag_form).
 #include <span>
-#include <vector>
-
-#include "glider/diagnose/flight_model.hpp"
 
 namespace glider::diagnose {
 
@@ -27,43 +24,17 @@ enum class DepthLagForm { kDelay, kFirstOrder };
 const char* to_string(DepthLagForm form);
 
 // Replaces depth_m[k] (at time_s[k], increasing) by the depth as the sensor
-// read it lag_s late, in the form of the DepthLagView whose predict() is
-// running (a delay outside any): see delay_only / first_order_lag.
-// lag_s >= 0; 0 leaves the series as it is. (The dynamic flight model calls
-// it as it reads each run; the form reaches it through the view.)
-void delay_depth(std::span<const double> time_s, std::span<double> depth_m, double lag_s);
+// read it lag_s late, in `form`: delay_depth or first_order_lag.
+// lag_s >= 0; 0 leaves the series as it is.
+void read_depth_late(DepthLagForm form, std::span<const double> time_s, std::span<double> depth_m, double lag_s);
 
 // The depth lag_s earlier, linearly interpolated; before the first sample,
 // extrapolated along the first interval.
-void delay_only(std::span<const double> time_s, std::span<double> depth_m, double lag_s);
+void delay_depth(std::span<const double> time_s, std::span<double> depth_m, double lag_s);
 
 // A first-order sensor's reading of the depth (time constant lag_s, the
 // depth straight between samples), started lag_s x the first interval's
 // slope behind it (a run starts mid-glide, not from rest).
 void first_order_lag(std::span<const double> time_s, std::span<double> depth_m, double lag_s);
-
-// A dynamic flight model read with the depth lag in one form. The same model
-// may sit under both views: each asks it with the depth lag's sign its own
-// (+|lag| a delay, -|lag| a first-order sensor) - the model reads |lag|
-// ("no sign, as the pump's") and keeps its answers by the values' bits, so
-// the two forms never share an answer while they share every flight (which
-// does not depend on the depth lag). Every fit of a diagnosis asks through a
-// view, so no other sign reaches the model.
-class DepthLagView final : public DepthRateModel {
- public:
-  DepthLagView(const DepthRateModel& model, DepthLagForm form) : model_(model), form_(form) {}
-  DepthLagForm form() const { return form_; }
-  void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-               std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
-  void predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-                     std::vector<double>& out) const override;
-  double ctd_density_anomaly() const override { return model_.ctd_density_anomaly(); }
-  std::span<const double> measured_speed_m_s() const override { return model_.measured_speed_m_s(); }
-
- private:
-  EffectValues signed_lag(const EffectValues& values) const;
-  const DepthRateModel& model_;
-  DepthLagForm form_;
-};
 
 }  // namespace glider::diagnose
