@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "glider/diagnose/heading_select_delay_side.hpp"
 #include "glider/diagnose/heading_select_resolution.hpp"
 #include "glider/diagnose/thin.hpp"
 
@@ -781,11 +782,11 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
     return split(rows, track.row_yo, diving, options.max_fit_samples);
   };
   const LinkSamples servo_samples = row_split(servo_rows(track));
-  d.servo = run_link(HeadingLink::kServo, base,
-                     against([&](const HeadingValues& v, std::span<const std::size_t> w,
-                                 std::vector<double>& o) { predict_servo_fin(track, nominal, v, w, o); },
-                             track.row_fin_rad),
-                     servo_samples, options);
+  const HeadingResiduals servo_error =
+      against([&](const HeadingValues& v, std::span<const std::size_t> w,
+                  std::vector<double>& o) { predict_servo_fin(track, nominal, v, w, o); },
+              track.row_fin_rad);
+  d.servo = run_link(HeadingLink::kServo, base, servo_error, servo_samples, options);
   const LinkSamples autopilot_samples = row_split(autopilot_rows(track));
   const AutopilotClock clock =
       options.autopilot_clock == AutopilotClockRule::kNominal ? AutopilotClock::kNominal : AutopilotClock::kMeasured;
@@ -833,6 +834,17 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   // named (heading_select_resolution.hpp); not where the caller fixed the
   // set to fit.
   if (options.fit_only.empty()) drop_lag_within_resolution(d.yaw, vehicle_base);
+  // A yaw delay the servo's rows cannot see as its dead time is fitted on
+  // that side too (heading_select_delay_side.hpp).
+  if (options.fit_only.empty()) {
+    HeadingSelectOptions yaw_select;
+    yaw_select.margins.absolute = min_absolute_improvement(HeadingLink::kVehicle);
+    yaw_select.intervals = options.intervals;
+    const DelaySides sides{servo_error, servo_samples, {.absolute = min_absolute_improvement(HeadingLink::kServo)},
+                           yaw_error,   yaw_samples,   yaw_select};
+    choose_delay_side(d.yaw, d.servo, sides);
+    bound_delay_split(d.yaw, d.servo, sides);
+  }
 
   // The current's shear, on what the vehicle link leaves (every glide
   // sample once the pitch-over is done: the scored ones alone never see

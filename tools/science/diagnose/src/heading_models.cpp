@@ -261,6 +261,7 @@ AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSetti
   for (std::size_t i = 0; i < n; ++i) {
     active_[i] = std::isfinite(track.row_command_rad[i]) && track.row_gliding[i];
     if (i > 0) gap_cycles_[i] = cycles_between(track.row_time_s[i] - track.row_time_s[i - 1], c);
+    max_steps_ += static_cast<std::size_t>(gap_cycles_[i]);
     if (i + 1 < n) {
       row_span_[i] = track.row_time_s[i + 1] - track.row_time_s[i];
       heading_step_[i] = wrap_pi(track.row_heading_rad[i + 1] - track.row_heading_rad[i]);
@@ -283,19 +284,29 @@ double AutopilotReplay::unlogged_command(std::size_t row, double fraction) const
   return passed ? after : before;
 }
 
-const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
-  for (const Inputs& cached : cache_) {
+AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
+  for (Inputs& cached : cache_) {
     if (cached.delay == delay) return cached;
   }
-  // The oldest delay's buffers take the new one's (no allocation).
+  // The oldest delay's buffers take the new one's (no allocation); its
+  // integrators were that delay's.
   if (cache_.size() >= kCachedDelays) std::rotate(cache_.begin(), cache_.begin() + 1, cache_.end());
   if (cache_.size() < kCachedDelays) cache_.emplace_back();
   Inputs& made = cache_.back();
   made.delay = delay;
-  made.unlogged.clear();
+  for (IntegratorSeries& series : made.integrators) series.valid = false;
+  // Room for every step the rows can take (the unlogged cycles' at most),
+  // cut to the steps taken at the end.
+  made.error.resize(max_steps_);
+  made.rate.resize(max_steps_);
+  made.dt.resize(max_steps_);
+  made.still.resize(max_steps_);
+  made.row.resize(max_steps_);
+  std::size_t steps = 0;
   const HeadingTrack& t = track_;
   const std::size_t n = t.row_time_s.size();
-  made.rows.resize(n);
+  made.kind.resize(n);
+  made.step_end.resize(n);
   const std::span<const double> time(t.row_time_s);
   const std::vector<double>& heading_at = t.row_heading_rad;
   double last_heading = kNaN;
@@ -318,15 +329,21 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     return heading_at[j] + (when - time[j]) / row_span_[j] * heading_step_[j];
   };
   const double rate_deadband = settings_.rate_deadband_rad_s;
-  auto read_still = [&](Input& step) {
-    step.still = std::abs(step.rate) < rate_deadband;
-    if (step.still) step.rate = 0.0;
+  // One law step for `row`: the rate read against the rate deadband.
+  auto add_step = [&](std::size_t row, double error, double rate, double dt) {
+    const bool still = std::abs(rate) < rate_deadband;
+    made.error[steps] = error;
+    made.rate[steps] = still ? 0.0 : rate;
+    made.dt[steps] = dt;
+    made.still[steps] = still ? 1 : 0;
+    made.row[steps] = row;
+    ++steps;
   };
   for (std::size_t i = 0; i < n; ++i) {
-    Input& in = made.rows[i];
     if (!active_[i]) {
       last_heading = kNaN;  // the fin is centred: the rate estimate restarts, the integrator is kept
-      in.kind = Input::kCentre;
+      made.kind[i] = RowKind::kCentre;
+      made.step_end[i] = steps;
       continue;
     }
     const double heading = read(time[i]);
@@ -334,7 +351,8 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     // it); only the heading is read late.
     const double command = t.row_command_rad[i];
     if (!std::isfinite(heading)) {
-      in.kind = Input::kNone;
+      made.kind[i] = RowKind::kNone;
+      made.step_end[i] = steps;
       continue;
     }
     const double gap = i > 0 ? time[i] - time[i - 1] : 0.0;
@@ -344,26 +362,45 @@ const AutopilotReplay::Inputs& AutopilotReplay::inputs(double delay) {
     const bool nominal = clock_ == AutopilotClock::kNominal && cycle_s_ > 0.0;
     const double spacing = gap / cycles;  // when the unlogged cycles read the heading
     const double dt = nominal ? cycle_s_ : spacing;
-    in.first_unlogged = made.unlogged.size();
     for (int m = 1; m < cycles; ++m) {
-      Input& step = made.unlogged.emplace_back();
       const double h = read(time[i - 1] + m * spacing);
-      step.kind = Input::kStep;
-      step.error = wrap_pi(unlogged_command(i, static_cast<double>(m) / cycles) - h);
-      step.dt = dt;
-      step.rate = wrap_pi(h - last_heading) / dt;
-      read_still(step);
+      add_step(i, wrap_pi(unlogged_command(i, static_cast<double>(m) / cycles) - h), wrap_pi(h - last_heading) / dt,
+               dt);
       last_heading = h;
     }
-    in.unlogged = made.unlogged.size() - in.first_unlogged;
-    in.kind = Input::kStep;
-    in.error = wrap_pi(command - heading);
-    in.dt = dt;
-    in.rate = std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0;
-    read_still(in);
+    add_step(i, wrap_pi(command - heading),
+             std::isfinite(last_heading) && dt > 0.0 ? wrap_pi(heading - last_heading) / dt : 0.0, dt);
+    made.kind[i] = RowKind::kStep;
+    made.step_end[i] = steps;
     last_heading = heading;
   }
+  made.error.resize(steps);
+  made.rate.resize(steps);
+  made.dt.resize(steps);
+  made.still.resize(steps);
+  made.row.resize(steps);
   return made;
+}
+
+// The integrator after each of the delay's steps for this integral gain,
+// as AutopilotLaw::step_read sums it where the law never holds: the last
+// two gains' kept per delay.
+const std::vector<double>& AutopilotReplay::integrator(Inputs& in, double ki) {
+  const auto bits = std::bit_cast<std::uint64_t>(ki);
+  for (const IntegratorSeries& series : in.integrators) {
+    if (series.valid && series.ki_bits == bits) return series.after_step;
+  }
+  IntegratorSeries& series = in.integrators[in.next_integrator];
+  in.next_integrator = (in.next_integrator + 1) % in.integrators.size();
+  series.valid = true;
+  series.ki_bits = bits;
+  series.after_step.resize(in.error.size());
+  double sum = 0.0;  // AutopilotLaw's integrator, from the log's start
+  for (std::size_t s = 0; s < in.error.size(); ++s) {
+    sum += ki * in.error[s] * in.dt[s];
+    series.after_step[s] = sum;
+  }
+  return series.after_step;
 }
 
 void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::size_t> rows,
@@ -385,19 +422,29 @@ void AutopilotReplay::predict(const HeadingValues& values, std::span<const std::
 }
 
 void AutopilotReplay::replay(const HeadingValues& values) {
-  const Inputs& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
+  Inputs& in = inputs(std::abs(value(values, HeadingEffect::kAutopilotDelay)));
   AutopilotLaw law = AutopilotLaw::from(values, settings_, track_.fin_max_rad);
-  predicted_.assign(in.rows.size(), kNaN);
-  for (std::size_t i = 0; i < in.rows.size(); ++i) {
-    const Input& row = in.rows[i];
-    if (row.kind == Input::kCentre) {
+  const std::size_t n = in.kind.size();
+  predicted_.assign(n, kNaN);
+  if (!(law.hold_below > 0.0)) {
+    // The law never holds (|error| < 0 is never true): the integrator is
+    // the steps' running sum whatever the gains on the output, and each
+    // step's output reads it (AutopilotLaw::step_read's sums, in its
+    // order); a row's last step's output stands.
+    const std::vector<double>& integrated = integrator(in, law.ki);
+    for (std::size_t s = 0; s < in.error.size(); ++s) {
+      predicted_[in.row[s]] =
+          std::clamp(law.kp * in.error[s] + integrated[s] + law.kd * in.rate[s], -law.fin_max, law.fin_max);
+    }
+    return;
+  }
+  std::size_t s = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (in.kind[i] == RowKind::kCentre) {
       law.output = 0.0;
-    } else if (row.kind == Input::kStep) {
-      for (std::size_t k = row.first_unlogged; k < row.first_unlogged + row.unlogged; ++k) {
-        const Input& step = in.unlogged[k];
-        law.step_read(step.error, step.rate, step.still, step.dt);
-      }
-      predicted_[i] = law.step_read(row.error, row.rate, row.still, row.dt);
+    } else if (in.kind[i] == RowKind::kStep) {
+      for (; s < in.step_end[i]; ++s) law.step_read(in.error[s], in.rate[s], in.still[s] != 0, in.dt[s]);
+      predicted_[i] = law.output;
     }
   }
 }

@@ -75,6 +75,7 @@ ordered_json link_json(const LinkFit& f) {
                       {"resolution", kYawLagResolutionS}});
   }
   j["within_resolution"] = within;
+  if (f.link == HeadingLink::kVehicle) j["delay_split_s"] = f.delay_split_s;
   ordered_json pairs = ordered_json::array();
   for (const HeadingAmbiguity& a : f.identifiability) {
     pairs.push_back({{"chosen", info(a.chosen).id},
@@ -240,6 +241,11 @@ std::string heading_text(const HeadingDiagnosis& d) {
           "dynamics a first-order yaw lumps into its lag\n",
           info(x.effect).id, x.value, info(x.effect).unit, x.ci95_low, x.ci95_high, kYawLagResolutionS,
           info(x.effect).unit, x.nominal);
+    }
+    if (f->delay_split_s > 0.0) {
+      add("            %.2f s of the yaw delay the servo's rows cannot place on either side of the fin (both "
+          "intervals span it)\n",
+          f->delay_split_s);
     }
   }
   if (d.closed_loop.heldout_glides > 0) {

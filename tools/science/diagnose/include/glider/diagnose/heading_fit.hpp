@@ -56,6 +56,9 @@ struct LinkFit {
   // Named, then left at the nominal: within the model's resolution (heading_select_resolution.hpp).
   std::vector<HeadingFinding> within_resolution;
   std::vector<HeadingAmbiguity> identifiability;  // every pair judged (selected links only)
+  // The part of a yaw delay the servo's rows cannot place on either side
+  // of the fin (s; heading_select_delay_side.hpp bound_delay_split).
+  double delay_split_s = 0.0;
   // Every finding against every unused candidate: their signatures'
   // correlation, judged at or above the screen, stated below it.
   struct ScreenedCorrelation {

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "glider/diagnose/heading_effects.hpp"
@@ -90,19 +91,33 @@ class AutopilotReplay {
   void predict(const HeadingValues& values, std::span<const std::size_t> rows, std::vector<double>& out);
 
  private:
-  struct Input {
-    enum Kind : unsigned char { kCentre, kNone, kStep } kind = kNone;  // fin centred / no prediction / a law step
-    bool still = false;  // the rate inside the law's rate deadband (AutopilotLaw::step_read)
-    double error = 0.0, rate = 0.0, dt = 0.0;
-    std::size_t first_unlogged = 0, unlogged = 0;  // the law's steps at unlogged cycles before this row
+  // What the law reads for one autopilot delay, as arrays (the replay's
+  // loops run down them): per row what it does, and the law's steps in
+  // order - a row's unlogged cycles', then its own.
+  enum class RowKind : unsigned char { kCentre, kNone, kStep };  // fin centred / no prediction / law steps
+  // The integrator after each step for one integral gain (`ki_bits`): where
+  // the law cannot hold (no heading deadband) it depends on the delay's
+  // steps and that gain alone, so a replay that moves only the gain on the
+  // error or the rate (a Jacobian's gain and dgain columns) reuses it.
+  // Cleared when its delay's buffers take another delay.
+  struct IntegratorSeries {
+    bool valid = false;
+    std::uint64_t ki_bits = 0;
+    std::vector<double> after_step;
   };
   struct Inputs {
     double delay = 0.0;
-    std::vector<Input> rows;
-    std::vector<Input> unlogged;  // the steps at cycles the log does not hold, in order
+    std::vector<RowKind> kind;            // per row
+    std::vector<std::size_t> step_end;    // per row: one past its last step
+    std::vector<double> error, rate, dt;  // per step; the rate +0.0 inside the rate deadband
+    std::vector<unsigned char> still;     // per step: the rate inside the rate deadband (AutopilotLaw::step_read)
+    std::vector<std::size_t> row;         // per step: the row it predicts (its last step's output stands)
+    std::array<IntegratorSeries, 2> integrators;
+    std::size_t next_integrator = 0;  // the one the next new gain overwrites
   };
   static constexpr std::size_t kCachedDelays = 4;
-  const Inputs& inputs(double delay);
+  Inputs& inputs(double delay);
+  const std::vector<double>& integrator(Inputs& in, double ki);
   const HeadingTrack& track_;
   AutopilotSettings settings_;
   AutopilotClock clock_ = AutopilotClock::kMeasured;
@@ -122,6 +137,7 @@ class AutopilotReplay {
   std::vector<bool> active_;
   std::vector<int> gap_cycles_;
   std::vector<double> row_span_, heading_step_;
+  std::size_t max_steps_ = 0;  // the law's steps if every row stepped
   std::vector<Inputs> cache_;
   // The effects the law reads (AutopilotLaw::from and the delay), and their
   // bits at the last replay, whose predictions predicted_ holds.
