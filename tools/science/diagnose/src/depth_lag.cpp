@@ -1,9 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/depth_lag.hpp"
 
+#include <cmath>
 #include <cstddef>
 
 namespace glider::diagnose {
+
+const char* to_string(DepthLagForm form) { return form == DepthLagForm::kFirstOrder ? "first_order" : "delay"; }
+
+void read_depth_late(DepthLagForm form, std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
+  if (form == DepthLagForm::kFirstOrder) {
+    first_order_lag(time_s, depth_m, lag_s);
+  } else {
+    delay_depth(time_s, depth_m, lag_s);
+  }
+}
 
 void delay_depth(std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
   const std::size_t n = depth_m.size();
@@ -23,6 +34,32 @@ void delay_depth(std::span<const double> time_s, std::span<double> depth_m, doub
     const double zb = b == 1 ? second : depth_m[b];
     const double span = time_s[b] - time_s[a];
     depth_m[k] = za + (span > 0.0 ? before_j / span : 0.0) * (zb - za);
+  }
+}
+
+void first_order_lag(std::span<const double> time_s, std::span<double> depth_m, double lag_s) {
+  const std::size_t n = depth_m.size();
+  if (lag_s <= 0.0 || n < 2) return;
+  // The reading y obeys y' = (z - y) / lag with z straight between the
+  // samples: over a step dt of slope s, exactly
+  //   y1 = z1 - lag s + (y0 - z0 + lag s) exp(-dt / lag).
+  // The decay is taken again only where dt changes (a log's cycle is mostly
+  // regular). Times only as differences (see delay_depth).
+  double z0 = depth_m[0];
+  const double dt0 = time_s[1] - time_s[0];
+  double y = z0 - (dt0 > 0.0 ? lag_s * (depth_m[1] - z0) / dt0 : 0.0);
+  double last_dt = -1.0, decay = 0.0;
+  depth_m[0] = y;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double z1 = depth_m[k];
+    const double dt = time_s[k] - time_s[k - 1];
+    if (dt > 0.0) {
+      if (dt != last_dt) last_dt = dt, decay = std::exp(-dt / lag_s);
+      const double behind = lag_s * (z1 - z0) / dt;
+      y = z1 - behind + (y - z0 + behind) * decay;
+    }
+    depth_m[k] = y;
+    z0 = z1;
   }
 }
 

@@ -15,6 +15,7 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <utility>
 
+#include "glider/diagnose/depth_lag.hpp"
 #include "glider/diagnose/dynamic_flight_model.hpp"
 #include "glider/diagnose/forward_difference.hpp"
 #include "glider/diagnose/speed_reference.hpp"
@@ -926,20 +927,23 @@ void check_by_heldout_replicate(const SampleSet& set, const Split& s, const Diag
 // from the final fit's values) and each sigma becomes hypot(sigma, shift).
 // Values and selection are unchanged.
 void add_reynolds_prior_uncertainty(const model::VehicleParams& nominal, const Observations& obs, bool dynamic,
-                                    const SampleSet& set, const Split& s, const DiagnoseOptions& options,
-                                    const Candidate& current, FitResult& current_fit, std::vector<double>& shift) {
+                                    DepthLagForm form, const SampleSet& set, const Split& s,
+                                    const DiagnoseOptions& options, const Candidate& current, FitResult& current_fit,
+                                    std::vector<double>& shift) {
   shift.assign(current.fitted.size(), 0.0);
   if (current.fitted.empty() || current_fit.sigma.size() != current.fitted.size()) return;
   model::VehicleParams shifted = nominal;
   shifted.hydro.cd0_reynolds_exponent += kDragReynoldsExponentPriorSigma;
   std::optional<FlightModel> steady;
   std::optional<DynamicFlightModel> flown;
+  std::optional<DepthLagView> read;
   if (dynamic) {
     flown.emplace(shifted, obs.track, options.max_step_s);
+    read.emplace(*flown, form);
   } else {
     steady.emplace(shifted, obs);
   }
-  SampleSet other = dynamic ? dynamic_set(*flown, obs.track) : steady_set(*steady, obs);
+  SampleSet other = dynamic ? dynamic_set(*read, obs.track) : steady_set(*steady, obs);
   other.lag_start = set.lag_start;  // the fit starts from current_fit's values: the grid is not needed again
   const FitResult moved = fit_reported(other, current, s.train, s.heldout, options, &current_fit);
   for (std::size_t j = 0; j < current.fitted.size(); ++j) {
@@ -1019,7 +1023,8 @@ std::string what_separates(Effect a, Effect b) {
 // Returns the screened pairs (finding, alternative).
 std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                                                 const std::vector<Effect>& pool, const Candidate& current,
-                                                const FitResult& current_fit, Diagnosis& d) {
+                                                const FitResult& current_fit, const FitResult* delay_form_fit,
+                                                Diagnosis& d) {
   if (current.fitted.empty()) return {};
   std::vector<double> base;
   residuals(set, current_fit.parameters, current.ctd_density, s.train, base);
@@ -1072,6 +1077,17 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
     // error, the held-out yos cannot tell them apart.
     amb.ambiguous = indistinguishable(HeldOut{f.heldout_score, f.heldout_rms},
                                       HeldOut{current_fit.heldout_score, current_fit.heldout_rms}, options.margins);
+    // A depth lag read as a first-order sensor where the held-out yos do
+    // not tell that from a delay: the delay's fit is a reading the log
+    // allows too, and an alternative in the lag's place (a fit without the
+    // lag, so of no form) that the yos cannot tell from it is not ruled out
+    // either (a short pump lag beside the lag: choose_depth_lag_form).
+    if (effect == Effect::kDepthLag && delay_form_fit != nullptr) {
+      amb.ambiguous =
+          amb.ambiguous ||
+          indistinguishable(HeldOut{f.heldout_score, f.heldout_rms},
+                            HeldOut{delay_form_fit->heldout_score, delay_form_fit->heldout_rms}, options.margins);
+    }
     // An implausible alternative is still stated: what rules it out is then
     // the prior (flight_model.cpp's plausible ranges), not this log.
     amb.ruled_out_by_prior = !plausible(alternative, value);
@@ -1189,6 +1205,64 @@ void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const 
   current_fit = std::move(f);
 }
 
+// The depth lag in the form the held-out yos prefer (depth_lag.hpp). The
+// selection runs with the delay; where the final model fits a depth lag, the
+// same effects are fitted again with it a first-order sensor (`sensed`: the
+// same flights read through the other form), from the delay's fit, and that
+// fit is taken where it predicts the held-out yos better (the selection's
+// score). Only the form of a lag already selected is chosen, never whether
+// there is one: a first-order lag smooths a turn as a short pump lag does,
+// and flown through the selection it read two 7 s pump lags beside a depth
+// lag as one 4-5.5 s depth lag (docs/science.md, session 40 vtherm); a
+// delay fits a science computer's late time stamps better than a sensor
+// (gliderflight-adcp's held-out RMS 10.77 -> 10.99 mm/s as a sensor).
+// Returns true where the first-order form is taken (current_fit is then its
+// fit); `tied_delay` then keeps the delay's fit where the two forms tie.
+bool choose_depth_lag_form(const SampleSet& sensed, const Split& s, const DiagnoseOptions& options,
+                           const Candidate& current, FitResult& current_fit, std::optional<FitResult>& tied_delay,
+                           Diagnosis& d) {
+  if (std::find(current.fitted.begin(), current.fitted.end(), Effect::kDepthLag) == current.fitted.end()) return false;
+  const auto index = static_cast<std::size_t>(Effect::kDepthLag);
+  FitResult f = fit_reported(sensed, current, s.train, s.heldout, options, &current_fit);
+  DepthLagFormChoice choice;
+  choice.delay_s = std::abs(current_fit.parameters.values[index]);
+  choice.first_order_s = std::abs(f.parameters.values[index]);
+  choice.delay_heldout_score_m_s = current_fit.heldout_score;
+  choice.first_order_heldout_score_m_s = f.heldout_score;
+  choice.delay_heldout_rms_m_s = current_fit.heldout_rms;
+  choice.first_order_heldout_rms_m_s = f.heldout_rms;
+  choice.told_apart = !indistinguishable(HeldOut{f.heldout_score, f.heldout_rms},
+                                         HeldOut{current_fit.heldout_score, current_fit.heldout_rms}, options.margins);
+  const bool sensor = plausible(Effect::kDepthLag, choice.first_order_s) && f.heldout_score < current_fit.heldout_score;
+  if (sensor) {
+    choice.form = DepthLagForm::kFirstOrder;
+    for (Finding& finding : d.findings) {  // those that reported the selected model's error (its last rank)
+      if (finding.heldout_rms_m_s != current_fit.heldout_rms) continue;
+      finding.heldout_rms_m_s = f.heldout_rms;
+      finding.gain = 1.0 - f.heldout_rms / d.baseline.heldout_rms_m_s;
+    }
+    if (!choice.told_apart) tied_delay = current_fit;
+    current_fit = std::move(f);
+  }
+  d.depth_lag_form = choice;
+  return sensor;
+}
+
+// Where the held-out yos do not tell the depth lag's two forms apart, the
+// log does not say which lag it has: the interval also holds the other
+// form's reading, with the width of its own (the same data and effects; its
+// own Jacobian is not flown). ci95_conditional keeps the chosen form's.
+void hold_other_depth_lag_form(Diagnosis& d) {
+  if (!d.depth_lag_form || d.depth_lag_form->told_apart) return;
+  const DepthLagFormChoice& c = *d.depth_lag_form;
+  const double other = c.form == DepthLagForm::kFirstOrder ? c.delay_s : c.first_order_s;
+  for (Finding& f : d.findings) {
+    if (f.effect != Effect::kDepthLag || !f.fitted) continue;
+    f.ci95_low = std::max(0.0, std::min(f.ci95_low, other - (f.value - f.ci95_low)));
+    f.ci95_high = std::max(f.ci95_high, other + (f.ci95_high - f.value));
+  }
+}
+
 // A lift whose interval reaches the lifts where the glides flown get a
 // stalled steady state (stall_branch.hpp): there the dynamic model's misfit
 // jumps wherever one glide changes branch, and the interval from its local
@@ -1246,35 +1320,47 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   const FlightModel steady_model(nominal, obs);
   refuse_vehicle_that_cannot_glide(steady_model, obs);
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
+  const DepthLagView delayed(dynamic_model, DepthLagForm::kDelay), sensed(dynamic_model, DepthLagForm::kFirstOrder);
   const bool dynamic = options.model == FlightModelKind::kDynamic && !obs.track.scored.empty();
   d.model = dynamic ? FlightModelKind::kDynamic : FlightModelKind::kSteady;
-  SampleSet set = dynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
-  const Split s = split_samples(set, options);
+  SampleSet delay_set = dynamic ? dynamic_set(delayed, obs.track) : steady_set(steady_model, obs);
+  const Split s = split_samples(delay_set, options);
   d.samples_used = s.all.size();
   d.train_samples = s.train.size();
   d.heldout_samples = s.heldout.size();
 
-  report_baseline(set, s, dynamic, obs, steady_model, d);
+  report_baseline(delay_set, s, dynamic, obs, steady_model, d);
 
   const std::vector<Effect> pool = candidate_pool(obs, dynamic);
   for (Effect e : pool) d.candidates_tried.emplace_back(info(e).id);
   Candidate current;
-  FitResult current_fit = fit_reported(set, current, s.train, s.heldout, options);
+  FitResult current_fit = fit_reported(delay_set, current, s.train, s.heldout, options);
   if (options.fit_only.empty()) {
-    select_effects(set, s, options, pool, current, current_fit, d);
+    select_effects(delay_set, s, options, pool, current, current_fit, d);
   } else {
-    fit_requested(set, s, options, current, current_fit, d);
+    fit_requested(delay_set, s, options, current, current_fit, d);
   }
+  // From here on, the depth lag in the form the held-out yos prefer.
+  SampleSet sensor_set = dynamic_set(sensed, obs.track);
+  sensor_set.usable = delay_set.usable;        // the depth window's (split_samples)
+  sensor_set.lag_start = delay_set.lag_start;  // each fit from here starts at the selected fit's values
+  std::optional<FitResult> tied_delay;
+  const bool sensor = dynamic && choose_depth_lag_form(sensor_set, s, options, current, current_fit, tied_delay, d);
+  const SampleSet& set = sensor ? sensor_set : delay_set;
   add_intervals(set, current, s.train, options.intervals, current_fit);
   std::vector<ScreenedPair> aliases;
-  if (options.fit_only.empty()) aliases = state_identifiability(set, s, options, pool, current, current_fit, d);
+  if (options.fit_only.empty()) {
+    aliases =
+        state_identifiability(set, s, options, pool, current, current_fit, tied_delay ? &*tied_delay : nullptr, d);
+  }
   if (options.fit_only.empty() && dynamic)
     read_pump_lag_beside_depth_lag(set, s, options, aliases, current, current_fit);
   check_by_heldout_replicate(set, s, options, current, current_fit);
   std::vector<double> prior_shift;
   if (flies_reynolds_prior(given, options.drag_reynolds_exponent)) {
     d.drag_reynolds_exponent_sigma = kDragReynoldsExponentPriorSigma;
-    add_reynolds_prior_uncertainty(nominal, obs, dynamic, set, s, options, current, current_fit, prior_shift);
+    add_reynolds_prior_uncertainty(nominal, obs, dynamic, sensor ? DepthLagForm::kFirstOrder : DepthLagForm::kDelay,
+                                   set, s, options, current, current_fit, prior_shift);
   }
   report_final_values(set.model, current, current_fit, d);
   for (Finding& f : d.findings) {
@@ -1285,6 +1371,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     if (f.fitted && j < prior_shift.size()) f.reynolds_prior_shift = prior_shift[j];
   }
   hold_aliased_readings(set, s, options, current, current_fit, aliases, d);
+  hold_other_depth_lag_form(d);
   if (dynamic) widen_lift_at_stall(nominal, obs.track, d);
 
   const std::vector<double> r_ext = residuals_by_sample(set, current_fit.parameters, current.ctd_density, s.all);
@@ -1322,8 +1409,9 @@ Predictions predict_all(const model::VehicleParams& given, const Observations& o
   const model::VehicleParams nominal = diagnosed_nominal(given, d);
   const FlightModel steady_model(nominal, obs);
   const DynamicFlightModel dynamic_model(nominal, obs.track, options.max_step_s);
+  const DepthLagView read(dynamic_model, d.depth_lag_form ? d.depth_lag_form->form : DepthLagForm::kDelay);
   const SampleSet set =
-      d.model == FlightModelKind::kDynamic ? dynamic_set(dynamic_model, obs.track) : steady_set(steady_model, obs);
+      d.model == FlightModelKind::kDynamic ? dynamic_set(read, obs.track) : steady_set(steady_model, obs);
   Predictions p;
   for (std::size_t i : set.usable) {
     p.time_s.push_back(set.time_s[i]);

@@ -73,6 +73,19 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
       findings.back()["ci95_conditional"] = {f.ci95_conditional_low, f.ci95_conditional_high};
     }
     if (f.effect == Effect::kThermalExpansion) findings.back()["reference_temperature_c"] = d.thermal_reference_c;
+    if (f.effect == Effect::kDepthLag && d.depth_lag_form) {
+      const DepthLagFormChoice& c = *d.depth_lag_form;
+      findings.back()["form"] = to_string(c.form);
+      findings.back()["form_identifiability"] = {
+          {"verdict", c.told_apart ? "told apart by the held-out yos" : "ambiguous"},
+          {"delay_s", c.delay_s},
+          {"first_order_s", c.first_order_s},
+          {"delay_heldout_block_rms_depth_rate_m_s", c.delay_heldout_score_m_s},
+          {"first_order_heldout_block_rms_depth_rate_m_s", c.first_order_heldout_score_m_s},
+          {"delay_heldout_rms_depth_rate_m_s", c.delay_heldout_rms_m_s},
+          {"first_order_heldout_rms_depth_rate_m_s", c.first_order_heldout_rms_m_s}};
+      if (!c.told_apart) findings.back()["ci95_conditional"] = {f.ci95_conditional_low, f.ci95_conditional_high};
+    }
   }
   j["findings"] = findings;
   ordered_json ambiguous = ordered_json::array(), identifiability = ordered_json::array();

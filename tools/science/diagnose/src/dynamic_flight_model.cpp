@@ -67,22 +67,30 @@ DynamicFlightModel::DynamicFlightModel(const model::VehicleParams& nominal, cons
 
 DynamicFlightModel::~DynamicFlightModel() = default;
 
+void DynamicFlightModel::predict(const EffectValues& x, DepthLagForm depth_lag_form, bool use_ctd,
+                                 std::span<const std::size_t> samples, std::vector<double>& out,
+                                 const VerticalVelocityProfile* profile) const {
+  fly(x, depth_lag_form, use_ctd, samples, &out, nullptr, profile);
+}
+
 void DynamicFlightModel::predict(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                                  std::vector<double>& out, const VerticalVelocityProfile* profile) const {
-  fly(x, use_ctd, samples, &out, nullptr, profile);
+  fly(x, DepthLagForm::kDelay, use_ctd, samples, &out, nullptr, profile);
 }
 
+// The speed through the water is the flight's: no depth is read, in either form.
 void DynamicFlightModel::predict_speed(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
                                        std::vector<double>& out) const {
-  fly(x, use_ctd, samples, nullptr, &out, nullptr);
+  fly(x, DepthLagForm::kDelay, use_ctd, samples, nullptr, &out, nullptr);
 }
 
-void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
-                             std::vector<double>* depth_rate, std::vector<double>* speed,
-                             const VerticalVelocityProfile* profile) const {
+void DynamicFlightModel::fly(const EffectValues& x, DepthLagForm depth_lag_form, bool use_ctd,
+                             std::span<const std::size_t> samples, std::vector<double>* depth_rate,
+                             std::vector<double>* speed, const VerticalVelocityProfile* profile) const {
   const bool memo = samples.size() <= kFlightMemoSamples;
   const std::uint64_t hash = memo ? BitsHash()
                                         .add(std::span<const double>(x))
+                                        .add(depth_lag_form)
                                         .add(use_ctd)
                                         .add(depth_rate != nullptr)
                                         .add(speed != nullptr)
@@ -91,8 +99,9 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
                                         .value()
                                   : 0;
   auto same_question = [&](const FlightAnswer& a) {
-    return same_bits(a.values, x) && a.use_ctd == use_ctd && a.depth_rate == (depth_rate != nullptr) &&
-           a.speed == (speed != nullptr) && same_profile(a.has_profile, a.profile, profile) &&
+    return same_bits(a.values, x) && a.depth_lag_form == depth_lag_form && a.use_ctd == use_ctd &&
+           a.depth_rate == (depth_rate != nullptr) && a.speed == (speed != nullptr) &&
+           same_profile(a.has_profile, a.profile, profile) &&
            std::equal(a.samples.begin(), a.samples.end(), samples.begin(), samples.end());
   };
   if (memo) {
@@ -104,7 +113,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
       return;
     }
   }
-  fly_uncached(x, use_ctd, samples, depth_rate, speed, profile);
+  fly_uncached(x, depth_lag_form, use_ctd, samples, depth_rate, speed, profile);
   const std::size_t bytes =
       sizeof(FlightAnswer) + samples.size_bytes() +
       sizeof(double) * ((depth_rate != nullptr ? samples.size() : 0) + (speed != nullptr ? samples.size() : 0) +
@@ -113,6 +122,7 @@ void DynamicFlightModel::fly(const EffectValues& x, bool use_ctd, std::span<cons
   answer_bytes_ += bytes;
   FlightAnswer& a = answers_.emplace(hash, FlightAnswer{})->second;
   a.values = x;
+  a.depth_lag_form = depth_lag_form;
   a.use_ctd = use_ctd;
   a.depth_rate = depth_rate != nullptr;
   a.speed = speed != nullptr;
@@ -240,15 +250,15 @@ EffectValues DynamicFlightModel::flight_key(const EffectValues& x) {
   return key;
 }
 
-// The run's depth over ground, read late by the depth lag as the sensor
-// read it, through the very estimator the measurement went through (the
+// The run's depth over ground, read late by the depth lag in its form as
+// the sensor read it, through the very estimator the measurement went through (the
 // track's windowed slope): like is compared with like, also in turns,
 // where a +-5 s slope is not the instantaneous rate. Fills the requested
 // samples of this run from `next` on; returns the next one after them.
 std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, const RelativeFlight& flight,
-                                         std::size_t last, double depth_lag_s, std::span<const std::size_t> samples,
-                                         std::size_t next, std::vector<double>* depth_rate,
-                                         std::vector<double>* speed) const {
+                                         std::size_t last, DepthLagForm depth_lag_form, double depth_lag_s,
+                                         std::span<const std::size_t> samples, std::size_t next,
+                                         std::vector<double>* depth_rate, std::vector<double>* speed) const {
   const Track& t = track_;
   const std::size_t first = run_flight.first(), end = run_flight.end();
   const std::size_t flown = std::min(flight.flown, last);
@@ -257,7 +267,7 @@ std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, co
   run_flight.ground_depth(flown, flight.depth, z);
   const std::size_t count = flown - first + 1;
   const std::span<const double> time = std::span(t.time_s).subspan(first, count);
-  delay_depth(time, std::span(z).first(count), depth_lag_s);  // as the sensor read it
+  read_depth_late(depth_lag_form, time, std::span(z).first(count), depth_lag_s);  // as the sensor read it
   // ... and as the log stored it: between the depths a decimated log kept,
   // the reader's straight line, as the measured depth between them.
   read_as_stored(time, std::span(t.depth_stored).subspan(first, count), std::span(z).first(count), t.max_gap_s);
@@ -285,9 +295,9 @@ std::size_t DynamicFlightModel::read_run(const detail::RunFlight& run_flight, co
 // remembered, kRunsTogether runs side by side (their stages cached first)
 // (RunFlight::fly_runs: the same bits as one after the other), then the
 // reading, run by run.
-void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::span<const std::size_t> samples,
-                                      std::vector<double>* depth_rate, std::vector<double>* speed,
-                                      const VerticalVelocityProfile* profile) const {
+void DynamicFlightModel::fly_uncached(const EffectValues& x, DepthLagForm depth_lag_form, bool use_ctd,
+                                      std::span<const std::size_t> samples, std::vector<double>* depth_rate,
+                                      std::vector<double>* speed, const VerticalVelocityProfile* profile) const {
   if (depth_rate != nullptr) depth_rate->assign(samples.size(), kNaN);
   if (speed != nullptr) speed->assign(samples.size(), kNaN);
   if (!flyable(x)) return;  // no negative drag or lift
@@ -381,11 +391,32 @@ void DynamicFlightModel::fly_uncached(const EffectValues& x, bool use_ctd, std::
   if (left.size() == 1) fly_together(left.first<1>());
   next = 0;
   for (const AskedRun& a : asked)
-    next = read_run(a.run_flight, *a.flight, a.last, depth_lag_s, samples, next, depth_rate, speed);
+    next = read_run(a.run_flight, *a.flight, a.last, depth_lag_form, depth_lag_s, samples, next, depth_rate, speed);
 }
 
 double DynamicFlightModel::ctd_density_anomaly() const {
   return deepest_density_anomaly(track_.depth_m, track_.density_kg_m3, nominal_.trim_density_kg_m3);
+}
+
+namespace {
+
+EffectValues with_lag_magnitude(const EffectValues& values) {
+  EffectValues x = values;
+  double& lag = x[static_cast<std::size_t>(Effect::kDepthLag)];
+  lag = std::abs(lag);
+  return x;
+}
+
+}  // namespace
+
+void DepthLagView::predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                           std::vector<double>& out, const VerticalVelocityProfile* profile) const {
+  model_.predict(with_lag_magnitude(values), form_, use_ctd_density, samples, out, profile);
+}
+
+void DepthLagView::predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                                 std::vector<double>& out) const {
+  model_.predict_speed(with_lag_magnitude(values), use_ctd_density, samples, out);
 }
 
 }  // namespace glider::diagnose

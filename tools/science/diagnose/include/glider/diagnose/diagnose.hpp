@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "glider/diagnose/depth_lag.hpp"
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/diagnose/observations.hpp"
 #include "glider/fitting_core/intervals.hpp"
@@ -120,6 +121,21 @@ struct SpeedScore {
   double heldout_consistent_nominal_rms_m_s = 0.0, heldout_consistent_extended_rms_m_s = 0.0;
 };
 
+// The depth lag's form (depth_lag.hpp) where the final model fits a depth
+// lag: the selected effects fitted with the lag a delay and a first-order
+// sensor, the form whose fit predicts the held-out yos better taken
+// (diagnose.cpp, choose_depth_lag_form). Told apart only where both views of
+// the held-out error put the other beyond the selection's margins
+// (fitting_core::indistinguishable); else the log does not tell them apart
+// and the lag's value holds in the form chosen only.
+struct DepthLagFormChoice {
+  DepthLagForm form = DepthLagForm::kDelay;
+  double delay_s = 0.0, first_order_s = 0.0;  // the lag each form read
+  double delay_heldout_score_m_s = 0.0, first_order_heldout_score_m_s = 0.0;
+  double delay_heldout_rms_m_s = 0.0, first_order_heldout_rms_m_s = 0.0;
+  bool told_apart = false;
+};
+
 struct Diagnosis {
   std::string vehicle;
   FlightModelKind model = FlightModelKind::kDynamic;
@@ -140,6 +156,7 @@ struct Diagnosis {
   std::string cause = "none";
   EffectValues extended = nominal_values();
   std::optional<VerticalVelocityProfile> extended_profile;  // when the vertical velocity was fitted
+  std::optional<DepthLagFormChoice> depth_lag_form;         // when a depth lag was fitted (dynamic model)
   bool extended_uses_ctd_density = false;
   Rms extended_all;  // the extended model over all samples
   double extended_heldout_rms_m_s = 0.0;

@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "glider/diagnose/depth_lag.hpp"
 #include "glider/diagnose/flight_model.hpp"
 #include "glider/diagnose/track.hpp"
 
@@ -39,7 +40,13 @@ class DynamicFlightModel final : public DepthRateModel {
   ~DynamicFlightModel() override;
 
   // Depth rate (m/s, + down) at `samples` (indices into the track, sorted);
-  // only the runs that hold them are flown.
+  // only the runs that hold them are flown. The depth is read late by the
+  // depth lag (|value|) in `depth_lag_form` (depth_lag.hpp); predict()
+  // without it reads a delay. Every flight is shared by the two forms (a
+  // flight does not depend on the depth lag); their answers are not.
+  void predict(const EffectValues& values, DepthLagForm depth_lag_form, bool use_ctd_density,
+               std::span<const std::size_t> samples, std::vector<double>& out,
+               const VerticalVelocityProfile* profile = nullptr) const;
   void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
                std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
 
@@ -54,10 +61,11 @@ class DynamicFlightModel final : public DepthRateModel {
   std::size_t joined_flights() const { return joined_flights_; }
 
  private:
-  void fly(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-           std::vector<double>* depth_rate, std::vector<double>* speed, const VerticalVelocityProfile* profile) const;
-  void fly_uncached(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
-                    std::vector<double>* depth_rate, std::vector<double>* speed,
+  void fly(const EffectValues& values, DepthLagForm depth_lag_form, bool use_ctd_density,
+           std::span<const std::size_t> samples, std::vector<double>* depth_rate, std::vector<double>* speed,
+           const VerticalVelocityProfile* profile) const;
+  void fly_uncached(const EffectValues& values, DepthLagForm depth_lag_form, bool use_ctd_density,
+                    std::span<const std::size_t> samples, std::vector<double>* depth_rate, std::vector<double>* speed,
                     const VerticalVelocityProfile* profile) const;
 
   struct RelativeFlight;
@@ -73,8 +81,8 @@ class DynamicFlightModel final : public DepthRateModel {
                                             const RelativeFlight& slot) const;
   static EffectValues flight_key(const EffectValues& x);
   std::size_t read_run(const detail::RunFlight& run_flight, const RelativeFlight& flight, std::size_t last,
-                       double depth_lag_s, std::span<const std::size_t> samples, std::size_t next,
-                       std::vector<double>* depth_rate, std::vector<double>* speed) const;
+                       DepthLagForm depth_lag_form, double depth_lag_s, std::span<const std::size_t> samples,
+                       std::size_t next, std::vector<double>* depth_rate, std::vector<double>* speed) const;
 
   model::VehicleParams nominal_;
   const Track& track_;
@@ -138,6 +146,7 @@ class DynamicFlightModel final : public DepthRateModel {
   // none for requests of more than kFlightMemoSamples samples.
   struct FlightAnswer {
     EffectValues values{};
+    DepthLagForm depth_lag_form = DepthLagForm::kDelay;
     bool use_ctd = false, has_profile = false, depth_rate = false, speed = false;
     VerticalVelocityProfile profile;
     std::vector<std::size_t> samples;
@@ -148,6 +157,26 @@ class DynamicFlightModel final : public DepthRateModel {
   mutable std::size_t answer_bytes_ = 0;
   std::size_t traced_samples_;
   mutable std::size_t joined_flights_ = 0;
+};
+
+// A dynamic flight model read with the depth lag in one form: what a fit
+// asks, as a DepthRateModel. Both views may sit on one model (its flights
+// shared). Each asks with the depth lag's magnitude (fitted as |value|, as
+// the pump's), so the optimiser's two signs of a lag share an answer.
+class DepthLagView final : public DepthRateModel {
+ public:
+  DepthLagView(const DynamicFlightModel& model, DepthLagForm form) : model_(model), form_(form) {}
+  DepthLagForm form() const { return form_; }
+  void predict(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+               std::vector<double>& out, const VerticalVelocityProfile* profile = nullptr) const override;
+  void predict_speed(const EffectValues& values, bool use_ctd_density, std::span<const std::size_t> samples,
+                     std::vector<double>& out) const override;
+  double ctd_density_anomaly() const override { return model_.ctd_density_anomaly(); }
+  std::span<const double> measured_speed_m_s() const override { return model_.measured_speed_m_s(); }
+
+ private:
+  const DynamicFlightModel& model_;
+  DepthLagForm form_;
 };
 
 }  // namespace glider::diagnose
