@@ -12,7 +12,15 @@ a clean DVL those samples are noise in the speed and the depth rate; the
 real log's concentration (docs/science.md) is read against these. Fresh seeds each run (printed;
 --seed S replays the run, --draw-seed D one log of it). A log on which gliderflight's dynamic fit diverges
 has no score and is skipped; the run is judged on the logs that converge and reports SKIPPED (77) only
-when none does (the CTest flies 3: gliderflight diverges on about 1 log in 8).
+when too few do to judge (gliderflight diverges on about 1 log in 8).
+
+The CTest's judgement (--max-concentration 2.5 --max-logs-above 1, 4 logs): fails only where two
+converged logs or more exceed 2.5 - a concentration every log shares, as a model error at small angles
+of attack would be - not on one log alone. Measured (session 41, 122 clean truth logs; fresh run seeds
+2012366483 (40 logs), 30202575 (80) and 20 CTest runs): 0.64-2.00 but one, 2.75 (draw 667823378: 24 of
+244 samples below 1 deg, a share that few samples make noisy). One log in 122 above 2.5 failed the rule
+before (any log above: 1 in 20 CTest runs); two of four above is about 6 p^2 = 4e-4 a run at p = 1/122
+(1 % at p's 95 % upper bound 0.045). Fewer than max-logs-above + 1 converged logs judge nothing: SKIPPED.
 
   tools/science/dvl_protocol/breakdown_truth.py --build build/release --logs 6
 """
@@ -73,6 +81,10 @@ def main():
     ap.add_argument("--max-concentration", type=float, default=None,
                     help="exit 1 if a log's concentration exceeds this (the CTest's check: on a clean DVL the "
                          "samples below 1 deg are no worse than the rest, as noise)")
+    ap.add_argument("--max-logs-above", type=int, default=0,
+                    help="with --max-concentration: exit 1 only if more logs than this exceed it (a shared "
+                         "concentration, not one log's noise); fewer converged logs than this + 1 judge "
+                         "nothing (SKIPPED, 77)")
     args = ap.parse_args()
     if args.logs < 1:
         print("breakdown_truth.py: --logs must be >= 1", file=sys.stderr)
@@ -110,9 +122,19 @@ def main():
           f"(median {share[len(share) // 2]:.2f}), concentration (share / fraction of samples) {conc[0]:.2f}-{conc[-1]:.2f}; "
           f"held-out ratio {ratios[0]:.3f}-{ratios[-1]:.3f} "
           f"(median {ratios[len(ratios) // 2]:.3f})")
-    if args.max_concentration is not None and conc[-1] > args.max_concentration:
-        print(f"FAIL: concentration {conc[-1]:.2f} above {args.max_concentration}")
-        return 1
+    if args.max_concentration is not None:
+        if len(ok) <= args.max_logs_above:
+            print(f"SKIPPED: {len(ok)} converged logs judge nothing (more than {args.max_logs_above} above "
+                  f"{args.max_concentration} needed to fail)")
+            return 1 if failed else 77
+        above = [c for c in conc if c > args.max_concentration]
+        if len(above) > args.max_logs_above:
+            print(f"FAIL: concentration above {args.max_concentration} on {len(above)} of {len(ok)} logs "
+                  f"({', '.join(f'{c:.2f}' for c in above)}; at most {args.max_logs_above} allowed)")
+            return 1
+        if above:
+            print(f"NOTE: concentration above {args.max_concentration} on {len(above)} of {len(ok)} logs "
+                  f"({', '.join(f'{c:.2f}' for c in above)}): not shared, at most {args.max_logs_above} allowed")
     return 1 if failed else 0
 
 
