@@ -568,7 +568,14 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
       const bool either = lag_better || delay.stands;
       if (either && lag_chosen) dynamics.insert(dynamics.begin(), HeadingEffect::kYawTimeConstant);
       if (either && !lag_chosen && !delay_named) dynamics.push_back(HeadingEffect::kYawDelay);
-      if (!lag_better && !delay_better && delay.stands) {
+      // The pair is stated wherever both were measured and one is named:
+      // ambiguous where neither predicts the held-out innovations better,
+      // told apart where one does (left unstated, a delay the probe chose
+      // over the lag read as decided silently: truth seed 1025022074, a
+      // hidden 5.49 s yaw delay named 5.84 s with no pair).
+      const bool ambiguous = !lag_better && !delay_better && delay.stands;
+      const bool told_apart = (lag_better || delay_better) && either && std::isfinite(delay.heldout_rms);
+      if (ambiguous || told_apart) {
         const Probe& chosen_probe = lag_chosen ? lag : delay;
         const Probe& other = lag_chosen ? delay : lag;
         HeadingAmbiguity pair;
@@ -579,7 +586,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
         pair.alternative_value = other.finding.value;
         pair.chosen_heldout_rms = chosen_probe.heldout_rms;
         pair.alternative_heldout_rms = other.heldout_rms;
-        pair.ambiguous = true;
+        pair.ambiguous = ambiguous;
         probed_pairs.push_back(pair);
       }
     }
@@ -662,7 +669,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
     for (const HeadingAmbiguity& a : probed_pairs) {
       const bool stated =
           std::any_of(again.identifiability.begin(), again.identifiability.end(), [&](const HeadingAmbiguity& b) {
-            return b.chosen == a.chosen && b.alternative == a.alternative && b.ambiguous;
+            return b.chosen == a.chosen && b.alternative == a.alternative && (b.ambiguous || !a.ambiguous);
           });
       if (a.chosen == e && !stated) again.identifiability.push_back(a);
     }
