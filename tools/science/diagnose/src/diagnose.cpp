@@ -929,10 +929,10 @@ void check_by_heldout_replicate(const SampleSet& set, const Split& s, const Diag
 // nominal values, each lag at its grid's best point: the selection's and
 // --fit's start), so the shift is the same procedure's answer at two
 // exponents. From the final fit's values the optimiser, on a residual that
-// is not smooth in the drag, stopped in a nearer, worse minimum (a shift a
-// third of the reading's) or walked into another valley the reading at the
-// prior is not in (a shift 16 times it) - docs/science.md, "The Reynolds
-// prior's refit from the reading's own start".
+// is not smooth in the drag, stopped in a nearer, worse minimum (a third of
+// the shift the nominal start finds) or walked into another valley the
+// reading at the prior is not in (a shift 30 times it) - docs/science.md,
+// "The Reynolds prior's refit from the reading's own start".
 void add_reynolds_prior_uncertainty(const model::VehicleParams& nominal, const Observations& obs, bool dynamic,
                                     DepthLagForm form, const SampleSet& set, const Split& s,
                                     const DiagnoseOptions& options, const Candidate& current, FitResult& current_fit,
