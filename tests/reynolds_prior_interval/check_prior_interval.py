@@ -8,8 +8,9 @@ reads holds at the file's reference speed, so it moves with n by ln(V / V_ref)
 over the speeds flown: a bias every yo shares, which the training intervals
 and the held-out replicate cannot see (docs/science.md, "Method rule: the
 Reynolds prior's uncertainty in the intervals"). The rule: the final model
-fitted again at n + 0.05 (the prior's sigma) and each sigma combined with the
-shift.
+fitted again at n + 0.05 (the prior's sigma), from the start the reading's own
+fit started at ("The Reynolds prior's refit from the reading's own start"),
+and each sigma combined with the shift.
 
 A fresh log of the independent truth (tools/science/truth; the seed is drawn
 fresh and printed, `--seed S` replays; a log whose glider flies near the

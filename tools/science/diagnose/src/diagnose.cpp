@@ -923,9 +923,16 @@ void check_by_heldout_replicate(const SampleSet& set, const Split& s, const Diag
 // Reynolds prior's uncertainty in the intervals"): drag_change readings
 // -4 % and +3.4 % off with relative half-widths of 2 %, within 1 % with the
 // truth's exponent at the prior. The final model is fitted again with the
-// exponent one prior sigma higher (kDragReynoldsExponentPriorSigma; one fit,
-// from the final fit's values) and each sigma becomes hypot(sigma, shift).
-// Values and selection are unchanged.
+// exponent one prior sigma higher (kDragReynoldsExponentPriorSigma; one fit)
+// and each sigma becomes hypot(sigma, shift). Values and selection are
+// unchanged. The refit starts where the reading's own fit started (the
+// nominal values, each lag at its grid's best point: the selection's and
+// --fit's start), so the shift is the same procedure's answer at two
+// exponents. From the final fit's values the optimiser, on a residual that
+// is not smooth in the drag, stopped in a nearer, worse minimum (a third of
+// the shift the nominal start finds) or walked into another valley the
+// reading at the prior is not in (a shift 30 times it) - docs/science.md,
+// "The Reynolds prior's refit from the reading's own start".
 void add_reynolds_prior_uncertainty(const model::VehicleParams& nominal, const Observations& obs, bool dynamic,
                                     DepthLagForm form, const SampleSet& set, const Split& s,
                                     const DiagnoseOptions& options, const Candidate& current, FitResult& current_fit,
@@ -944,8 +951,8 @@ void add_reynolds_prior_uncertainty(const model::VehicleParams& nominal, const O
     steady.emplace(shifted, obs);
   }
   SampleSet other = dynamic ? dynamic_set(*read, obs.track) : steady_set(*steady, obs);
-  other.lag_start = set.lag_start;  // the fit starts from current_fit's values: the grid is not needed again
-  const FitResult moved = fit_reported(other, current, s.train, s.heldout, options, &current_fit);
+  other.lag_start = set.lag_start;  // each lag starts at the reading's grid point: the grid is not flown again
+  const FitResult moved = fit_reported(other, current, s.train, s.heldout, options);
   for (std::size_t j = 0; j < current.fitted.size(); ++j) {
     const auto e = static_cast<std::size_t>(current.fitted[j]);
     double a = current_fit.parameters.values[e], b = moved.parameters.values[e];
