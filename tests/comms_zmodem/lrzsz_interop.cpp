@@ -8,10 +8,15 @@
 //
 //   zmodem_lrzsz --direction to-rz|from-sz [--sizes 0,1,1024] [--corruption P]
 //                [--seed N] [--cut-after BYTES] [--escape] [--limit-s S] [--fin-xoff K]
+//                [--fin-lose N]
 //
 // --fin-xoff K: the engine's first ZFIN header reaches the peer with its byte
 // K (6-19; 0 is the first ZPAD, 19 the closing LF) turned into XOFF, the one garbling that stops lrzsz's
 // tty (IXON): a deterministic replay of a 1-in-255 corruption at session end.
+// --fin-lose N: the engine's first N hex ZFIN headers reach the peer with
+// their 'B' (byte 3) garbled: lrzsz's zgethdr sees no header in them and
+// waits on in silence (sz's saybibi: tens of seconds), the way a ZFIN whose
+// lead-in a 1 % corruption hit is lost.
 #include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
@@ -97,8 +102,8 @@ class Trace {
 // after cut_after bytes in all the carrier is gone (nothing passes).
 class RelayStream : public ByteStream {
  public:
-  RelayStream(int fd, double corruption, std::uint64_t seed, std::uint64_t cut_after, int fin_xoff)
-      : fd_(fd), corruption_(corruption), rng_(seed), cut_after_(cut_after), fin_xoff_(fin_xoff) {}
+  RelayStream(int fd, double corruption, std::uint64_t seed, std::uint64_t cut_after, int fin_xoff, int fin_lose)
+      : fd_(fd), corruption_(corruption), rng_(seed), cut_after_(cut_after), fin_xoff_(fin_xoff), fin_lose_(fin_lose) {}
   std::size_t read(std::span<std::uint8_t> out) override {
     const ssize_t n = ::read(fd_, out.data(), out.size());
     if (n <= 0) return 0;
@@ -113,10 +118,12 @@ class RelayStream : public ByteStream {
     if (carried_ >= cut_after_) return data.size();  // into the void
     std::vector<std::uint8_t>& buf = scratch_;
     buf.assign(data.begin(), data.end());
+    const std::size_t lost_at = fin_lose(buf);
     // Corrupt once per byte offered; bytes the pty refuses are offered
     // again next time, so their fate is drawn again (a fresh transmission).
     for (auto& b : buf) b = fin_xoff(noisy(b));
     const ssize_t n = ::write(fd_, buf.data(), buf.size());
+    if (lost_at < buf.size() && (n <= 0 || lost_at >= static_cast<std::size_t>(n))) ++fin_lose_;  // not out: again
     if (n <= 0) return 0;
     trace_.bytes("peer", trace_.to_peer, std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)));
     carried_ += static_cast<std::size_t>(n);
@@ -129,6 +136,19 @@ class RelayStream : public ByteStream {
     if (corruption_ <= 0.0 || uniform_(rng_) >= corruption_) return b;
     ++corrupted_;
     return static_cast<std::uint8_t>(b ^ flip_(rng_));
+  }
+  // The first hex ZFIN header wholly in `buf` gets its 'B' garbled while
+  // fin_lose_ lasts; returns the garbled byte's index (buf.size(): none).
+  std::size_t fin_lose(std::vector<std::uint8_t>& buf) {
+    static constexpr std::array<std::uint8_t, 6> kFinStart = {kPad, kPad, kDle, kHex, '0', '8'};
+    if (fin_lose_ <= 0) return buf.size();
+    const auto at = std::search(buf.begin(), buf.end(), kFinStart.begin(), kFinStart.end());
+    if (at == buf.end()) return buf.size();
+    --fin_lose_;
+    ++corrupted_;
+    const auto index = static_cast<std::size_t>(at - buf.begin()) + 3;
+    buf[index] = static_cast<std::uint8_t>(kHex ^ 0x20);  // 'b': no frame kind
+    return index;
   }
   // The engine's bytes to the peer, in order: the first hex ZFIN header
   // ("**" ZDLE 'B' "08") is found as it goes by and its byte fin_xoff_ made XOFF.
@@ -160,6 +180,7 @@ class RelayStream : public ByteStream {
   std::uint64_t carried_ = 0;
   std::uint64_t corrupted_ = 0;
   int fin_xoff_;                          // -1: no ZFIN garbled
+  int fin_lose_;                          // ZFIN headers still to be lost
   int fin_at_ = -1;                       // the index of the byte going out in the first ZFIN
   std::array<std::uint8_t, 6> recent_{};  // the last bytes to the peer, before corruption
   std::vector<std::uint8_t> scratch_;
@@ -279,6 +300,7 @@ struct Args {
   double limit_s = 50.0;
   std::uint32_t block = kMaxBlock;
   int fin_xoff = -1;
+  int fin_lose = 0;
 };
 
 struct SessionResult {
@@ -335,7 +357,7 @@ void print(const char* what, const SessionResult& r, std::uint64_t payload, cons
 int usage() {
   std::fprintf(stderr,
                "usage: zmodem_lrzsz --direction to-rz|from-sz [--sizes 0,1,1024] [--corruption P] [--seed N]\n"
-               "                    [--cut-after BYTES] [--escape] [--limit-s S] [--fin-xoff K]\n");
+               "                    [--cut-after BYTES] [--escape] [--limit-s S] [--fin-xoff K] [--fin-lose N]\n");
   return 2;
 }
 
@@ -376,6 +398,12 @@ int main(int argc, char** argv) {
         std::fprintf(stderr,
                      "zmodem_lrzsz: --fin-xoff %s: allowed 6 to 19 (a byte of the hex ZFIN after \"**\" ZDLE B 08)\n",
                      value.c_str());
+        return 2;
+      }
+    } else if (key == "--fin-lose") {
+      args.fin_lose = std::stoi(value);
+      if (args.fin_lose < 0 || args.fin_lose > 10) {
+        std::fprintf(stderr, "zmodem_lrzsz: --fin-lose %s: allowed 0 to 10 (ZFIN headers lost)\n", value.c_str());
         return 2;
       }
     } else if (key == "--limit-s") {
@@ -438,7 +466,7 @@ int main(int argc, char** argv) {
     Peer peer = spawn(command, to_rz ? to_dir : from_dir);
     if (peer.pid < 0) return 1;
     RelayStream relay(peer.master, args.corruption, args.seed + 1000 + static_cast<std::uint64_t>(session),
-                      cut_now ? args.cut_after : UINT64_MAX, args.fin_xoff);
+                      cut_now ? args.cut_after : UINT64_MAX, args.fin_xoff, args.fin_lose);
     SessionResult result;
     PosixFileAccess posix_files(to_rz ? from_dir.string() : to_dir.string());
     TimedFiles files(posix_files);

@@ -99,7 +99,8 @@ TEST(ZmodemSessionEnd, ZfinIsAnsweredAndOoEndsTheSession) {
   s.send_hex(Frame::fin);
   CHECK_EQUAL(1, ScriptedSender::count(s.run_ms(20), Frame::fin));
   s.send_raw("OO");
-  s.run_ms(20);
+  // Done at once: no timed repeat after it (a stray ZFIN would reach the shore's next reader).
+  CHECK_EQUAL(0, ScriptedSender::count(s.run_ms(3000), Frame::fin));
   CHECK(s.receiver.status() == Status::done);
 }
 
@@ -148,7 +149,34 @@ TEST(ZmodemSessionEnd, EveryZfinGoesOutAfterAnXon) {
   s.send_hex(Frame::fin, true);  // sz's repeat, garbled: answered
   s.run_ms(20);
   CHECK_EQUAL(2, s.fins_after_xon());
-  s.run_ms(3000);  // no "OO": the timed repeat, then the session ends
-  CHECK_EQUAL(3, s.fins_after_xon());
+  s.run_ms(3000);  // no "OO": the timed repeats, then the session ends
+  CHECK_EQUAL(4, s.fins_after_xon());
   CHECK(s.receiver.status() == Status::done);
+}
+
+// Our answer and our one timed repeat both lost whole (lead-ins garbled at
+// 1 %): sz waits for a ZFIN in silence (saybibi, tens of seconds), and the
+// old receiver, done 1 s after the ZFIN, left it so (sz never exited,
+// comms.zmodem.lrzsz.from_sz_corrupted, seed 296357; against the real sz:
+// comms.zmodem.lrzsz.from_sz_fin_lost). Like lrzsz's rz (ackbibi: ZFIN up to
+// 3 times), the answer is repeated twice, a third of the "OO" wait (1 s
+// here) apart, and the wait is not longer. Old code: 2 ZFINs (0 and 0.5 s).
+TEST(ZmodemSessionEnd, ZfinIsSaidThreeTimesWithinTheOoWait) {
+  ScriptedSender s;
+  s.receiver.start(s.now);
+  s.run_ms(20);
+  s.send_hex(Frame::fin);
+  const glider::hal::Micros fin_at = s.now;
+  std::vector<glider::hal::Micros> said;  // when each of our ZFINs came out
+  while (s.receiver.status() == Status::running && s.now - fin_at < 5'000'000) {
+    const glider::hal::Micros t = s.now;
+    for (std::size_t i = 0, n = ScriptedSender::count(s.run_ms(10), Frame::fin); i < n; ++i) said.push_back(t - fin_at);
+  }
+  CHECK(s.receiver.status() == Status::done);
+  CHECK_EQUAL(3U, said.size());
+  CHECK(said[0] < 20'000);
+  CHECK(said[1] >= 330'000 && said[1] < 350'000);
+  CHECK(said[2] >= 660'000 && said[2] <= 690'000);  // steps are 10 ms apart
+  // The "OO" wait stays a tenth of the 10 s timeout.
+  CHECK(s.now - fin_at >= 1'000'000 && s.now - fin_at < 1'030'000);
 }

@@ -105,12 +105,15 @@ Status Receiver::step(hal::Micros now, std::size_t budget) {
     on_event(event, byte, now);
   });
   if (status_ == Status::running && expired(now)) on_timeout(now);
-  if (status_ == Status::running && state_ == State::finishing && o_count_ == 0 && now >= fin_again_us_) {
+  if (status_ == Status::running && state_ == State::finishing && o_count_ == 0 && fin_repeats_left_ > 0 &&
+      now >= fin_again_us_) {
     // No "OO" yet: our ZFIN may have vanished (its lead-in garbled) and the
     // sender waits for it, or a byte of it became XOFF and the sender's tty
-    // holds its answer; said again (XON first) once before the "OO" is given up on.
+    // holds its answer; said again (XON first) kFinRepeats times, a third
+    // of the wait apart, before the "OO" is given up on.
     send_fin();
-    fin_again_us_ = deadline_;
+    --fin_repeats_left_;
+    fin_again_us_ = now + fin_interval_us_;
   }
   const bool mid_frame = (state_ == State::receiving && accepting_) || (between_files() && resync_at_us_ < 0);
   if (status_ == Status::running && mid_frame && now - heard_us_ >= std::max(kMinResyncUs, 4 * round_trip_us_)) {
@@ -259,9 +262,14 @@ void Receiver::on_header(const Header& header, hal::Micros now) {
       // get out before it hangs up) is waited for a tenth of the timeout, or
       // three of the link's round trips if longer (Iridium: seconds; a stray
       // "OO" would reach the console glued to the shore's next command),
-      // a repeated ZFIN answered meanwhile.
+      // a repeated ZFIN answered meanwhile. Our timed repeats split that
+      // wait evenly (each at least a round trip after the one before), so
+      // the wait is no longer: 1.5 s instead of 1 s made every session whose
+      // "OO" is lost (the pty's hang-up can drop it) 0.5 s longer.
       deadline_ = now + std::min(options_.timeout_us, std::max(options_.timeout_us / 10, 3 * round_trip_us_));
-      fin_again_us_ = now + std::max(kMinResyncUs, 4 * round_trip_us_);
+      fin_interval_us_ = (deadline_ - now) / (kFinRepeats + 1);
+      fin_again_us_ = now + fin_interval_us_;
+      fin_repeats_left_ = kFinRepeats;
       return;
     case Frame::nak:
       // The sender saw our last header garbled (lrzsz's sz answers so, then

@@ -60,8 +60,14 @@ class Receiver : public Session {
   bool accepting_ = false;          // data at offset_ is being taken
   bool file_open_ = false;
   int o_count_ = 0;  // 'O's of the sender's "OO" after ZFIN
-  // When our ZFIN is said again if no "OO" has come (finishing).
+  // When our ZFIN is said again if no "OO" has come (finishing), how often,
+  // and how many more times. Like lrzsz's rz (ackbibi: ZFIN up to 3 times):
+  // our answer and one repeat both vanished (lead-ins garbled) and sz, which
+  // waits silently for a ZFIN (saybibi, tens of seconds), never exited.
+  static constexpr int kFinRepeats = 2;
   hal::Micros fin_again_us_ = 0;
+  hal::Micros fin_interval_us_ = 0;
+  int fin_repeats_left_ = 0;
   // The link's round trip (smoothed), measured from a ZRPOS/ZRINIT/ZNAK to the next header:
   // how long the sender's "OO" may take to arrive after our ZFIN.
   hal::Micros now_ = 0;
