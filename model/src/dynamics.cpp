@@ -72,23 +72,6 @@ std::array<GliderDynamics::PointMass, 4> GliderDynamics::point_masses(const Mass
   }};
 }
 
-GliderDynamics::RigidMasses GliderDynamics::rigid_masses(const MassInputs& masses, double water_density) const {
-  // The sums over point_masses(), in its order (so bit for bit the same), without building the array:
-  // this runs at every derivative of the diagnosis's prescribed-pitch flights (8 % of a 24 h log's
-  // instructions when it went through the array).
-  const VehicleParams& v = vehicle_;
-  const double ballast_kg = -water_density * masses.pumped_volume_m3;
-  const double battery_x_m = v.battery.x_at_zero_m + masses.battery_pos_m;
-  const double second_x_m = v.second_mass.x_at_zero_m + masses.second_pos_m;
-  RigidMasses r;
-  r.total_kg = v.hull_mass_kg + v.offset.mass_kg + ballast_kg + v.battery.mass_kg + v.second_mass.mass_kg;
-  r.first_x = 0.0 + v.offset.mass_kg * v.offset.x_m + ballast_kg * v.ballast.x_m + v.battery.mass_kg * battery_x_m +
-              v.second_mass.mass_kg * second_x_m;
-  r.first_z = 0.0 + v.offset.mass_kg * v.offset.z_m + ballast_kg * v.ballast.z_m + v.battery.mass_kg * v.battery.z_m +
-              v.second_mass.mass_kg * v.second_mass.z_m;
-  return r;
-}
-
 GliderDynamics::MassProperties GliderDynamics::mass_properties(const MassInputs& masses, double water_density) const {
   const VehicleParams& v = vehicle_;
   MassProperties p;

@@ -205,4 +205,24 @@ class GliderDynamics {
   std::array<PointMass, 4> point_masses(const MassInputs& masses, double water_density) const;
 };
 
+inline GliderDynamics::RigidMasses GliderDynamics::rigid_masses(const MassInputs& masses, double water_density) const {
+  // Inline (header): called at every derivative, a call and return here cost
+  // up to 7 % of a diagnosis's time where the linker happened to place it
+  // (docs/science.md, session 41 speed8); the code is the same.
+  // The sums over point_masses(), in its order (so bit for bit the same), without building the array:
+  // this runs at every derivative of the diagnosis's prescribed-pitch flights (8 % of a 24 h log's
+  // instructions when it went through the array).
+  const VehicleParams& v = vehicle_;
+  const double ballast_kg = -water_density * masses.pumped_volume_m3;
+  const double battery_x_m = v.battery.x_at_zero_m + masses.battery_pos_m;
+  const double second_x_m = v.second_mass.x_at_zero_m + masses.second_pos_m;
+  RigidMasses r;
+  r.total_kg = v.hull_mass_kg + v.offset.mass_kg + ballast_kg + v.battery.mass_kg + v.second_mass.mass_kg;
+  r.first_x = 0.0 + v.offset.mass_kg * v.offset.x_m + ballast_kg * v.ballast.x_m + v.battery.mass_kg * battery_x_m +
+              v.second_mass.mass_kg * second_x_m;
+  r.first_z = 0.0 + v.offset.mass_kg * v.offset.z_m + ballast_kg * v.ballast.z_m + v.battery.mass_kg * v.battery.z_m +
+              v.second_mass.mass_kg * v.second_mass.z_m;
+  return r;
+}
+
 }  // namespace glider::model
