@@ -275,7 +275,10 @@ def run_case(a, forecast, vehicle, out, case):
             "current_off": math.hypot(cp[0] - ct[0], cp[1] - ct[1]),
             "persistence_off": math.hypot(cb[0] - ct[0], cb[1] - ct[1]),
             "forecast_dive_s": pred_s, "true_dive_s": true_s, "current": cp, "persistence": cb,
-            "fix_current": case["truth"].get("fix_current")}
+            "fix_current": case["truth"].get("fix_current"),
+            # the vectors (east, north m from the fix the glider dived from) benchmarks/forecast_attribution.py splits
+            "error_en": err, "forecast_en": pred, "truth_en": truth, "flight_en": flight,
+            "dr_end_en": dr_end, "measured": ct}
 
 
 def comet_2019_cases(a, real, convert):
@@ -434,8 +437,9 @@ def table(title, rows):
           (100.0 * (mf - mb) / mb, 100.0 * (pf - pb) / pb))
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def arguments(description):
+    """The benchmark's options (benchmarks/forecast_attribution.py takes the same)."""
+    p = argparse.ArgumentParser(description=description)
     p.add_argument("--build", required=True)
     p.add_argument("--source", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     p.add_argument("--out", default=None)
@@ -458,7 +462,11 @@ def main():
                    help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
     p.add_argument("--check", action="store_true", help="test mode: the checks above, PASS/FAIL line")
-    a = p.parse_args()
+    return p
+
+
+def main():
+    a = arguments(__doc__.splitlines()[0]).parse_args()
     out = a.out or os.path.join(a.build, "benchmark", "forecast_real")
     real = os.path.join(a.source, "tests", "data", "real")
     vehicle = os.path.join(a.source, "boards", "vehicles", "slocum_comet.toml")
