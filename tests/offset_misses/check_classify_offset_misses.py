@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""classify_offset_misses.py on hand-made draws (no binary): one draw per kind of miss, one sized, one not
-identifiable; each label, partner and count worked out by hand."""
+"""classify_offset_misses.py on hand-made draws (no binary): one draw per kind of miss, one whose stated other side
+is off too, one sized, one not identifiable; each label, partner and count worked out by hand."""
 import os
 import sys
 
