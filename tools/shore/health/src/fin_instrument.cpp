@@ -59,6 +59,7 @@ flightlog::FlightLog with_fin_on_lagged_heading(const flightlog::FlightLog& log,
   const flightlog::Column& heading = required(log, "m_heading");
   const flightlog::Column& command = required(log, "c_heading");
   std::vector<std::vector<double>> lagged;
+  lagged.reserve(kLagFactors.size());
   for (double factor : kLagFactors) {
     lagged.push_back(command_from_lagged_heading(time, heading, command, factor * lag_s));
   }
