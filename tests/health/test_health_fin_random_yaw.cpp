@@ -3,9 +3,9 @@
 // projected on the command and the lagged heading"): the box flown in the
 // SIL's random yaw and compass noise, launched anywhere, on a fresh seed
 // (printed; GLIDER_TEST_SEED=N replays it). Fitted on the logged fin the
-// level read 0.62-0.66 for 1 (the autopilot's fin answering yaw the glider
+// level read 0.62-0.69 for 1 (the autopilot's fin answering yaw the glider
 // did not make looks ineffective); on the fin projected on the command and
-// the heading 20-40 s before, 0.88-0.92.
+// the heading 20-40 s before, 0.98-1.06.
 #include <CppUTest/TestHarness.h>
 
 #include <cinttypes>

@@ -64,12 +64,22 @@ flightlog::FlightLog with_fin_on_lagged_heading(const flightlog::FlightLog& log,
     lagged.push_back(command_from_lagged_heading(time, heading, command, factor * lag_s));
   }
 
+  // The glide's sign at every row: m_pitch's last reading (a decimated file
+  // stores it every few seconds; a row between its readings must still be
+  // projected, or it keeps the logged fin the projection is to replace).
+  std::vector<double> glide(time.size(), std::nan(""));
+  double last_pitch = std::nan("");
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    if (std::isfinite(pitch[i])) last_pitch = pitch[i];
+    if (std::isfinite(last_pitch)) glide[i] = last_pitch < 0.0 ? -1.0 : 1.0;
+  }
+
   // The instruments of row i; false where one is not defined.
   using Vector = Eigen::Matrix<double, kFeatures, 1>;
   const auto features = [&](std::size_t i, Vector& x) {
-    if (!std::isfinite(pitch[i])) return false;
+    if (!std::isfinite(glide[i])) return false;
     x(0) = 1.0;
-    x(1) = pitch[i] < 0.0 ? -1.0 : 1.0;  // a roll offset's yaw reverses between dives and climbs
+    x(1) = glide[i];  // a roll offset's yaw reverses between dives and climbs
     for (std::size_t k = 0; k < lagged.size(); ++k) {
       const double e = lagged[k][i];
       if (!std::isfinite(e)) return false;

@@ -20,7 +20,7 @@ inline constexpr double kFinInstrumentLagS = 20.0;
 
 // `log` with m_fin replaced, at every row where it is defined, by its
 // least-squares projection (over the rows under water, m_depth > 2 m) onto a
-// constant, the glide's sign (m_pitch's) and the wrapped c_heading of the
+// constant, the glide's sign (m_pitch's last reading) and the wrapped c_heading of the
 // row less m_heading lag_s, 1.5 lag_s and 2 lag_s before it, each as it is
 // and clipped to +-15 deg (the fin's saturation). Throws std::runtime_error
 // naming the log when a column is missing or too few rows define them.
