@@ -28,8 +28,9 @@ inline constexpr const char* kStateSchema = "glider-health-state/1";
 // stored (session 37); 7: the heading fit on diagnose's heading vehicle and
 // on every yo (session 38); 8: the fin not judged on a segment that turned
 // too little (fin_spread_deg stored, session 38); 9: nor on one whose heading
-// turned too little (heading_spread_deg stored, session 39).
-inline constexpr int kMeasurementVersion = 9;
+// turned too little (heading_spread_deg stored, session 39); 10: the fin
+// projected on the command and the lagged heading (fin_instrument.hpp, session 42).
+inline constexpr int kMeasurementVersion = 10;
 
 struct HealthState {
   std::string glider;
