@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "glider/diagnose/heading_select_delay_side.hpp"
 #include "glider/diagnose/heading_select_resolution.hpp"
@@ -281,6 +282,20 @@ constexpr double kScreenNoiseMoved = 1.3;  // a field moved by more than this: s
 // short (a hidden yaw delay of 5.30 s the probe names 6.06 s: the screen's
 // lag 2.8 % better; design seed 711435591).
 constexpr double kScreenMargin = 0.5 * fitting_core::Margins{}.relative;
+// The screens' grids: the lag from 1 to 40 s by 1 s; the fin's authority
+// from half to two and a half times the vehicle file's by a tenth (the fin's
+// screen, measure_fin_then_reselect).
+constexpr std::array<double, 40> kLagScreenGrid = [] {
+  std::array<double, 40> grid{};
+  double lag = 1.0;
+  for (double& x : grid) {
+    x = lag;
+    lag += 1.0;
+  }
+  return grid;
+}();
+constexpr std::array<double, 20> kFinScreenGrid{0.5, 0.6, 0.7, 0.8, 0.9, 1.1, 1.2, 1.3, 1.4, 1.5,
+                                                1.6, 1.7, 1.8, 1.9, 2.0, 2.1, 2.2, 2.3, 2.4, 2.5};
 
 // The RMS of the heading's innovations at these samples (NaN: none finite).
 double innovations_rms(const HeadingTrack& track, const model::VehicleParams& nominal, const HeadingValues& values,
@@ -312,30 +327,40 @@ YawNoise refine_noise(const HeadingTrack& track, const model::VehicleParams& nom
   return noise;
 }
 
-bool lag_screen_shows_gain(const HeadingTrack& track, const model::VehicleParams& nominal, const HeadingValues& base,
-                           const LinkSamples& samples, double heading_noise_rad, double rate_error_rms) {
+// The screens' noise: refined from the compass's jitter and the rate
+// error's RMS at the vehicle file's values (screen_shows_gain).
+YawNoise screen_noise(const HeadingTrack& track, const model::VehicleParams& nominal, const HeadingValues& base,
+                      const LinkSamples& samples, double heading_noise_rad, double rate_error_rms) {
   YawNoise noise;
   noise.heading_rad = std::max(heading_noise_rad, 1e-4);
   noise.disturbance_rad_s = std::max(rate_error_rms, 1e-4);
-  noise = refine_noise(track, nominal, base, noise, samples.all, kScreenNoiseSearches);
-  auto rms = [&](double lag, std::span<const std::size_t> which) {
+  return refine_noise(track, nominal, base, noise, samples.all, kScreenNoiseSearches);
+}
+
+// One effect asked of the innovations on its grid, the rest at the vehicle
+// file's values (the lag screen's steps above; the fin's screen the same):
+// true where the grid's best predicts the held-out yos better than the
+// vehicle file's value by half the selection's relative margin.
+bool screen_shows_gain(const HeadingTrack& track, const model::VehicleParams& nominal, const HeadingValues& base,
+                       const LinkSamples& samples, YawNoise noise, HeadingEffect effect, std::span<const double> grid) {
+  auto rms = [&](double value, std::span<const std::size_t> which) {
     HeadingValues v = base;
-    at(v, HeadingEffect::kYawTimeConstant) = lag;
+    at(v, effect) = value;
     return innovations_rms(track, nominal, v, noise, which);
   };
-  double best = at(base, HeadingEffect::kYawTimeConstant), best_rms = rms(best, samples.train);
-  for (double lag = 1.0; lag <= 40.0; lag += 1.0) {
-    if (const double x = rms(lag, samples.train); x < best_rms) {
+  const double vehicle_file = at(base, effect);
+  double best = vehicle_file, best_rms = rms(best, samples.train);
+  for (double value : grid) {
+    if (const double x = rms(value, samples.train); x < best_rms) {
       best_rms = x;
-      best = lag;
+      best = value;
     }
   }
-  if (best == at(base, HeadingEffect::kYawTimeConstant)) return false;
+  if (best == vehicle_file) return false;
   HeadingValues with = base;
-  at(with, HeadingEffect::kYawTimeConstant) = best;
+  at(with, effect) = best;
   noise = refine_noise(track, nominal, with, noise, samples.all, 1);
-  const double with_rms = rms(best, samples.heldout),
-               without_rms = rms(at(base, HeadingEffect::kYawTimeConstant), samples.heldout);
+  const double with_rms = rms(best, samples.heldout), without_rms = rms(vehicle_file, samples.heldout);
   return fitting_core::improves_heldout(with_rms, without_rms, fitting_core::Margins{kScreenMargin, 0.0});
 }
 
@@ -393,9 +418,27 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
     return f.effect == HeadingEffect::kYawTimeConstant;
   });
   const LinkSamples samples = settled_samples(track, options.max_fit_samples);
+  // The screens' noise, refined once where a screen runs.
+  std::optional<YawNoise> screens_noise;
+  auto noise_for_screens = [&] {
+    if (!screens_noise) {
+      screens_noise = screen_noise(track, nominal, base, samples, d.heading_noise_rad, d.yaw.baseline_rms);
+    }
+    return *screens_noise;
+  };
   const bool probe_lag = options.yaw_dynamics_probe && !rate_named_lag &&
-                         lag_screen_shows_gain(track, nominal, base, samples, d.heading_noise_rad, d.yaw.baseline_rms);
-  if (!named && !probe_lag) return;
+                         screen_shows_gain(track, nominal, base, samples, noise_for_screens(),
+                                           HeadingEffect::kYawTimeConstant, kLagScreenGrid);
+  // Where the rate error names nothing of the link, the fin is measured
+  // where its screen shows a gain (the fin alone on its grid, the lag
+  // screen's steps and noise): in the closed loop the rate error reads a
+  // stronger fin weaker (the fin answers the random yaw) and names nothing
+  // (a hidden fin x1.402 read 0.835 [0.692, 0.979] forced on it; the
+  // innovations read 1.383: docs/science.md "Why the heading plane's fin is
+  // sized in half the draws").
+  const bool screened_fin = !named && screen_shows_gain(track, nominal, base, samples, noise_for_screens(),
+                                                        HeadingEffect::kFinEffectiveness, kFinScreenGrid);
+  if (!named && !probe_lag && !screened_fin) return;
   // The noise and the fin are the likeliest together, both on the same
   // settled samples: the noise fitted with the fin at its last
   // measurement, then the fin on that noise, until it settles (a noise
@@ -591,7 +634,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
       }
     }
   }
-  if (!named && dynamics.empty()) return;
+  if (!named && !screened_fin && dynamics.empty()) return;
   std::vector<bool> dynamics_stand(dynamics.size(), false);
   std::vector<HeadingEffect> to_measure = {HeadingEffect::kFinEffectiveness};
   to_measure.insert(to_measure.end(), dynamics.begin(), dynamics.end());
