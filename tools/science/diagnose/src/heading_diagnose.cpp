@@ -449,7 +449,7 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
   // sized in half the draws").
   const bool screened_fin = !named && read_screen(track, nominal, base, samples, noise_for_screens(),
                                                   HeadingEffect::kFinEffectiveness, kFinScreenGrid)
-                                           .shows(kScreenMargin);
+                                          .shows(kScreenMargin);
   if (!named && !probe_lag && !screened_fin) return;
   // The noise and the fin are the likeliest together, both on the same
   // settled samples: the noise fitted with the fin at its last
