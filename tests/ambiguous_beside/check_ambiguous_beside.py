@@ -56,7 +56,8 @@ def check(document):
         if seen != b['partner_seen']:
             failures.append('%s beside %s: partner_seen %s against its interval %s' % (
                 b['effect'], b['partner'], b['partner_seen'], b['partner_ci95']))
-        due = (not seen and improves(b['heldout_block_rms_depth_rate_m_s'], b['selected_heldout_block_rms_depth_rate_m_s'])
+        due = (not seen
+               and improves(b['heldout_block_rms_depth_rate_m_s'], b['selected_heldout_block_rms_depth_rate_m_s'])
                and improves(b['heldout_rms_depth_rate_m_s'], b['selected_heldout_rms_depth_rate_m_s']))
         if due != b['ambiguous']:
             failures.append('%s beside %s: ambiguous %s where its held-out errors say %s' % (
