@@ -1128,9 +1128,10 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
 // stated ambiguous with both readings (the finding alone, and the finding
 // with the partner beside it), and the finding's interval holds the second.
 // On the independent truth a hidden vertical water velocity the selection
-// did not name is the case: the offset read alone absorbs it, off by up to
-// 19 g with an interval that missed (docs/science.md, "The buoyancy offset
-// beside a partner this log cannot size").
+// did not name is the case: the offset read alone absorbs it (7-26 g off
+// where this fired on a validation seed, most intervals missing the truth;
+// docs/science.md, "The buoyancy offset beside a partner this log cannot
+// size").
 void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                            const Candidate& current, const FitResult& current_fit,
                            const std::vector<ScreenedPair>& pairs, Diagnosis& d) {
