@@ -104,6 +104,7 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
     if (!a.ambiguous) continue;
     ambiguous.push_back({{"effect", info(a.chosen).id},
                          {"alternative", info(a.alternative).id},
+                         {"reading", "in its place"},
                          {"alternative_value", a.alternative_value},
                          {"alternative_unit", info(a.alternative).unit},
                          {"alternative_ci95", {a.alternative_ci95_low, a.alternative_ci95_high}},
@@ -113,7 +114,43 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                          {"ruled_out_by_prior", a.ruled_out_by_prior},
                          {"what_would_separate_them", a.separate}});
   }
+  // The second kind of ambiguity: the finding with a partner beside it, a
+  // partner the held-out yos prefer and this log cannot size.
+  for (const auto& b : d.beside) {
+    if (!b.ambiguous) continue;
+    ambiguous.push_back({{"effect", info(b.finding).id},
+                         {"alternative", info(b.partner).id},
+                         {"reading", "beside it"},
+                         {"value_beside", b.finding_value},
+                         {"ci95_beside", {b.finding_ci95_low, b.finding_ci95_high}},
+                         {"alternative_value", b.partner_value},
+                         {"alternative_unit", info(b.partner).unit},
+                         {"alternative_ci95", {b.partner_ci95_low, b.partner_ci95_high}},
+                         {"heldout_rms_depth_rate_m_s", b.chosen_heldout_rms_m_s},
+                         {"alternative_heldout_rms_depth_rate_m_s", b.heldout_rms_m_s},
+                         {"signature_correlation", b.correlation},
+                         {"ruled_out_by_prior", false},
+                         {"what_would_separate_them", b.separate}});
+  }
   j["ambiguous"] = ambiguous;
+  ordered_json beside = ordered_json::array();
+  for (const auto& b : d.beside) {
+    beside.push_back({{"effect", info(b.finding).id},
+                      {"partner", info(b.partner).id},
+                      {"signature_correlation", b.correlation},
+                      {"value", b.finding_value},
+                      {"ci95", {b.finding_ci95_low, b.finding_ci95_high}},
+                      {"partner_value", b.partner_value},
+                      {"partner_unit", info(b.partner).unit},
+                      {"partner_ci95", {b.partner_ci95_low, b.partner_ci95_high}},
+                      {"heldout_rms_depth_rate_m_s", b.heldout_rms_m_s},
+                      {"heldout_block_rms_depth_rate_m_s", b.heldout_score_m_s},
+                      {"selected_heldout_rms_depth_rate_m_s", b.chosen_heldout_rms_m_s},
+                      {"selected_heldout_block_rms_depth_rate_m_s", b.chosen_heldout_score_m_s},
+                      {"partner_seen", b.seen},
+                      {"ambiguous", b.ambiguous}});
+  }
+  j["read_beside"] = beside;
   j["identifiability"] = identifiability;
   ordered_json screen = ordered_json::array();
   for (const auto& c : d.screen) {

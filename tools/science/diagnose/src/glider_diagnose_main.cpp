@@ -138,6 +138,16 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
         a.ruled_out_by_prior ? " (only the plausibility prior on its size rules the alternative out)" : "",
         a.separate.c_str());
   }
+  for (const auto& b : d.beside) {
+    if (!b.ambiguous) continue;
+    std::printf(
+        "    ambiguous: %s as read, or %+.4g %s (95%% CI %.4g .. %.4g) with %s %+.4g %s (95%% CI %.4g .. %.4g) beside "
+        "it: the held-out yos prefer it (%.4f vs %.4f m/s) but this log cannot size it; the interval above holds "
+        "both readings; what would tell them apart: %s\n",
+        info(b.finding).id, b.finding_value, info(b.finding).unit, b.finding_ci95_low, b.finding_ci95_high,
+        info(b.partner).id, b.partner_value, info(b.partner).unit, b.partner_ci95_low, b.partner_ci95_high,
+        b.heldout_rms_m_s, b.chosen_heldout_rms_m_s, b.separate.c_str());
+  }
   std::printf(
       "  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f "
       "%%\n",

@@ -84,6 +84,26 @@ struct Ambiguity {
   bool ambiguous = false;
 };
 
+// A finding read again with a candidate not taken fitted beside it (the
+// identifiability screen's aliases: diagnose.cpp, hold_aliased_readings):
+// the finding's and the partner's values in that joint fit. `seen`: the
+// partner's interval there excludes "no effect" and both are plausible
+// (the finding's interval then holds this reading). `ambiguous`: not seen,
+// yet the held-out yos prefer the joint fit by the selection's margins - the
+// log cannot tell the two readings apart (the finding's interval holds this
+// one too; `separate` says what data would).
+struct BesideReading {
+  Effect finding = Effect::kBuoyancyOffset, partner = Effect::kBuoyancyOffset;
+  double correlation = 0.0;  // of their signatures (the screen's)
+  double finding_value = 0.0, finding_ci95_low = 0.0, finding_ci95_high = 0.0;
+  double partner_value = 0.0, partner_ci95_low = 0.0, partner_ci95_high = 0.0;
+  double heldout_rms_m_s = 0.0, heldout_score_m_s = 0.0;                // of the joint fit
+  double chosen_heldout_rms_m_s = 0.0, chosen_heldout_score_m_s = 0.0;  // of the selected fit
+  bool seen = false;
+  bool ambiguous = false;
+  std::string separate;
+};
+
 // Which flight model the diagnosis fits: the dynamic one (the project's
 // dynamics driven by the measured pitch, through every sample, turns
 // included; the default) or the steady one (steady glides at the measured
@@ -153,6 +173,7 @@ struct Diagnosis {
   };
   std::vector<ScreenedCorrelation> screen;
   double screen_correlation = 0.0;
+  std::vector<BesideReading> beside;  // every finding read with a screened alias beside it
   std::string cause = "none";
   EffectValues extended = nominal_values();
   std::optional<VerticalVelocityProfile> extended_profile;  // when the vertical velocity was fitted
