@@ -9,7 +9,6 @@
 
 #include "glider/circular_statistics/circular_statistics.hpp"
 #include "glider/diagnose/diagnose.hpp"
-#include "glider/diagnose/heading_diagnose.hpp"
 #include "glider/diagnose/heading_report.hpp"
 #include "glider/diagnose/observations.hpp"
 #include "glider/diagnose/trend.hpp"
