@@ -9,12 +9,12 @@
 
 #include "glider/circular_statistics/circular_statistics.hpp"
 #include "glider/diagnose/diagnose.hpp"
-#include "glider/diagnose/heading_diagnose.hpp"
 #include "glider/diagnose/heading_report.hpp"
 #include "glider/diagnose/observations.hpp"
 #include "glider/diagnose/trend.hpp"
 #include "glider/fitting_core/intervals.hpp"
 #include "glider/health/fin_instrument.hpp"
+#include "glider/health/fin_iv.hpp"
 
 namespace glider::health {
 namespace {
@@ -102,25 +102,34 @@ std::string fin_too_thin(double fin_spread, double heading_spread) {
   return {};
 }
 
-void measure_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& held, SegmentMeasurement& m) {
+// The segment with m_fin as the file stored it: the heading plane knows
+// where a file that stores the fin on change found it unchanged and where it
+// moved (diagnose/stored_on_change.hpp); the held column would put every
+// move at the next reading, ~2 s late on a 4 s .sbd (the fin read 0.85-0.92
+// for 1, and a halved fin's interval missed -50 %: docs/science.md).
+flightlog::FlightLog with_fin_as_stored(const flightlog::FlightLog& held, const flightlog::FlightLog& raw) {
+  const flightlog::Column* stored = raw.find("m_fin");
+  if (stored == nullptr || stored->size() != held.rows()) return held;
+  std::vector<flightlog::Column> columns;
+  std::size_t time_index = 0;
+  const auto& names = held.column_names();
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    if (&held.column(names[c]) == &held.time()) time_index = c;
+    columns.push_back(names[c] == "m_fin" ? *stored : held.column(names[c]));
+  }
+  return flightlog::FlightLog(held.source(), held.metadata(), names, std::move(columns), time_index);
+}
+
+// The fin and the roll offset by instrumental variables (fin_iv.hpp): the
+// yaw rate's error with the fin as logged, the fin projected on the command
+// and the lagged heading (fin_instrument.hpp) its instrument.
+void measure_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& held,
+                     const flightlog::FlightLog& raw, bool decimated, SegmentMeasurement& m) {
   try {
-    diagnose::HeadingDiagnoseOptions options;
-    options.fit_only = {diagnose::HeadingEffect::kFinEffectiveness, diagnose::HeadingEffect::kRollOffset};
-    // A measurement: every turn counts, whichever yo it fell in.
-    options.fit_on_all_samples = true;
-    // The fin projected on the command and the lagged heading (fin_instrument.hpp):
-    // defined at every row, so not read as stored on change.
-    options.track.fin_stored_on_change = false;
-    const diagnose::HeadingDiagnosis d = diagnose::diagnose_heading(nominal, with_fin_on_lagged_heading(held), options);
-    const double logged_roll = d.roll_logged ? d.logged_roll_rad : 0.0;
-    for (const diagnose::HeadingFinding& f : d.yaw.findings) {
-      if (f.effect == diagnose::HeadingEffect::kFinEffectiveness) {
-        at(m.effects, HealthEffect::kFinEffectiveness) = {f.value, f.ci95_low, f.ci95_high, {}};
-      } else if (f.effect == diagnose::HeadingEffect::kRollOffset) {
-        at(m.effects, HealthEffect::kRollOffset) = {
-            (logged_roll + f.value) * kDeg, (logged_roll + f.ci95_low) * kDeg, (logged_roll + f.ci95_high) * kDeg, {}};
-      }
-    }
+    const flightlog::FlightLog projected = with_fin_on_lagged_heading(held);
+    const FinByInstruments iv = fin_by_instruments(nominal, with_fin_as_stored(held, raw), decimated, projected);
+    at(m.effects, HealthEffect::kFinEffectiveness) = iv.fin;
+    at(m.effects, HealthEffect::kRollOffset) = iv.roll_deg;
     for (HealthEffect e : {HealthEffect::kFinEffectiveness, HealthEffect::kRollOffset}) {
       if (!at(m.effects, e).judged()) at(m.effects, e) = not_judged("the heading fit gave no value");
     }
@@ -303,7 +312,7 @@ SegmentMeasurement measure_segment(const model::VehicleParams& nominal, const Lo
     }
     m.fin_spread_deg = fin_spread_deg(log);
     m.heading_spread_deg = heading_spread_deg(log);
-    measure_heading(flown, log, m);
+    measure_heading(flown, log, *segment.raw, segment.files.decimated, m);
     at(m.effects, HealthEffect::kPumpRate) = pump_rate(*segment.raw);
     at(m.effects, HealthEffect::kBatteryPerKm) = battery_per_km(log);
   }

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The fin the heading fit reads the fin's effectiveness from, cleared of the
-// random yaw (docs/health.md "The fin instrumented by the lagged heading").
+// The instrument of the fin the heading fit reads the fin's effectiveness
+// from, cleared of the random yaw (docs/health.md "The fin projected on the
+// command and the lagged heading"; used as the logged fin's instrument, not
+// in its place: fin_iv.hpp).
 // In a random yaw the autopilot moves the fin against yaw the vehicle did not
 // make: that part of the fin is correlated with the yaw rate the model leaves
 // unexplained, and a fit of the yaw rate on the logged fin reads the fin weak
