@@ -58,6 +58,17 @@ def main():
         failures.append('in its place: %s' % counts[(c.IN_ITS_PLACE, 'vertical_water_velocity')])
     if counts[(c.ABSORBED, 'hull_compressibility')] != [1, 1]:
         failures.append('absorbed: %s' % counts[(c.ABSORBED, 'hull_compressibility')])
+    # The other side as the diagnosis states it: in its place (a swap) or beside it (vamb's statement).
+    swap = {'effect': 'vertical_water_velocity', 'alternative': OFFSET, 'reading': 'in its place',
+            'alternative_value': 38.0}
+    beside = {'effect': OFFSET, 'alternative': 'vertical_water_velocity', 'reading': 'beside it', 'value_beside': 36.0,
+              'alternative_value': 0.008}
+    other = {'effect': 'drag_change', 'alternative': 'lift_change', 'reading': 'in its place',
+             'alternative_value': 0.1}
+    for report, expected in (({'ambiguous': [swap]}, 38.0), ({'ambiguous': [other, beside]}, 36.0),
+                             ({'ambiguous': [other]}, None), ({}, None)):
+        if c.other_side_in(report) != expected:
+            failures.append('other side of %s: %s, expected %s' % (report, c.other_side_in(report), expected))
     if failures:
         print('FAIL\n' + '\n'.join(failures))
         return 1

@@ -6,8 +6,9 @@ buoyancy offset is not sized within 15 % where identifiable, by cause").
 Reads a coverage run saved by `benchmarks/diagnose_truth_coverage.py --identifiability --details D.json` and
 classifies each draw whose offset is identifiable (forced-fit z >= 3.6) and not named within 15 % of its truth:
 
-- AMBIGUOUS_OTHER_SIDE: the diagnosis stated the offset ambiguous with the offset's reading on the stated other side,
-  and that reading within 15 % (needs the log diagnosed again: --logs DIR --diagnose BIN);
+- AMBIGUOUS_OTHER_SIDE: the diagnosis stated the offset ambiguous with the offset's reading on the stated other side
+  (the offset in another effect's place, or read with a partner beside it that the log cannot size), and that reading
+  within 15 % (needs the log diagnosed again: --logs DIR --diagnose BIN);
 - IN_ITS_PLACE: the offset not named, another effect named in its place (or NOTHING_IN_ITS_PLACE);
 - NAMED_BESIDE: an effect that was not hidden named beside the offset;
 - ABSORBED: the offset named, a hidden partner not named (the offset read without it takes its part);
@@ -82,9 +83,18 @@ def other_side_of(draw, logs, diagnose, vehicles):
     vehicle = os.path.join(vehicles, 'slocum_we01.toml' if draw['variant'] == 'deep' else 'slocum_shallow.toml')
     done = subprocess.run([diagnose, os.path.join(logs, name + '.csv'), '--vehicle', vehicle, '--json', '--plane',
                            'vertical'], capture_output=True, text=True, check=True)
-    for pair in json.loads(done.stdout).get('ambiguous', []):
-        if pair.get('alternative') == EFFECT:
+    return other_side_in(json.loads(done.stdout))
+
+
+def other_side_in(report):
+    """The offset's reading on a stated ambiguity's other side in a diagnosis JSON: the offset in another effect's
+    place (its alternative_value), or the offset read with a partner beside it that the log cannot size (its
+    value_beside); None where neither is stated."""
+    for pair in report.get('ambiguous', []):
+        if pair.get('alternative') == EFFECT and pair.get('reading', 'in its place') == 'in its place':
             return pair.get('alternative_value')
+        if pair.get('effect') == EFFECT and pair.get('reading') == 'beside it':
+            return pair.get('value_beside')
     return None
 
 
