@@ -106,8 +106,8 @@ TEST(HealthStepOnset, AHalvedFinIsAlertedWithinThreeSurfacingsWithoutFalseAlarms
     const Run r = run_deployment(12, onset, 0.5, scatter(random), random);
     within3 += r.alerted >= onset && r.alerted <= onset + 2 ? 1 : 0;
   }
-  // 60 clean 10-day deployments (30 surfacings): 600 glider-days.
-  constexpr int kClean = 60;
+  // 200 clean 10-day deployments (30 surfacings): 2000 glider-days.
+  constexpr int kClean = 200;
   int false_alerts = 0;
   for (int i = 0; i < kClean; ++i) false_alerts += run_deployment(30, -1, 1.0, scatter(random), random).false_alerts;
   std::snprintf(line, sizeof line,
@@ -115,10 +115,10 @@ TEST(HealthStepOnset, AHalvedFinIsAlertedWithinThreeSurfacingsWithoutFalseAlarms
                 kHalvings, false_alerts, kClean * 10);
   UT_PRINT(line);
   // Issue 24 asks >= 95 % within 3 surfacings: this scatter (up to 13 % at
-  // the nominal level, above the SIL's pooled 7.6 %) leaves 90-94 % over 8
-  // seeds (the step test's power with 2-3 segments after the onset); the
-  // level after the step judged "too thin" left 52-61 %. <= 1 false alarm
-  // per 100 glider-days.
+  // the nominal level, above the SIL's pooled 7.6 %) leaves 89-94 % over 40
+  // seeds (the step test's power with 2-3 segments after the onset); judged
+  // on the level after the step, 52-61 % (11 seeds). <= 1 false alarm per
+  // 100 glider-days: 0-5 in 2000 over 25 seeds.
   CHECK_TEXT(within3 >= kHalvings * 85 / 100, line);
   CHECK_TEXT(false_alerts <= kClean * 10 / 100, line);
 }
