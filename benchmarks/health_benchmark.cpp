@@ -18,6 +18,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -184,6 +185,9 @@ Outcome run(const Draw& d, const std::string& dir, int launch_spread_deg, const 
   const HealthEffect target = effect_of(d.fault);
   std::set<std::string> other_ids;
   health::HealthRun last;
+  fs::create_directories(dir);
+  std::ofstream(dir + "/draw.txt") << kind_name(d.fault) << ' ' << d.onset << ' ' << d.truth << ' ' << d.surfacings
+                                   << '\n';
   for (int k = 0; k < d.surfacings; ++k) {
     o.error = health_sil::fly_surfacing(dir + "/sbd", d.plan, k, kHoursApart, d.seed + static_cast<std::uint64_t>(k),
                                         sbdlist, launch_spread_deg);
@@ -306,6 +310,103 @@ int run_transects(std::uint64_t seed, const std::string& dir, int surfacings, co
   return static_cast<int>(fin_ids.size());
 }
 
+// The surfacing k of a SIL segment named <vehicle>-1970-000-<k>-<segment>.
+int surfacing_of(const std::string& segment_name) {
+  const std::string name = segment_name.substr(0, segment_name.rfind('-'));
+  return std::stoi(name.substr(name.rfind('-') + 1));
+}
+
+struct ReplayTally {
+  std::size_t draws = 0, detected3 = 0, within = 0, covered = 0, others = 0;
+  double days = 0.0;
+};
+
+// One saved deployment (DIR/drawN: its draw.txt and state.json) assessed
+// again at every surfacing from the stored measurements (no flight, no fit):
+// this build's alert rule on the same segments. Prints the faulted effect's
+// assessment from the surfacing before its onset; returns false when the
+// deployment is not there.
+bool replay_draw(const fs::path& dir, std::map<std::string, ReplayTally>& tally) {
+  std::ifstream meta(dir / "draw.txt");
+  std::string kind;
+  int onset = -1, surfacings = 0;
+  double truth = 0.0;
+  if (!(meta >> kind >> onset >> truth >> surfacings)) return false;
+  std::string problem;
+  const std::optional<health::HealthState> state = health::read_state((dir / "state.json").string(), problem);
+  if (!state) {
+    std::printf("  %s: no state (%s)\n", dir.string().c_str(), problem.c_str());
+    return false;
+  }
+  Fault fault = Fault::kNone;
+  for (Fault f : {Fault::kDrag, Fault::kBuoyancy, Fault::kFin, Fault::kPump}) {
+    if (kind_name(f) == kind) fault = f;
+  }
+  const HealthEffect target = effect_of(fault);
+  std::printf("  %s: %s, onset %d\n", dir.filename().string().c_str(), kind.c_str(), onset);
+  std::vector<health::SegmentMeasurement> known;
+  std::vector<health::Alert> previous;
+  std::set<std::string> other_ids;
+  int detected = -1;
+  health::Assessment last;
+  for (int k = 0; k < surfacings; ++k) {
+    known.clear();
+    for (const health::SegmentMeasurement& m : state->segments) {
+      if (surfacing_of(m.name) <= k) known.push_back(m);
+    }
+    last = health::assess(known, previous);
+    previous = last.alerts;
+    for (const health::Alert& a : last.alerts) {
+      if (a.effect == target && onset >= 0 && k >= onset) {
+        if (detected < 0) detected = k;
+      } else if (other_ids.insert(std::string(health::info(a.effect).id) + "/" + a.kind).second) {
+        std::printf("      other at %d: %s\n", k, a.message.c_str());
+      }
+    }
+    if (fault == Fault::kNone || k < onset - 1 || k > onset + 4) continue;
+    const health::EffectAssessment& e = last.effects[static_cast<std::size_t>(target)];
+    std::printf("    %2d (%+d) %-8s p_step %-9.3g level %.4f [%.4f, %.4f] %s", k, k - onset,
+                diagnose::to_string(e.trend.shape), e.trend.p_step, e.value, e.low, e.high,
+                e.judged ? "judged" : ("not judged: " + e.why).c_str());
+    for (const health::Alert& a : e.alerts)
+      std::printf("; ALERT %s %.4f [%.4f, %.4f]", a.kind.c_str(), a.size, a.low, a.high);
+    std::printf("\n");
+  }
+  ReplayTally& t = tally[kind];
+  ++t.draws;
+  t.days += surfacings / kPerDay;
+  t.others += other_ids.size();
+  if (fault == Fault::kNone) return true;
+  if (detected >= onset && detected <= onset + 2) ++t.detected3;
+  for (const health::Alert& a : last.alerts) {
+    if (a.effect != target || a.kind != (fault == Fault::kDrag ? "line" : "step")) continue;
+    t.within += std::abs(a.size - truth) <= 0.2 * std::abs(truth) ? 1 : 0;
+    t.covered += a.low <= truth && truth <= a.high ? 1 : 0;
+  }
+  std::printf("    alerted at %d (onset %d)\n", detected, onset);
+  return true;
+}
+
+int replay(const std::string& root) {
+  std::vector<std::pair<int, fs::path>> dirs;
+  for (const auto& entry : fs::directory_iterator(root)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && name.rfind("draw", 0) == 0) dirs.emplace_back(std::stoi(name.substr(4)), entry.path());
+  }
+  std::sort(dirs.begin(), dirs.end());
+  std::printf("bench_health --replay %s (the saved deployments' states, this build's alert rule)\n", root.c_str());
+  std::map<std::string, ReplayTally> tally;
+  for (const auto& [index, dir] : dirs) replay_draw(dir, tally);
+  std::printf(
+      "\n| fault | draws | alerted within 3 surfacings | size within 20 %% | interval covers truth | other alerts |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  for (const auto& [kind, t] : tally) {
+    std::printf("| %s | %zu | %zu | %zu | %zu | %zu in %.1f glider-days |\n", kind.c_str(), t.draws, t.detected3,
+                t.within, t.covered, t.others, t.days);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -341,11 +442,17 @@ int main(int argc, char** argv) {
                  "the box's .sbd list (default tests/health/sbdlist.dat; a list without decimation keeps every "
                  "cycle: the decimation's part in a reading)")
       ->check(CLI::ExistingFile);
+  std::string replay_dir;
+  app.add_option("--replay", replay_dir,
+                 "instead: assess the deployments saved in this --out folder again at every surfacing from their "
+                 "states (no flight, no fit: this build's alert rule on the same segments)")
+      ->check(CLI::ExistingDirectory);
   std::vector<std::string> kinds{"drag", "buoyancy", "fin", "pump"};
   app.add_option("--faults", kinds, "fault kinds drawn (default: all; a bounded run measures one)")
       ->delimiter(',')
       ->check(CLI::IsMember({"drag", "buoyancy", "fin", "pump"}));
   return tool.run(argc, argv, [&]() -> int {
+    if (!replay_dir.empty()) return replay(replay_dir);
     if (seed == 0) seed = std::random_device{}() % 1000000000ULL + 1;
     if (clean == kAsDraws) clean = draws;
     std::string sbdlist;

@@ -215,15 +215,26 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
     // Too thin to judge: the interval of the level is wider than the change
     // the alert rule is about. A change is a difference between segments:
     // the bias they all share is not in it, so not in this judgement.
-    const double scale = e.rule.relative ? std::abs(a.value) : 1.0;
+    // After a step the change the rule is about is that step, sized against
+    // the level before it (the alert's own limit): judged on the step fit's
+    // interval of the change (both sides' scatter, n - 2 degrees of freedom:
+    // the step test's own). The level after it from the segments after it
+    // alone (a Student-t on 1 or 2 degrees of freedom in the surfacings after
+    // an onset: 12.7 and 4.3 standard errors) against a quarter of a halved
+    // fin held a significant halving "too thin" for a surfacing or two
+    // (docs/health.md, "A step judged on the step").
+    const bool step = a.trend.shape == diagnose::TrendShape::kStep;
+    const double scale = !e.rule.relative ? 1.0 : step ? std::abs(a.trend.level_before) : std::abs(a.value);
     const double threshold = e.rule.step_size * scale;
     const double half = 0.5 * (a.high - a.low), shared_half = fitting_core::kZ95 * a.shared_sigma;
-    const double change_half = std::sqrt(std::max(0.0, half * half - shared_half * shared_half));
+    const double change_half = step ? 0.5 * (a.trend.step_change.high - a.trend.step_change.low)
+                                    : std::sqrt(std::max(0.0, half * half - shared_half * shared_half));
     if (!(std::isfinite(a.low) && std::isfinite(a.high))) {
       a.judged = true;  // one number per segment: the scatter about the shape judges it
     } else if (threshold > 0.0 && change_half > threshold) {
-      a.why = "the data are too thin: the 95 % interval of the level (+-" + number(change_half) + " " + e.unit +
-              (shared_half > 0.0 ? " without the bias every segment shares" : "") +
+      a.why = std::string("the data are too thin: the 95 % interval of the ") + (step ? "step" : "level") + " (+-" +
+              number(change_half) + " " + e.unit +
+              (shared_half > 0.0 && !step ? " without the bias every segment shares" : "") +
               ") is wider than the change that matters (" + number(threshold) + " " + e.unit + ")";
       continue;
     } else {
@@ -267,10 +278,10 @@ Assessment assess(const std::vector<SegmentMeasurement>& segments, const std::ve
       alert.effect = a.effect;
       alert.kind = "line";
       alert.size = hinge_rate;
-      const double half = ratio_half_width(hinge_rate, hinge_slope_half_width(a, segments, t.back()),
-                                           0.5 * (tr.hinge_level.high - tr.hinge_level.low), hinge_before);
-      alert.low = hinge_rate - half;
-      alert.high = hinge_rate + half;
+      const double rate_half = ratio_half_width(hinge_rate, hinge_slope_half_width(a, segments, t.back()),
+                                                0.5 * (tr.hinge_level.high - tr.hinge_level.low), hinge_before);
+      alert.low = hinge_rate - rate_half;
+      alert.high = hinge_rate + rate_half;
       alert.relative = true;
       alert.since_s = a.since_s.value_or(tr.hinge_s);
       alert.message = std::string(e.id) + " is changing by " + number(100.0 * alert.size) + " % of its level a day [" +
