@@ -89,7 +89,7 @@ def main():
             truth = r['truth'].get(u['effect'], 0.0)
             unnamed[u['effect']] = {'value': u['value'], 'ci95': u['ci95'], 'seen': u['seen'],
                                     'prior': u['ruled_out_by_prior'],
-                                    'held': u['ci95'][0] <= truth <= u['ci95'][1]}
+                                    'held': u['ci95'][0] is not None and u['ci95'][0] <= truth <= u['ci95'][1]}
         rows.append({'case': r['case'], 'seed': r['seed'], 'variant': r['variant'], 'truth': r['truth'],
                      'named': [f['effect'] for f in document['findings']], 'unnamed': unnamed,
                      'identifiable': {e: m.get('identifiable') for e, m in r.get('identifiability', {}).items()},
@@ -103,9 +103,10 @@ def main():
     for x in rows:
         for term, u in x['unnamed'].items():
             if term in x['truth'] or u['seen']:
-                print('  %s %d (%s): %s %+.3g [%.3g, %.3g] %s; truth %.3g, z %s' % (
-                    x['case'], x['seed'], x['variant'], term, u['value'], u['ci95'][0], u['ci95'][1],
-                    'seen' if u['seen'] else 'not seen', x['truth'].get(term, 0.0),
+                print('  %s %d (%s): %s %+.3g [%s, %s] %s; truth %.3g, z %s' % (
+                    x['case'], x['seed'], x['variant'], term, u['value'], *('%.3g' % v if v is not None else '-'
+                                                                            for v in u['ci95']),
+                    'ruled out by the prior' if u['prior'] else 'seen' if u['seen'] else 'not seen', x['truth'].get(term, 0.0),
                     '-' if x['z'].get(term) is None else '%.1f' % x['z'][term]))
     if args.save:
         with open(args.save, 'w') as f:

@@ -157,7 +157,7 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
     unnamed.push_back({{"effect", info(u.effect).id},
                        {"value", u.value},
                        {"unit", info(u.effect).unit},
-                       {"ci95", {u.ci95_low, u.ci95_high}},
+                       {"ci95", {number_or_null(u.ci95_low), number_or_null(u.ci95_high)}},  // none if implausible
                        {"seen", u.seen},
                        {"ruled_out_by_prior", u.ruled_out_by_prior},
                        {"heldout_rms_depth_rate_m_s", u.heldout_rms_m_s},

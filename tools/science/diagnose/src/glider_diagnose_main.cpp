@@ -149,11 +149,17 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
         b.heldout_rms_m_s, b.chosen_heldout_rms_m_s, b.separate.c_str());
   }
   for (const auto& u : d.unnamed) {
+    if (u.ruled_out_by_prior) {
+      std::printf(
+          "    not named: %s %+.4g %s beside the findings: outside the plausible range, only the prior rules it "
+          "out; what would size it: %s\n",
+          info(u.effect).id, u.value, info(u.effect).unit, u.separate.c_str());
+      continue;
+    }
     std::printf("    not named: %s %+.4g %s (95%% CI %.4g .. %.4g) beside the findings: %s; what would size it: %s\n",
                 info(u.effect).id, u.value, info(u.effect).unit, u.ci95_low, u.ci95_high,
-                u.ruled_out_by_prior ? "a reading only the plausibility prior rules out"
-                : u.seen             ? "seen by its interval, not confirmed by the held-out yos"
-                                     : "this log cannot rule out a term within the interval",
+                u.seen ? "seen by its interval, not confirmed by the held-out yos"
+                       : "this log cannot rule out a term within the interval",
                 u.separate.c_str());
   }
   std::printf(
