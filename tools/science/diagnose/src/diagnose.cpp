@@ -1110,6 +1110,22 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
   return pairs;
 }
 
+// The selected effects with `alternative` fitted beside them, from the
+// selected fit (the candidate from its nominal): a step from it, not a search
+// from the nominal vehicle. Once per alternative: hold_aliased_readings and
+// read_unnamed_volume_terms share it.
+using BesideFits = std::map<Effect, FitResult>;
+FitResult& fit_beside(const SampleSet& set, const Split& s, const DiagnoseOptions& options, const Candidate& current,
+                      const FitResult& current_fit, Effect alternative, BesideFits& fits) {
+  auto it = fits.find(alternative);
+  if (it == fits.end()) {
+    Candidate joint = current;
+    joint.fitted.push_back(alternative);
+    it = fits.emplace(alternative, fit_reported(set, joint, s.train, s.heldout, options, &current_fit)).first;
+  }
+  return it->second;
+}
+
 // A finding's 95 % interval is conditional on the effects selected. A
 // candidate the margins declined can still be there - a hull compressibility
 // too small to cut the held-out error by the margins, beside the buoyancy
@@ -1132,22 +1148,6 @@ std::vector<ScreenedPair> state_identifiability(const SampleSet& set, const Spli
 // where this fired on a validation seed, most intervals missing the truth;
 // docs/science.md, "The buoyancy offset beside a partner this log cannot
 // size").
-// The selected effects with `alternative` fitted beside them, from the
-// selected fit (the candidate from its nominal): a step from it, not a search
-// from the nominal vehicle. Once per alternative: hold_aliased_readings and
-// read_unnamed_volume_terms share it.
-using BesideFits = std::map<Effect, FitResult>;
-FitResult& fit_beside(const SampleSet& set, const Split& s, const DiagnoseOptions& options, const Candidate& current,
-                      const FitResult& current_fit, Effect alternative, BesideFits& fits) {
-  auto it = fits.find(alternative);
-  if (it == fits.end()) {
-    Candidate joint = current;
-    joint.fitted.push_back(alternative);
-    it = fits.emplace(alternative, fit_reported(set, joint, s.train, s.heldout, options, &current_fit)).first;
-  }
-  return it->second;
-}
-
 void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                            const Candidate& current, const FitResult& current_fit,
                            const std::vector<ScreenedPair>& pairs, BesideFits& fits, Diagnosis& d) {

@@ -106,7 +106,8 @@ struct BesideReading {
 
 // The hull's volume terms (hull_compressibility, thermal_expansion) where
 // the selection did not name them, each read beside the findings (the
-// selected effects with it fitted too; diagnose.cpp, read_unnamed_volume_terms).
+// selected effects with it - both, where both are unnamed - fitted too, the
+// interval checked by the held-out yos; diagnose.cpp, read_unnamed_volume_terms).
 // On 6 yos of 40-180 m a compressibility of 0.5-3e-10 /Pa is seldom
 // identifiable and an expansion of 1-7e-5 /K often seen by its interval but
 // declined by the held-out margins (docs/science.md, "The hull's volume terms
