@@ -151,6 +151,22 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                       {"ambiguous", b.ambiguous}});
   }
   j["read_beside"] = beside;
+  // The hull's volume terms not named, each read beside the findings (a statement, not a finding).
+  ordered_json unnamed = ordered_json::array();
+  for (const auto& u : d.unnamed) {
+    unnamed.push_back({{"effect", info(u.effect).id},
+                       {"value", u.value},
+                       {"unit", info(u.effect).unit},
+                       {"ci95", {number_or_null(u.ci95_low), number_or_null(u.ci95_high)}},  // none if implausible
+                       {"seen", u.seen},
+                       {"ruled_out_by_prior", u.ruled_out_by_prior},
+                       {"heldout_rms_depth_rate_m_s", u.heldout_rms_m_s},
+                       {"heldout_block_rms_depth_rate_m_s", u.heldout_score_m_s},
+                       {"selected_heldout_rms_depth_rate_m_s", u.chosen_heldout_rms_m_s},
+                       {"selected_heldout_block_rms_depth_rate_m_s", u.chosen_heldout_score_m_s},
+                       {"what_would_size_it", u.separate}});
+  }
+  j["read_unnamed"] = unnamed;
   j["identifiability"] = identifiability;
   ordered_json screen = ordered_json::array();
   for (const auto& c : d.screen) {

@@ -148,6 +148,20 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
         info(b.partner).id, b.partner_value, info(b.partner).unit, b.partner_ci95_low, b.partner_ci95_high,
         b.heldout_rms_m_s, b.chosen_heldout_rms_m_s, b.separate.c_str());
   }
+  for (const auto& u : d.unnamed) {
+    if (u.ruled_out_by_prior) {
+      std::printf(
+          "    not named: %s %+.4g %s beside the findings: outside the plausible range, only the prior rules it "
+          "out; what would size it: %s\n",
+          info(u.effect).id, u.value, info(u.effect).unit, u.separate.c_str());
+      continue;
+    }
+    std::printf("    not named: %s %+.4g %s (95%% CI %.4g .. %.4g) beside the findings: %s; what would size it: %s\n",
+                info(u.effect).id, u.value, info(u.effect).unit, u.ci95_low, u.ci95_high,
+                u.seen ? "seen by its interval, not confirmed by the held-out yos"
+                       : "this log cannot rule out a term within the interval",
+                u.separate.c_str());
+  }
   std::printf(
       "  cause: %s\n  extended model: depth rate RMS %.4f m/s, held-out %.4f m/s (baseline held-out %.4f): gain %.0f "
       "%%\n",
