@@ -110,6 +110,7 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
     std::vector<double> simulated(end - first, kNaN);
     simulated[0] = psi;
     double yaw_rate = first + 1 < end ? goal(first, 0.0, start) : 0.0;
+    double lead = yaw_rate;  // the yaw's fast pole (heading_models.hpp fast_pole_step): steady at the start
     std::size_t next_row = r0 + 1;
     const double scored_from = t.time_s[t.scored[scored]];
     double travel = 0.0;
@@ -138,7 +139,9 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
         const double h = std::min(kStepS, t.time_s[k + 1] - s);
         fin += std::clamp(servo_command - fin, -fin_rate * h, fin_rate * h);
         const double target = goal(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
-        const double next = target + (yaw_rate - target) * std::exp(-h / tau);
+        const double a = std::exp(-h / tau);
+        const double next =
+            target + (yaw_rate - target) * a + fast_pole_step(lead, target, h, tau, t.yaw_fast_pole_s, a);
         psi += 0.5 * h * (yaw_rate + next);
         yaw_rate = next;
         s += h;

@@ -149,6 +149,13 @@ class AutopilotReplay {
   void replay(const HeadingValues& values);
   std::vector<double> predicted_;
 };
+// One step h of the yaw through the fast pole p (HeadingTrack::
+// yaw_fast_pole_s; 0: none) and the lag tau, the goal held over it (exact):
+// `lead`, the goal as the fast pole passes it, moves toward the goal; the
+// yaw rate's change beyond the first-order step toward the goal
+// (a = e^{-h/tau}) is returned - what the pole still holds back.
+double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a);
+
 void predict_yaw_rate(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
                       std::span<const std::size_t> samples, std::vector<double>& out);
 
