@@ -495,12 +495,12 @@ struct YawPlant {
 
 }  // namespace
 
-double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a) {
+double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a, double b) {
   if (!(p > 0.0)) {
     lead = goal;
     return 0.0;
   }
-  const double held = lead - goal, b = std::exp(-h / p);
+  const double held = lead - goal;
   lead = goal + held * b;
   // e_y(h) = e_y(0) a + held p / (p - tau) (b - a); its limit where p = tau.
   if (std::abs(p - tau) < 1e-6 * tau) return held * (h / tau) * a;
@@ -515,6 +515,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
                       std::span<const std::size_t> samples, std::vector<double>& out) {
   const YawPlant plant(t, vehicle, values);
   const double tau = plant.tau;
+  const StepDecay decay(tau, kStepS), fast_decay(plant.fast, kStepS);
   std::vector<double> rate(t.size(), kNaN);
   std::vector<double> model_heading;
   std::size_t wanted = 0;
@@ -533,8 +534,9 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
       while (s < t.time_s[k + 1]) {
         const double h = std::min(kStepS, t.time_s[k + 1] - s);
         const double goal = target(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
-        const double a = std::exp(-h / tau);
-        const double next = goal + (yaw_rate - goal) * a + fast_pole_step(lead, goal, h, tau, plant.fast, a);
+        const double a = decay(h);
+        const double next =
+            goal + (yaw_rate - goal) * a + fast_pole_step(lead, goal, h, tau, plant.fast, a, fast_decay(h));
         psi += 0.5 * h * (yaw_rate + next);
         yaw_rate = next;
         s += h;
@@ -558,6 +560,7 @@ void filter_headings(const HeadingTrack& t, const model::VehicleParams& vehicle,
   const YawPlant plant(t, vehicle, values);
   const double tau = plant.tau;
   const double tau_d = std::max(1.0, noise.correlation_s);
+  const StepDecay decay(tau, kStepS), fast_decay(plant.fast, kStepS), random_decay(tau_d, kStepS);
   const double var_d = noise.disturbance_rad_s * noise.disturbance_rad_s;
   // The compass's noise, at least the heading's rounding (a zero variance
   // would make the filter trust a reading exactly).
@@ -580,8 +583,8 @@ void filter_headings(const HeadingTrack& t, const model::VehicleParams& vehicle,
       while (s < t.time_s[k + 1]) {
         const double h = std::min(kStepS, t.time_s[k + 1] - s);
         const double u = target(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
-        const double a = std::exp(-h / tau), phi = std::exp(-h / tau_d);
-        const double held = fast_pole_step(lead, u, h, tau, plant.fast, a);
+        const double a = decay(h), phi = random_decay(h);
+        const double held = fast_pole_step(lead, u, h, tau, plant.fast, a, fast_decay(h));
         Eigen::Matrix3d F;
         F << 1.0, 0.5 * h * (1.0 + a), 0.5 * h * (1.0 - a), 0.0, a, 1.0 - a, 0.0, 0.0, phi;
         x = F * x + Eigen::Vector3d(0.5 * h * (1.0 - a) * u + 0.5 * h * held, (1.0 - a) * u + held, 0.0);

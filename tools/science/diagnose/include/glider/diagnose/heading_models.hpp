@@ -154,7 +154,21 @@ class AutopilotReplay {
 // `lead`, the goal as the fast pole passes it, moves toward the goal; the
 // yaw rate's change beyond the first-order step toward the goal
 // (a = e^{-h/tau}) is returned - what the pole still holds back.
-double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a);
+// (b = e^{-h/p}, unused where p <= 0.)
+double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a, double b);
+
+// e^{-h/T} for the replays' steps: the full step's worked out once (nearly
+// every step is full; the same bits as each step's own), 0 where T <= 0.
+class StepDecay {
+ public:
+  StepDecay(double time_constant, double full_step)
+      : time_constant_(time_constant), full_step_(full_step), full_(of(full_step)) {}
+  double operator()(double h) const { return h == full_step_ ? full_ : of(h); }
+
+ private:
+  double of(double h) const { return time_constant_ > 0.0 ? std::exp(-h / time_constant_) : 0.0; }
+  double time_constant_, full_step_, full_;
+};
 
 void predict_yaw_rate(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
                       std::span<const std::size_t> samples, std::vector<double>& out);
