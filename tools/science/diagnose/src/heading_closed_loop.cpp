@@ -67,7 +67,8 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
   const double fin_gain = hd.fin_yaw_gain_per_m * at(values, HeadingEffect::kFinEffectiveness);
   const double roll_offset = at(values, HeadingEffect::kRollOffset);
   const double tau = std::max(0.05, std::abs(at(values, HeadingEffect::kYawTimeConstant)));
-  const StepDecay decay(tau, kStepS), fast_decay(t.yaw_fast_pole_s, kStepS);
+  const double fast_pole = carried_fast_pole(t.yaw_fast_pole_s, yaw_delay);
+  const StepDecay decay(tau, kStepS), fast_decay(fast_pole, kStepS);
   const double fin_rate = hd.fin_rate_rad_s > 0.0 ? hd.fin_rate_rad_s : 1e9;
   const double autopilot_delay = std::abs(at(values, HeadingEffect::kAutopilotDelay));
   Autopilot autopilot{AutopilotLaw::from(values, settings, t.fin_max_rad)};
@@ -141,8 +142,8 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
         fin += std::clamp(servo_command - fin, -fin_rate * h, fin_rate * h);
         const double target = goal(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
         const double a = decay(h);
-        const double next = target + (yaw_rate - target) * a +
-                            fast_pole_step(lead, target, h, tau, t.yaw_fast_pole_s, a, fast_decay(h));
+        const double next =
+            target + (yaw_rate - target) * a + fast_pole_step(lead, target, h, tau, fast_pole, a, fast_decay(h));
         psi += 0.5 * h * (yaw_rate + next);
         yaw_rate = next;
         s += h;

@@ -978,7 +978,9 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   // A lag the fast dynamics the first-order yaw lacks account for is not
   // named (heading_select_resolution.hpp); not where the caller fixed the
   // set to fit.
-  if (options.fit_only.empty()) drop_lag_within_resolution(d.yaw, vehicle_base, track.yaw_fast_pole_s);
+  if (options.fit_only.empty())
+    drop_lag_within_resolution(d.yaw, vehicle_base,
+                               carried_fast_pole(track.yaw_fast_pole_s, at(d.yaw.values, HeadingEffect::kYawDelay)));
   // A yaw delay the servo's rows cannot see as its dead time is fitted on
   // that side too (heading_select_delay_side.hpp).
   if (options.fit_only.empty()) {

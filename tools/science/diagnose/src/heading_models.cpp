@@ -473,8 +473,8 @@ struct YawPlant {
         tau(std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)))),
         fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9),
         fin_dead_time(std::abs(value(values, HeadingEffect::kFinDelay))),
-        fast(track.yaw_fast_pole_s) {}
-  double fast;  // the yaw's fast pole (s; 0: none): HeadingTrack::yaw_fast_pole_s
+        fast(carried_fast_pole(track.yaw_fast_pole_s, delay)) {}
+  double fast;  // the yaw's fast pole (s; 0: none): carried_fast_pole
   // The roll as logged between samples k and k + 1, with the offset: the
   // fin rolls the glider and the roll turns it back against the fin (the
   // independent truth's 0-0.2 rad of roll per rad of fin read as a fin
@@ -494,6 +494,10 @@ struct YawPlant {
 };
 
 }  // namespace
+
+double carried_fast_pole(double prior_centre_s, double yaw_delay_s) {
+  return yaw_delay_s > 0.0 ? std::min(prior_centre_s, yaw_delay_s) : 0.0;
+}
 
 double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a, double b) {
   if (!(p > 0.0)) {

@@ -149,6 +149,16 @@ class AutopilotReplay {
   void replay(const HeadingValues& values);
   std::vector<double> predicted_;
 };
+// The fast pole the yaw carries (s): the prior's centre (HeadingTrack::
+// yaw_fast_pole_s) where a yaw delay is, at most that delay; none without
+// one. The yaw-delay effect stands for the yaw's late response - a dead
+// time behind a fast pole the log cannot tell apart - so without it the
+// nominal yaw stays the vehicle file's first-order one (a pole in the
+// nominal moved fits where no delay is: docs/science.md "The yaw's fast
+// pole"); at most the delay keeps the response continuous from no delay
+// (its lumped lag d + min(d, centre)).
+double carried_fast_pole(double prior_centre_s, double yaw_delay_s);
+
 // One step h of the yaw through the fast pole p (HeadingTrack::
 // yaw_fast_pole_s; 0: none) and the lag tau, the goal held over it (exact):
 // `lead`, the goal as the fast pole passes it, moves toward the goal; the
