@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -264,6 +265,7 @@ int main(int argc, char** argv) {
   double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
   std::string autopilot_integrator = "per-glide";
   std::string autopilot_clock = "both";
+  double yaw_fast_pole_max_s = -1.0;
   double drag_reynolds_exponent = glider::diagnose::kDragReynoldsExponentPrior;
   double pitch_window_s = glider::diagnose::TrackOptions{}.pitch_half_window_s;
   glider::diagnose::PitchCalibration pitch_calibration;
@@ -310,6 +312,15 @@ int main(int argc, char** argv) {
                  "docs/science.md \"The autopilot's clock\")")
       ->check(CLI::IsMember({"measured", "nominal", "both", "held-out"}))
       ->capture_default_str();
+  app.add_option("--yaw-fast-pole", yaw_fast_pole_max_s,
+                 "upper end (s) of the heading model's fast yaw pole's prior (uniform from 0; the models carry its "
+                 "centre, the yaw delay's interval spans it): negative = half the vehicle file's yaw time constant, "
+                 "0 = no fast pole (the rule before; docs/science.md \"The yaw's fast pole\")")
+      ->check([](const std::string& text) -> std::string {
+        const double v = std::strtod(text.c_str(), nullptr);
+        return std::isfinite(v) && v <= 30.0 ? "" : "--yaw-fast-pole " + text + ": allowed: a finite number <= 30 s";
+      })
+      ->capture_default_str();
   app.add_option("--fit", fit_only,
                  "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
       ->delimiter(',');
@@ -348,6 +359,7 @@ int main(int argc, char** argv) {
     glider::diagnose::HeadingDiagnoseOptions heading_options;
     heading_options.intervals = options.intervals;
     heading_options.autopilot_integrator_per_glide = autopilot_integrator == "per-glide";
+    heading_options.track.yaw_fast_pole_max_s = yaw_fast_pole_max_s;
     using glider::diagnose::AutopilotClockRule;
     heading_options.autopilot_clock = autopilot_clock == "measured"   ? AutopilotClockRule::kMeasured
                                       : autopilot_clock == "nominal"  ? AutopilotClockRule::kNominal

@@ -67,6 +67,8 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
   const double fin_gain = hd.fin_yaw_gain_per_m * at(values, HeadingEffect::kFinEffectiveness);
   const double roll_offset = at(values, HeadingEffect::kRollOffset);
   const double tau = std::max(0.05, std::abs(at(values, HeadingEffect::kYawTimeConstant)));
+  const double fast_pole = carried_fast_pole(t.yaw_fast_pole_s, yaw_delay);
+  const StepDecay decay(tau, kStepS), fast_decay(fast_pole, kStepS);
   const double fin_rate = hd.fin_rate_rad_s > 0.0 ? hd.fin_rate_rad_s : 1e9;
   const double autopilot_delay = std::abs(at(values, HeadingEffect::kAutopilotDelay));
   Autopilot autopilot{AutopilotLaw::from(values, settings, t.fin_max_rad)};
@@ -110,6 +112,7 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
     std::vector<double> simulated(end - first, kNaN);
     simulated[0] = psi;
     double yaw_rate = first + 1 < end ? goal(first, 0.0, start) : 0.0;
+    double lead = yaw_rate;  // the yaw's fast pole (heading_models.hpp fast_pole_step): steady at the start
     std::size_t next_row = r0 + 1;
     const double scored_from = t.time_s[t.scored[scored]];
     double travel = 0.0;
@@ -138,7 +141,9 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
         const double h = std::min(kStepS, t.time_s[k + 1] - s);
         fin += std::clamp(servo_command - fin, -fin_rate * h, fin_rate * h);
         const double target = goal(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
-        const double next = target + (yaw_rate - target) * std::exp(-h / tau);
+        const double a = decay(h);
+        const double next =
+            target + (yaw_rate - target) * a + fast_pole_step(lead, target, h, tau, fast_pole, a, fast_decay(h));
         psi += 0.5 * h * (yaw_rate + next);
         yaw_rate = next;
         s += h;

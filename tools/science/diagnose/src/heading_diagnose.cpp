@@ -375,6 +375,20 @@ ScreenRead read_screen(const HeadingTrack& track, const model::VehicleParams& no
 
 // The yaw's own dynamics, measured beside the fin on the innovations where
 // the rate error names them (measure_fin_then_reselect).
+// The yaw's delay read beside the fast pole the models carry at its
+// prior's centre (HeadingTrackOptions::yaw_fast_pole_max_s): rows seconds
+// apart measure delay + pole, so a pole anywhere in its prior (0 to the
+// upper end) moves the delay by the centre's distance to it - the interval
+// widened by both, never below 0. The value stays the prior's centre's.
+void widen_for_fast_pole(LinkFit& link, const HeadingTrack& track) {
+  const double shorter = track.yaw_fast_pole_max_s - track.yaw_fast_pole_s, longer = track.yaw_fast_pole_s;
+  for (HeadingFinding& f : link.findings) {
+    if (f.effect != HeadingEffect::kYawDelay) continue;
+    f.ci95_low = std::max(0.0, f.ci95_low - shorter);
+    f.ci95_high += longer;
+  }
+}
+
 bool is_yaw_dynamics(HeadingEffect e) { return e == HeadingEffect::kYawTimeConstant || e == HeadingEffect::kYawDelay; }
 
 // The fin's authority measured on the heading's one-step innovations with
@@ -895,6 +909,8 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   d.roll_logged = track.roll_logged;
   d.logged_roll_rad = track.median_roll_rad;
   d.runs = track.run_first.size();
+  d.yaw_fast_pole_s = track.yaw_fast_pole_s;
+  d.yaw_fast_pole_max_s = track.yaw_fast_pole_max_s;
   d.heading_noise_rad = heading_jitter_rad(track);
   d.holds = count_holds(track, d.configured.rate_deadband_rad_s);
   const HeadingValues base = nominal_heading_values(nominal, d.configured);
@@ -962,7 +978,9 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   // A lag the fast dynamics the first-order yaw lacks account for is not
   // named (heading_select_resolution.hpp); not where the caller fixed the
   // set to fit.
-  if (options.fit_only.empty()) drop_lag_within_resolution(d.yaw, vehicle_base);
+  if (options.fit_only.empty())
+    drop_lag_within_resolution(d.yaw, vehicle_base,
+                               carried_fast_pole(track.yaw_fast_pole_s, at(d.yaw.values, HeadingEffect::kYawDelay)));
   // A yaw delay the servo's rows cannot see as its dead time is fitted on
   // that side too (heading_select_delay_side.hpp).
   if (options.fit_only.empty()) {
@@ -974,6 +992,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
     choose_delay_side(d.yaw, d.servo, sides);
     bound_delay_split(d.yaw, d.servo, sides);
   }
+  widen_for_fast_pole(d.yaw, track);
 
   // The current's shear, on what the vehicle link leaves (every glide
   // sample once the pitch-over is done: the scored ones alone never see

@@ -472,7 +472,9 @@ struct YawPlant {
         roll_offset(value(values, HeadingEffect::kRollOffset)),
         tau(std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)))),
         fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9),
-        fin_dead_time(std::abs(value(values, HeadingEffect::kFinDelay))) {}
+        fin_dead_time(std::abs(value(values, HeadingEffect::kFinDelay))),
+        fast(carried_fast_pole(track.yaw_fast_pole_s, delay)) {}
+  double fast;  // the yaw's fast pole (s; 0: none): carried_fast_pole
   // The roll as logged between samples k and k + 1, with the offset: the
   // fin rolls the glider and the roll turns it back against the fin (the
   // independent truth's 0-0.2 rad of roll per rad of fin read as a fin
@@ -493,6 +495,22 @@ struct YawPlant {
 
 }  // namespace
 
+double carried_fast_pole(double prior_centre_s, double yaw_delay_s) {
+  return yaw_delay_s > 0.0 ? std::min(prior_centre_s, yaw_delay_s) : 0.0;
+}
+
+double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a, double b) {
+  if (!(p > 0.0)) {
+    lead = goal;
+    return 0.0;
+  }
+  const double held = lead - goal;
+  lead = goal + held * b;
+  // e_y(h) = e_y(0) a + held p / (p - tau) (b - a); its limit where p = tau.
+  if (std::abs(p - tau) < 1e-6 * tau) return held * (h / tau) * a;
+  return held * p / (p - tau) * (b - a);
+}
+
 // The model's yaw (dynamics.hpp): the yaw rate relaxes toward
 // V (fin_gain eff fin(t - delay) + roll_gain a_eff sin(roll + offset)),
 // from the run's first heading and the steady rate there; its heading goes
@@ -501,6 +519,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
                       std::span<const std::size_t> samples, std::vector<double>& out) {
   const YawPlant plant(t, vehicle, values);
   const double tau = plant.tau;
+  const StepDecay decay(tau, kStepS), fast_decay(plant.fast, kStepS);
   std::vector<double> rate(t.size(), kNaN);
   std::vector<double> model_heading;
   std::size_t wanted = 0;
@@ -511,6 +530,7 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
     auto target = [&](std::size_t k, double w, double now) { return plant.target(k, w, now); };
     model_heading.assign(1, t.heading_rad[first]);
     double yaw_rate = target(first, 0.0, t.time_s[first]);
+    double lead = yaw_rate;  // the fast pole's state: steady at the start
     double psi = t.heading_rad[first];
     for (std::size_t k = first; k + 1 < end; ++k) {
       double s = t.time_s[k];
@@ -518,7 +538,9 @@ void predict_yaw_rate(const HeadingTrack& t, const model::VehicleParams& vehicle
       while (s < t.time_s[k + 1]) {
         const double h = std::min(kStepS, t.time_s[k + 1] - s);
         const double goal = target(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
-        const double next = goal + (yaw_rate - goal) * std::exp(-h / tau);
+        const double a = decay(h);
+        const double next =
+            goal + (yaw_rate - goal) * a + fast_pole_step(lead, goal, h, tau, plant.fast, a, fast_decay(h));
         psi += 0.5 * h * (yaw_rate + next);
         yaw_rate = next;
         s += h;
@@ -542,6 +564,7 @@ void filter_headings(const HeadingTrack& t, const model::VehicleParams& vehicle,
   const YawPlant plant(t, vehicle, values);
   const double tau = plant.tau;
   const double tau_d = std::max(1.0, noise.correlation_s);
+  const StepDecay decay(tau, kStepS), fast_decay(plant.fast, kStepS), random_decay(tau_d, kStepS);
   const double var_d = noise.disturbance_rad_s * noise.disturbance_rad_s;
   // The compass's noise, at least the heading's rounding (a zero variance
   // would make the filter trust a reading exactly).
@@ -555,16 +578,20 @@ void filter_headings(const HeadingTrack& t, const model::VehicleParams& vehicle,
     // (the yaw rate relaxing toward fin + roll + random yaw, the heading by
     // the trapezoid), the random yaw decaying, and (P not null) the
     // covariance by its linearisation.
+    // The fast pole's state (`lead`) is the logged inputs' alone: carried
+    // beside the filter's, no variance of its own.
+    double lead = 0.0;
     auto step = [&](Eigen::Vector3d& x, std::size_t k, Eigen::Matrix3d* P) {
       double s = t.time_s[k];
       const double span = t.time_s[k + 1] - s;
       while (s < t.time_s[k + 1]) {
         const double h = std::min(kStepS, t.time_s[k + 1] - s);
         const double u = target(k, (s + 0.5 * h - t.time_s[k]) / span, s + 0.5 * h);
-        const double a = std::exp(-h / tau), phi = std::exp(-h / tau_d);
+        const double a = decay(h), phi = random_decay(h);
+        const double held = fast_pole_step(lead, u, h, tau, plant.fast, a, fast_decay(h));
         Eigen::Matrix3d F;
         F << 1.0, 0.5 * h * (1.0 + a), 0.5 * h * (1.0 - a), 0.0, a, 1.0 - a, 0.0, 0.0, phi;
-        x = F * x + Eigen::Vector3d(0.5 * h * (1.0 - a) * u, (1.0 - a) * u, 0.0);
+        x = F * x + Eigen::Vector3d(0.5 * h * (1.0 - a) * u + 0.5 * h * held, (1.0 - a) * u + held, 0.0);
         if (P != nullptr) {
           *P = F * *P * F.transpose();
           (*P)(2, 2) += var_d * (1.0 - phi * phi);
@@ -576,6 +603,7 @@ void filter_headings(const HeadingTrack& t, const model::VehicleParams& vehicle,
     Eigen::Vector3d x(t.heading_rad[first], std::isfinite(t.yaw_rate_rad_s[first]) ? t.yaw_rate_rad_s[first] : 0.0,
                       0.0);
     Eigen::Matrix3d P = Eigen::Vector3d(var_n, 4.0 * var_d + 1e-8, var_d).asDiagonal();
+    lead = target(first, 0.0, t.time_s[first]);
     for (std::size_t k = first; k + 1 < end; ++k) {
       step(x, k, &P);
       // The next reading: the innovation, then the update.

@@ -162,6 +162,7 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
                   {"servo", d.delay_servo_s},
                   {"after_fin", d.delay_after_fin_s},
                   {"total", d.delay_autopilot_s + d.delay_servo_s + d.delay_after_fin_s}};
+  j["yaw_fast_pole_s"] = {{"carried", d.yaw_fast_pole_s}, {"prior_max", d.yaw_fast_pole_max_s}};
   j["links"] = {{"servo", link_json(d.servo)}, {"vehicle", link_json(d.yaw)}, {"autopilot", link_json(d.autopilot)}};
   {
     const ClosedLoopCheck& c = d.closed_loop;
@@ -282,8 +283,9 @@ std::string heading_text(const HeadingDiagnosis& d) {
         "over %.0f s (likeliest)",
         rad_to_deg(d.yaw_noise.heading_rad), rad_to_deg(d.yaw_noise.disturbance_rad_s), d.yaw_noise.correlation_s);
   }
-  add("\n  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s\n", d.delay_autopilot_s,
-      d.delay_servo_s, d.delay_after_fin_s);
+  add("\n  loop dead time: autopilot %.1f s + servo %.1f s + after the fin %.1f s (beside a fast yaw pole of %.2f s, "
+      "prior 0-%.2f s)\n",
+      d.delay_autopilot_s, d.delay_servo_s, d.delay_after_fin_s, d.yaw_fast_pole_s, d.yaw_fast_pole_max_s);
   add("  heading cause: %s\n", d.cause.c_str());
   return out;
 }

@@ -6,14 +6,16 @@
 
 namespace glider::diagnose {
 
-bool drop_lag_within_resolution(LinkFit& yaw, const HeadingValues& nominal) {
+bool drop_lag_within_resolution(LinkFit& yaw, const HeadingValues& nominal, double fast_pole_s) {
   constexpr HeadingEffect kLag = HeadingEffect::kYawTimeConstant;
   const auto lag =
       std::find_if(yaw.findings.begin(), yaw.findings.end(), [](const HeadingFinding& f) { return f.effect == kLag; });
   if (lag == yaw.findings.end()) return false;
   // Either way: a fast pole adds to the slow one, the fin's roll turning the
   // glider back makes the yaw settle sooner (a lag of 1.25 s for 2 s).
-  if (!(std::abs(lag->value - at(nominal, kLag)) <= kYawLagResolutionS)) return false;
+  // The lag beside a fast pole the model carries reads shorter by it (the
+  // log measures their sum): compared as the lag a first-order yaw lumps.
+  if (!(std::abs(lag->value + fast_pole_s - at(nominal, kLag)) <= kYawLagResolutionS)) return false;
   yaw.within_resolution.push_back(*lag);
   yaw.findings.erase(lag);
   at(yaw.values, kLag) = at(nominal, kLag);

@@ -98,6 +98,10 @@ HeadingTrack prepare_heading_track(const flightlog::FlightLog& log, const model:
   HeadingTrack t;
   t.rate_half_window_s = options.rate_half_window_s;
   t.max_gap_s = gap;
+  t.yaw_fast_pole_max_s = options.yaw_fast_pole_max_s < 0.0 ? 0.5 * std::abs(vehicle.heading.yaw_time_constant_s)
+                                                            : options.yaw_fast_pole_max_s;
+  if (!std::isfinite(t.yaw_fast_pole_max_s)) t.yaw_fast_pole_max_s = 0.0;
+  t.yaw_fast_pole_s = 0.5 * t.yaw_fast_pole_max_s;
   // Times from the log's start: a delay's numerical derivative (steps of
   // 1e-8 s) would vanish in the rounding of Unix times (1e9 s).
   const double t0 = time.empty() ? 0.0 : time.front();

@@ -69,10 +69,17 @@ struct HeadingDiagnosis {
   // (the autopilot's cycle), c_fin -> m_fin (the servo), m_fin -> yaw
   // response (compass filtering, the vehicle).
   double delay_autopilot_s = 0.0, delay_servo_s = 0.0, delay_after_fin_s = 0.0;
+  // The yaw's fast pole the vehicle link's models carried, a prior (s), and
+  // its prior's upper end (HeadingTrackOptions::yaw_fast_pole_max_s): the
+  // after-fin delay is a dead time beside it, its interval widened by the
+  // prior (0: no fast pole).
+  double yaw_fast_pole_s = 0.0, yaw_fast_pole_max_s = 0.0;
 };
 
 struct HeadingDiagnoseOptions {
-  HeadingTrackOptions track;
+  // The diagnosis carries the yaw's fast pole (HeadingTrackOptions::
+  // yaw_fast_pole_max_s: half the vehicle file's yaw time constant).
+  HeadingTrackOptions track{.yaw_fast_pole_max_s = -1.0};
   std::size_t max_fit_samples = 4000;  // per half, even stride (the fits' cost)
   // Where the vehicle link names fin_effectiveness, roll_offset or
   // yaw_time_constant (chosen on the yaw rate of the logged fin, which reads

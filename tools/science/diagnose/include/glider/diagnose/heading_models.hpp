@@ -149,6 +149,37 @@ class AutopilotReplay {
   void replay(const HeadingValues& values);
   std::vector<double> predicted_;
 };
+// The fast pole the yaw carries (s): the prior's centre (HeadingTrack::
+// yaw_fast_pole_s) where a yaw delay is, at most that delay; none without
+// one. The yaw-delay effect stands for the yaw's late response - a dead
+// time behind a fast pole the log cannot tell apart - so without it the
+// nominal yaw stays the vehicle file's first-order one (a pole in the
+// nominal moved fits where no delay is: docs/science.md "The yaw's fast
+// pole"); at most the delay keeps the response continuous from no delay
+// (its lumped lag d + min(d, centre)).
+double carried_fast_pole(double prior_centre_s, double yaw_delay_s);
+
+// One step h of the yaw through the fast pole p (HeadingTrack::
+// yaw_fast_pole_s; 0: none) and the lag tau, the goal held over it (exact):
+// `lead`, the goal as the fast pole passes it, moves toward the goal; the
+// yaw rate's change beyond the first-order step toward the goal
+// (a = e^{-h/tau}) is returned - what the pole still holds back.
+// (b = e^{-h/p}, unused where p <= 0.)
+double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a, double b);
+
+// e^{-h/T} for the replays' steps: the full step's worked out once (nearly
+// every step is full; the same bits as each step's own), 0 where T <= 0.
+class StepDecay {
+ public:
+  StepDecay(double time_constant, double full_step)
+      : time_constant_(time_constant), full_step_(full_step), full_(of(full_step)) {}
+  double operator()(double h) const { return h == full_step_ ? full_ : of(h); }
+
+ private:
+  double of(double h) const { return time_constant_ > 0.0 ? std::exp(-h / time_constant_) : 0.0; }
+  double time_constant_, full_step_, full_;
+};
+
 void predict_yaw_rate(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
                       std::span<const std::size_t> samples, std::vector<double>& out);
 

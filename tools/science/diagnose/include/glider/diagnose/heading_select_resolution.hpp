@@ -25,9 +25,11 @@ namespace glider::diagnose {
 constexpr double kYawLagResolutionS = 1.25;
 
 // A named yaw time constant within kYawLagResolutionS of the vehicle
-// file's leaves the link's findings for `within_resolution`:
+// file's (with the fast pole the model carried added: what a first-order
+// yaw would have read; HeadingTrack::yaw_fast_pole_s) leaves the link's
+// findings for `within_resolution`:
 // its value back at the nominal, its pairs no longer stated. The other
 // findings stand as fitted. True when one was moved.
-bool drop_lag_within_resolution(LinkFit& yaw, const HeadingValues& nominal);
+bool drop_lag_within_resolution(LinkFit& yaw, const HeadingValues& nominal, double fast_pole_s = 0.0);
 
 }  // namespace glider::diagnose

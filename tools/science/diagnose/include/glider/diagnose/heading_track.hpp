@@ -39,6 +39,10 @@ struct HeadingTrack {
   std::vector<std::size_t> run_first;
   std::vector<std::size_t> scored;  // samples compared (after each run's settling)
   double rate_half_window_s = 0.0, max_gap_s = 0.0;
+  // The yaw's fast pole (s) the vehicle link's models carry behind the
+  // vehicle file's first-order lag, and the upper end of its prior (0 to
+  // it, uniform): HeadingTrackOptions::yaw_fast_pole_max_s.
+  double yaw_fast_pole_s = 0.0, yaw_fast_pole_max_s = 0.0;
 
   // Every log row (NaN where not logged): the servo and the autopilot.
   std::vector<double> row_time_s, row_heading_rad, row_command_rad, row_fin_rad, row_fin_command_rad, row_depth_m;
@@ -76,6 +80,23 @@ struct HeadingTrackOptions {
   // once the storing interval had passed (stored_on_change.hpp). false: a
   // full-resolution log, m_fin straight between its readings.
   bool fin_stored_on_change = false;
+  // The yaw's fast pole, a prior, not measured: a slender glider's yaw
+  // answers its tail fin through two coupled states (sway and yaw, Nomoto's
+  // second-order model; the fin's side force, the wings' roll-yaw coupling
+  // and the compass's own filtering add their own lags) - a dominant pole
+  // (the vehicle file's yaw time constant, which turn tests see) and a
+  // second, faster one that rows seconds apart cannot tell from a dead time
+  // (e^{-s p} ~ 1/(1 + s p)); a first-order yaw reads it as yaw delay. Its
+  // prior: uniform from 0 to this (s); the models carry its centre, and a
+  // yaw delay's interval is widened by the prior's spread along the ridge
+  // delay + pole = what the log measures (heading_diagnose.cpp). Negative:
+  // half the vehicle file's yaw time constant (a pole within a factor two of
+  // the dominant one is part of the lag a first-order turn test states);
+  // 0: no fast pole (the rule before; the default here, for the heading
+  // model's other users - health's fin, the heading study - where it was not
+  // measured; the diagnosis's default is on: HeadingDiagnoseOptions).
+  // docs/science.md "The yaw's fast pole".
+  double yaw_fast_pole_max_s = 0.0;
 };
 
 // A setting the log states in its `settings_at_file_open` metadata
