@@ -18,11 +18,12 @@ A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
 
   check_ambiguous_beside.py GLIDER_TRUTH GLIDER_DIAGNOSE VEHICLES_DIR WORKDIR [DRAWS]
 """
-import json
 import os
 import random
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, fly, vehicle_file  # noqa: E402
 
 RATIOS = {'drag_change', 'lift_change'}  # nominal 1; every other effect's nominal is 0
 RELATIVE, ABSOLUTE = 0.03, 0.0005  # DiagnoseOptions::margins
@@ -99,16 +100,9 @@ def main(truth, diagnose, vehicles, workdir, draws=12):
         variant = rng.choice(['shallow', 'deep'])
         draw_seed = rng.randrange(1, 2**62)
         log = os.path.join(workdir, 'beside_%d.csv' % draw_seed)
-        subprocess.run([truth, '--variant', variant, '--seed', str(draw_seed), '--effect',
-                        'buoyancy_offset=%.6g' % grams, '--effect', 'vertical_water_velocity=%.6g' % water,
-                        '--out', log], check=True, capture_output=True, timeout=120)
-        vehicle = os.path.join(vehicles, 'slocum_we01.toml' if variant == 'deep' else 'slocum_shallow.toml')
-        run = subprocess.run([diagnose, log, '--vehicle', vehicle, '--plane', 'vertical', '--json'],
-                             capture_output=True, text=True, timeout=300)
-        if run.returncode != 0:
-            print('FAIL: glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-400:]))
-            return 1
-        document = json.loads(run.stdout)
+        fly(truth, variant, draw_seed, {'buoyancy_offset': grams, 'vertical_water_velocity': water}, log, yos=None,
+            value_format='%.6g')
+        document = diagnose_log(diagnose, log, vehicle_file(vehicles, variant), timeout=300)
         failures, fired = check(document)
         print('draw %d (%s, truth seed %d): offset %+.1f g, water %+.4f m/s; findings %s; readings beside %d, '
               'stated ambiguous beside %d' % (draw, variant, draw_seed, grams, water,

@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: Apache-2.0
-"""One draw of the independent truth, diagnosed as a black box: the step the
-vertical plane's truth-draw tests share (tests/density_from_start,
-tests/diagnose_intervals, tests/diagnose_pump_lag, tests/reynolds_drag,
-tests/reynolds_prior_interval, tests/zero_width).
+"""One draw of the independent truth, diagnosed as a black box: the one way the tests fly a log of the truth
+simulator (tools/science/truth, glider-truth) with hidden effects, pick the vehicle file its variant flies, and read
+glider-diagnose's JSON on it (tests/ambiguous_beside, tests/density_from_start, tests/depth_lag_form,
+tests/diagnose_intervals, tests/diagnose_pump_lag, tests/heading_plane, tests/identifiability,
+tests/lift_velocity_misses, tests/offset_misses, tests/reynolds_drag, tests/reynolds_prior_interval,
+tests/unnamed_volume_terms, tests/zero_width).
 
 A script puts this directory on its path and imports it:
 
@@ -14,24 +16,43 @@ import os
 import subprocess
 import sys
 
+# The vehicle file each of the truth's variants flies (boards/vehicles): its nominal polar and hull.
+VEHICLE_OF_VARIANT = {'shallow': 'slocum_shallow.toml', 'deep': 'slocum_we01.toml'}
 
-def fly(truth, variant, seed, effects, log, truth_json=None, yos=6):
-    """Write the truth's log of `yos` yos (and its JSON when asked) with the hidden `effects` {id: value}."""
-    command = [truth, '--variant', variant, '--seed', str(seed), '--yos', str(yos), '--out', log]
+
+def vehicle_file(vehicles, variant):
+    """The vehicle file the truth's `variant` flies, in the directory `vehicles` (a checkout's boards/vehicles)."""
+    return os.path.join(vehicles, VEHICLE_OF_VARIANT[variant])
+
+
+def truth_command(truth, variant, seed, effects, log, truth_json=None, yos=6, value_format='%.9g'):
+    """glider-truth's command line: `yos` yos (None: the truth's default), the truth's JSON when asked, the hidden
+    `effects` {id: value}, each value written with `value_format` (the digits a test has always drawn with)."""
+    command = [truth, '--variant', variant, '--seed', str(seed)]
+    if yos is not None:
+        command += ['--yos', str(yos)]
+    command += ['--out', log]
     if truth_json:
         command += ['--truth', truth_json]
     for effect, value in effects.items():
-        command += ['--effect', '%s=%.9g' % (effect, value)]
-    subprocess.run(command, check=True, capture_output=True, timeout=120)
+        command += ['--effect', ('%s=' + value_format) % (effect, value)]
+    return command
 
 
-def diagnose_log(program, log, vehicle, extra=()):
-    """glider-diagnose's vertical plane on `log` (`extra`: more arguments, e.g. --fit): its JSON.
+def fly(truth, variant, seed, effects, log, truth_json=None, yos=6, value_format='%.9g', timeout=120):
+    """Write the truth's log (and its JSON when asked) with the hidden `effects` {id: value}: truth_command's
+    arguments. A failed flight fails the test (CalledProcessError)."""
+    subprocess.run(truth_command(truth, variant, seed, effects, log, truth_json, yos, value_format), check=True,
+                   capture_output=True, timeout=timeout)
+
+
+def diagnose_log(program, log, vehicle, extra=(), plane='vertical', timeout=120):
+    """glider-diagnose's `plane` on `log` (`extra`: more arguments, e.g. --fit): its JSON.
     A failed run fails the test, naming the exit code and the end of its message."""
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'vertical', '--json', *extra],
-                         capture_output=True, text=True, timeout=120)
+    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', plane, '--json', *extra],
+                         capture_output=True, text=True, timeout=timeout)
     if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
+        sys.exit('FAIL glider-diagnose exit %d on %s: %s' % (run.returncode, log, run.stderr[-300:]))
     return json.loads(run.stdout)
 
 

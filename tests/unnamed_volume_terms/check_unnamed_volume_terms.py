@@ -17,11 +17,13 @@ A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
 
   check_unnamed_volume_terms.py GLIDER_TRUTH GLIDER_DIAGNOSE VEHICLES_DIR WORKDIR [DRAWS]
 """
-import json
 import os
 import random
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, fly, vehicle_file  # noqa: E402
 
 TERMS = ('hull_compressibility', 'thermal_expansion')
 
@@ -77,17 +79,9 @@ def main(truth, diagnose, vehicles, workdir, draws=4):
         variant = rng.choice(['shallow', 'deep'])
         draw_seed = rng.randrange(1, 2**62)
         log = os.path.join(workdir, 'unnamed_%d.csv' % draw_seed)
-        command = [truth, '--variant', variant, '--seed', str(draw_seed), '--out', log]
-        for effect, value in hidden.items():
-            command += ['--effect', '%s=%.6g' % (effect, value)]
-        subprocess.run(command, check=True, capture_output=True, timeout=120)
-        vehicle = os.path.join(vehicles, 'slocum_we01.toml' if variant == 'deep' else 'slocum_shallow.toml')
-        run = subprocess.run([diagnose, log, '--vehicle', vehicle, '--plane', 'vertical', '--json'],
-                             capture_output=True, text=True, timeout=300)
-        if run.returncode != 0:
-            print('FAIL: glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-400:]))
-            return 1
-        document = json.loads(run.stdout)
+        fly(truth, variant, draw_seed, hidden, log, yos=None, value_format='%.6g')
+        vehicle = vehicle_file(vehicles, variant)
+        document = diagnose_log(diagnose, log, vehicle, timeout=300)
         print('draw %d (%s, truth seed %d): hidden %s; findings %s' % (
             draw, variant, draw_seed, {e: '%.3g' % v for e, v in hidden.items()},
             [(f['effect'], '%.4g' % f['value']) for f in document['findings']]))

@@ -15,8 +15,10 @@ how often it was stated seen (a false "seen").
 import argparse
 import json
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, vehicle_file  # noqa: E402
 
 TERMS = ('hull_compressibility', 'thermal_expansion')
 
@@ -24,13 +26,8 @@ TERMS = ('hull_compressibility', 'thermal_expansion')
 def diagnose_kept(r, directory, diagnose, source):
     name = '%s_%d' % (r['case'].replace('+', '-'), r['seed'])
     log = os.path.join(directory, name + '.csv')
-    vehicle = os.path.join(source, 'boards', 'vehicles',
-                           'slocum_we01.toml' if r['variant'] == 'deep' else 'slocum_shallow.toml')
-    run = subprocess.run([diagnose, log, '--vehicle', vehicle, '--plane', 'vertical', '--json'],
-                         capture_output=True, text=True, timeout=900)
-    if run.returncode != 0:
-        raise RuntimeError('%s: exit %d %s' % (log, run.returncode, run.stderr[-300:]))
-    return json.loads(run.stdout)
+    return diagnose_log(diagnose, log, vehicle_file(os.path.join(source, 'boards', 'vehicles'), r['variant']),
+                        timeout=900)
 
 
 def same_findings(r, document):
