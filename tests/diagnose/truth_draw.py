@@ -39,11 +39,20 @@ def truth_command(truth, variant, seed, effects, log, truth_json=None, yos=6, va
     return command
 
 
-def fly(truth, variant, seed, effects, log, truth_json=None, yos=6, value_format='%.9g', timeout=120):
-    """Write the truth's log (and its JSON when asked) with the hidden `effects` {id: value}: truth_command's
-    arguments. A failed flight fails the test (CalledProcessError)."""
-    subprocess.run(truth_command(truth, variant, seed, effects, log, truth_json, yos, value_format), check=True,
-                   capture_output=True, timeout=timeout)
+def run_truth(truth, variant, seed, effects, log, truth_json=None, yos=6, value_format='%.9g', timeout=120):
+    """glider-truth on truth_command's arguments: the finished run (its exit code and message are the caller's to
+    judge; fly fails the test on a failed flight)."""
+    return subprocess.run(truth_command(truth, variant, seed, effects, log, truth_json, yos, value_format),
+                          capture_output=True, text=True, timeout=timeout)
+
+
+def fly(*args, **kwargs):
+    """Write the truth's log (and its JSON when asked) with the hidden `effects` {id: value}: run_truth's
+    arguments. A failed flight fails the test, naming its command line and the end of its message."""
+    made = run_truth(*args, **kwargs)
+    if made.returncode != 0:
+        sys.exit('FAIL glider-truth exit %d (%s): %s' % (made.returncode, ' '.join(made.args),
+                                                         made.stderr.strip()[-300:]))
 
 
 def diagnose_log(program, log, vehicle, extra=(), plane='vertical', timeout=120):

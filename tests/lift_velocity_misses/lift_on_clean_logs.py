@@ -17,8 +17,10 @@ import json
 import os
 import random
 import statistics
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, findings, fly, vehicle_file  # noqa: E402
 
 
 def fresh_seed():
@@ -34,20 +36,15 @@ def main(truth, diagnose, vehicles, workdir, logs=30, variant='shallow'):
     print('seed %d (replay: GLIDER_TEST_SEED=%d), %s logs' % (seed, seed, variant))
     rng = random.Random(seed)
     os.makedirs(workdir, exist_ok=True)
-    vehicle = os.path.join(vehicles, 'slocum_we01.toml' if variant == 'deep' else 'slocum_shallow.toml')
+    vehicle = vehicle_file(vehicles, variant)
     rows = []
     for _ in range(int(logs)):
         draw = rng.randrange(1, 2**62)
         log = os.path.join(workdir, 'clean_%d.csv' % draw)
         truth_file = log + '.truth.json'
-        subprocess.run([truth, '--variant', variant, '--seed', str(draw), '--out', log, '--truth', truth_file],
-                       check=True, capture_output=True, timeout=300)
-        run = subprocess.run([diagnose, log, '--vehicle', vehicle, '--plane', 'vertical', '--json', '--fit',
-                              'water_density,lift_change'], capture_output=True, text=True, timeout=300)
-        if run.returncode != 0:
-            print('glider-diagnose exit %d on %s: %s' % (run.returncode, log, run.stderr[-300:]))
-            return 1
-        lift = {f['effect']: f for f in json.loads(run.stdout)['findings']}['lift_change']
+        fly(truth, variant, draw, {}, log, truth_json=truth_file, yos=None, timeout=300)
+        lift = findings(diagnose_log(diagnose, log, vehicle, ['--fit', 'water_density,lift_change'],
+                                     timeout=300))['lift_change']
         with open(truth_file) as f:
             unmodelled = json.load(f)['unmodelled']
         row = {'lift': lift['value'], 'low': lift['ci95'][0], 'high': lift['ci95'][1],

@@ -25,7 +25,10 @@ import argparse
 import collections
 import json
 import os
-import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, vehicle_file  # noqa: E402
 
 EFFECT = 'buoyancy_offset'
 NOT_PARTNERS = {'water_density', 'pitch_trim_offset'}
@@ -80,10 +83,8 @@ def classify(draw, other_side=None):
 def other_side_of(draw, logs, diagnose, vehicles):
     """The offset's reading as a stated ambiguity's alternative, from the log diagnosed again (None if none)."""
     name = '%s_%d' % (draw['case'].replace('+', '-'), draw['seed'])
-    vehicle = os.path.join(vehicles, 'slocum_we01.toml' if draw['variant'] == 'deep' else 'slocum_shallow.toml')
-    done = subprocess.run([diagnose, os.path.join(logs, name + '.csv'), '--vehicle', vehicle, '--json', '--plane',
-                           'vertical'], capture_output=True, text=True, check=True)
-    return other_side_in(json.loads(done.stdout))
+    log = os.path.join(logs, name + '.csv')
+    return other_side_in(diagnose_log(diagnose, log, vehicle_file(vehicles, draw['variant']), timeout=None))
 
 
 def other_side_in(report):
