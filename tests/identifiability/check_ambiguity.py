@@ -14,13 +14,14 @@ A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
 
   check_ambiguity.py GLIDER_TRUTH GLIDER_DIAGNOSE VEHICLE WORKDIR
 """
-import json
 import os
 import random
-import subprocess
 import sys
 
 from screen_checks import stated_under_screen
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import diagnose_log, fly  # noqa: E402
 
 
 def fresh_seed():
@@ -29,17 +30,12 @@ def fresh_seed():
 
 
 def fly_and_diagnose(truth, diagnose, vehicle, workdir, seed, effect, value, plane):
-    """A shallow truth log with one hidden effect, diagnosed in one plane: its JSON, or None (printed)."""
+    """A shallow truth log of the truth's default yos with one hidden effect (its value written in full),
+    diagnosed in one plane: its JSON."""
     os.makedirs(workdir, exist_ok=True)
     log = os.path.join(workdir, f"{effect}_{seed}.csv")
-    subprocess.run([truth, "--variant", "shallow", "--effect", f"{effect}={value}", "--seed", str(seed),
-                    "--out", log], check=True, capture_output=True, timeout=120)
-    run = subprocess.run([diagnose, log, "--vehicle", vehicle, "--plane", plane, "--json"],
-                         capture_output=True, text=True, timeout=300)
-    if run.returncode != 0:
-        print(f"FAIL: glider-diagnose exit {run.returncode}: {run.stdout[-400:]} {run.stderr[-400:]}")
-        return None
-    return json.loads(run.stdout)
+    fly(truth, "shallow", seed, {effect: value}, log, yos=None, value_format="%r")
+    return diagnose_log(diagnose, log, vehicle, plane=plane, timeout=300)
 
 
 def main(truth, diagnose, vehicle, workdir):
@@ -48,8 +44,6 @@ def main(truth, diagnose, vehicle, workdir):
     grams = rng.choice([-1, 1]) * rng.uniform(30.0, 80.0)
     print(f"seed {seed} (replay: GLIDER_TEST_SEED={seed}): hidden buoyancy_offset {grams:+.1f} g")
     d = fly_and_diagnose(truth, diagnose, vehicle, workdir, seed, "buoyancy_offset", grams, "vertical")
-    if d is None:
-        return 1
     named = {f["effect"]: f for f in d["findings"]}
     print("findings:", {k: round(v["value"], 5) for k, v in named.items()})
     print("ambiguous:", [(a["effect"], a["alternative"], round(a["alternative_value"], 5),

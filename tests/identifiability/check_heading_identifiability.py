@@ -21,10 +21,12 @@ diagnosis's own estimator).
 import json
 import os
 import random
-import subprocess
 import sys
 
 from check_ambiguity import fresh_seed
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import fly, vehicle_file  # noqa: E402
 
 FIXED_SEED = 5553954220748243502
 FIXED_EFFECTS = {'fin_effectiveness': 1.948219, 'yaw_time_constant': 12.2453675}
@@ -35,16 +37,11 @@ def measured(truth, diagnose, vehicles, workdir, seed, variant, effects):
     import identifiability
     log = os.path.join(workdir, f'heading_{seed}.csv')
     truth_path = log[:-4] + '.json'
-    command = [truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log, '--truth', truth_path]
-    for e, v in effects.items():
-        command += ['--effect', f'{e}={v:.9g}']
-    made = subprocess.run(command, capture_output=True, text=True, timeout=120)
-    if made.returncode != 0:
-        raise RuntimeError('glider-truth: ' + made.stderr.strip()[-300:])
+    fly(truth, variant, seed, effects, log, truth_json=truth_path)
     with open(truth_path) as f:
         hidden = json.load(f)['effects']
-    vehicle = os.path.join(vehicles, 'slocum_we01.toml' if variant == 'deep' else 'slocum_shallow.toml')
-    out = identifiability.measure(diagnose, log, vehicle, hidden, coverage.nominal, coverage.plane_of, timeout=120)
+    out = identifiability.measure(diagnose, log, vehicle_file(vehicles, variant), hidden, coverage.nominal,
+                                  coverage.plane_of, timeout=120)
     for e, m in out.items():
         print(f"  {e} truth {hidden[e]:.4g}: forced fit {m['value']} {m['ci95']}, z {m['z']}, "
               f"identifiable {m['identifiable']} {m.get('not_judged', '')}")

@@ -17,10 +17,12 @@ A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
 import json
 import os
 import random
-import subprocess
 import sys
 
 from check_ambiguity import fresh_seed
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import run_truth, vehicle_file  # noqa: E402
 
 
 def main(truth, diagnose, benchmarks, vehicles, workdir):
@@ -33,9 +35,7 @@ def main(truth, diagnose, benchmarks, vehicles, workdir):
 
     def make(seed, variant, size):
         log = os.path.join(workdir, f'thermal_{size:g}_{seed}.csv')
-        made = subprocess.run([truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log,
-                               '--truth', log[:-4] + '.json', '--effect', f'thermal_expansion={size:.9g}'],
-                              capture_output=True, text=True, timeout=120)
+        made = run_truth(truth, variant, seed, {'thermal_expansion': size}, log, truth_json=log[:-4] + '.json')
         return log, made
 
     # The large expansion (10x a real hull's) makes some draws' warm surface
@@ -51,7 +51,7 @@ def main(truth, diagnose, benchmarks, vehicles, workdir):
         print(f'glider-truth cannot fly seed {seed} ({variant}) with 3e-4 /K: {made.stderr.strip()[-120:]}; '
               'drawing another')
         seed = random.Random(seed).randrange(1, 2**31)
-    vehicle = os.path.join(vehicles, 'slocum_shallow.toml' if variant == 'shallow' else 'slocum_we01.toml')
+    vehicle = vehicle_file(vehicles, variant)
     print(f'draw seed {seed}, {variant} variant')
     failed = False
     for size, expected in ((3e-4, True), (2e-6, False)):
