@@ -75,3 +75,12 @@ def fly_and_diagnose(truth, program, vehicle, out, name, variant, seed, effects)
 def findings(document):
     """The JSON's findings by effect id."""
     return {f['effect']: f for f in document['findings']}
+
+
+def heading_findings(document):
+    """The heading plane's findings of every link by effect id."""
+    found = {}
+    for link in (document.get('heading') or {}).get('links', {}).values():
+        for f in link.get('findings', []) or []:
+            found[f['effect']] = f
+    return found

@@ -22,13 +22,13 @@ With both clocks fitted the link keeps what both name, at the middle of
 the two readings, its interval spanning both. The same draws diagnosed
 with `--autopilot-clock measured` must fail (the rule is what passes).
 """
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from check_fin_or_roll import finish, fly  # noqa: E402
+from truth_draw import diagnose_log  # noqa: E402
 
 AUTOPILOT_LINK = {'autopilot_gain', 'autopilot_integral', 'autopilot_dgain', 'autopilot_delay', 'autopilot_deadband'}
 DRAWS = (('shallow', 3101744281786930969, {'yaw_time_constant': 6.39922825}),
@@ -38,11 +38,8 @@ DRAWS = (('shallow', 3101744281786930969, {'yaw_time_constant': 6.39922825}),
 
 
 def autopilot_findings(program, log, vehicle, extra):
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json'] + extra,
-                         capture_output=True, text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    link = ((json.loads(run.stdout).get('heading') or {}).get('links') or {}).get('autopilot') or {}
+    document = diagnose_log(program, log, vehicle, extra, plane='heading')
+    link = ((document.get('heading') or {}).get('links') or {}).get('autopilot') or {}
     return {f['effect']: f for f in link.get('findings', []) or []}
 
 

@@ -47,24 +47,21 @@ stood):
   it missed 0.045 by a hair with either integrator on one draw - the heading
   plane's intervals are another rule's.)
 """
-import json
 import os
 import random
 import secrets
 import statistics
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from check_fin_or_roll import fly  # noqa: E402
+from truth_draw import diagnose_log  # noqa: E402
 
 
 def diagnose(program, log, vehicle, integrator):
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json',
-                          '--autopilot-integrator', integrator], capture_output=True, text=True, timeout=300)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d on %s: %s' % (run.returncode, log, run.stderr[-300:]))
-    heading = json.loads(run.stdout)['heading']
+    heading = diagnose_log(program, log, vehicle, ['--autopilot-integrator', integrator], plane='heading',
+                           timeout=300)['heading']
     return heading['links']['autopilot'], heading['autopilot_integrator']
 
 

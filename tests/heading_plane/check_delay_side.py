@@ -28,24 +28,20 @@ benchmarks/diagnose_truth_coverage.py), diagnosed as a black box
 The first two fail with the code before the rule (lead 1c8032b's binary:
 no such pair, no split stated, the interval [4, 7]).
 """
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from check_fin_or_roll import finish, fly  # noqa: E402
+from truth_draw import diagnose_log  # noqa: E402
 
 VEHICLE_ABSOLUTE = 0.0002  # the vehicle link's absolute margin (rad/s), heading_diagnose.cpp
 
 
 def links_of(truth, program, source, out, variant, seed, effects):
     log, vehicle = fly(truth, source, out, variant, seed, effects, prefix='delay_side')
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json'], capture_output=True,
-                         text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    links = json.loads(run.stdout)['heading']['links']
+    links = diagnose_log(program, log, vehicle, plane='heading')['heading']['links']
     for name, link in links.items():
         print(' ', name, [(f['effect'], round(f['value'], 3), [round(x, 2) for x in f['ci95']])
                           for f in link['findings']],

@@ -17,35 +17,25 @@ a black box (`glider-diagnose --plane heading --json`):
   named nothing. The roll offset must be named, its interval holding the
   truth, and no fin.
 """
-import json
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+import truth_draw  # noqa: E402
 
 
 def fly(truth, source, out, variant, seed, effects, prefix='fin_or_roll'):
-    """A truth log of 6 yos with these effects hidden, and its variant's vehicle file."""
+    """A truth log of 6 yos with these effects hidden (its truth beside it as .json), and its variant's vehicle
+    file in the checkout `source`."""
     log = os.path.join(out, '%s_%d.csv' % (prefix, seed))
-    command = [truth, '--variant', variant, '--seed', str(seed), '--yos', '6', '--out', log, '--truth',
-               os.path.join(out, '%s_%d.json' % (prefix, seed))]
-    for effect, value in effects.items():
-        command += ['--effect', '%s=%.9g' % (effect, value)]
-    subprocess.run(command, check=True, capture_output=True, timeout=120)
-    return log, os.path.join(source, 'boards', 'vehicles', 'slocum_we01.toml' if variant == 'deep' else
-                             'slocum_shallow.toml')
+    truth_draw.fly(truth, variant, seed, effects, log, truth_json=os.path.join(out, '%s_%d.json' % (prefix, seed)))
+    return log, truth_draw.vehicle_file(os.path.join(source, 'boards', 'vehicles'), variant)
 
 
 def diagnose(truth, program, source, out, variant, seed, effects):
+    """The heading plane's findings by effect on fly's log."""
     log, vehicle = fly(truth, source, out, variant, seed, effects)
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json'], capture_output=True,
-                         text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    found = {}
-    for link in (json.loads(run.stdout).get('heading') or {}).get('links', {}).values():
-        for f in link.get('findings', []) or []:
-            found[f['effect']] = f
-    return found
+    return truth_draw.heading_findings(truth_draw.diagnose_log(program, log, vehicle, plane='heading'))
 
 
 def check(failures, found, effect, truth, absent):

@@ -12,28 +12,19 @@ and -0.113 rad [-0.159, -0.067] (drag 1.479). The vertical plane must name
 the drag (its interval holding the truth) and the heading plane's vehicle
 link must name nothing.
 """
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from check_fin_or_roll import VEHICLE_LINK, finish, fly  # noqa: E402
+from truth_draw import diagnose_log, findings, heading_findings  # noqa: E402
 
 
 def both_planes(truth, program, source, out, seed, drag):
     log, vehicle = fly(truth, source, out, 'shallow', seed, {'drag_change': drag}, prefix='flown_vehicle')
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'both', '--json'], capture_output=True,
-                         text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    document = json.loads(run.stdout)
-    vertical = {f['effect']: f for f in document.get('findings', [])}
-    heading = {}
-    for link in (document.get('heading') or {}).get('links', {}).values():
-        for f in link.get('findings', []) or []:
-            heading[f['effect']] = f
-    return vertical, heading
+    document = diagnose_log(program, log, vehicle, plane='both')
+    return findings(document), heading_findings(document)
 
 
 def check(failures, vertical, heading, drag):

@@ -17,24 +17,20 @@ Fixed draws of the independent truth, diagnosed as a black box
 
 The first fails with the code before the rule (lead 165d1b2's binary).
 """
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from check_fin_or_roll import check, finish, fly  # noqa: E402
+from truth_draw import diagnose_log  # noqa: E402
 
 
 def diagnose_with_resolution(truth, program, source, out, variant, seed, effects):
     """The findings of every link by effect, and the vehicle link's lags left at the nominal as within the model's
     resolution."""
     log, vehicle = fly(truth, source, out, variant, seed, effects)
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json'], capture_output=True,
-                         text=True, timeout=120)
-    if run.returncode != 0:
-        sys.exit('FAIL glider-diagnose exit %d: %s' % (run.returncode, run.stderr[-300:]))
-    links = json.loads(run.stdout)['heading']['links']
+    links = diagnose_log(program, log, vehicle, plane='heading')['heading']['links']
     found = {f['effect']: f for link in links.values() for f in link.get('findings', []) or []}
     return found, [x['effect'] for x in links['vehicle'].get('within_resolution', [])]
 

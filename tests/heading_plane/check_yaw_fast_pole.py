@@ -29,22 +29,18 @@ rate in docs/science.md.
 import json
 import os
 import random
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from check_fin_or_roll import finish, fly  # noqa: E402
+from truth_draw import diagnose_log, heading_findings  # noqa: E402
 
 
 def forced(program, log, vehicle, extra):
-    run = subprocess.run([program, log, '--vehicle', vehicle, '--plane', 'heading', '--json', '--fit', 'yaw_delay'] +
-                         extra, capture_output=True, text=True, timeout=120)
-    if run.returncode != 0:
-        return None, 'glider-diagnose %s exit %d: %s' % (' '.join(extra), run.returncode, run.stderr.strip()[-200:])
-    for link in (json.loads(run.stdout).get('heading') or {}).get('links', {}).values():
-        for f in link.get('findings', []) or []:
-            if f['effect'] == 'yaw_delay':
-                return f, None
+    found = heading_findings(diagnose_log(program, log, vehicle, ['--fit', 'yaw_delay'] + extra, plane='heading'))
+    if 'yaw_delay' in found:
+        return found['yaw_delay'], None
     return None, 'no yaw_delay fitted with %s' % ' '.join(extra or ['the default'])
 
 
