@@ -23,10 +23,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import findings, fly_and_diagnose  # noqa: E402
+from truth_draw import findings, fly_and_diagnose, vehicle_file  # noqa: E402
 
 DRAWS = [('shallow', 8490527760697439514, 67.9466049), ('deep', 7891877463615551685, 51.8400814)]
-VEHICLES = {'shallow': 'slocum_shallow.toml', 'deep': 'slocum_we01.toml'}
 
 
 def main():
@@ -34,7 +33,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     failures = []
     for variant, seed, hidden in DRAWS:
-        found = findings(fly_and_diagnose(truth, program, os.path.join(vehicles, VEHICLES[variant]), out, 'offset',
+        found = findings(fly_and_diagnose(truth, program, vehicle_file(vehicles, variant), out, 'offset',
                                           variant, seed, {'buoyancy_offset': hidden}))
         print('seed %d (%s, %+.2f g hidden): %s' % (seed, variant, hidden, ', '.join(
             '%s %.4g' % (e, f['value']) for e, f in found.items())))

@@ -24,11 +24,10 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import findings, fly_and_diagnose  # noqa: E402
+from truth_draw import findings, fly_and_diagnose, vehicle_file  # noqa: E402
 
 # (variant, draw, hidden depth_lag, whether the interval must hold the sensor's lag)
 DRAWS = [('deep', 2680680663490489252, 2.84277176, True), ('shallow', 4518048623072845807, 3.79327902, False)]
-VEHICLES = {'deep': 'slocum_we01.toml', 'shallow': 'slocum_shallow.toml'}
 
 
 def check(failures, seed, document, sensor_s, holds):
@@ -60,7 +59,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     failures = []
     for variant, seed, hidden, holds in DRAWS:
-        document = fly_and_diagnose(truth, program, os.path.join(vehicles, VEHICLES[variant]), out, 'depth_lag_form',
+        document = fly_and_diagnose(truth, program, vehicle_file(vehicles, variant), out, 'depth_lag_form',
                                     variant, seed, {'depth_lag': hidden})
         with open(os.path.join(out, 'depth_lag_form_%d.json' % seed), encoding='utf-8') as f:
             sensor_s = json.load(f)['flight']['depth_sensor_lag_s']

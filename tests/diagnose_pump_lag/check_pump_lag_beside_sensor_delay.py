@@ -25,11 +25,10 @@ import sys
 from lag_checks import check_reading
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import findings, fly_and_diagnose  # noqa: E402
+from truth_draw import findings, fly_and_diagnose, vehicle_file  # noqa: E402
 
 DRAWS = [('shallow', 6119193044091381611, {'pump_lag': 10.7617069, 'depth_lag': 3.10057961}),
          ('deep', 5294563063785569109, {'pump_lag': 19.6257713, 'depth_lag': 0.506734563})]
-VEHICLES = {'shallow': 'slocum_shallow.toml', 'deep': 'slocum_we01.toml'}
 
 
 def main():
@@ -37,7 +36,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     failures = []
     for variant, seed, effects in DRAWS:
-        document = fly_and_diagnose(truth, program, os.path.join(vehicles, VEHICLES[variant]), out, 'sensor_delay',
+        document = fly_and_diagnose(truth, program, vehicle_file(vehicles, variant), out, 'sensor_delay',
                                     variant, seed, effects)
         found = findings(document)
         hidden = effects['pump_lag']
