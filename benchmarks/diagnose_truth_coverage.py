@@ -41,6 +41,9 @@ import time
 
 import identifiability
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tests', 'diagnose'))
+from truth_draw import run_truth, vehicle_file  # noqa: E402  (the tests' one way to fly the truth)
+
 VERTICAL = ['buoyancy_offset', 'drag_change', 'hull_compressibility', 'thermal_expansion', 'vertical_water_velocity',
             'pitch_trim_offset', 'pump_lag', 'lift_change', 'depth_lag']
 HEADING = ['fin_delay', 'fin_deadband', 'yaw_delay', 'fin_effectiveness', 'roll_offset', 'yaw_time_constant',
@@ -128,18 +131,14 @@ def run_draw(args, case, seed):
     rng = random.Random(seed)
     effects = {e: SIZES[e](rng) for e in case.split('+') if e != 'none'}
     variant = 'deep' if rng.random() < 0.5 else 'shallow'
-    vehicle = os.path.join(args.source, 'boards', 'vehicles', 'slocum_we01.toml' if variant == 'deep' else
-                           'slocum_shallow.toml')
+    vehicle = vehicle_file(os.path.join(args.source, 'boards', 'vehicles'), variant)
     name = '%s_%d' % (case.replace('+', '-'), seed)
     log = os.path.join(args.out, name + '.csv')
     truth_path = os.path.join(args.out, name + '.json')
     result = {'case': case, 'seed': seed, 'variant': variant, 'ok': False}
-    command = [args.truth, '--variant', variant, '--seed', str(seed), '--yos', str(args.yos), '--out', log,
-               '--truth', truth_path]
-    for e, v in effects.items():
-        command += ['--effect', '%s=%.9g' % (e, v)]
     start = time.monotonic()
-    made = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
+    made = run_truth(args.truth, variant, seed, effects, log, truth_json=truth_path, yos=args.yos,
+                     timeout=args.timeout)
     result['truth_s'] = time.monotonic() - start
     if made.returncode != 0:
         result['error'] = 'glider-truth: ' + (made.stderr.strip() or made.stdout.strip())[-300:]
