@@ -36,7 +36,10 @@ Usage: forecast_real.py --build BUILD_DIR [--source SOURCE_DIR] [--out DIR] [--r
        [--deployment comet-2019|comet-2016|all]
        [--current-prior evidence|fixed|off] [--prior-position-sigma M] [--speed-correction] [--no-speed-correction] [--pitch-calibration]
        [--no-glider-dead-reckoning] [--no-depth-rate-calibration] [--depth-rate-drag] [--from-glider]
-       [--check]
+       [--tide FILE | --tide-leave-out CONSTITUENTS] [--check]
+--tide FILE passes the pilot's tide table to every forecast; --tide-leave-out M2[,K1..] fits it for each forecast
+from the same deployment's depth-averaged currents without the dive being scored (glider-forecast fit-tide
+--exclude-from/--exclude-to), and flies without one where the fit refuses (printed: a record too short).
 """
 import argparse
 import csv
@@ -196,7 +199,27 @@ def forecast_options(a):
             (["--no-glider-dead-reckoning"] if a.no_glider_dead_reckoning else []) +
             (["--no-depth-rate-calibration"] if a.no_depth_rate_calibration else []) +
             (["--depth-rate-drag"] if a.depth_rate_drag else []) +
-            (["--prior-position-sigma", str(a.prior_position_sigma)] if a.prior_position_sigma is not None else []))
+            (["--prior-position-sigma", str(a.prior_position_sigma)] if a.prior_position_sigma is not None else []) +
+            (["--tide", a.tide] if a.tide else []))
+
+
+def leave_out_tide(a, forecast, out, case):
+    """The tide table fitted to the case's whole deployment but the dive it scores (None: the fit refused)."""
+    d = os.path.join(out, case["dir"] + "_tide", case["glider"])
+    shutil.rmtree(os.path.dirname(d), ignore_errors=True)
+    os.makedirs(os.path.join(d, "logs"))
+    for i, e in enumerate(case["deployment_events"]):
+        with open(os.path.join(d, "logs", case["log_name"] % (i, i + 1)), "w") as f:
+            json.dump(e, f, indent=2)
+    table = os.path.join(os.path.dirname(d), "tide.toml")
+    dive = case["events"][-1]["call_end_utc"]
+    run = subprocess.run([forecast, "fit-tide", "--glider-dir", d, "--constituents", a.tide_leave_out,
+                          "--exclude-from", dive, "--exclude-to", utc(case["truth"]["up"]), "--out", table],
+                         capture_output=True, text=True)
+    print("%sfrom surfacing %d: tide fitted without the dive %s-%s: %s" %
+          (case["label"], case["k"], dive, utc(case["truth"]["up"]),
+           "table %s" % table if run.returncode == 0 else "refused (%s)" % run.stderr.strip()))
+    return table if run.returncode == 0 else None
 
 
 def t_utc(s):
@@ -229,8 +252,12 @@ def run_case(a, forecast, vehicle, out, case):
             json.dump(e, f, indent=2)
     if a.from_glider:
         write_from_glider(d, case["from_glider"])
+    tide = []
+    if a.tide_leave_out:
+        table = leave_out_tide(a, forecast, out, case)
+        tide = ["--tide", table] if table else []
     run = subprocess.run([forecast, "--glider-dir", d, "--vehicle", vehicle, "--runs", str(a.runs),
-                          "--waypoint", str(case["waypoint"]), "--json"] + forecast_options(a),
+                          "--waypoint", str(case["waypoint"]), "--json"] + forecast_options(a) + tide,
                          capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stdout, run.stderr)
@@ -297,6 +324,8 @@ def comet_2019_cases(a, real, convert):
     events = [event("comet", call0, dive0, fix0, None, water0, "nsb3.mi"),
               event("comet", up1, dive1, fix1, dr1, water1, "nsb3.mi")]
     truths = [(up1, first1, dr1, water1), (up2, first2, dr2, water2)]
+    # The whole deployment as the shore has it after file 156 (its last call: the file's end), for the tide's fit.
+    deployment = events + [event("comet", up2, files[1][-1]["m_present_time"], first2, dr2, water2, "nsb3.mi")]
     if a.waypoint is not None:
         wpts = [a.waypoint, a.waypoint]
     else:
@@ -310,6 +339,7 @@ def comet_2019_cases(a, real, convert):
         up, first, dr, water = truths[k]
         cases.append({"label": "", "k": k, "dir": "from%d" % k, "glider": "comet", "mission": nsb3,
                       "log_name": "2019082%d_%04d.surfacing.json", "events": events[:k + 1], "waypoint": wpts[k],
+                      "deployment_events": deployment,
                       "truth": {"up": up, "first": first, "water": water,
                                 "dr_end": (ddmm(dr["m_lat"]), ddmm(dr["m_lon"]))},
                       "from_glider": ((files[0], up1, "comet-2019-222-02-154"),)[:k]})
@@ -401,6 +431,9 @@ def comet_2016_cases(a, real, convert):
         nxt = calls[k + 1]
         cases.append({"label": "comet-2016 ", "k": k, "dir": "comet2016_from%d" % k, "glider": "comet",
                       "mission": mission, "log_name": "2016062%d_%04d.surfacing.json", "events": events[:k + 1],
+                      "deployment_events": events + [event("comet", calls[-1]["arrival"], rows[-1]["m_present_time"],
+                                                           calls[-1]["first"], calls[-1]["dr"], calls[-1]["water"],
+                                                           "subex.mi")],
                       "waypoint": wpts[k],
                       "truth": {"up": nxt["arrival"], "first": nxt["first"], "water": nxt["water"],
                                 "dr_end": nxt["pure_dr"], "fix_current": nxt["fix_current"]},
@@ -461,6 +494,10 @@ def arguments(description):
     p.add_argument("--from-glider", action="store_true",
                    help="put the dives' m_depth, m_pitch and m_heading the shore had by each call (4.5 s rows, as an .sbd "
                         "carries them) in from-glider/: the speed term reads the pitch sensor's scale from them")
+    p.add_argument("--tide", default=None, help="glider-forecast's --tide FILE (the pilot's tide table)")
+    p.add_argument("--tide-leave-out", default=None, metavar="CONSTITUENTS",
+                   help="fit the tide table (these constituents, e.g. M2) for each forecast from its deployment's "
+                        "currents without the dive scored; no table where the fit refuses")
     p.add_argument("--check", action="store_true", help="test mode: the checks above, PASS/FAIL line")
     return p
 

@@ -83,4 +83,22 @@ grep -q '"m2_sigma_m_s": 0.05' "$out/prior_good.json" && grep -q '"mode": "fixed
   fail "prior_off: $(cat "$out/prior_off.json")"
 grep -q '"mode": "off"' "$out/prior_off.json" || fail "prior_off: --current-prior off did not override the file"
 echo "ok prior_good: GLIDER/forecast.toml used, --current-prior overrides it"
+# The pilot's tide table (--tide FILE, docs/forecast.md session 44): NaN, a value out of range, an unknown
+# constituent, each named by file:line, key, value and range; fit-tide refuses a record too short for M2.
+tide_file() {  # NAME CONTENT PATTERN
+  printf '%b' "$2" >"$out/$1.toml"
+  "$forecast" --glider-dir "$good" --vehicle "$v" --runs 2 --tide "$out/$1.toml" >"$out/$1.txt" 2>&1
+  code=$?
+  [ $code -eq 1 ] && grep -q "$3" "$out/$1.txt" || fail "$1: exit $code: $(cat "$out/$1.txt")"
+  echo "ok $1: $(head -1 "$out/$1.txt")"
+}
+m2='[M2]\neast_amplitude_m_s = 0.3\neast_phase_deg = 10\nnorth_amplitude_m_s = 0.1\nnorth_phase_deg = 190\namplitude_sigma_m_s = 0.07\n'
+tide_file tide_nan "reference_utc = 2027-01-01T00:00:00Z\n${m2}phase_sigma_deg = nan\n" "tide_nan.toml:8: M2.phase_sigma_deg = nan is outside \\[0, 180\\] deg"
+tide_file tide_range "reference_utc = 2027-01-01T00:00:00Z\n${m2}phase_sigma_deg = 30\n[mean]\neast_m_s = 4\n" "tide_range.toml:10: mean.east_m_s = 4 is outside \\[-3, 3\\] m/s"
+tide_file tide_name "reference_utc = 2027-01-01T00:00:00Z\n[M3]\n" "tide_name.toml:2: \\[M3\\]: 'M3' is not a tidal constituent"
+"$forecast" fit-tide --glider-dir "$good" >"$out/fit_short.txt" 2>&1
+code=$?
+[ $code -eq 1 ] && grep -q "too short to fit M2: it needs 12.4 h" "$out/fit_short.txt" ||
+  fail "fit_short: exit $code: $(cat "$out/fit_short.txt")"
+echo "ok fit_short: $(head -1 "$out/fit_short.txt")"
 echo "PASS bad_input"

@@ -107,6 +107,8 @@ fw::EastNorth measured_current(const std::vector<Surfacing>& history, std::size_
   return c;
 }
 
+}  // namespace
+
 std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio, double first_span_s) {
   std::vector<CurrentSample> out;
   // The first event's estimate is the mean over the segment that ended at
@@ -130,6 +132,8 @@ std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history
   }
   return out;
 }
+
+namespace {
 
 void summarise(const std::vector<RunOutcome>& runs, const fw::LatLon& fix, Forecast& f) {
   std::vector<double> e, n, t;
@@ -376,6 +380,13 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
   }
   f.glider = last->glider;
   f.prior = current_prior(glider_dir, options.prior);
+  if (!options.tide_table.empty()) {
+    f.prior.tide = std::make_shared<const TideTable>(read_tide_table(options.tide_table));
+    std::string names;
+    for (const TideConstituent& c : f.prior.tide->constituents) names += (names.empty() ? "" : ", ") + c.name;
+    f.notes.push_back("the tide's phase from " + options.tide_table.string() + " (" + names +
+                      "): the tidal prior's tide is the table's, what it may be wrong by its width");
+  }
   f.fix_lat_deg = *last->lat_deg;
   f.fix_lon_deg = *last->lon_deg;
   f.fix_utc_s = last->call_start_utc_s;
@@ -508,6 +519,12 @@ Forecast make_forecast(const fs::path& glider_dir, const ForecastOptions& option
                   f.favoured.mean_sigma_m_s, f.favoured.m2_sigma_m_s, f.favoured.position_sigma_m,
                   f.prior.mean_sigma_m_s, f.prior.m2_sigma_m_s, f.prior.position_sigma_m);
     f.notes.push_back(text);
+    if (f.prior.tide) {
+      std::snprintf(text, sizeof text,
+                    "with the tide table the M2 width is the table's errors, which the estimates favour x%.2f",
+                    f.favoured.tide_error_scale);
+      f.notes.push_back(text);
+    }
   }
   f.baseline_current = last_current(current_samples(history, 1.0, expected_s));
   if (samples.empty()) {
@@ -595,7 +612,8 @@ nlohmann::json forecast_json(const Forecast& f) {
                       {"favoured_mean_sigma_m_s", f.favoured.mean_sigma_m_s},
                       {"favoured_m2_sigma_m_s", f.favoured.m2_sigma_m_s},
                       {"position_sigma_m", f.prior.position_sigma_m},
-                      {"favoured_position_sigma_m", f.favoured.position_sigma_m}}}};
+                      {"favoured_position_sigma_m", f.favoured.position_sigma_m},
+                      {"tide_table", f.prior.tide ? f.prior.tide->source : ""}}}};
   out["depth_rate"] = {{"read", f.depth_rate_have},
                        {"applied", f.depth_rate_applied},
                        {"servo", f.depth_rate_servo},

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -15,6 +16,8 @@
 #include "glider/firmware/geo.hpp"
 #include "glider/forecast/forecast.hpp"
 #include "glider/forecast/sil_truth.hpp"
+#include "glider/forecast/tide_table.hpp"
+#include "glider/sil/portable_random.hpp"
 
 namespace fs = std::filesystem;
 namespace fc = glider::forecast;
@@ -170,6 +173,34 @@ void print_table(const char* what, const Score& s) {
       s.current_z.size());
 }
 
+// The truth's tide as a pilot's tide model would give it: each constituent's
+// phase off by +-[phase_lo, phase_hi] deg and its amplitude by a factor 1
+// +-[amp_lo, amp_hi] (sizes uniform, signs even, drawn from the truth's seed;
+// the same for east and north: a model's error in the tide's timing and
+// strength), its stated sigmas `phase_sigma_deg` and `amp_sigma` x amplitude.
+fc::TideTable pilots_table(const fc::TideTable& truth, std::uint64_t seed, const double phase_error[2],
+                           const double amplitude_error[2], double phase_sigma_deg, double amp_sigma,
+                           std::string& said) {
+  glider::sil::PortableRandom draw(glider::sil::derived_seed(seed, 0x7469646531ULL));
+  fc::TideTable t = truth;
+  for (fc::TideConstituent& c : t.constituents) {
+    const double dp =
+        (draw.uniform() < 0.5 ? -1.0 : 1.0) * (phase_error[0] + (phase_error[1] - phase_error[0]) * draw.uniform());
+    const double da = (draw.uniform() < 0.5 ? -1.0 : 1.0) *
+                      (amplitude_error[0] + (amplitude_error[1] - amplitude_error[0]) * draw.uniform());
+    for (fc::TideComponent* k : {&c.east, &c.north}) {
+      k->phase_deg += dp;
+      k->amplitude_m_s *= 1.0 + da;
+      k->amplitude_sigma_m_s = amp_sigma * k->amplitude_m_s;
+      k->phase_sigma_deg = phase_sigma_deg;
+    }
+    char text[120];
+    std::snprintf(text, sizeof text, "%s phase %+.0f deg, amplitude x%.2f", c.name.c_str(), dp, 1.0 + da);
+    said += text;
+  }
+  return t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -239,6 +270,28 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   tool.add_number("--mean-max", mean_max, {0.0, 2.0, "m/s"}, "the truths' mean current is drawn up to this")
       ->capture_default_str();
+  bool tide_pair = false;
+  app.add_flag("--tide-table", tide_pair,
+               "paired: each forecast again with a tide table (--tide), the truth's M2 with a pilot's tide model's "
+               "errors (drawn per truth, printed); both tables printed");
+  std::vector<double> phase_error{20.0, 40.0}, amplitude_error{0.2, 0.3};
+  app.add_option("--tide-phase-error", phase_error, "the table's phase error's size, drawn in [lo, hi] deg")
+      ->expected(2)
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  app.add_option("--tide-amplitude-error", amplitude_error,
+                 "the table's amplitude error's size, a fraction drawn in [lo, hi]")
+      ->expected(2)
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 0.9))
+      ->capture_default_str();
+  double phase_sigma = 30.0, amp_sigma = 0.25;
+  tool.add_number("--tide-phase-sigma", phase_sigma, {0.0, 180.0, "deg"}, "the table's stated phase sigma")
+      ->capture_default_str();
+  tool.add_number("--tide-amplitude-sigma", amp_sigma, {0.0, 3.0, ""},
+                  "the table's stated amplitude sigma, a fraction of its amplitude")
+      ->capture_default_str();
   double check_km = 0.0;
   tool.add_number("--check-km", check_km, {0.0, 100.0, "km"},
                   "test mode: exit 1 unless every forecast is within this of the truth and the truth of the first "
@@ -254,8 +307,9 @@ int main(int argc, char** argv) {
     truth_options.mission = mission;
     truth_options.vehicle = vehicle;
     options.vehicle = vehicle;
-    Score score;
+    Score score, with_table, first_without, first_with;
     bool ok = true;
+    int better = 0, worse = 0;
     for (int k = 0; k < truths; ++k) {
       truth_options.seed = static_cast<std::uint64_t>(seed) + static_cast<std::uint64_t>(k);
       const fc::Truth truth = fc::fly_truth(truth_options);
@@ -269,10 +323,35 @@ int main(int argc, char** argv) {
         const fc::Forecast f = fc::make_forecast(dir, options);
         std::printf("  from surfacing %zu:", i);
         score_case(f, truth.surfacings[i + 1], score, true);
+        if (tide_pair) {
+          std::string said;
+          const fc::TideTable table = pilots_table(truth.tide, truth_options.seed, phase_error.data(),
+                                                   amplitude_error.data(), phase_sigma, amp_sigma, said);
+          std::ofstream(dir / "tide.toml") << fc::format_tide_table(table, "the bench's pilot table: " + said);
+          fc::ForecastOptions tabled = options;
+          tabled.tide_table = dir / "tide.toml";
+          const fc::Forecast g = fc::make_forecast(dir, tabled);
+          std::printf("  the same with the tide table (%s):", said.c_str());
+          score_case(g, truth.surfacings[i + 1], with_table, true);
+          if (i == static_cast<std::size_t>(from)) {
+            score_case(f, truth.surfacings[i + 1], first_without, false);
+            score_case(g, truth.surfacings[i + 1], first_with, false);
+          }
+          if (!score.position_m.empty() && !with_table.position_m.empty() && f.have_surfacing && g.have_surfacing) {
+            (with_table.position_m.back() < score.position_m.back() ? better : worse) += 1;
+          }
+        }
         if (check_km > 0.0 && (!f.have_surfacing || score.position_m.back() > 1000.0 * check_km)) ok = false;
       }
     }
     print_table("SIL truths", score);
+    if (tide_pair) {
+      print_table("SIL truths with the tide table (the same forecasts, paired)", with_table);
+      print_table("the first forecasts (from surfacing --from) without the table", first_without);
+      print_table("the first forecasts with the tide table", first_with);
+      std::printf("with the table: %d forecasts nearer the truth, %d not (seed %lld)\n", better, worse,
+                  static_cast<long long>(seed));
+    }
     if (check_km > 0.0 && score.inside_ellipse == 0) ok = false;
     return ok ? 0 : 1;
   });

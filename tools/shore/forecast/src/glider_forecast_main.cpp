@@ -2,13 +2,80 @@
 // glider-forecast: where a glider surfaces next, from the shore's glider
 // folder, and the rehearsal of a .ma/.mi before it is sent (docs/forecast.md).
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "glider/cli/tool.hpp"
 #include "glider/forecast/forecast.hpp"
+#include "glider/forecast/tide_fit.hpp"
+
+namespace {
+
+// fit-tide: the constituents of a glider folder's depth-averaged currents
+// (its surfacings' m_water_vx/vy), those whose segment overlaps
+// [exclude_from, exclude_to] left out, written as a tide table.
+int fit_tide_command(const std::string& glider_dir, const std::vector<std::string>& names,
+                     const std::string& exclude_from, const std::string& exclude_to, const std::string& out) {
+  namespace fc = glider::forecast;
+  const std::vector<fc::Surfacing> history = fc::read_surfacings(glider_dir);
+  // The first event's estimate is over the segment before the history: as long as the median later one.
+  std::vector<double> spans;
+  for (const fc::CurrentSample& s : fc::current_samples(history, 1.0, 0.0)) {
+    if (s.span_s > 0.0) spans.push_back(s.span_s);
+  }
+  std::sort(spans.begin(), spans.end());
+  const double first_span = spans.empty() ? 0.0 : spans[spans.size() / 2];
+  const double lo = exclude_from.empty() ? 0.0 : fc::parse_utc(exclude_from, "--exclude-from");
+  const double hi = exclude_to.empty() ? 0.0 : fc::parse_utc(exclude_to, "--exclude-to");
+  std::vector<fc::CurrentSample> used;
+  int left_out = 0;
+  for (const fc::CurrentSample& s : fc::current_samples(history, 1.0, first_span)) {
+    const bool overlaps = !exclude_from.empty() && s.utc_s + 0.5 * s.span_s > lo && s.utc_s - 0.5 * s.span_s < hi;
+    if (overlaps) {
+      ++left_out;
+    } else {
+      used.push_back(s);
+    }
+  }
+  if (used.empty()) throw std::runtime_error(glider_dir + ": no depth-averaged current (m_water_vx/vy) to fit");
+  // The phases' origin: the hour at or before the first segment's start.
+  const double reference = std::floor((used.front().utc_s - 0.5 * used.front().span_s) / 3600.0) * 3600.0;
+  const fc::TideFit fit = fc::fit_tide(used, names, reference);
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "glider forecast fit-tide --glider-dir %s: %d estimates over %.1f h (%d left out), residual RMS "
+                "%.3f E %.3f N m/s;\nthe sigmas are the fit's (1 sigma, the larger of east's and north's): the "
+                "record's tide, not the year's",
+                glider_dir.c_str(), fit.estimates, fit.record_s / 3600.0, left_out, fit.residual_east_m_s,
+                fit.residual_north_m_s);
+  const std::string table = fc::format_tide_table(fit.table, text);
+  if (out.empty()) {
+    std::printf("%s", table.c_str());
+  } else {
+    std::ofstream file(out);
+    file << table;
+    if (!file) throw std::runtime_error(out + ": cannot write");
+  }
+  for (const fc::TideConstituent& c : fit.table.constituents) {
+    std::fprintf(stderr,
+                 "%s: east %.3f m/s (95 %% %.3f-%.3f) phase %.0f +- %.0f deg; north %.3f m/s (95 %% %.3f-%.3f) phase "
+                 "%.0f +- %.0f deg\n",
+                 c.name.c_str(), c.east.amplitude_m_s, c.east.amplitude_m_s - fit.t95 * c.east.amplitude_sigma_m_s,
+                 c.east.amplitude_m_s + fit.t95 * c.east.amplitude_sigma_m_s, c.east.phase_deg,
+                 fit.t95 * c.east.phase_sigma_deg, c.north.amplitude_m_s,
+                 c.north.amplitude_m_s - fit.t95 * c.north.amplitude_sigma_m_s,
+                 c.north.amplitude_m_s + fit.t95 * c.north.amplitude_sigma_m_s, c.north.phase_deg,
+                 fit.t95 * c.north.phase_sigma_deg);
+  }
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   glider::cli::Tool tool("glider-forecast",
@@ -20,7 +87,11 @@ int main(int argc, char** argv) {
   std::string prior_mode;
   double prior_mean = 0.10, prior_m2 = 0.25, prior_estimate = 0.02, prior_position = 100.0;
   std::vector<std::pair<CLI::Option*, int>> prior_options;  // 0 mean, 1 M2, 2 estimate, 3 position
+  std::string tide_table;
   auto common = [&](CLI::App* command) {
+    command->add_option("--tide", tide_table,
+                        "the pilot's tidal constituents for the place (a TOML tide table: docs/forecast.md, session "
+                        "44; `fit-tide` writes one): the tide's phase the first forecasts cannot know");
     command->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER); required");
     command->add_option("--mission", options.mission,
                         "the glider's .mi (default: GLIDER/mission/missions/NAME.mi, its .ma in mission/mafiles/)");
@@ -83,9 +154,27 @@ int main(int argc, char** argv) {
   rehearse->add_option("FILE", file, "the .ma or .mi to rehearse")->required();
   rehearse->add_flag("--json", json, "JSON instead of text");
   common(rehearse);
+  CLI::App* fit = app.add_subcommand(
+      "fit-tide", "fit tidal constituents to a glider folder's depth-averaged currents, written as a tide table");
+  std::vector<std::string> constituents{"M2"};
+  std::string exclude_from, exclude_to, fit_out;
+  fit->add_option("--glider-dir", glider_dir, "the shore's folder of the glider (ROOT/GLIDER); required");
+  fit->add_option("--constituents", constituents, "the constituents (M2, S2, N2, K2, K1, O1, P1, Q1, M4)")
+      ->delimiter(',')
+      ->capture_default_str();
+  fit->add_option("--exclude-from", exclude_from, "leave out the estimates whose segment overlaps from this UTC...");
+  fit->add_option("--exclude-to", exclude_to, "... to this UTC (YYYY-MM-DDTHH:MM:SSZ)");
+  fit->add_option("--out", fit_out, "the table's file (default: standard output)");
   app.require_subcommand(0, 1);
   return tool.run(argc, argv, [&]() -> int {
     if (glider_dir.empty()) throw glider::cli::ToolError(glider::cli::kUsage, "--glider-dir is required");
+    if (*fit) {
+      if (exclude_from.empty() != exclude_to.empty()) {
+        throw glider::cli::ToolError(glider::cli::kUsage, "--exclude-from and --exclude-to go together");
+      }
+      return fit_tide_command(glider_dir, constituents, exclude_from, exclude_to, fit_out);
+    }
+    options.tide_table = tide_table;
     if (!prior_mode.empty()) options.prior.mode = glider::forecast::parse_prior_mode(prior_mode);
     for (const auto& [option, which] : prior_options) {
       if (option->count() == 0) continue;

@@ -79,6 +79,21 @@ Truth fly_truth(const TruthOptions& o) {
                 tide_dir * 180.0 / std::numbers::pi, tide_phase * 180.0 / std::numbers::pi, drag,
                 1000.0 * (flown.buoyancy_offset_kg - vehicle.buoyancy_offset_kg), sensor_scale);
   truth.description = text;
+  // The true tide as a table (a cos(omega (t - launch) - phase) per component, tide_table.hpp).
+  truth.tide.reference_utc_s = o.utc_launch_s;
+  TideConstituent m2;
+  m2.name = "M2";
+  m2.period_s = kM2PeriodS;
+  auto as_component = [&](double signed_amplitude) {
+    // amplitude sin(x + phase) = amplitude cos(x - (90 deg - phase)); a negative amplitude is half a turn on.
+    TideComponent c;
+    c.amplitude_m_s = std::fabs(signed_amplitude);
+    c.phase_deg = 90.0 - tide_phase * 180.0 / std::numbers::pi + (signed_amplitude < 0.0 ? 180.0 : 0.0);
+    return c;
+  };
+  m2.east = as_component(oscillation.east_m_s);
+  m2.north = as_component(oscillation.north_m_s);
+  truth.tide.constituents.push_back(m2);
 
   sil::ScenarioOptions opt;
   opt.seed = o.seed;

@@ -40,9 +40,22 @@ double kept(double span_s) {
 
 // Covariance of two segment means (middles t, spans s) under the prior: the
 // mean's variance plus the tide's, cos(omega lag) of a random phase.
-double covariance(double t1, double s1, double t2, double s2, const TidalPrior& p) {
+double random_phase_covariance(double t1, double s1, double t2, double s2, const TidalPrior& p) {
   return p.mean_sigma_m_s * p.mean_sigma_m_s +
          p.m2_sigma_m_s * p.m2_sigma_m_s * std::cos(kOmega * (t1 - t2)) * kept(s1) * kept(s2);
+}
+
+// The same for one component (0 east, 1 north); with the pilot's table the
+// tide's part is the table's error in that component.
+double covariance(double t1, double s1, double t2, double s2, const TidalPrior& p, int component) {
+  if (!p.tide) return random_phase_covariance(t1, s1, t2, s2, p);
+  return p.mean_sigma_m_s * p.mean_sigma_m_s +
+         p.tide_error_scale * p.tide_error_scale * tide_error_covariance(*p.tide, component, t1, s1, t2, s2);
+}
+
+// The prior's mean of a segment's mean: zero, or the pilot's table.
+double prior_mean(double t, double s, const TidalPrior& p, int component) {
+  return p.tide ? tide_mean(*p.tide, component, t, s) : 0.0;
 }
 
 // An estimate's own error variance: the speed's noise and the position's
@@ -63,15 +76,54 @@ std::vector<CurrentSample> last_day(const std::vector<CurrentSample>& all, doubl
 // One hypothesis (fixed widths): the posterior mean over the window per
 // component, its variance, and the log marginal likelihood of the estimates.
 struct Posterior {
-  double east = 0.0, north = 0.0, var = 0.0;
+  double east = 0.0, north = 0.0, var_east = 0.0, var_north = 0.0;
   double log_evidence = 0.0;
   bool ok = true;
 };
 
-Posterior condition(const std::vector<CurrentSample>& samples, double t_w, double s_w, const TidalPrior& prior) {
+// With the pilot's table: one component (0 east, 1 north) conditioned on
+// the estimates' residuals from the table (its own kernel: the table's error
+// differs by component); its window's mean and variance, and log N(y; table,
+// K) added to the evidence.
+bool condition_component(const std::vector<CurrentSample>& samples, double t_w, double s_w, const TidalPrior& prior,
+                         int c, Posterior& p) {
+  const double prior_var = covariance(t_w, s_w, t_w, s_w, prior, c);
+  double& mean = c == 0 ? p.east : p.north;
+  double& var = c == 0 ? p.var_east : p.var_north;
+  mean = prior_mean(t_w, s_w, prior, c);
+  var = prior_var;
+  if (samples.empty()) return true;
+  const auto n = static_cast<Eigen::Index>(samples.size());
+  Eigen::MatrixXd k(n, n);
+  Eigen::VectorXd k_w(n), y(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const CurrentSample& a = samples[static_cast<std::size_t>(i)];
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const CurrentSample& b = samples[static_cast<std::size_t>(j)];
+      k(i, j) = covariance(a.utc_s, a.span_s, b.utc_s, b.span_s, prior, c);
+    }
+    k(i, i) += noise_variance(a, prior);
+    k_w(i) = covariance(t_w, s_w, a.utc_s, a.span_s, prior, c);
+    y(i) = (c == 0 ? a.east_m_s : a.north_m_s) - prior_mean(a.utc_s, a.span_s, prior, c);
+  }
+  const Eigen::LLT<Eigen::MatrixXd> llt(k);
+  if (llt.info() != Eigen::Success) return false;
+  const Eigen::VectorXd weights = llt.solve(k_w);
+  mean += weights.dot(y);
+  var = std::max(prior_var - weights.dot(k_w), 0.0);
+  const double log_det_half = llt.matrixLLT().diagonal().array().log().sum();
+  p.log_evidence +=
+      -0.5 * y.dot(llt.solve(y)) - log_det_half - 0.5 * static_cast<double>(n) * std::log(2.0 * std::numbers::pi);
+  return true;
+}
+
+// Without a table east and north share the kernel and a zero prior mean:
+// one factorisation for both (the rule before session 44, as it was).
+Posterior condition_untabled(const std::vector<CurrentSample>& samples, double t_w, double s_w,
+                             const TidalPrior& prior) {
   Posterior p;
-  const double prior_var = covariance(t_w, s_w, t_w, s_w, prior);
-  p.var = prior_var;
+  const double prior_var = random_phase_covariance(t_w, s_w, t_w, s_w, prior);
+  p.var_east = p.var_north = prior_var;
   if (samples.empty()) return p;
   const auto n = static_cast<Eigen::Index>(samples.size());
   Eigen::MatrixXd k(n, n);
@@ -80,10 +132,10 @@ Posterior condition(const std::vector<CurrentSample>& samples, double t_w, doubl
     const CurrentSample& a = samples[static_cast<std::size_t>(i)];
     for (Eigen::Index j = 0; j < n; ++j) {
       const CurrentSample& b = samples[static_cast<std::size_t>(j)];
-      k(i, j) = covariance(a.utc_s, a.span_s, b.utc_s, b.span_s, prior);
+      k(i, j) = random_phase_covariance(a.utc_s, a.span_s, b.utc_s, b.span_s, prior);
     }
     k(i, i) += noise_variance(a, prior);
-    k_w(i) = covariance(t_w, s_w, a.utc_s, a.span_s, prior);
+    k_w(i) = random_phase_covariance(t_w, s_w, a.utc_s, a.span_s, prior);
     y_e(i) = a.east_m_s;
     y_n(i) = a.north_m_s;
   }
@@ -96,12 +148,19 @@ Posterior condition(const std::vector<CurrentSample>& samples, double t_w, doubl
   const Eigen::VectorXd weights = llt.solve(k_w);
   p.east = weights.dot(y_e);
   p.north = weights.dot(y_n);
-  p.var = std::max(prior_var - weights.dot(k_w), 0.0);
+  p.var_east = p.var_north = std::max(prior_var - weights.dot(k_w), 0.0);
   // log N(y; 0, K) for east and north (independent, the same kernel).
   const Eigen::MatrixXd l = llt.matrixL();
   const double log_det = 2.0 * l.diagonal().array().log().sum();
   const double quad = y_e.dot(llt.solve(y_e)) + y_n.dot(llt.solve(y_n));
   p.log_evidence = -0.5 * quad - log_det - static_cast<double>(n) * std::log(2.0 * std::numbers::pi);
+  return p;
+}
+
+Posterior condition(const std::vector<CurrentSample>& samples, double t_w, double s_w, const TidalPrior& prior) {
+  if (!prior.tide) return condition_untabled(samples, t_w, s_w, prior);
+  Posterior p;
+  p.ok = condition_component(samples, t_w, s_w, prior, 0, p) && condition_component(samples, t_w, s_w, prior, 1, p);
   return p;
 }
 
@@ -129,6 +188,7 @@ std::vector<Hypothesis> weigh(const std::vector<CurrentSample>& samples, double 
           h.widths.m2_sigma_m_s = prior.m2_sigma_m_s * std::ldexp(1.0, kScaleTop - b);
           h.widths.estimate_sigma_m_s = prior.estimate_sigma_m_s * std::ldexp(1.0, -c);
           h.widths.position_sigma_m = prior.position_sigma_m * position.scale;
+          h.widths.tide_error_scale = prior.tide_error_scale * std::ldexp(1.0, kScaleTop - b);
           h.posterior = condition(samples, t_w, s_w, h.widths);
           // The hyperprior: the pilot's widths the likeliest, each octave away
           // less so (log-normal, kOctaveSigma octaves), the noises' uniform.
@@ -195,8 +255,8 @@ CurrentEstimate predict_with_prior(const std::vector<CurrentSample>& all, double
   for (const Hypothesis& h : weigh(samples, t_w, s_w, prior)) {
     m_e += h.weight * h.posterior.east;
     m_n += h.weight * h.posterior.north;
-    s_e += h.weight * (h.posterior.var + h.posterior.east * h.posterior.east);
-    s_n += h.weight * (h.posterior.var + h.posterior.north * h.posterior.north);
+    s_e += h.weight * (h.posterior.var_east + h.posterior.east * h.posterior.east);
+    s_n += h.weight * (h.posterior.var_north + h.posterior.north * h.posterior.north);
   }
   e.east_m_s = m_e;
   e.north_m_s = m_n;
@@ -211,10 +271,21 @@ double persistence_prior_variance(const CurrentSample& last, double from_utc_s, 
   double var = 0.0;
   for (const Hypothesis& h : weigh(last_day(samples, from_utc_s), t_w, s_w, prior)) {
     const TidalPrior& p = h.widths;
-    // Var(W - S) = Var W + Var S - 2 Cov(W, S), S carrying the estimate's own error.
-    var += h.weight *
-           (covariance(t_w, s_w, t_w, s_w, p) + covariance(last.utc_s, last.span_s, last.utc_s, last.span_s, p) +
-            noise_variance(last, p) - 2.0 * covariance(t_w, s_w, last.utc_s, last.span_s, p));
+    // E(W - S)^2 = Var W + Var S - 2 Cov(W, S) + (the prior's mean change)^2, S carrying the estimate's
+    // own error; the mean of the two components (one without a table: both the same).
+    if (!p.tide) {
+      var += h.weight * (random_phase_covariance(t_w, s_w, t_w, s_w, p) +
+                         random_phase_covariance(last.utc_s, last.span_s, last.utc_s, last.span_s, p) +
+                         noise_variance(last, p) - 2.0 * random_phase_covariance(t_w, s_w, last.utc_s, last.span_s, p));
+      continue;
+    }
+    for (int c = 0; c < 2; ++c) {
+      const double change = prior_mean(t_w, s_w, p, c) - prior_mean(last.utc_s, last.span_s, p, c);
+      var +=
+          0.5 * h.weight *
+          (covariance(t_w, s_w, t_w, s_w, p, c) + covariance(last.utc_s, last.span_s, last.utc_s, last.span_s, p, c) +
+           noise_variance(last, p) - 2.0 * covariance(t_w, s_w, last.utc_s, last.span_s, p, c) + change * change);
+    }
   }
   return var;
 }
@@ -222,12 +293,13 @@ double persistence_prior_variance(const CurrentSample& last, double from_utc_s, 
 TidalPrior favoured_prior(const std::vector<CurrentSample>& samples, double from_utc_s, const TidalPrior& prior) {
   TidalPrior out = prior;
   if (prior.mode != PriorMode::kEvidence) return out;
-  out.mean_sigma_m_s = out.m2_sigma_m_s = out.estimate_sigma_m_s = out.position_sigma_m = 0.0;
+  out.mean_sigma_m_s = out.m2_sigma_m_s = out.estimate_sigma_m_s = out.position_sigma_m = out.tide_error_scale = 0.0;
   for (const Hypothesis& h : weigh(last_day(samples, from_utc_s), from_utc_s, 0.0, prior)) {
     out.mean_sigma_m_s += h.weight * h.widths.mean_sigma_m_s;
     out.m2_sigma_m_s += h.weight * h.widths.m2_sigma_m_s;
     out.estimate_sigma_m_s += h.weight * h.widths.estimate_sigma_m_s;
     out.position_sigma_m += h.weight * h.widths.position_sigma_m;
+    out.tide_error_scale += h.weight * h.widths.tide_error_scale;
   }
   return out;
 }

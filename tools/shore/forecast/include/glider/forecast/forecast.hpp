@@ -18,6 +18,7 @@
 #include "glider/forecast/forecast_settings.hpp"
 #include "glider/forecast/glide_pitch.hpp"
 #include "glider/forecast/mission_now.hpp"
+#include "glider/forecast/surfacing_history.hpp"
 #include "glider/model/vehicle.hpp"
 
 namespace glider::forecast {
@@ -38,6 +39,9 @@ struct ForecastOptions {
   bool include_queue = true;
   bool write = true;     // write forecast/forecast.json
   PriorOverrides prior;  // the command line's; GLIDER/forecast.toml's otherwise (forecast_settings.hpp)
+  // --tide FILE: the pilot's tidal constituents for the place (tide_table.hpp): the tidal prior's tide is
+  // then the table's, its phase known (docs/forecast.md, session 44). Empty: an M2 of random phase.
+  std::filesystem::path tide_table;
   // The model's drag scaled until its dead-reckoned speed through the water
   // is the glider's (docs/forecast.md, speed term): by default only when the
   // glider's DR speed is calibrated for its pitch sensor (speed_term.hpp),
@@ -144,6 +148,13 @@ struct Forecast {
 // std::runtime_error naming the file for bad input (no fix, a malformed
 // event, no mission, a vehicle that cannot glide).
 Forecast make_forecast(const std::filesystem::path& glider_dir, const ForecastOptions& options);
+
+// The glider's depth-averaged current estimates from its surfacings: the
+// first event's over a segment of `first_span_s` ending at its call, each
+// later one updated at its call (a fix, >= 10 min under water) over the
+// segment since the call before, the DR's speed error (`ratio`, true over DR
+// speed through the water) taken out where the segment's DR is known.
+std::vector<CurrentSample> current_samples(const std::vector<Surfacing>& history, double ratio, double first_span_s);
 
 // The Monte-Carlo flights alone, for the benchmark and tests: `n` runs of
 // the plan from a fix, seeds options.seed + i, deterministic per seed

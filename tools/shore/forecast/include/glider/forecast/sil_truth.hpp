@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "glider/firmware/geo.hpp"
+#include "glider/forecast/tide_table.hpp"
 
 namespace glider::forecast {
 
@@ -61,6 +62,7 @@ struct Truth {
   // UTC, m_depth, m_pitch (its sensor's).
   std::vector<std::array<double, 3>> logged;
   std::string description;  // the drawn current and vehicle
+  TideTable tide;           // the true tide (its M2; no mean: the table a tide model would give, error-free)
 };
 
 Truth fly_truth(const TruthOptions& options);

@@ -31,10 +31,18 @@
 // sea's tide after one estimate, and a strong tide is not held back by the
 // pilot's guess. Mode "fixed" uses the widths as given; "off" uses no prior
 // (persistence).
+//
+// With the pilot's tide table (tide_table.hpp) the tide is no longer of
+// random phase: the prior's mean is the table's current (averaged over each
+// segment), and the tide's width is what the table may be wrong by (its
+// amplitudes' and phases' sigmas, linearised; in evidence mode scaled by the
+// same 2 .. 1/32 as the M2 width, each component conditioned on its own).
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "glider/forecast/current_estimate.hpp"
+#include "glider/forecast/tide_table.hpp"
 
 namespace glider::forecast {
 
@@ -49,6 +57,8 @@ struct TidalPrior {
   double estimate_sigma_m_s = 0.02;
   double position_sigma_m = 100.0;  // per component, over the estimate's segment (span_s)
   PriorMode mode = PriorMode::kEvidence;
+  std::shared_ptr<const TideTable> tide;  // the pilot's constituents (null: an M2 of random phase)
+  double tide_error_scale = 1.0;          // the table's errors scaled by (evidence mode's hypotheses)
 };
 
 // "evidence" | "fixed" | "off"; parse_prior_mode throws std::invalid_argument for another text.
