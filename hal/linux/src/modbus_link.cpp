@@ -57,8 +57,7 @@ ModbusLink::ModbusLink(const BusConfig& bus, _modbus* context)
     : bus_(bus),
       context_(context),
       // One attempt on a dead bus: the response timeout plus one byte timeout.
-      attempt_cost_(std::chrono::milliseconds(bus.response_timeout_ms + bus.byte_timeout_ms)),
-      budget_(std::chrono::milliseconds(bus.cycle_budget_ms)) {}
+      attempt_cost_(std::chrono::milliseconds(bus.response_timeout_ms + bus.byte_timeout_ms)) {}
 
 ModbusLink::~ModbusLink() {
   disconnect();
@@ -92,21 +91,11 @@ void ModbusLink::disconnect() noexcept {
 
 void ModbusLink::begin_cycle() noexcept {
   window_start_ = Clock::now();
-  blocked_ = Clock::duration::zero();
+  window_deadline_ = window_start_ + std::chrono::milliseconds(bus_.cycle_budget_ms);
   window_open_ = true;
 }
 
-// The budget counts the time spent in this window's transactions, not the
-// time since the window began: the cycle's other work (the other bus, the
-// serial devices, the control law) and a process kept off the CPU are not
-// the bus blocking, and charging them to it refused answering devices (an
-// actuator fault, so an abort) on a loaded machine (docs/hil.md, "Under
-// load"). Called inside a transaction (the one under way counts too).
-ModbusLink::Clock::duration ModbusLink::blocked(Clock::time_point now) const noexcept {
-  return blocked_ + (now - transaction_start_);
-}
-
-bool ModbusLink::fits_budget(Clock::time_point now) const noexcept { return blocked(now) + attempt_cost_ <= budget_; }
+bool ModbusLink::fits_budget(Clock::time_point now) const noexcept { return now + attempt_cost_ <= window_deadline_; }
 
 // RTU has no transaction id: a reply that comes after the timeout would be
 // read as the answer to the next request (the same function and length for
@@ -116,8 +105,7 @@ bool ModbusLink::fits_budget(Clock::time_point now) const noexcept { return bloc
 void ModbusLink::drain_late_reply() noexcept {
   const int fd = modbus_get_socket(context_);
   if (fd < 0) return;
-  const auto budget_end = [this] { return Clock::now() + (budget_ - blocked(Clock::now())); };
-  auto deadline = std::min(budget_end(), Clock::now() + std::chrono::milliseconds(bus_.response_timeout_ms));
+  auto deadline = std::min(window_deadline_, Clock::now() + std::chrono::milliseconds(bus_.response_timeout_ms));
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::microseconds>(deadline - Clock::now()).count();
     if (left <= 0) break;
@@ -129,7 +117,7 @@ void ModbusLink::drain_late_reply() noexcept {
     std::uint8_t discard[64];
     if (read(fd, discard, sizeof discard) <= 0) break;
     // Bytes are still coming: the line is quiet one byte timeout after the last.
-    deadline = std::min(budget_end(), Clock::now() + std::chrono::milliseconds(bus_.byte_timeout_ms));
+    deadline = std::min(window_deadline_, Clock::now() + std::chrono::milliseconds(bus_.byte_timeout_ms));
   }
 }
 
@@ -138,8 +126,6 @@ bool ModbusLink::transact(int slave, Request&& request) noexcept {
   ++stats_.transactions;
   const Clock::time_point start = Clock::now();
   if (!window_open_ || start - window_start_ >= std::chrono::milliseconds(bus_.cycle_period_ms)) begin_cycle();
-  transaction_start_ = start;
-  bool answered = false;
   for (int attempt = 0; attempt <= bus_.retries; ++attempt) {
     if (!fits_budget(Clock::now())) {
       ++stats_.budget_refusals;
@@ -154,8 +140,7 @@ bool ModbusLink::transact(int slave, Request&& request) noexcept {
     ++stats_.attempts;
     if (request() != -1) {
       needs_flush_ = false;
-      answered = true;
-      break;
+      return true;
     }
     const int error = errno;
     last_error_ = modbus_strerror(error);
@@ -164,9 +149,8 @@ bool ModbusLink::transact(int slave, Request&& request) noexcept {
     if (error == ETIMEDOUT && bus_.transport == Transport::kRtu) drain_late_reply();
     if (is_permanent(error)) break;
   }
-  blocked_ += Clock::now() - transaction_start_;
-  if (!answered) ++stats_.failed;
-  return answered;
+  ++stats_.failed;
+  return false;
 }
 
 bool ModbusLink::read_registers(int slave, int address, int count, std::uint16_t* out) noexcept {

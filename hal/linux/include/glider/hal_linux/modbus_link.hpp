@@ -60,7 +60,6 @@ class ModbusLink {
   bool connect() noexcept;
   void disconnect() noexcept;
   void drain_late_reply() noexcept;
-  Clock::duration blocked(Clock::time_point now) const noexcept;
   bool fits_budget(Clock::time_point now) const noexcept;
 
   BusConfig bus_;
@@ -72,12 +71,8 @@ class ModbusLink {
   const char* last_error_ = "";
   LinkStats stats_;
   Clock::duration attempt_cost_;
-  Clock::duration budget_;
   Clock::time_point window_start_{};
-  // What this window's finished transactions have blocked; the one under
-  // way started at transaction_start_.
-  Clock::duration blocked_{};
-  Clock::time_point transaction_start_{};
+  Clock::time_point window_deadline_{};
   bool window_open_ = false;
 };
 
