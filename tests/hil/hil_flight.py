@@ -8,6 +8,8 @@ two flight logs are compared event by event within stated tolerances
 (docs/hil.md, "Tolerances").
 
   hil_flight.py BUILD_DIR SOURCE_DIR CASE [--time-scale X] [--keep DIR]
+  hil_flight.py BUILD_DIR SOURCE_DIR CASE --compare DIR   (the flights a --keep
+      kept, compared again: the same flights under another rule; no drop weight)
 
 CASE is one of CASES below. Prints the SIL-vs-HIL table and the firmware's
 loop wake-up lateness; "PASS hil CASE" or "FAIL hil CASE: why".
@@ -28,6 +30,8 @@ import sys
 import tempfile
 import time
 
+import start_fix
+
 VEHICLE = "boards/vehicles/slocum_we01.toml"
 SEED = 1
 
@@ -37,7 +41,9 @@ SEED = 1
 CASES = {
     # The Slocum mission: a fix at launch, yos to a waypoint, a surfacing
     # with a fix and the dead-reckoning error, the mission's end.
-    "waypoint": dict(mission="tests/hil/waypoint/missions/hil.mi", plant=[], sil=[], end="complete"),
+    # goto: its waypoints and arrival radius, for the start-fix correction (start_fix.py).
+    "waypoint": dict(mission="tests/hil/waypoint/missions/hil.mi", plant=[], sil=[], end="complete",
+                     goto="tests/hil/waypoint/mafiles/goto_l10.ma"),
     "yo": dict(mission="tests/hil/short_yo.toml", plant=[], sil=[], end="complete"),
     # The pump jams just after the first inflection at depth: its drive
     # reports the stall and it moves no more (SIL: a fault flag and a stuck pump).
@@ -108,15 +114,21 @@ def read_log(path):
 
 def events(rows):
     """What the firmware did, from its log: phase changes (time, phase, depth),
-    yo count, abort cause and time, waypoint arrivals, DR errors at surfacings."""
-    e = dict(phases=[], yos=0, abort=0, abort_t=None, waypoints=[], dr=[], end_t=rows[-1]["t"], max_depth=0.0,
-             navigation="x_waypoints_reached" in rows[0] and "x_dr_error_m" in rows[0])
+    yo count, abort cause and time, waypoint arrivals (and the dive each
+    started from: its time and the DR's start, the fix, in that row), DR
+    errors at surfacings."""
+    e = dict(phases=[], yos=0, abort=0, abort_t=None, waypoints=[], arrivals=[], dr=[], end_t=rows[-1]["t"],
+             max_depth=0.0, navigation="x_waypoints_reached" in rows[0] and "x_dr_error_m" in rows[0])
     last_phase = None
     last_reached = 0
+    dive = dict(dive_t=None, start=None)
     for row in rows:
         phase = int(row["m_depth_state"])
         if phase != last_phase:
             e["phases"].append((row["t"], phase, row["m_depth"]))
+            if phase == 1 and last_phase == 0:  # a dive from the surface: the DR restarts from the last fix
+                has_start = row.get("m_lat") is not None and row.get("m_lon") is not None
+                dive = dict(dive_t=row["t"], start=(row["m_lat"], row["m_lon"]) if has_start else None)
             last_phase = phase
         e["yos"] = int(row["x_yo_count"])
         if row["x_abort_cause"] and e["abort_t"] is None:
@@ -127,6 +139,7 @@ def events(rows):
         reached = int(row.get("x_waypoints_reached") or 0)
         if reached > last_reached:
             e["waypoints"].append(row["t"])
+            e["arrivals"].append(dict(t=row["t"], **dive))
             last_reached = reached
         if row.get("x_dr_error_m") is not None:
             e["dr"].append((row["t"], row["x_dr_error_m"]))
@@ -144,11 +157,12 @@ class Table:
         if not ok:
             self.failures.append(what)
 
-    def compare(self, what, sil, hil, tolerance, unit=""):
+    def compare(self, what, sil, hil, tolerance, unit="", sil_shown=None):
+        """hil within tolerance of sil (the SIL column shows sil_shown when given)."""
         if sil is None or hil is None:
             self.add(what, sil, hil, sil is None and hil is None, "both absent")
             return
-        self.add(what, "%.1f%s" % (sil, unit), "%.1f%s" % (hil, unit), abs(sil - hil) <= tolerance,
+        self.add(what, sil_shown or "%.1f%s" % (sil, unit), "%.1f%s" % (hil, unit), abs(sil - hil) <= tolerance,
                  "+-%.1f%s" % (tolerance, unit))
 
     def print(self):
@@ -167,7 +181,7 @@ def time_tolerance(t):
     return 3.0 + 0.02 * t
 
 
-def compare(sil, hil, case, table, scale):
+def compare(sil, hil, case, table, scale, source):
     # A cycle blocked on a silent device, in simulated seconds.
     blocked = case.get("blocked_wall_s", 0.0) * scale
     table.add("phase sequence", "-".join(PHASE_NAMES[p] for _, p, _ in sil["phases"]),
@@ -195,8 +209,22 @@ def compare(sil, hil, case, table, scale):
         return
     table.add("waypoints reached", len(sil["waypoints"]), len(hil["waypoints"]),
               len(sil["waypoints"]) == len(hil["waypoints"]), "equal")
-    for i, (ts, th) in enumerate(zip(sil["waypoints"], hil["waypoints"])):
-        table.compare("waypoint %d reached at, s" % (i + 1), ts, th, time_tolerance(ts))
+    goto = start_fix.read_goto(os.path.join(source, case["goto"])) if "goto" in case else None
+    for i, (ts, th) in enumerate(zip(sil["arrivals"], hil["arrivals"])):
+        expected = None
+        if goto and ts["dive_t"] is not None and th["dive_t"] is not None:
+            waypoints, radius = goto
+            expected = start_fix.expected_arrival(ts, th, waypoints[i % len(waypoints)], radius)
+        if expected is None:
+            table.compare("waypoint %d reached at, s" % (i + 1), ts["t"], th["t"], time_tolerance(ts["t"]))
+            continue
+        # The dive may start from another GPS epoch's fix than SIL's (start_fix.py): the arrival is
+        # compared with SIL's shifted by HIL's own dive time and distance to go at SIL's approach speed.
+        table.add("waypoint %d: dive, to go" % (i + 1), "%.0f s, %.1f m" % (ts["dive_t"], expected["d_sil"]),
+                  "%.0f s, %.1f m" % (th["dive_t"], expected["d_hil"]), True,
+                  "at %.3f m/s" % expected["speed"])
+        table.compare("waypoint %d reached at, s" % (i + 1), expected["t"], th["t"], time_tolerance(ts["t"]),
+                      sil_shown="%.1f (%.1f)" % (ts["t"], expected["t"]))
     table.add("surfacings with DR error", len(sil["dr"]), len(hil["dr"]), len(sil["dr"]) == len(hil["dr"]), "equal")
     for i, ((_, es), (_, eh)) in enumerate(zip(sil["dr"], hil["dr"])):
         # GPS noise 3 m (1 sigma per axis) on each of the two fixes that bound
@@ -317,6 +345,24 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     return read_log(logs[0]), err, stopped_by_us
 
 
+def compare_kept(directory, source, name, case, scale):
+    """The SIL and HIL logs a --keep kept, compared as a flight compares them (no drop weight: the firmware's
+    stderr is not kept)."""
+    logs = glob.glob(os.path.join(directory, "plant", "logs", "flight-*.csv"))
+    if case["sil"] is None or len(logs) != 1:
+        fail(name, "%s: a kept SIL log and one HIL log wanted (%d found)" % (directory, len(logs)))
+    sil_rows, hil = read_log(os.path.join(directory, "sil.csv")), events(read_log(logs[0]))
+    if case["end"] != "complete":  # the harness stopped the HIL flight: the same stretch of time
+        sil_rows = [r for r in sil_rows if r["t"] <= hil["end_t"]]
+    table = Table()
+    compare(events(sil_rows), hil, case, table, scale, source)
+    print("SIL vs HIL, case %s, kept in %s:" % (name, directory))
+    table.print()
+    if table.failures:
+        fail(name, "outside tolerance: " + ", ".join(table.failures))
+    print("PASS hil %s" % name)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("build")
@@ -324,9 +370,13 @@ def main():
     parser.add_argument("case", choices=sorted(CASES))
     parser.add_argument("--time-scale", type=float, default=20.0)
     parser.add_argument("--keep", help="keep the logs in this directory")
+    parser.add_argument("--compare", help="compare the flights kept (--keep) in this directory again, fly nothing")
     a = parser.parse_args()
     build, source = os.path.abspath(a.build), os.path.abspath(a.source)
     case = CASES[a.case]
+    if a.compare:
+        compare_kept(a.compare, source, a.case, case, a.time_scale)
+        return
     prefix = os.environ.get("GLIDER_FIRMWARE_PREFIX", "").split()
     firmware = os.environ.get("GLIDER_FIRMWARE", firmware_binary(build))
     if "GLIDER_FIRMWARE" in os.environ and not os.access(firmware, os.X_OK):
@@ -358,7 +408,7 @@ def main():
             fail(a.case, "the firmware did not complete the mission within the wall-time bound")
         if sil is not None:
             table = Table()
-            compare(sil, hil, case, table, a.time_scale)
+            compare(sil, hil, case, table, a.time_scale, source)
             compare_drop_weight(sil_summary, err, case, table)
             print("SIL vs HIL, case %s (mission %s, vehicle %s, seed %d, time scale %g):" %
                   (a.case, case["mission"], VEHICLE, SEED, a.time_scale))
