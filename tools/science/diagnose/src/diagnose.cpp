@@ -1193,7 +1193,14 @@ void hold_aliased_readings(const SampleSet& set, const Split& s, const DiagnoseO
                     improves_heldout(f.heldout_rms, current_fit.heldout_rms, options.margins);
       if (r.ambiguous) r.separate = what_separates(effect, alternative);
       d.beside.push_back(r);
-      if (!is_seen && !r.ambiguous) continue;  // not seen, not preferred: the conditional interval stands
+      // Not seen and not preferred, the partner is still not ruled out where
+      // the held-out yos predict the joint fit no worse (both views): the
+      // interval then holds the joint reading too (docs/science.md, "Where the
+      // vertical plane's intervals miss the independent truth"). A partner
+      // the held-out yos reject leaves the conditional interval.
+      const bool not_rejected =
+          f.heldout_score <= current_fit.heldout_score && f.heldout_rms <= current_fit.heldout_rms;
+      if (!is_seen && !r.ambiguous && !not_rejected) continue;
       finding->ci95_low = std::min(finding->ci95_low, low);
       finding->ci95_high = std::max(finding->ci95_high, value + half);
       finding->interval_holds_with.push_back(alternative);
