@@ -17,11 +17,12 @@ A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
 
   check_partner_not_rejected.py GLIDER_TRUTH GLIDER_DIAGNOSE VEHICLES_DIR WORKDIR [DRAWS]
 """
-import json
 import os
 import random
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
+from truth_draw import findings, fly_and_diagnose  # noqa: E402
 
 TOLERANCE = 1e-9  # relative: the JSON's doubles are the program's
 
@@ -69,28 +70,17 @@ def main():
     rng = random.Random(seed)
     os.makedirs(work, exist_ok=True)
     vehicle = os.path.join(vehicles, 'slocum_we01.toml')
-    failures, applied, covered, named = [], 0, 0, 0
+    failures, applied, covered, named = [], 0, 0, 0  # a failed glider-truth or glider-diagnose fails the test
     for i in range(draws):
         draw = rng.randrange(1, 2**62)
         drag = rng.uniform(1.08, 1.5)
         lift = rng.uniform(0.7, 0.9) if rng.random() < 0.5 else rng.uniform(1.1, 1.5)
-        log = os.path.join(work, 'lift_drag_%d.csv' % draw)
-        made = subprocess.run([truth_bin, '--variant', 'deep', '--seed', str(draw), '--yos', '6', '--out', log,
-                               '--effect', 'drag_change=%.9g' % drag, '--effect', 'lift_change=%.9g' % lift],
-                              capture_output=True, text=True, timeout=300)
-        if made.returncode != 0:
-            failures.append('glider-truth draw %d: %s' % (draw, made.stderr.strip()[-300:]))
-            continue
-        out = subprocess.run([diagnose, log, '--vehicle', vehicle, '--plane', 'vertical', '--json'],
-                             capture_output=True, text=True, timeout=600)
-        if out.returncode != 0:
-            failures.append('glider-diagnose draw %d: exit %d %s' % (draw, out.returncode, out.stderr.strip()[-300:]))
-            continue
-        document = json.loads(out.stdout)
+        document = fly_and_diagnose(truth_bin, diagnose, vehicle, work, 'lift_drag', 'deep', draw,
+                                    {'drag_change': drag, 'lift_change': lift})
         bad, applies = check(document)
         applied += applies > 0
         failures += ['draw %d: %s' % (draw, b) for b in bad]
-        f = {x['effect']: x for x in document['findings']}.get('drag_change')
+        f = findings(document).get('drag_change')
         state = 'drag not named'
         if f is not None:
             named += 1
