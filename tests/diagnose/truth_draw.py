@@ -4,7 +4,8 @@ simulator (tools/science/truth, glider-truth) with hidden effects, pick the vehi
 glider-diagnose's JSON on it (tests/ambiguous_beside, tests/density_from_start, tests/depth_lag_form,
 tests/diagnose_intervals, tests/diagnose_pump_lag, tests/heading_plane, tests/identifiability,
 tests/lift_velocity_misses, tests/offset_misses, tests/reynolds_drag, tests/reynolds_prior_interval,
-tests/unnamed_volume_terms, tests/vertical_coverage, tests/zero_width; benchmarks/diagnose_truth_coverage.py flies its draws with run_truth).
+tests/unnamed_volume_terms, tests/vertical_coverage, tests/zero_width; benchmarks/diagnose_truth_coverage.py flies its
+draws with run_truth).
 
 A script puts this directory on its path and imports it:
 
