@@ -312,15 +312,11 @@ int main(int argc, char** argv) {
                  "docs/science.md \"The autopilot's clock\")")
       ->check(CLI::IsMember({"measured", "nominal", "both", "held-out"}))
       ->capture_default_str();
-  app.add_option("--yaw-fast-pole", yaw_fast_pole_max_s,
-                 "upper end (s) of the heading model's fast yaw pole's prior (uniform from 0; the models carry its "
-                 "centre, the yaw delay's interval spans it): negative = half the vehicle file's yaw time constant, "
-                 "0 = no fast pole (the rule before; docs/science.md \"The yaw's fast pole\")")
-      ->check([](const std::string& text) -> std::string {
-        const double v = std::strtod(text.c_str(), nullptr);
-        return std::isfinite(v) && v <= 30.0 ? "" : "--yaw-fast-pole " + text + ": allowed: a finite number <= 30 s";
-      })
-      ->capture_default_str();
+  // -1, not a range's end: the default follows the vehicle file, so a sentinel in the declared range stands for it.
+  tool.add_number("--yaw-fast-pole", yaw_fast_pole_max_s, {-1.0, 30.0, "s"},
+                  "upper end (s) of the heading model's fast yaw pole's prior (uniform from 0; the models carry its "
+                  "centre, the yaw delay's interval spans it): -1 (the default) = half the vehicle file's yaw time "
+                  "constant, 0 = no fast pole (the rule before; docs/science.md \"The yaw's fast pole\")");
   app.add_option("--fit", fit_only,
                  "fit exactly these effects (ids), no selection: e.g. --fit drag_change,buoyancy_offset")
       ->delimiter(',');
