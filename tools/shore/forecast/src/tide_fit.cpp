@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/forecast/tide_fit.hpp"
 
+#include "glider/fitting_core/intervals.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -80,9 +82,7 @@ TideFit fit_tide(const std::vector<CurrentSample>& samples, const std::vector<st
                              " apart (the fit is singular: too few distinct phases of the tide)");
   }
   const Eigen::MatrixXd inverse = ldlt.solve(Eigen::MatrixXd::Identity(p, p));
-  // Student's t 97.5 % quantile (Cornish-Fisher, within 0.5 % from 3 degrees of freedom).
-  const double nu = static_cast<double>(n - p), z = 1.959964;
-  fit.t95 = z + (z * z * z + z) / (4.0 * nu) + (5.0 * std::pow(z, 5) + 16.0 * z * z * z + 3.0 * z) / (96.0 * nu * nu);
+  fit.t95 = fitting_core::t_quantile_975(static_cast<double>(n - p));  // the residual's degrees of freedom
   fit.table.reference_utc_s = reference_utc_s;
   for (Eigen::Index c = 0; c < k; ++c) {
     TideConstituent tc;
