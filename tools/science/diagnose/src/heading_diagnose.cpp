@@ -909,7 +909,6 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   d.roll_logged = track.roll_logged;
   d.logged_roll_rad = track.median_roll_rad;
   d.runs = track.run_first.size();
-  d.yaw_fast_pole_s = track.yaw_fast_pole_s;
   d.yaw_fast_pole_max_s = track.yaw_fast_pole_max_s;
   d.heading_noise_rad = heading_jitter_rad(track);
   d.holds = count_holds(track, d.configured.rate_deadband_rad_s);
@@ -1069,6 +1068,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   d.delay_autopilot_s = at(d.values, HeadingEffect::kAutopilotDelay);
   d.delay_servo_s = at(d.values, HeadingEffect::kFinDelay);
   d.delay_after_fin_s = at(d.values, HeadingEffect::kYawDelay);
+  d.yaw_fast_pole_s = carried_fast_pole(track.yaw_fast_pole_s, d.delay_after_fin_s);  // what the models carried
   return d;
 }
 

@@ -69,7 +69,8 @@ struct HeadingDiagnosis {
   // (the autopilot's cycle), c_fin -> m_fin (the servo), m_fin -> yaw
   // response (compass filtering, the vehicle).
   double delay_autopilot_s = 0.0, delay_servo_s = 0.0, delay_after_fin_s = 0.0;
-  // The yaw's fast pole the vehicle link's models carried, a prior (s), and
+  // The yaw's fast pole the vehicle link's models carried (the prior's centre
+  // where a yaw delay is, at most the delay: carried_fast_pole; 0 without one), and
   // its prior's upper end (HeadingTrackOptions::yaw_fast_pole_max_s): the
   // after-fin delay is a dead time beside it, its interval widened by the
   // prior (0: no fast pole).
