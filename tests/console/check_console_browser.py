@@ -181,6 +181,10 @@ try:
     def text(css):
         return retry(lambda: driver.find_element(By.CSS_SELECTOR, css).text)
 
+    def texts(css):
+        """Every match's text, found and read again together if the page redrew one meanwhile."""
+        return retry(lambda: [e.text for e in driver.find_elements(By.CSS_SELECTOR, css)])
+
     def click(css):
         retry(lambda: driver.find_element(By.CSS_SELECTOR, css).click())
 
@@ -226,8 +230,8 @@ try:
     print("        map layers:", counts)
     h.check(counts["fix"] == len(events("fouling")) and counts["dr-track"] == 1 and counts["forecast-ellipse"] == 1 and
           counts["waypoints"] >= 1, "map: one marker a fix, the DR track, waypoints, the forecast ellipse")
-    alerts = driver.find_elements(By.CSS_SELECTOR, "#alerts .alert[data-kind=health]")
-    h.check(len(alerts) == 1 and "drag_change changed by" in alerts[0].text, "health's drag alert is on the page")
+    alerts = texts("#alerts .alert[data-kind=health]")
+    h.check(len(alerts) == 1 and "drag_change changed by" in alerts[0], "health's drag alert is on the page")
     # The drag plot: health's own (gnuplot, thresholds drawn by health), else the page's SVG with its thresholds.
     png = driver.execute_script("const i = document.querySelector('img.effect-png[alt=drag_change]');"
                                 "return i ? i.complete && i.naturalWidth : null")
@@ -235,7 +239,7 @@ try:
             "the drag plot (%s)" % ("health's PNG, %d px wide" % png if png else "SVG with its threshold lines"))
     h.check(len(driver.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing")) == len(events("fouling")),
           "one table row a surfacing")
-    dr = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#surfacings tr.surfacing td:nth-child(4)")]
+    dr = texts("#surfacings tr.surfacing td:nth-child(4)")
     h.check(any(re.fullmatch(r"\d+ m", t) for t in dr), "DR error shown at the surfacings with received files: %s" % dr)
     wait.until(lambda d: d.execute_script("return GliderMap.layer.getLayers().filter(l => l.getTooltip && "
                                           "l.getTooltip() && String(l.getTooltip().getContent().textContent || "
