@@ -23,15 +23,10 @@ import random
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import diagnose_log, fly, vehicle_file  # noqa: E402
+from truth_draw import diagnose_log, fly, fresh_seed, vehicle_file  # noqa: E402
 
 RATIOS = {'drag_change', 'lift_change'}  # nominal 1; every other effect's nominal is 0
 RELATIVE, ABSOLUTE = 0.03, 0.0005  # DiagnoseOptions::margins
-
-
-def fresh_seed():
-    """A fresh seed (GLIDER_TEST_SEED replays one)."""
-    return int(os.environ.get('GLIDER_TEST_SEED') or random.SystemRandom().randrange(1, 2**31))
 
 
 def improves(a, b):

@@ -14,11 +14,18 @@ A script puts this directory on its path and imports it:
 """
 import json
 import os
+import random
 import subprocess
 import sys
 
 # The vehicle file each of the truth's variants flies (boards/vehicles): its nominal polar and hull.
 VEHICLE_OF_VARIANT = {'shallow': 'slocum_shallow.toml', 'deep': 'slocum_we01.toml'}
+
+
+def fresh_seed(upper=2**31):
+    """A fresh seed each run, from the system's entropy, in [1, upper); GLIDER_TEST_SEED=N replays the draw of seed
+    N. The caller prints the seed it drew, so a failure can be replayed."""
+    return int(os.environ.get('GLIDER_TEST_SEED') or random.SystemRandom().randrange(1, upper))
 
 
 def vehicle_file(vehicles, variant):

@@ -25,6 +25,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_fin_or_roll import diagnose, finish  # noqa: E402
+from truth_draw import fresh_seed  # noqa: E402 (check_fin_or_roll put tests/diagnose on the path)
 
 DRAWS = 4
 NEEDED = 2
@@ -33,7 +34,7 @@ NEEDED = 2
 def main():
     truth, program, source, out = sys.argv[1:5]
     os.makedirs(out, exist_ok=True)
-    seed = int(os.environ.get('GLIDER_TEST_SEED', random.SystemRandom().randrange(1, 2**31)))
+    seed = fresh_seed()
     print('seed %d (GLIDER_TEST_SEED=%d replays it)' % (seed, seed))
     rng = random.Random(seed)
     failures = []

@@ -34,7 +34,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from check_fin_or_roll import finish, fly  # noqa: E402
-from truth_draw import diagnose_log, heading_findings  # noqa: E402
+from truth_draw import diagnose_log, fresh_seed, heading_findings  # noqa: E402
 
 
 def forced(program, log, vehicle, extra):
@@ -47,7 +47,7 @@ def forced(program, log, vehicle, extra):
 def main():
     truth, program, source, out = sys.argv[1:5]
     os.makedirs(out, exist_ok=True)
-    seed = int(os.environ.get('GLIDER_TEST_SEED') or random.SystemRandom().randrange(1, 2**62))
+    seed = fresh_seed(2**62)
     print('seed %d (GLIDER_TEST_SEED=%d replays it)' % (seed, seed))
     rng = random.Random(seed)
     delay = rng.uniform(5.0, 8.0)

@@ -21,12 +21,7 @@ import sys
 from screen_checks import stated_under_screen
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import diagnose_log, fly  # noqa: E402
-
-
-def fresh_seed():
-    """A fresh seed (GLIDER_TEST_SEED replays one)."""
-    return int(os.environ.get("GLIDER_TEST_SEED") or random.SystemRandom().randrange(1, 2**31))
+from truth_draw import diagnose_log, fly, fresh_seed  # noqa: E402
 
 
 def fly_and_diagnose(truth, diagnose, vehicle, workdir, seed, effect, value, plane):

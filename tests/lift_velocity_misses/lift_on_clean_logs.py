@@ -20,11 +20,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import diagnose_log, findings, fly, vehicle_file  # noqa: E402
-
-
-def fresh_seed():
-    return int(os.environ.get('GLIDER_TEST_SEED') or random.SystemRandom().randrange(1, 2**31))
+from truth_draw import diagnose_log, findings, fly, fresh_seed, vehicle_file  # noqa: E402
 
 
 def excludes_one(row):

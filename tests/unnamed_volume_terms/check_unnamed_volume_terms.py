@@ -23,14 +23,9 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import diagnose_log, fly, vehicle_file  # noqa: E402
+from truth_draw import diagnose_log, fly, fresh_seed, vehicle_file  # noqa: E402
 
 TERMS = ('hull_compressibility', 'thermal_expansion')
-
-
-def fresh_seed():
-    """A fresh seed (GLIDER_TEST_SEED replays one)."""
-    return int(os.environ.get('GLIDER_TEST_SEED') or random.SystemRandom().randrange(1, 2**31))
 
 
 def check(document):

@@ -22,14 +22,9 @@ import random
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
-from truth_draw import findings, fly_and_diagnose  # noqa: E402
+from truth_draw import findings, fly_and_diagnose, fresh_seed  # noqa: E402
 
 TOLERANCE = 1e-9  # relative: the JSON's doubles are the program's
-
-
-def fresh_seed():
-    """A fresh seed (GLIDER_TEST_SEED replays one)."""
-    return int(os.environ.get('GLIDER_TEST_SEED') or random.SystemRandom().randrange(1, 2**31))
 
 
 def not_rejected(b):
