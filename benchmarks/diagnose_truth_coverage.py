@@ -417,12 +417,13 @@ def main():
             continue
         per, spurious, _ = score(r)
         lost = [e for e, (n, w, c, a) in per.items() if not w]
-        if lost or spurious or (r['case'] == 'none' and r['findings']):
+        claims = [f for f in r['findings'] if f[0] not in INPUTS]  # the CTD's density is an input, not a finding
+        if lost or spurious or (r['case'] == 'none' and claims):
             misses.append('  %s seed %d (%s, %s, %.1f s cycle): findings %s' % (
                 r['case'], r['seed'], r['variant'], r['flight']['pitch_control'], r['flight']['cycle_s'],
                 ', '.join('%s %.4g [%.4g, %.4g]' % (e, v, lo if lo is not None else float('nan'),
                                                    hi if hi is not None else float('nan'))
-                          for e, v, lo, hi, _ in r['findings']) or 'none'))
+                          for e, v, lo, hi, _ in claims) or 'none'))
     if misses:
         print('draws not named within 15 %, with spurious findings or not clean (replay: --draw-seed SEED --cases CASE '
               '--draws 1):')
