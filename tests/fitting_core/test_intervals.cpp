@@ -178,3 +178,26 @@ TEST(FittingCoreIntervals, AHeldOutReplicateCoversAModelFormError) {
     }
   }
 }
+
+// The equal-weight mixture's central 95 %, against answers worked out by
+// hand: one reading is its own interval; two far apart each give their 95 %
+// one-sided quantile (the other carries half the weight); a wide reading
+// beside a narrow one gives the wide one's 90 % (the narrow one's mass all
+// inside), short of the union's end; a point beside a reading likewise.
+TEST(FittingCoreIntervals, TheMixtureOfReadingsWeighedAlike) {
+  const std::vector<double> one_mean{2.0}, one_sigma{0.5};
+  const fc::Estimate one = fc::mixture_interval(one_mean, one_sigma);
+  DOUBLES_EQUAL(2.0 - 1.959964 * 0.5, one.low, 1e-6);
+  DOUBLES_EQUAL(2.0 + 1.959964 * 0.5, one.high, 1e-6);
+  const std::vector<double> far_means{-10.0, 10.0}, far_sigmas{1.0, 1.0};
+  const fc::Estimate far = fc::mixture_interval(far_means, far_sigmas);
+  DOUBLES_EQUAL(10.0 + 1.644854, far.high, 1e-6);  // Phi^-1(0.95)
+  DOUBLES_EQUAL(-10.0 - 1.644854, far.low, 1e-6);
+  DOUBLES_EQUAL(0.0, far.value, 1e-12);
+  const std::vector<double> nested_means{0.0, 0.0}, nested_sigmas{1.0, 3.0};
+  const fc::Estimate nested = fc::mixture_interval(nested_means, nested_sigmas);
+  DOUBLES_EQUAL(3.0 * 1.644854, nested.high, 2e-3);  // Phi(4.93) = 1 - 4e-7 for the narrow one
+  CHECK(nested.high < 3.0 * 1.959964);               // the union's end
+  const std::vector<double> point_means{0.0, 0.0}, point_sigmas{0.0, 1.0};
+  DOUBLES_EQUAL(1.644854, fc::mixture_interval(point_means, point_sigmas).high, 1e-6);
+}

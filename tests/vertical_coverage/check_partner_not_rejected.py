@@ -1,16 +1,19 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """A finding's interval holds its reading beside a screened partner wherever the held-out yos do not reject that
-joint fit (issue 26, vertical plane; diagnose.cpp, hold_aliased_readings; docs/science.md "Where the vertical
-plane's intervals miss the independent truth").
+joint fit, the readings weighed alike (issue 26, vertical plane; diagnose.cpp, hold_aliased_readings; docs/science.md
+"Where the vertical plane's intervals miss the independent truth" and "The readings beside a finding weighed
+alike").
 
 Logs of the independent truth simulator (tools/science/truth), deep variant, a lift change and a drag change
 hidden together at the benchmark's sizes: on these logs the pair's signatures correlate 0.95+, the selection names
 the drag alone in most draws and the drag read alone absorbs the lift (its interval missed the truth in 6 of 11
 such draws on a validation seed). For every draw and every `read_beside` entry whose joint fit predicts the
-held-out yos no worse than the selection's (both views: sample RMS and block RMS), the finding's 95 % interval
-holds the entry's interval; the lead's rule (hold it only where the partner is seen or preferred by the margins)
-fails this on most such logs. Whether the drag's interval holds its truth is printed, not asserted (a 95 %
+held-out yos no worse than the selection's (both views: sample RMS and block RMS) or whose partner is seen, the
+finding's 95 % interval holds the entry's reading and the conditional interval, and a drag's ends are those of the
+central 95 % of the equal-weight mixture of its conditional reading and the readings held (or the conditional
+interval's, where wider): the rule of session 44 (the union of the readings' own intervals) fails this wherever it
+widened, the rule before it (hold only where the partner is seen or preferred by the margins) on most such logs. Whether the drag's interval holds its truth is printed, not asserted (a 95 %
 interval misses in about one draw in twenty); the draws where the rule had nothing to hold are counted and said.
 
 A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
@@ -23,8 +26,10 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'diagnose'))
 from truth_draw import findings, fly_and_diagnose, fresh_seed  # noqa: E402
+from beside_rule import Z95, mixture  # noqa: E402
 
 TOLERANCE = 1e-9  # relative: the JSON's doubles are the program's
+MIXTURE_TOLERANCE = 1e-6  # of the interval's width: the two bisections' ends
 
 
 def not_rejected(b):
@@ -36,9 +41,11 @@ def check(document):
     """(failures, entries the rule applies to) of one diagnosis."""
     failures, applies = [], 0
     findings = {f['effect']: f for f in document['findings']}
+    held = {}
     for b in document.get('read_beside', []):
-        if not not_rejected(b):
+        if not (not_rejected(b) or b['partner_seen']):
             continue
+        held.setdefault(b['effect'], []).append(b)
         applies += 1
         f = findings.get(b['effect'])
         if f is None:
@@ -46,7 +53,7 @@ def check(document):
             continue
         low, high = f['ci95']
         slack = TOLERANCE * max(abs(low), abs(high), 1e-30)
-        if low > b['ci95'][0] + slack or high < b['ci95'][1] - slack:
+        if low > b['value'] + slack or high < b['value'] - slack:
             failures.append('%s %.6g [%.6g, %.6g] does not hold its reading beside %s %.6g [%.6g, %.6g] that the '
                             'held-out yos do not reject (%.3f vs %.3f mm/s, blocks %.3f vs %.3f)' % (
                                 b['effect'], f['value'], low, high, b['partner'], b['value'], b['ci95'][0],
@@ -54,6 +61,24 @@ def check(document):
                                 1e3 * b['selected_heldout_rms_depth_rate_m_s'],
                                 1e3 * b['heldout_block_rms_depth_rate_m_s'],
                                 1e3 * b['selected_heldout_block_rms_depth_rate_m_s']))
+    for effect, readings in held.items():
+        f = findings.get(effect)
+        if f is None or 'ci95_conditional' not in f:
+            failures.append('%s: readings held beside it, no conditional interval stated' % effect)
+            continue
+        (clo, chi), (low, high) = f['ci95_conditional'], f['ci95']
+        if low > clo or high < chi:
+            failures.append('%s [%.6g, %.6g] narrower than its conditional [%.6g, %.6g]' % (effect, low, high, clo, chi))
+        if effect != 'drag_change':  # a lift (the stall's) or a depth lag (its other form) may widen after
+            continue
+        parts = [(f['value'], (chi - clo) / (2 * Z95))] + [(b['value'], (b['ci95'][1] - b['value']) / Z95)
+                                                         for b in readings]
+        mlo, mhi = mixture([(m - Z95 * s, m + Z95 * s) for m, s in parts])
+        want = (min(clo, mlo), max(chi, mhi))
+        if max(abs(low - want[0]), abs(high - want[1])) > MIXTURE_TOLERANCE * (want[1] - want[0]):
+            failures.append('%s [%.6g, %.6g]: the readings held beside it weighed alike give [%.6g, %.6g] '
+                            '(conditional [%.6g, %.6g], %d held)' % (effect, low, high, want[0], want[1], clo, chi,
+                                                                     len(readings)))
     return failures, applies
 
 
@@ -92,7 +117,7 @@ def main():
         print('FAIL', f)
     if failures:
         sys.exit(1)
-    print('PASS findings hold their readings beside partners the held-out yos do not reject')
+    print('PASS findings hold their readings beside partners the held-out yos do not reject, weighed alike')
 
 
 if __name__ == '__main__':

@@ -3,7 +3,7 @@
 """Two --details runs of benchmarks/diagnose_truth_coverage.py on the same seed (the same logs), side by side per
 effect: named / within 15 % / covered / spurious draws / clean logs with no finding for each, the draws whose
 findings (effects named) differ, and each interval's width in the second run over the first's (median, max, how many
-wider) for the findings both runs name.
+wider, how many narrower and the least) for the findings both runs name.
 
 usage: paired.py BEFORE.json AFTER.json
 """
@@ -69,7 +69,7 @@ def main():
     pb, sb, cb, db = tallies(before)
     pa, sa, ca, da = tallies(after)
     w = widths(before, after)
-    print('| effect | hidden | named | within 15 % | covered | width after/before: median (max), wider |')
+    print('| effect | hidden | named | within 15 % | covered | width after/before: median (max), wider; narrower (min) |')
     print('|---|---|---|---|---|---|')
     for e in bench.VERTICAL + bench.HEADING:
         if e not in pb and e not in pa:
@@ -78,7 +78,9 @@ def main():
         ws = w.get(e, [])
         print('| %s | %d | %d -> %d | %d -> %d | %d/%d -> %d/%d | %s |' % (
             e, x[0], x[1], y[1], x[2], y[2], x[4], x[3], y[4], y[3],
-            'x%.2f (x%.2f), %d of %d' % (statistics.median(ws), max(ws), sum(v > 1.0 + 1e-9 for v in ws), len(ws))
+            'x%.2f (x%.2f), %d of %d; narrower %d (min x%.2f)' % (
+                statistics.median(ws), max(ws), sum(v > 1.0 + 1e-9 for v in ws), len(ws),
+                sum(v < 1.0 - 1e-9 for v in ws), min(ws))
             if ws else '-'))
     diff, both = changed(before, after)
     print('draws %d -> %d; spurious %d -> %d; clean logs with no finding %d -> %d; findings differ in %d of %d draws' % (

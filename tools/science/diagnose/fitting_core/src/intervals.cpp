@@ -109,6 +109,32 @@ Estimate t_interval(double value, double standard_error, double degrees_of_freed
   return {value, value - half, value + half};
 }
 
+Estimate mixture_interval(std::span<const double> means, std::span<const double> sigmas) {
+  const std::size_t n = std::min(means.size(), sigmas.size());
+  double low = std::numeric_limits<double>::infinity(), high = -low, mean = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    low = std::min(low, means[i] - 10.0 * sigmas[i]);
+    high = std::max(high, means[i] + 10.0 * sigmas[i]);
+    mean += means[i] / static_cast<double>(n);
+  }
+  const auto cdf = [&](double x) {
+    double p = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      p += sigmas[i] > 0.0 ? 0.5 * std::erfc((means[i] - x) / (sigmas[i] * std::sqrt(2.0))) : (x >= means[i]);
+    }
+    return p / static_cast<double>(n);
+  };
+  const auto quantile = [&](double q) {  // bisection: the cdf is monotone
+    double a = low, b = high;
+    for (int i = 0; i < 200 && b - a > 1e-14 * std::max(std::abs(a), std::abs(b)); ++i) {
+      const double mid = 0.5 * (a + b);
+      (cdf(mid) < q ? a : b) = mid;
+    }
+    return 0.5 * (a + b);
+  };
+  return {mean, quantile(0.025), quantile(0.975)};
+}
+
 Estimate mean_with_interval(std::span<const double> values) {
   const std::size_t n = values.size();
   double mean = 0.0;

@@ -92,6 +92,14 @@ double t_quantile_975(double degrees_of_freedom);
 // value +- t(dof) standard_error.
 Estimate t_interval(double value, double standard_error, double degrees_of_freedom);
 
+// The central 95 % of an equal-weight mixture of normal readings of one value
+// (means[i] +- sigmas[i]; a sigma of 0 is a point): the interval where
+// models that read it differently are all still allowed and the data weigh
+// them alike (model averaging with equal weights: Buckland, Burnham and
+// Augustin 1997). The union of their own 95 % intervals claims more: each
+// reading's tails at full weight. value: the mixture's mean. Needs n >= 1.
+Estimate mixture_interval(std::span<const double> means, std::span<const double> sigmas);
+
 // The mean of independent estimates of one value and its 95 % Student-t
 // interval from their scatter (n - 1 degrees of freedom); needs n >= 2.
 Estimate mean_with_interval(std::span<const double> values);
