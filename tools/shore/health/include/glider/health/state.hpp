@@ -30,8 +30,9 @@ inline constexpr const char* kStateSchema = "glider-health-state/1";
 // too little (fin_spread_deg stored, session 38); 9: nor on one whose heading
 // turned too little (heading_spread_deg stored, session 39); 10: the fin
 // projected on the command and the lagged heading (fin_instrument.hpp, session 42);
-// 11: that projection the instrument of the logged fin (fin_iv.hpp, session 42).
-inline constexpr int kMeasurementVersion = 11;
+// 11: that projection the instrument of the logged fin (fin_iv.hpp, session 42);
+// 12: the battery per km's pitch at each depth reading interpolated (session 45).
+inline constexpr int kMeasurementVersion = 12;
 
 struct HealthState {
   std::string glider;
