@@ -17,7 +17,8 @@ depth lag); a pump lag fitted alone reads that delay 2-3 times over
 
 Each must come out within 15 % of the truth with an interval that holds it
 and is not zero-width; the delay fitted beside it is in the extended
-vehicle's parameters, not among the findings.
+vehicle's parameters, and among the findings where the log sizes it
+(check_depth_lag_beside_pump_lag.py).
 """
 import os
 import sys

@@ -1318,9 +1318,16 @@ void read_unnamed_volume_terms(const SampleSet& set, const Split& s, const Diagn
 // nuisance (in the extended vehicle, not a finding).
 // Not where the depth lag was screened as the pump lag's alias: its
 // interval then already holds that joint reading.
+// The depth lag fitted so is named (a finding, ranked last) where its
+// training interval puts it at least the minimum detectable effect from no
+// lag (kZDetectable sigmas: what benchmarks/identifiability.py calls
+// identifiable): the selection's margins judge it against the pump lag
+// alone, which already reads much of the sensor's delay, so a lag the joint
+// fit sizes well earned no step of its own (docs/science.md, "Method rule:
+// a depth lag beside a named pump lag").
 void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                                     const std::vector<ScreenedPair>& aliases, Candidate& current,
-                                    FitResult& current_fit) {
+                                    FitResult& current_fit, Diagnosis& d) {
   const auto fitted = [&](Effect e) {
     return std::find(current.fitted.begin(), current.fitted.end(), e) != current.fitted.end();
   };
@@ -1355,6 +1362,7 @@ void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const 
   // alone 3.76 s; docs/science.md).
   if (!plausible(Effect::kDepthLag, lag) || f.heldout_score > current_fit.heldout_score) return;
   add_intervals(set, joint, s.train, options.intervals, f);
+  if (lag >= kZDetectable * f.sigma.back()) d.findings.push_back(new_finding(Effect::kDepthLag, f.heldout_rms, d));
   current = std::move(joint);
   current_fit = std::move(f);
 }
@@ -1508,7 +1516,7 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
         state_identifiability(set, s, options, pool, current, current_fit, tied_delay ? &*tied_delay : nullptr, d);
   }
   if (options.fit_only.empty() && dynamic)
-    read_pump_lag_beside_depth_lag(set, s, options, aliases, current, current_fit);
+    read_pump_lag_beside_depth_lag(set, s, options, aliases, current, current_fit, d);
   check_by_heldout_replicate(set, s, options, current, current_fit);
   std::vector<double> prior_shift;
   if (flies_reynolds_prior(given, options.drag_reynolds_exponent)) {
