@@ -18,6 +18,7 @@ import tempfile
 
 source = os.path.abspath(sys.argv[1])
 sys.path.insert(0, os.path.join(source, "tests", "hil"))
+import bad_input  # noqa: E402
 import hil_flight  # noqa: E402
 import start_fix  # noqa: E402
 
@@ -76,20 +77,12 @@ check(verdict(SIL, flight(23.0, at(1.2, 1.7), 407.0)) != [], "the next epoch's f
 check(verdict(SIL, flight(23.0, None, 383.0)) != [], "no start fix in the HIL log, 383 s: compared as it is, fails")
 
 with tempfile.TemporaryDirectory() as tmp:
-    for name, text, want in (
+    bad_input.check_refused(check, start_fix.read_goto, tmp, (
             ("no_radius.ma", "<start:waypoints>\n724.7 5418.9\n<end:waypoints>\n", "list_when_wpt_dist"),
             ("bad_line.ma", "b_arg: list_when_wpt_dist(m) 30\n<start:waypoints>\n724.7\n<end:waypoints>\n",
              ":3: waypoint"),
             ("bad_lat.ma", "b_arg: list_when_wpt_dist(m) 30\n<start:waypoints>\n724.7 nan\n<end:waypoints>\n",
-             ":3: waypoint lat nan")):
-        path = os.path.join(tmp, name)
-        with open(path, "w") as f:
-            f.write(text)
-        try:
-            start_fix.read_goto(path)
-            check(False, "%s refused" % name)
-        except ValueError as e:
-            check(path in str(e) and want in str(e), "%s refused: %s" % (name, e))
+             ":3: waypoint lat nan")))
 
 print("PASS" if not failures else "FAILED: %d" % len(failures))
 sys.exit(1 if failures else 0)

@@ -12,7 +12,10 @@ two flight logs are compared event by event within stated tolerances
       kept, compared again: the same flights under another rule; no drop weight)
 
 CASE is one of CASES below. Prints the SIL-vs-HIL table and the firmware's
-loop wake-up lateness; "PASS hil CASE" or "FAIL hil CASE: why".
+loop wake-up lateness; "PASS hil CASE" or "FAIL hil CASE: why", or, when the
+flight failed on an actuator-fault abort that the plant's own record shows
+it caused by answering late (an overloaded machine: overload_verdict.py),
+"SKIP hil CASE: overloaded, not judged" with the evidence, exit 77.
 GLIDER_FIRMWARE / GLIDER_FIRMWARE_PREFIX run another build of the firmware
 (the arm64 one under "qemu-aarch64 -L /": ./glider cross runs every case so).
 """
@@ -30,6 +33,7 @@ import sys
 import tempfile
 import time
 
+import overload_verdict
 import start_fix
 
 VEHICLE = "boards/vehicles/slocum_we01.toml"
@@ -65,6 +69,16 @@ CASES = {
     # flight: connection refused, ptys hung up. The same demand.
     "plant_killed": dict(mission="tests/hil/short_yo.toml", plant=[], kill_plant_at_s=60.0, sil=None, end="abort",
                          cause=(3, 4, 5)),
+    # The overload verdict itself (overload_verdict.py), each flown once: the
+    # harness stops (SIGSTOP) the plant for 0.5 s of wall time a simulated
+    # minute in, longer than the firmware's three 110 ms attempts: the flight
+    # aborts on an actuator fault that the plant caused, and must be judged
+    # "overloaded, not judged". And the pump jammed by the plant while SIL's
+    # is not: an actuator fault with a prompt plant, which must FAIL.
+    "plant_paused": dict(mission="tests/hil/short_yo.toml", plant=[], pause_plant=(60.0, 0.5), sil=[], end="abort",
+                         cause=5, verdict="overloaded"),
+    "actuator_fault_prompt": dict(mission="tests/hil/short_yo.toml", plant=["pump_stall@125s"], sil=[], end="abort",
+                                  cause=5, verdict="fail"),
 }
 
 ABORT_NAMES = {0: "none", 1: "overdepth", 2: "overtime", 3: "depth sensor", 4: "attitude sensor", 5: "actuator fault",
@@ -286,17 +300,22 @@ def lateness(stderr):
     return m[-1] if m else None
 
 
-def run_hil(build, source, name, case, tmp, scale, stop_s):
+def run_hil(build, source, name, case, tmp, scale, stop_s, compass_interval_s=None):
     """Flies the case; the firmware ends by itself or gets SIGTERM at `stop_s`
-    simulated seconds (a wall-time bound with a margin for a loaded machine)."""
+    simulated seconds (a wall-time bound with a margin for a loaded machine).
+    Returns the log's rows, the firmware's stderr, whether the harness
+    stopped it, and the problems seen (for the verdict: main())."""
     # A flight to its end gets 30 % and 10 s more (a loaded machine, start-up);
     # an abort case only needs its minute after the abort, plus start-up.
     limit_s = stop_s / scale * 1.3 + 10.0 if case["end"] == "complete" else stop_s / scale + 3.0
     plant_dir = os.path.join(tmp, "plant")
     plant_args = [os.path.join(build, "tools", "hardware", "plant", "glider-plant"), "--dir", plant_dir, "--vehicle", VEHICLE,
-                  "--seed", str(SEED), "--time-scale", str(scale), "--duration-s", str((limit_s + 30.0) * scale)]
+                  "--seed", str(SEED), "--time-scale", str(scale), "--duration-s", str((limit_s + 30.0) * scale),
+                  "--truth", os.path.join(plant_dir, "truth.csv")]  # kept with the flight (--keep): inflection_dr.py
     for f in case["plant"]:
         plant_args += ["--fault", f]
+    if compass_interval_s is not None:
+        plant_args += ["--compass-interval-s", str(compass_interval_s)]
     plant = start(plant_args, cwd=source, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     ready = plant.stdout.readline()
     if "glider-plant: ready" not in ready:
@@ -314,7 +333,16 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     fw = start(fw_args, stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
     stopped_by_us = False
     killed = False
+    paused = False
     while fw.poll() is None:
+        if "pause_plant" in case and not paused and time.monotonic() - started > case["pause_plant"][0] / scale:
+            # As an overloaded machine does to it: the plant is not scheduled for a while.
+            plant.send_signal(signal.SIGSTOP)
+            time.sleep(case["pause_plant"][1])
+            plant.send_signal(signal.SIGCONT)
+            paused = True
+            print("harness: glider-plant paused (SIGSTOP) %.1f s of wall time, %.1f s after the firmware started" %
+                  (case["pause_plant"][1], time.monotonic() - started - case["pause_plant"][1]))
         if "kill_plant_at_s" in case and not killed and time.monotonic() - started > case["kill_plant_at_s"] / scale:
             plant.kill()  # the firmware starts within a fraction of a simulated second: near enough
             killed = True
@@ -336,13 +364,60 @@ def run_hil(build, source, name, case, tmp, scale, stop_s):
     print(plant_out, end="")
     print(err, end="")
     print("firmware ran %.1f s wall (%s)" % (wall, "stopped by the harness" if stopped_by_us else "exited itself"))
+    problems = []
     # 0: mission done or stopped by SIGTERM; 3: the flight ended in an abort.
     if fw.returncode not in ((0,) if case["end"] == "complete" else (0, 3)):
-        fail(name, "glider-firmware exit status %d" % fw.returncode)
+        problems.append("glider-firmware exit status %d" % fw.returncode)
     logs = glob.glob(os.path.join(plant_dir, "logs", "flight-*.csv"))
     if len(logs) != 1:
-        fail(name, "expected one flight log in %s, found %d" % (plant_dir, len(logs)))
-    return read_log(logs[0]), err, stopped_by_us
+        fail(name, "; ".join(problems + ["expected one flight log in %s, found %d" % (plant_dir, len(logs))]))
+    return read_log(logs[0]), err, stopped_by_us, problems
+
+
+def overloaded(hil, plant_dir, scale):
+    """overload_verdict.judge on this flight: (overloaded, evidence lines)."""
+    record = os.path.join(plant_dir, "lateness.csv")
+    if not os.path.exists(record):
+        return False, ["no plant lateness record (%s)" % record]
+    response_timeout_ms, cycle_budget_ms = overload_verdict.read_bus(plant_dir)
+    return overload_verdict.judge(hil["abort"], hil["abort_t"], overload_verdict.read_record(record),
+                                  response_timeout_ms, cycle_budget_ms, scale)
+
+
+def conclude(name, case, problems, hil, plant_dir, scale):
+    """The verdict: PASS, FAIL, or (a failure on an actuator-fault abort the
+    plant's lateness caused) SKIP "overloaded, not judged", exit 77. A case
+    with "verdict" checks the rule itself: it passes when the rule gives that
+    verdict."""
+    judged = overloaded(hil, plant_dir, scale) if problems else (False, [])
+    is_overloaded, evidence = judged
+    if problems:
+        print("the flight failed (%s); overload verdict:" % "; ".join(problems))
+        for line in evidence:
+            print("  " + line)
+    want = case.get("verdict")
+    if want == "overloaded":
+        if problems and is_overloaded:
+            print("PASS hil %s: the paused plant's abort is judged overloaded, not judged" % name)
+            sys.exit(0)
+        fail(name, "expected the overloaded verdict, got %s" % ("a failure without the plant's evidence"
+                                                                if problems else "a flight that passed"))
+    if want == "fail":
+        if problems and is_overloaded:
+            print("SKIP hil %s: the plant answered late at the fault (an overloaded machine): the prompt-plant "
+                  "verdict cannot be shown" % name)
+            sys.exit(77)
+        if problems and hil["abort"] == overload_verdict.ACTUATOR_FAULT:
+            print("PASS hil %s: an actuator fault with a prompt plant fails" % name)
+            sys.exit(0)
+        fail(name, "expected an actuator-fault failure with a prompt plant, got %s" %
+             ("; ".join(problems) if problems else "a flight that passed"))
+    if not problems:
+        return
+    if is_overloaded:
+        print("SKIP hil %s: overloaded, not judged: %s" % (name, "; ".join(problems)))
+        sys.exit(77)
+    fail(name, "; ".join(problems))
 
 
 def compare_kept(directory, source, name, case, scale):
@@ -358,8 +433,8 @@ def compare_kept(directory, source, name, case, scale):
     compare(events(sil_rows), hil, case, table, scale, source)
     print("SIL vs HIL, case %s, kept in %s:" % (name, directory))
     table.print()
-    if table.failures:
-        fail(name, "outside tolerance: " + ", ".join(table.failures))
+    conclude(name, case, ["outside tolerance: " + ", ".join(table.failures)] if table.failures else [], hil,
+             os.path.join(directory, "plant"), scale)
     print("PASS hil %s" % name)
 
 
@@ -371,6 +446,8 @@ def main():
     parser.add_argument("--time-scale", type=float, default=20.0)
     parser.add_argument("--keep", help="keep the logs in this directory")
     parser.add_argument("--compare", help="compare the flights kept (--keep) in this directory again, fly nothing")
+    parser.add_argument("--compass-interval-s", type=float,
+                        help="glider-plant --compass-interval-s (default: the plant's, every model step)")
     a = parser.parse_args()
     build, source = os.path.abspath(a.build), os.path.abspath(a.source)
     case = CASES[a.case]
@@ -396,16 +473,19 @@ def main():
         if case["end"] == "complete":
             stop_s = sil["end_t"]
         else:  # a minute after the abort, to see the firmware go on cycling
-            fault_s = case.get("kill_plant_at_s") or min(float(f.split("@")[1].rstrip("s")) for f in case["plant"])
-            stop_s = (sil["abort_t"] if sil else fault_s) + 60.0
-        hil_rows, err, stopped = run_hil(build, source, a.case, case, tmp, a.time_scale, stop_s)
+            fault_s = (case.get("kill_plant_at_s") or case.get("pause_plant", (None,))[0] or
+                       min(float(f.split("@")[1].rstrip("s")) for f in case["plant"]))
+            stop_s = (sil["abort_t"] if sil and sil["abort_t"] is not None else fault_s) + 60.0
+        hil_rows, err, stopped, problems = run_hil(build, source, a.case, case, tmp, a.time_scale, stop_s,
+                                                   a.compass_interval_s)
         hil = events(hil_rows)
         if sil is not None and stopped:
             # The harness stopped the HIL flight: compare the same stretch of time.
             sil = events([r for r in sil_rows if r["t"] <= hil["end_t"]])
         print("loop lateness at time scale %g: %s" % (a.time_scale, lateness(err)))
         if case["end"] == "complete" and stopped:
-            fail(a.case, "the firmware did not complete the mission within the wall-time bound")
+            problems.append("the firmware did not complete the mission within the wall-time bound")
+        missing = []
         if sil is not None:
             table = Table()
             compare(sil, hil, case, table, a.time_scale, source)
@@ -414,26 +494,29 @@ def main():
                   (a.case, case["mission"], VEHICLE, SEED, a.time_scale))
             table.print()
             if table.failures:
-                fail(a.case, "outside tolerance: " + ", ".join(table.failures))
-            if table.missing:
-                print("SKIP hil %s: all else within tolerance, but cannot compare %s" % (a.case, "; ".join(table.missing)))
-                sys.exit(77)
+                problems.append("outside tolerance: " + ", ".join(table.failures))
+            missing = table.missing
         if sil is None:  # no table: the board's drop weight checked alone
             said = re.findall(r"glider-firmware: drop weight: (.*)", err)
             if not said or said[-1] != "not fitted (the board has no [gpio])":
-                fail(a.case, "the firmware said drop weight: %s (the plant's board has no [gpio])" %
-                     (said[-1] if said else "nothing"))
+                problems.append("the firmware said drop weight: %s (the plant's board has no [gpio])" %
+                                (said[-1] if said else "nothing"))
         if case["end"] == "abort":
             causes = case["cause"] if isinstance(case["cause"], tuple) else (case["cause"],)
             if hil["abort"] not in causes:
-                fail(a.case, "abort cause %s, expected %s" %
-                     (ABORT_NAMES[hil["abort"]], " or ".join(ABORT_NAMES[c] for c in causes)))
-            after = [r for r in hil_rows if r["t"] > hil["abort_t"]]
-            if stopped and len(after) < 3:
-                fail(a.case, "the firmware stopped cycling after the abort (%d rows after it)" % len(after))
-            print("abort %s at %.1f s; %s" % (ABORT_NAMES[hil["abort"]], hil["abort_t"],
-                  "the firmware kept cycling: %d log rows after it" % len(after) if stopped
-                  else "the firmware knew it was up and ended the flight"))
+                problems.append("abort cause %s, expected %s" %
+                                (ABORT_NAMES[hil["abort"]], " or ".join(ABORT_NAMES[c] for c in causes)))
+            else:
+                after = [r for r in hil_rows if r["t"] > hil["abort_t"]]
+                if stopped and len(after) < 3:
+                    problems.append("the firmware stopped cycling after the abort (%d rows after it)" % len(after))
+                print("abort %s at %.1f s; %s" % (ABORT_NAMES[hil["abort"]], hil["abort_t"],
+                      "the firmware kept cycling: %d log rows after it" % len(after) if stopped
+                      else "the firmware knew it was up and ended the flight"))
+        conclude(a.case, case, problems, hil, os.path.join(tmp, "plant"), a.time_scale)
+        if missing:
+            print("SKIP hil %s: all else within tolerance, but cannot compare %s" % (a.case, "; ".join(missing)))
+            sys.exit(77)
     finally:
         if a.keep:
             shutil.copytree(tmp, a.keep, dirs_exist_ok=True)

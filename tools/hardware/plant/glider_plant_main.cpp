@@ -48,6 +48,10 @@ int main(int argc, char** argv) {
   tool.add_number("--duration-s", options.duration_s, {0.0, 1e9, "s"},
                   "stop this long (simulated) after launch; 0: at SIGTERM")
       ->capture_default_str();
+  tool.add_number("--compass-interval-s", options.compass_interval_s, {0.1, 10.0, "s"},
+                  "$PTNTHPR cadence, simulated: a whole number of model steps (0.1 s); a Slocum reads its "
+                  "attitude every cycle (c_att_time 0)")
+      ->capture_default_str();
   std::string shore;
   app.add_option("--shore", shore,
                  "serve the Iridium modem on a pty (board [modem]) and bridge its calls to this shore station: "

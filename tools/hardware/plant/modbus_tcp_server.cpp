@@ -8,8 +8,10 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 #include <stdexcept>
 #include <vector>
 
@@ -45,6 +47,10 @@ ModbusTcpServer::ModbusTcpServer(const TcpServerOptions& options, modbus_mapping
   if (listen_fd_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
   const int yes = 1;
   setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  // Asked here, at start-up, too: the kernel switches its receive stamps on
+  // a moment after the first socket asks (deferred), and keeps them on while
+  // one asks, so the firmware's first requests are timed as well.
+  setsockopt(listen_fd_, SOL_SOCKET, SO_TIMESTAMPNS, &yes, sizeof yes);
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port = htons(static_cast<std::uint16_t>(options.port));
@@ -96,6 +102,10 @@ void ModbusTcpServer::accept_all() {
     }
     const int yes = 1;
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
+    // The kernel's receive time on each read: how long a request waited for
+    // a plant that was not scheduled (its answer lateness). Where refused,
+    // reads carry no time and the answers are counted untimed.
+    setsockopt(fd, SOL_SOCKET, SO_TIMESTAMPNS, &yes, sizeof yes);
     Client& client = clients_.emplace_back();
     client.fd = fd;
     client.last_activity = Clock::now();
@@ -103,8 +113,29 @@ void ModbusTcpServer::accept_all() {
   }
 }
 
+long ModbusTcpServer::receive(int fd, std::uint8_t* into, std::size_t size, std::int64_t& arrived_ns) const {
+  iovec data{into, size};
+  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec))];
+  msghdr message{};
+  message.msg_iov = &data;
+  message.msg_iovlen = 1;
+  message.msg_control = control;
+  message.msg_controllen = sizeof control;
+  const ssize_t n = recvmsg(fd, &message, 0);
+  arrived_ns = 0;
+  for (cmsghdr* c = CMSG_FIRSTHDR(&message); n > 0 && c != nullptr; c = CMSG_NXTHDR(&message, c)) {
+    if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_TIMESTAMPNS) {
+      timespec at{};
+      std::memcpy(&at, CMSG_DATA(c), sizeof at);
+      arrived_ns = static_cast<std::int64_t>(at.tv_sec) * 1'000'000'000 + at.tv_nsec;
+    }
+  }
+  return static_cast<long>(n);
+}
+
 bool ModbusTcpServer::read_client(Client& client, const std::function<void()>& after_write) {
-  const ssize_t n = read(client.fd, client.buffer + client.length, sizeof client.buffer - client.length);
+  std::int64_t arrived_ns = 0;
+  const long n = receive(client.fd, client.buffer + client.length, sizeof client.buffer - client.length, arrived_ns);
   if (n == 0) return false;  // the client closed
   if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR;
   const auto now = Clock::now();
@@ -112,6 +143,7 @@ bool ModbusTcpServer::read_client(Client& client, const std::function<void()>& a
   client.last_activity = now;
   client.length += static_cast<std::size_t>(n);
   // Every whole request in the buffer, in order (a client may pipeline).
+  int answered = 0;
   while (true) {
     const std::size_t frame = sim_tools::tcp_frame_size(client.buffer, client.length);
     if (frame == sim_tools::kFrameMalformed) {
@@ -120,9 +152,20 @@ bool ModbusTcpServer::read_client(Client& client, const std::function<void()>& a
     }
     if (frame == sim_tools::kFrameIncomplete) break;
     if (!answer(client, frame, after_write)) return false;
+    if (!silent_) ++answered;
     client.length -= frame;
     std::memmove(client.buffer, client.buffer + frame, client.length);
     client.request_started = now;
+  }
+  if (answered > 0 && observer_) {
+    double late_ms = -1.0;
+    if (arrived_ns > 0) {
+      timespec sent{};
+      clock_gettime(CLOCK_REALTIME, &sent);
+      const std::int64_t sent_ns = static_cast<std::int64_t>(sent.tv_sec) * 1'000'000'000 + sent.tv_nsec;
+      late_ms = static_cast<double>(std::max<std::int64_t>(0, sent_ns - arrived_ns)) / 1e6;
+    }
+    observer_(late_ms, answered);
   }
   return true;
 }

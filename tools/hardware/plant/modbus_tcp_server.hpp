@@ -8,7 +8,9 @@
 // leaves a request unfinished longer than the request timeout, or says
 // nothing for the idle timeout, is disconnected; connections beyond the cap
 // are accepted and closed at once (counted), so the listen queue never
-// stalls the well-behaved ones.
+// stalls the well-behaved ones. Each read that carried requests is timed
+// from the request's arrival in the kernel (SO_TIMESTAMPNS) to its answer:
+// how late the plant answered (the answer observer).
 #include <modbus/modbus.h>
 #include <poll.h>
 
@@ -16,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glider::plant {
@@ -44,6 +47,11 @@ class ModbusTcpServer {
   // What a request may write: false for a read-only register (the reply is
   // an ILLEGAL DATA ADDRESS exception and nothing is written).
   using WritableCheck = std::function<bool(int address)>;
+  // After a read whose requests were answered: wall milliseconds from the
+  // arrival of the newest of them (the kernel's receive time of the bytes
+  // read; -1 when the kernel gave none) to the last answer sent, and how
+  // many requests the read held.
+  using AnswerObserver = std::function<void(double late_ms, int requests)>;
 
   // Throws std::runtime_error when the address cannot be bound.
   ModbusTcpServer(const TcpServerOptions& options, modbus_mapping_t* mapping, int unit_id, WritableCheck writable);
@@ -65,6 +73,7 @@ class ModbusTcpServer {
 
   // A plant that has stopped answering: requests are read and discarded.
   void set_silent(bool silent) { silent_ = silent; }
+  void set_answer_observer(AnswerObserver observer) { observer_ = std::move(observer); }
   std::size_t clients() const { return clients_.size(); }
   const TcpServerStats& stats() const { return stats_; }
 
@@ -80,6 +89,8 @@ class ModbusTcpServer {
   void accept_all();
   // false: the client is to be closed.
   bool read_client(Client& client, const std::function<void()>& after_write);
+  // read() with the kernel's receive time of the bytes (realtime ns; 0: none).
+  long receive(int fd, std::uint8_t* into, std::size_t size, std::int64_t& arrived_ns) const;
   bool answer(Client& client, std::size_t frame_length, const std::function<void()>& after_write);
   bool request_writes_read_only(const std::uint8_t* pdu, std::size_t length) const;
   void close_client(std::size_t index);
@@ -88,6 +99,7 @@ class ModbusTcpServer {
   modbus_mapping_t* mapping_;
   int unit_id_;
   WritableCheck writable_;
+  AnswerObserver observer_;
   modbus_t* context_ = nullptr;
   int listen_fd_ = -1;
   int port_ = 0;

@@ -21,6 +21,7 @@
 #include "glider/target/loop_timing.hpp"
 #include "glider/units.hpp"
 #include "keller_server.hpp"
+#include "lateness_record.hpp"
 #include "modem_bridge.hpp"
 #include "nmea_sentences.hpp"
 #include "plant_axis.hpp"
@@ -82,6 +83,7 @@ class Plant {
   std::unique_ptr<PtyDevice> depth_line_;
   std::unique_ptr<KellerServer> keller_;
   std::unique_ptr<ModemBridge> modem_;
+  std::unique_ptr<LatenessRecord> lateness_;
   hal_linux::KellerConfig keller_config_;
   std::ofstream truth_;
   int signal_fd_ = -1;
@@ -126,6 +128,11 @@ Plant::Plant(const PlantOptions& options, std::FILE* out)
   TcpServerOptions tcp = options.tcp;
   tcp_ = std::make_unique<ModbusTcpServer>(tcp, mapping_, axes_.front().slave(), [this](int a) { return writable(a); });
   std::filesystem::create_directories(options.directory);
+  lateness_ = std::make_unique<LatenessRecord>((options.directory / "lateness.csv").string(), options.record_late_ms);
+  // Stamped with the simulated time of the step before the read: a stalled
+  // plant answers before it steps again, so the row falls where the stall began.
+  tcp_->set_answer_observer(
+      [this](double late_ms, int requests) { lateness_->answer(sim_.time_s(), late_ms, requests); });
   gps_line_ = std::make_unique<PtyDevice>((options.directory / "gps").string());
   compass_line_ = std::make_unique<PtyDevice>((options.directory / "compass").string());
   depth_line_ = std::make_unique<PtyDevice>((options.directory / "depth").string());
@@ -264,7 +271,7 @@ void Plant::send_sentences() {
   const double utc = kUtcAtLaunchS + sim_.time_s();
   const std::uint64_t compass_every = std::max<std::uint64_t>(1, std::llround(options_.compass_interval_s / kStepS));
   if (!compass_silent_ && steps_ % compass_every == 0) {
-    compass_line_->write_all_or_drop(ptnthpr(sensors_->attitude().read()));
+    compass_line_->write_newest(ptnthpr(sensors_->attitude().read()));
   }
   // The receiver computes once a second (the model's fix interval), and the
   // model is asked at whole seconds after launch, the instants glider-sil's
@@ -346,9 +353,11 @@ void Plant::run() {
     }
     if (stop) break;
     const Clock::time_point woke = Clock::now();
+    const double stalled_at_s = sim_.time_s();
     step();
     const auto us = [](Clock::duration d) { return std::chrono::duration_cast<std::chrono::microseconds>(d).count(); };
     timing_.record(us(woke - deadline), us(Clock::now() - woke), us(step_wall));
+    lateness_->step(stalled_at_s, static_cast<double>(us(woke - deadline)) / 1000.0);
     if (launched_ && options_.duration_s > 0.0 && sim_.time_s() >= options_.duration_s) {
       why = "duration reached";
       break;
@@ -371,8 +380,13 @@ void Plant::print_statistics(const char* why) {
                "%llu malformed, %llu timed out, %llu unanswered\n",
                t.accepted, t.refused, options_.tcp.max_clients, t.requests, t.exceptions, t.malformed, t.timed_out,
                t.ignored);
-  std::fprintf(out_, "glider-plant: depth: %llu requests, %llu rejected; gps %llu, compass %llu bytes dropped\n",
-               keller_->requests(), keller_->rejected(), gps_line_->dropped_bytes(), compass_line_->dropped_bytes());
+  std::fprintf(out_,
+               "glider-plant: depth: %llu requests, %llu rejected; gps %llu, compass %llu bytes dropped; compass %llu "
+               "unread bytes discarded for newer\n",
+               keller_->requests(), keller_->rejected(), gps_line_->dropped_bytes(), compass_line_->dropped_bytes(),
+               compass_line_->discarded_bytes());
+  std::fprintf(out_, "glider-plant: lateness: %s; %s\n", lateness_->summary().c_str(),
+               (options_.directory / "lateness.csv").c_str());
   if (modem_) {
     const ModemBridgeStats& m = modem_->stats();
     std::fprintf(out_, "glider-plant: modem: %llu calls, %llu connected, %llu bytes up, %llu bytes down\n",
@@ -388,6 +402,12 @@ void run_plant(const PlantOptions& options, std::FILE* out) {
   if (!(options.time_scale >= 0.01 && options.time_scale <= 1000.0)) {
     throw std::runtime_error("time scale must be in [0.01, 1000]");
   }
+  const double steps = options.compass_interval_s / kStepS;
+  if (!(steps >= 1.0 - 1e-9 && steps <= 100.0 + 1e-9 && std::fabs(steps - std::round(steps)) < 1e-6)) {
+    throw std::runtime_error("compass interval " + std::to_string(options.compass_interval_s) +
+                             " s: must be a whole number of model steps (0.1 s) in [0.1, 10] s");
+  }
+  if (!(options.record_late_ms > 0.0)) throw std::runtime_error("the lateness record's floor must be > 0 ms");
   Plant plant(options, out);
   plant.run();
 }

@@ -35,7 +35,18 @@ struct PlantOptions {
   std::string heading_law = "compensated";  // as glider-sil --heading-law
   double time_scale = 1.0;                  // simulated seconds per wall second
   double duration_s = 0.0;                  // stop this long after launch (0: at SIGTERM/SIGINT)
-  double compass_interval_s = 0.5;          // $PTNTHPR cadence (simulated)
+  // $PTNTHPR cadence (simulated): every model step by default. A Slocum
+  // samples its attitude every control cycle (c_att_time 0 in every row of
+  // every .dbd in tests/data/real/dbd: m_pitch, m_roll and m_heading are
+  // logged each cycle), so a reading is as fresh as the cycle; the plant's
+  // freshest is its step. At 0.5 s the firmware's pitch lagged the plant's
+  // by 0.18 s more through the inflections (median of 8 waypoint flights
+  // each, tests/hil/inflection_dr.py), by 0 to 0.5 s in a flight depending
+  // on where the plant's launch put its 0.5 s grid.
+  double compass_interval_s = 0.1;
+  // The lateness record (lateness_record.hpp): DIR/lateness.csv, rows from
+  // this many wall milliseconds late.
+  double record_late_ms = 20.0;
   TcpServerOptions tcp;
   // The Iridium modem on a pty (board [modem]) bridged to this shore
   // station over TCP; port 0: no modem (the vehicle never calls).

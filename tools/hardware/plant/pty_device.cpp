@@ -15,6 +15,10 @@
 namespace glider::plant {
 namespace {
 
+// What the plant lets queue on a line: under the 4 KiB the tty's input
+// buffer holds on Linux, so a whole sentence is never cut by the kernel.
+constexpr int kLineRoom = 3072;
+
 [[noreturn]] void fail(const std::string& link, const char* what) {
   throw std::runtime_error(link + ": " + what + ": " + std::strerror(errno));
 }
@@ -47,7 +51,7 @@ PtyDevice::~PtyDevice() {
 std::size_t PtyDevice::write_some(const char* data, std::size_t size) {
   int queued = 0;
   if (ioctl(slave_keepalive_, TIOCINQ, &queued) != 0) return 0;
-  const std::size_t room = queued < 3072 ? static_cast<std::size_t>(3072 - queued) : 0;
+  const std::size_t room = queued < kLineRoom ? static_cast<std::size_t>(kLineRoom - queued) : 0;
   const ssize_t n = ::write(master_, data, std::min(room, size));
   return n > 0 ? static_cast<std::size_t>(n) : 0;
 }
@@ -55,7 +59,7 @@ std::size_t PtyDevice::write_some(const char* data, std::size_t size) {
 bool PtyDevice::write_all_or_drop(const std::string& bytes) {
   int queued = 0;
   // Room for the whole sentence in the line's buffer (4 KiB on Linux), or drop it.
-  if (ioctl(slave_keepalive_, TIOCINQ, &queued) == 0 && queued + static_cast<int>(bytes.size()) > 3072) {
+  if (ioctl(slave_keepalive_, TIOCINQ, &queued) == 0 && queued + static_cast<int>(bytes.size()) > kLineRoom) {
     dropped_ += bytes.size();
     return false;
   }
@@ -65,6 +69,15 @@ bool PtyDevice::write_all_or_drop(const std::string& bytes) {
     return false;
   }
   return true;
+}
+
+bool PtyDevice::write_newest(const std::string& bytes) {
+  int queued = 0;
+  if (ioctl(slave_keepalive_, TIOCINQ, &queued) == 0 && queued + static_cast<int>(bytes.size()) > kLineRoom &&
+      tcflush(slave_keepalive_, TCIFLUSH) == 0) {
+    discarded_ += static_cast<unsigned long long>(queued);
+  }
+  return write_all_or_drop(bytes);
 }
 
 }  // namespace glider::plant
