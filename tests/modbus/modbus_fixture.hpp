@@ -55,4 +55,22 @@ inline bool settles_at(DriverUnderTest& d, hal_linux::ModbusAxis& axis, double p
   return false;
 }
 
+// The axis's status once it reports `bit`, polled as settles_at (the last
+// status read if it never does). The simulator sets "in position" one of its
+// own steps after the position arrives (the arriving step still moved), so
+// a status read right after settles_at may still say "moving": under load
+// the simulator's step can lag the driver's poll (a fresh-clone run at load
+// 7 read it so once).
+inline hal_linux::AxisStatus status_with(DriverUnderTest& d, hal_linux::ModbusAxis& axis, std::uint16_t bit,
+                                         int cycles = 200) {
+  hal_linux::AxisStatus s;
+  for (int i = 0; i < cycles; ++i) {
+    d.link->begin_cycle();
+    s = axis.read_status();
+    if (s.has(bit)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return s;
+}
+
 }  // namespace glider::test

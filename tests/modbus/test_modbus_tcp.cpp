@@ -38,7 +38,7 @@ TEST(ModbusTcp, IdentifiesMovesAndReadsBackInEngineeringUnits) {
   CHECK(d.slide->command(0.25));
   CHECK(test::settles_at(d, *d.pump, -120.5));
   CHECK(test::settles_at(d, *d.slide, 0.25));
-  const hal_linux::AxisStatus s = d.slide->read_status();
+  const hal_linux::AxisStatus s = test::status_with(d, *d.slide, regs::kInPosition);
   CHECK(s.has(regs::kInPosition));
   CHECK(s.has(regs::kEnabled));
   CHECK_FALSE(s.has(regs::kFault));
