@@ -264,6 +264,7 @@ int main(int argc, char** argv) {
   double rate_window_s = glider::diagnose::TrackOptions{}.rate_half_window_s;
   double score_block_s = glider::diagnose::DiagnoseOptions{}.score_block_s;
   std::string autopilot_integrator = "per-glide";
+  std::string yaw_lag_pole = "profiled";
   std::string autopilot_clock = "both";
   double yaw_fast_pole_max_s = -1.0;
   double drag_reynolds_exponent = glider::diagnose::kDragReynoldsExponentPrior;
@@ -312,6 +313,13 @@ int main(int argc, char** argv) {
                  "docs/science.md \"The autopilot's clock\")")
       ->check(CLI::IsMember({"measured", "nominal", "both", "held-out"}))
       ->capture_default_str();
+  app.add_option("--yaw-lag-pole", yaw_lag_pole,
+                 "the yaw's lag measured on the innovations beside the fast pole: profiled (read with the pole at "
+                 "0 and at its prior's centre and upper end, the likeliest's value, the interval spanning the "
+                 "poles the log cannot tell apart) or none (no pole beside it, the rule before; docs/science.md "
+                 "\"The yaw's lag beside the fast pole, profiled\")")
+      ->check(CLI::IsMember({"profiled", "none"}))
+      ->capture_default_str();
   // -1, not a range's end: the default follows the vehicle file, so a sentinel in the declared range stands for it.
   tool.add_number("--yaw-fast-pole", yaw_fast_pole_max_s, {-1.0, 30.0, "s"},
                   "upper end (s) of the heading model's fast yaw pole's prior (uniform from 0; the models carry its "
@@ -355,6 +363,7 @@ int main(int argc, char** argv) {
     glider::diagnose::HeadingDiagnoseOptions heading_options;
     heading_options.intervals = options.intervals;
     heading_options.autopilot_integrator_per_glide = autopilot_integrator == "per-glide";
+    heading_options.yaw_lag_fast_pole = yaw_lag_pole == "profiled";
     heading_options.track.yaw_fast_pole_max_s = yaw_fast_pole_max_s;
     using glider::diagnose::AutopilotClockRule;
     heading_options.autopilot_clock = autopilot_clock == "measured"   ? AutopilotClockRule::kMeasured

@@ -67,7 +67,7 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
   const double fin_gain = hd.fin_yaw_gain_per_m * at(values, HeadingEffect::kFinEffectiveness);
   const double roll_offset = at(values, HeadingEffect::kRollOffset);
   const double tau = std::max(0.05, std::abs(at(values, HeadingEffect::kYawTimeConstant)));
-  const double fast_pole = carried_fast_pole(t.yaw_fast_pole_s, yaw_delay);
+  const double fast_pole = yaw_fast_pole(t, yaw_delay);
   const StepDecay decay(tau, kStepS), fast_decay(fast_pole, kStepS);
   const double fin_rate = hd.fin_rate_rad_s > 0.0 ? hd.fin_rate_rad_s : 1e9;
   const double autopilot_delay = std::abs(at(values, HeadingEffect::kAutopilotDelay));

@@ -389,6 +389,91 @@ void widen_for_fast_pole(LinkFit& link, const HeadingTrack& track) {
   }
 }
 
+// -2 log likelihood differences under this are not told apart (chi-square,
+// one degree of freedom, 95 %).
+constexpr double kLikelihoodSpan95 = 3.84;
+
+// The yaw's lag (and the fin beside it) read beside the fast pole the
+// first-order yaw lacks. A second pole p behind the lag delays the yaw's
+// answer to each fin move; a first-order yaw reads that delay as a longer
+// lag, and the fin along fin / lag as stronger - by far more than p on the
+// innovations one cycle apart: the independent truth's 11.03 s lag (second
+// pole 0.97 s, fin x1.689) read 14.77 s [13.39, 16.15] and fin 2.137,
+// 11.74 s and 1.779 with the truth's pole switched off (docs/science.md
+// "The yaw's lag beside the fast pole, profiled"). The lag and fin are
+// measured again with the pole carried at its prior's centre and upper end
+// (HeadingTrack::yaw_fast_pole_s, yaw_fast_pole_max_s); the innovations'
+// -2 log likelihood (the noise refined at each from the pole-free
+// reading's, no grid: the grid doubled the diagnosis's CPU) chooses: the likeliest
+// reading's values stand, each interval spanning the readings whose
+// likelihood is within kLikelihoodSpan95 of it (the poles this log cannot
+// tell apart) as their equal-weight mixture. `measured` and `noise` are replaced by the likeliest's.
+template <typename Measure>
+void read_beside_fast_pole(const HeadingTrack& track, const model::VehicleParams& nominal, const HeadingValues& rest,
+                           const std::vector<HeadingEffect>& to_measure, std::span<const std::size_t> samples,
+                           std::vector<HeadingFinding>& measured, YawNoise& noise, HeadingDiagnosis& d,
+                           Measure&& measure) {
+  if (!(track.yaw_fast_pole_max_s > 0.0)) return;
+  struct Reading {
+    double pole = 0.0, cost = kNaN;
+    std::vector<HeadingFinding> findings;
+    YawNoise noise;
+  };
+  auto cost_of = [&](const HeadingTrack& on, const std::vector<HeadingFinding>& m, const YawNoise& n) {
+    HeadingValues v = rest;
+    for (const HeadingFinding& f : m) at(v, f.effect) = f.value;
+    return innovations_cost(on, nominal, v, n, samples);
+  };
+  std::vector<Reading> readings = {{0.0, cost_of(track, measured, noise), measured, noise}};
+  const YawNoise start = noise;
+  // Each pole's reading starts from the last one's (values and noise).
+  for (const double pole : {track.yaw_fast_pole_s, track.yaw_fast_pole_max_s}) {
+    HeadingTrack poled = track;
+    poled.yaw_fast_pole_with_lag_s = pole;
+    HeadingValues from = rest;
+    for (const HeadingFinding& f : readings.back().findings) at(from, f.effect) = f.value;
+    noise = readings.back().noise;
+    std::vector<HeadingFinding> m = measure(poled, to_measure, from, false);
+    const bool complete = std::all_of(measured.begin(), measured.end(), [&](const HeadingFinding& f) {
+      return std::any_of(m.begin(), m.end(), [&](const HeadingFinding& g) { return g.effect == f.effect; });
+    });
+    if (complete) readings.push_back({pole, cost_of(poled, m, noise), std::move(m), noise});
+  }
+  const auto best = std::min_element(readings.begin(), readings.end(),
+                                     [](const Reading& a, const Reading& b) { return a.cost < b.cost; });
+  if (!std::isfinite(best->cost)) {
+    noise = start;
+    return;
+  }
+  std::vector<HeadingFinding> chosen = best->findings;
+  d.yaw_lag_pole_s = d.yaw_lag_pole_low_s = d.yaw_lag_pole_high_s = best->pole;
+  std::vector<const Reading*> allowed;
+  for (const Reading& r : readings) {
+    if (!(r.cost <= best->cost + kLikelihoodSpan95)) continue;
+    allowed.push_back(&r);
+    d.yaw_lag_pole_low_s = std::min(d.yaw_lag_pole_low_s, r.pole);
+    d.yaw_lag_pole_high_s = std::max(d.yaw_lag_pole_high_s, r.pole);
+  }
+  // Each interval: the equal-weight mixture of the allowed readings
+  // (fitting_core::mixture_interval, each reading its value +- its
+  // interval's half-width / 1.96), never narrower than the likeliest's.
+  for (HeadingFinding& f : chosen) {
+    std::vector<double> means, sigmas;
+    for (const Reading* r : allowed) {
+      for (const HeadingFinding& g : r->findings) {
+        if (g.effect != f.effect) continue;
+        means.push_back(g.value);
+        sigmas.push_back(0.5 * (g.ci95_high - g.ci95_low) / 1.96);
+      }
+    }
+    const fitting_core::Estimate mixed = fitting_core::mixture_interval(means, sigmas);
+    f.ci95_low = std::min(f.ci95_low, mixed.low);
+    f.ci95_high = std::max(f.ci95_high, mixed.high);
+  }
+  measured = std::move(chosen);
+  noise = best->noise;
+}
+
 bool is_yaw_dynamics(HeadingEffect e) { return e == HeadingEffect::kYawTimeConstant || e == HeadingEffect::kYawDelay; }
 
 // The fin's authority measured on the heading's one-step innovations with
@@ -475,14 +560,15 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
   // [1.35, 2.40]).
   YawNoise noise;
   noise.heading_rad = d.heading_noise_rad;
-  auto measure = [&](const std::vector<HeadingEffect>& effects, const HeadingValues& start) {
+  auto measure_on = [&](const HeadingTrack& on, const std::vector<HeadingEffect>& effects, const HeadingValues& start,
+                        bool noise_grid) {
     HeadingValues at_measured = start;
     LinkFit fit;
     for (int round = 0; round < kNoiseRounds; ++round) {
-      noise = fit_yaw_noise(track, nominal, at_measured, noise, samples.all);
+      noise = fit_yaw_noise(on, nominal, at_measured, noise, samples.all, noise_grid);
       const HeadingResiduals innovations = [&](const HeadingValues& v, std::span<const std::size_t> w,
                                                std::vector<double>& o) {
-        heading_innovations(track, nominal, v, noise, w, o);
+        heading_innovations(on, nominal, v, noise, w, o);
       };
       HeadingSelectOptions select;
       select.intervals = options.intervals;
@@ -501,6 +587,9 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
         break;
     }
     return fit.findings;
+  };
+  auto measure = [&](const std::vector<HeadingEffect>& effects, const HeadingValues& start) {
+    return measure_on(track, effects, start, true);
   };
   // The fin and the yaw's lag alone (the link's other effects at their
   // nominal values, the roll offset among them: fitted beside the fin on
@@ -745,6 +834,12 @@ void measure_fin_then_reselect(const HeadingTrack& track, const model::VehiclePa
     const auto k = std::find(dynamics.begin(), dynamics.end(), e);
     return k != dynamics.end() && dynamics_stand[static_cast<std::size_t>(k - dynamics.begin())];
   };
+  // Not beside a yaw delay that stands: its dead time carries the pole
+  // already (carried_fast_pole).
+  if (options.yaw_lag_fast_pole && dynamics_stands(HeadingEffect::kYawTimeConstant) &&
+      !dynamics_stands(HeadingEffect::kYawDelay)) {
+    read_beside_fast_pole(track, nominal, rest, to_measure, samples.all, measured, noise, d, measure_on);
+  }
   const double roll = at(rest, HeadingEffect::kRollOffset);
   if (!reselected) return;  // no fit on the innovations: the rate error's findings stand
   d.yaw_noise = noise;
@@ -901,7 +996,7 @@ AutopilotSettings configured_autopilot(const flightlog::FlightLog& log) {
 
 HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const flightlog::FlightLog& log,
                                   const HeadingDiagnoseOptions& options) {
-  const HeadingTrack track = prepare_heading_track(log, nominal, options.track);
+  HeadingTrack track = prepare_heading_track(log, nominal, options.track);
   HeadingDiagnosis d;
   d.vehicle = nominal.name;
   d.configured = configured_autopilot(log);
@@ -973,6 +1068,8 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   // model cannot take).
   if (options.yaw_noise_model && options.fit_only.empty() && !options.track.fin_stored_on_change) {
     measure_fin_then_reselect(track, nominal, vehicle_base, yaw_error, yaw_samples, d, options);
+    // The models from here on carry the pole read beside the lag.
+    track.yaw_fast_pole_with_lag_s = d.yaw_lag_pole_s;
   }
   // A lag the fast dynamics the first-order yaw lacks account for is not
   // named (heading_select_resolution.hpp); not where the caller fixed the
@@ -980,6 +1077,11 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   if (options.fit_only.empty())
     drop_lag_within_resolution(d.yaw, vehicle_base,
                                carried_fast_pole(track.yaw_fast_pole_s, at(d.yaw.values, HeadingEffect::kYawDelay)));
+  // A pole read beside a lag no longer named is not carried.
+  if (std::none_of(d.yaw.findings.begin(), d.yaw.findings.end(),
+                   [](const HeadingFinding& f) { return f.effect == HeadingEffect::kYawTimeConstant; })) {
+    track.yaw_fast_pole_with_lag_s = d.yaw_lag_pole_s = d.yaw_lag_pole_low_s = d.yaw_lag_pole_high_s = 0.0;
+  }
   // A yaw delay the servo's rows cannot see as its dead time is fitted on
   // that side too (heading_select_delay_side.hpp).
   if (options.fit_only.empty()) {
@@ -1068,7 +1170,7 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
   d.delay_autopilot_s = at(d.values, HeadingEffect::kAutopilotDelay);
   d.delay_servo_s = at(d.values, HeadingEffect::kFinDelay);
   d.delay_after_fin_s = at(d.values, HeadingEffect::kYawDelay);
-  d.yaw_fast_pole_s = carried_fast_pole(track.yaw_fast_pole_s, d.delay_after_fin_s);  // what the models carried
+  d.yaw_fast_pole_s = yaw_fast_pole(track, d.delay_after_fin_s);  // what the models carried
   return d;
 }
 

@@ -473,8 +473,8 @@ struct YawPlant {
         tau(std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)))),
         fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9),
         fin_dead_time(std::abs(value(values, HeadingEffect::kFinDelay))),
-        fast(carried_fast_pole(track.yaw_fast_pole_s, delay)) {}
-  double fast;  // the yaw's fast pole (s; 0: none): carried_fast_pole
+        fast(yaw_fast_pole(track, delay)) {}
+  double fast;  // the yaw's fast pole (s; 0: none): yaw_fast_pole
   // The roll as logged between samples k and k + 1, with the offset: the
   // fin rolls the glider and the roll turns it back against the fin (the
   // independent truth's 0-0.2 rad of roll per rad of fin read as a fin
@@ -497,6 +497,11 @@ struct YawPlant {
 
 double carried_fast_pole(double prior_centre_s, double yaw_delay_s) {
   return yaw_delay_s > 0.0 ? std::min(prior_centre_s, yaw_delay_s) : 0.0;
+}
+
+double yaw_fast_pole(const HeadingTrack& track, double yaw_delay_s) {
+  return track.yaw_fast_pole_with_lag_s > 0.0 ? track.yaw_fast_pole_with_lag_s
+                                              : carried_fast_pole(track.yaw_fast_pole_s, yaw_delay_s);
 }
 
 double fast_pole_step(double& lead, double goal, double h, double tau, double p, double a, double b) {
@@ -629,6 +634,21 @@ void heading_innovations(const HeadingTrack& t, const model::VehicleParams& vehi
   pick(innovation, samples, out);
 }
 
+double innovations_cost(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
+                        const YawNoise& noise, std::span<const std::size_t> samples) {
+  std::vector<double> innovation, variance;
+  filter_headings(t, vehicle, values, noise, innovation, &variance);
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const std::size_t k : samples) {
+    if (k == 0 || !std::isfinite(innovation[k]) || !std::isfinite(variance[k]) || variance[k] <= 0.0) continue;
+    const double nu = innovation[k] * (t.time_s[k] - t.time_s[k - 1]);
+    sum += std::log(variance[k]) + nu * nu / variance[k];
+    ++n;
+  }
+  return n > 0 ? sum : std::numeric_limits<double>::infinity();
+}
+
 YawNoise fit_yaw_noise(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
                        const YawNoise& start, std::span<const std::size_t> samples, bool grid) {
   // -2 log likelihood of the innovations (Gaussian): a grid around the start
@@ -637,19 +657,7 @@ YawNoise fit_yaw_noise(const HeadingTrack& t, const model::VehicleParams& vehicl
   // 4 % (the filter's mean does not depend on them, the innovations'
   // whiteness does: a compass noise read 40 % high left the fin 20 % weak
   // on a SIL log).
-  std::vector<double> innovation, variance;
-  auto cost = [&](const YawNoise& trial) {
-    filter_headings(t, vehicle, values, trial, innovation, &variance);
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (const std::size_t k : samples) {
-      if (k == 0 || !std::isfinite(innovation[k]) || !std::isfinite(variance[k]) || variance[k] <= 0.0) continue;
-      const double nu = innovation[k] * (t.time_s[k] - t.time_s[k - 1]);
-      sum += std::log(variance[k]) + nu * nu / variance[k];
-      ++n;
-    }
-    return n > 0 ? sum : std::numeric_limits<double>::infinity();
-  };
+  auto cost = [&](const YawNoise& trial) { return innovations_cost(t, vehicle, values, trial, samples); };
   YawNoise best = start;
   double best_cost = grid ? std::numeric_limits<double>::infinity() : cost(start);
   for (const double noise_scale : {0.25, 0.5, 1.0, 2.0, 4.0}) {

@@ -162,7 +162,10 @@ ordered_json heading_json(const HeadingDiagnosis& d) {
                   {"servo", d.delay_servo_s},
                   {"after_fin", d.delay_after_fin_s},
                   {"total", d.delay_autopilot_s + d.delay_servo_s + d.delay_after_fin_s}};
-  j["yaw_fast_pole_s"] = {{"carried", d.yaw_fast_pole_s}, {"prior_max", d.yaw_fast_pole_max_s}};
+  j["yaw_fast_pole_s"] = {{"carried", d.yaw_fast_pole_s},
+                          {"prior_max", d.yaw_fast_pole_max_s},
+                          {"beside_lag", d.yaw_lag_pole_s},
+                          {"beside_lag_span", {d.yaw_lag_pole_low_s, d.yaw_lag_pole_high_s}}};
   j["links"] = {{"servo", link_json(d.servo)}, {"vehicle", link_json(d.yaw)}, {"autopilot", link_json(d.autopilot)}};
   {
     const ClosedLoopCheck& c = d.closed_loop;

@@ -75,6 +75,9 @@ struct HeadingDiagnosis {
   // after-fin delay is a dead time beside it, its interval widened by the
   // prior (0: no fast pole).
   double yaw_fast_pole_s = 0.0, yaw_fast_pole_max_s = 0.0;
+  // The fast pole read beside the lag (HeadingDiagnoseOptions::
+  // yaw_lag_fast_pole; 0: none) and the poles whose readings its intervals span.
+  double yaw_lag_pole_s = 0.0, yaw_lag_pole_low_s = 0.0, yaw_lag_pole_high_s = 0.0;
 };
 
 struct HeadingDiagnoseOptions {
@@ -110,6 +113,14 @@ struct HeadingDiagnoseOptions {
   // where the rate error named them (docs/science.md "The yaw's lag probed
   // on the innovations").
   bool yaw_dynamics_probe = true;
+  // Where the innovations measure the yaw's lag beside the fin (no yaw
+  // delay): the lag and fin measured again with the fast pole at its
+  // prior's centre and upper end; the likeliest of the three readings
+  // (pole 0 among them) stands, its intervals spanning the readings whose
+  // likelihood the log cannot tell from the likeliest's. false: no pole
+  // beside the lag, the rule before (docs/science.md "The yaw's lag beside
+  // the fast pole, profiled").
+  bool yaw_lag_fast_pole = true;
   std::vector<HeadingEffect> fit_only;  // fit exactly these (in their links), no selection
   bool fit_on_all_samples = false;      // fit_only on the held-out yos too (HeadingSelectOptions)
   fitting_core::IntervalRule intervals = fitting_core::IntervalRule::kGlides;  // HeadingSelectOptions

@@ -158,6 +158,10 @@ class AutopilotReplay {
 // pole"); at most the delay keeps the response continuous from no delay
 // (its lumped lag d + min(d, centre)).
 double carried_fast_pole(double prior_centre_s, double yaw_delay_s);
+// The fast pole a model of this track carries: the one read beside the lag
+// (HeadingTrack::yaw_fast_pole_with_lag_s) where there is one, else
+// carried_fast_pole's.
+double yaw_fast_pole(const HeadingTrack& track, double yaw_delay_s);
 
 // One step h of the yaw through the fast pole p (HeadingTrack::
 // yaw_fast_pole_s; 0: none) and the lag tau, the goal held over it (exact):
@@ -212,6 +216,13 @@ void heading_innovations(const HeadingTrack& track, const model::VehicleParams& 
 // (Gaussian) with these values: a grid around `start` (its compass noise
 // x1/4..x4; the random yaw 1e-4..2e-2 rad/s over 10-300 s; `grid` false:
 // from `start` itself), then refined by factors down to 4 %.
+double yaw_noise_cost(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
+                      const YawNoise& noise, std::span<const std::size_t> samples);
+// -2 log likelihood (Gaussian) of the heading's innovations at `samples`
+// with these values and this noise: what fit_yaw_noise minimises.
+double innovations_cost(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
+                        const YawNoise& noise, std::span<const std::size_t> samples);
+
 YawNoise fit_yaw_noise(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
                        const YawNoise& start, std::span<const std::size_t> samples, bool grid = true);
 

@@ -43,6 +43,9 @@ struct HeadingTrack {
   // vehicle file's first-order lag, and the upper end of its prior (0 to
   // it, uniform): HeadingTrackOptions::yaw_fast_pole_max_s.
   double yaw_fast_pole_s = 0.0, yaw_fast_pole_max_s = 0.0;
+  // The fast pole carried beside a lag the innovations measured (s; 0:
+  // none, carried_fast_pole's rule): HeadingDiagnosis::yaw_lag_pole_s.
+  double yaw_fast_pole_with_lag_s = 0.0;
 
   // Every log row (NaN where not logged): the servo and the autopilot.
   std::vector<double> row_time_s, row_heading_rad, row_command_rad, row_fin_rad, row_fin_command_rad, row_depth_m;
