@@ -17,8 +17,11 @@ is near 1 s.
   have a truth pole of at least POLE_MIN s (the truth's JSON says; the
   diagnosis is not told), each diagnosed as a black box (`glider-diagnose
   --plane heading --json`): the lag's interval must hold the truth in at
-  least COVERED of them (a guard: the rule's coverage on such draws is
-  printed by the coverage benchmark, docs/science.md).
+  least COVERED of them. A guard against a gross regression only: the
+  rule's coverage is the coverage benchmark's to measure (docs/science.md);
+  at 1 of 3 a correct build with a per-draw coverage of 0.8 fails 1 run in
+  125 (0.2^3), where 2 of 3 would fail 1 in 10 (the lead's binary also
+  covered 2 of 3 on one seed: that part never told the builds apart).
 
 A fresh seed each run, printed; GLIDER_TEST_SEED=<n> replays it.
 """
@@ -32,7 +35,7 @@ from check_fin_or_roll import diagnose, finish, fly  # noqa: E402
 import truth_draw  # noqa: E402 (check_fin_or_roll put tests/diagnose on the path)
 
 DRAWS = 3
-COVERED = 2
+COVERED = 1
 POLE_MIN = 0.8
 MAX_FLIGHTS = 60
 FIXED_SEED = 4531866131136113823
