@@ -28,7 +28,7 @@ constexpr double kShearSettleS = 20.0;
 // autopilot gain beyond 5 rad/rad saturates the fin at a degree of error.
 const std::array<HeadingEffectInfo, kHeadingEffectCount> kInfo{{
     {"fin_delay", "s", HeadingLink::kServo, 2.0, 0.0, 60.0, true},
-    {"fin_deadband", "rad", HeadingLink::kServo, 0.005, 0.0, 0.1, true, true},
+    {"fin_deadband", "rad", HeadingLink::kServo, 0.005, 0.0, 0.1, true, true, 0.001},
     {"yaw_delay", "s", HeadingLink::kVehicle, 2.0, 0.0, 60.0, true},
     {"fin_effectiveness", "ratio", HeadingLink::kVehicle, 0.2, 0.1, 10.0, false},
     {"roll_offset", "rad", HeadingLink::kVehicle, 0.02, -0.35, 0.35, false},
@@ -1019,9 +1019,10 @@ HeadingDiagnosis diagnose_heading(const model::VehicleParams& nominal, const fli
     return split(rows, track.row_yo, diving, options.max_fit_samples);
   };
   const LinkSamples servo_samples = row_split(servo_rows(track));
+  const std::vector<double> unlogged = unlogged_cycle_times(track);
   const HeadingResiduals servo_error =
       against([&](const HeadingValues& v, std::span<const std::size_t> w,
-                  std::vector<double>& o) { predict_servo_fin(track, nominal, v, w, o); },
+                  std::vector<double>& o) { predict_servo_fin(track, unlogged, nominal, v, w, o); },
               track.row_fin_rad);
   d.servo = run_link(HeadingLink::kServo, base, servo_error, servo_samples, options);
   const LinkSamples autopilot_samples = row_split(autopilot_rows(track));

@@ -421,9 +421,19 @@ Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
   for (double x = ti.plausible_min; x <= ti.plausible_max + 1e-12; x += ti.scale) {
     profile.emplace_back(x, fit_smooth(problem.holding(threshold, x), smooth));
   }
-  const auto best = std::min_element(profile.begin(), profile.end(), [](const auto& a, const auto& b) {
-    return a.second.train_rss < b.second.train_rss;
-  });
+  auto by_rss = [](const auto& a, const auto& b) { return a.second.train_rss < b.second.train_rss; };
+  if (ti.grid_fine_step > 0.0) {
+    // Between the best point's neighbours at the fine step.
+    const double centre = std::min_element(profile.begin(), profile.end(), by_rss)->first;
+    const auto steps = static_cast<int>(std::lround(ti.scale / ti.grid_fine_step));
+    for (int j = 1 - steps; j < steps; ++j) {
+      const double x = centre + j * ti.grid_fine_step;
+      if (j == 0 || x < ti.plausible_min || x > ti.plausible_max) continue;
+      profile.emplace_back(x, fit_smooth(problem.holding(threshold, x), smooth));
+    }
+    std::sort(profile.begin(), profile.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+  const auto best = std::min_element(profile.begin(), profile.end(), by_rss);
   Trial trial = best->second;
   const double k = static_cast<double>(fitted.size());
   const double n = static_cast<double>(problem.samples().train.size());
@@ -435,9 +445,18 @@ Trial fit(const Problem& problem, const std::vector<HeadingEffect>& fitted) {
     low = std::min(low, x);
     high = std::max(high, x);
   }
-  // The grid's own resolution bounds what the profile can say.
-  low = std::max(ti.plausible_min, low - 0.5 * ti.scale);
-  high = std::min(ti.plausible_max, high + 0.5 * ti.scale);
+  // The grid's own resolution bounds what the profile can say: each end
+  // halfway to the next point profiled beyond it (half a step), and a
+  // refined grid's at least its fine step out - finer than the replay's own
+  // reading (the independent truth's deadbands read up to 0.0006 rad off at
+  // the profile's best: docs/science.md "The servo after unlogged cycles").
+  double below = ti.plausible_min, above = ti.plausible_max;
+  for (const auto& [x, t] : profile) {
+    if (x < low) below = std::max(below, 0.5 * (x + low));
+    if (x > high) above = std::min(above, 0.5 * (x + high));
+  }
+  low = std::max(ti.plausible_min, std::min(low - ti.grid_fine_step, below));
+  high = std::min(ti.plausible_max, std::max(high + ti.grid_fine_step, above));
   trial.fitted = fitted;
   trial.ci_low.insert(trial.ci_low.begin() + (g - fitted.begin()), low);
   trial.ci_high.insert(trial.ci_high.begin() + (g - fitted.begin()), high);

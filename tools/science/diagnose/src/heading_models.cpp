@@ -115,13 +115,20 @@ std::vector<std::size_t> autopilot_rows(const HeadingTrack& t) {
 // own measurement: c_fin is computed at the end of the cycle that read m_fin),
 // unless that command is within the deadband of where the fin is then (the
 // SIL's servo, model/simulator.cpp).
-void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicle, const HeadingValues& values,
-                       std::span<const std::size_t> rows, std::vector<double>& out) {
+void predict_servo_fin(const HeadingTrack& t, std::span<const double> unlogged, const model::VehicleParams& vehicle,
+                       const HeadingValues& values, std::span<const std::size_t> rows, std::vector<double>& out) {
   const double delay = std::abs(value(values, HeadingEffect::kFinDelay));
   const double deadband = std::abs(value(values, HeadingEffect::kFinDeadband));
   const double rate = vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9;
   const std::size_t n = t.row_time_s.size();
   std::vector<double> predicted(n, kNaN);
+  // The rows where an unlogged command has acted since the row before.
+  std::vector<unsigned char> anchored(n, 0);
+  for (double u : unlogged) {
+    const auto r = static_cast<std::size_t>(std::upper_bound(t.row_time_s.begin(), t.row_time_s.end(), u + delay) -
+                                            t.row_time_s.begin());
+    if (r < n) anchored[r] = 1;
+  }
   double fin = kNaN;
   double command = 0.0;
   std::size_t next_command = 0;  // first row whose command has not acted yet
@@ -145,7 +152,14 @@ void predict_servo_fin(const HeadingTrack& t, const model::VehicleParams& vehicl
     const bool continuous = i > 0 && std::isfinite(fin) && now - t.row_time_s[i - 1] <= t.max_gap_s;
     advance(now);
     if (continuous) predicted[i] = fin;
-    if (!continuous) fin = t.row_fin_rad[i];
+    if (anchored[i] != 0 && std::isfinite(t.row_fin_rad[i])) {
+      // Where the fin rests is where its target is (or within the deadband
+      // of it): the unlogged command's place, as near as the log tells.
+      fin = command = t.row_fin_rad[i];
+      if (continuous) predicted[i] = fin;
+    } else if (!continuous) {
+      fin = t.row_fin_rad[i];
+    }
   }
   pick(predicted, rows, out);
 }
@@ -214,6 +228,18 @@ int cycles_between(double dt, const LoggedCycle& c) {
 }
 
 }  // namespace
+
+std::vector<double> unlogged_cycle_times(const HeadingTrack& t) {
+  const LoggedCycle cycle = logged_cycle(t);
+  std::vector<double> times;
+  for (std::size_t i = 1; i < t.row_time_s.size(); ++i) {
+    const double dt = t.row_time_s[i] - t.row_time_s[i - 1];
+    if (dt > t.max_gap_s) continue;  // a stop: the replay starts again after it
+    const int k = cycles_between(dt, cycle);
+    for (int j = 1; j < k; ++j) times.push_back(t.row_time_s[i - 1] + dt * j / k);
+  }
+  return times;
+}
 
 AutopilotReplay::AutopilotReplay(const HeadingTrack& track, const AutopilotSettings& settings, AutopilotClock clock)
     : track_(track), settings_(settings), clock_(clock) {

@@ -43,6 +43,10 @@ struct HeadingEffectInfo {
   // others fitted at each point, its interval from the profile of the
   // residual: a threshold moves the residual in steps (no gradient).
   bool grid = false;
+  // A grid refined around its best point to this step (0: not): where the
+  // residual turns sharply at the truth (a servo's deadband replayed free
+  // running: docs/science.md "The servo after unlogged cycles").
+  double grid_fine_step = 0.0;
 };
 
 const HeadingEffectInfo& info(HeadingEffect effect);

@@ -65,9 +65,18 @@ HeadingValues nominal_heading_values(const model::VehicleParams& vehicle, const 
 std::vector<std::size_t> servo_rows(const HeadingTrack& track);
 std::vector<std::size_t> autopilot_rows(const HeadingTrack& track);
 
+// The times of the law's cycles the log did not hold (between two rows
+// cycles_between apart, as the autopilot's replay steps them), sorted.
+std::vector<double> unlogged_cycle_times(const HeadingTrack& track);
+
 // Predictions at `rows` / `samples` (sorted); NaN where the model has none.
-void predict_servo_fin(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values,
-                       std::span<const std::size_t> rows, std::vector<double>& out);
+// The servo's: from the logged commands; at the first row after the command
+// of an unlogged cycle (`unlogged`: unlogged_cycle_times) acts, the fin
+// followed a command the log does not hold - the prediction there is the
+// measured fin and the replay goes on from it, its target there too
+// (docs/science.md "The servo after unlogged cycles").
+void predict_servo_fin(const HeadingTrack& track, std::span<const double> unlogged, const model::VehicleParams& vehicle,
+                       const HeadingValues& values, std::span<const std::size_t> rows, std::vector<double>& out);
 void predict_autopilot_fin(const HeadingTrack& track, const AutopilotSettings& settings, const HeadingValues& values,
                            std::span<const std::size_t> rows, std::vector<double>& out);
 // predict_autopilot_fin for many values on one track (the fits): what the
