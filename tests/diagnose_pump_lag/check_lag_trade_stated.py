@@ -15,8 +15,9 @@ hold it. The code before stated nothing there (on a deep bang-bang draw a 20.4 s
 beside a 1.2 s depth lag, 21.3 s alone, 0.23 % apart held out). Where a depth lag is named with no pump lag, any pump
 lag read beside it and stated must be inside the margins and its depth-lag reading inside the interval. Whether the
 intervals hold the truth is printed, not asserted (a 95 % interval misses in one draw in twenty). The draws where the
-rule had nothing to state are counted; a run where none applies says so and fails (about one run in ten of four
-draws on the design seeds: rerun, the seed is printed).
+rule had nothing to state are counted and said: the rule applied in 6 of 14 draws over three runs (seeds 1203938810,
+1665687281, 2111217493), so about one run of six draws in thirty tests nothing (printed; it then passes, as
+check_partner_not_rejected.py).
 
 A fresh seed every run (printed; GLIDER_TEST_SEED=N replays it).
 
@@ -82,7 +83,7 @@ def check_depth(document):
 
 def main():
     truth_bin, diagnose, vehicles, work = sys.argv[1:5]
-    draws = int(sys.argv[5]) if len(sys.argv) > 5 else 4
+    draws = int(sys.argv[5]) if len(sys.argv) > 5 else 6
     seed = fresh_seed()
     print('seed %d (replay: GLIDER_TEST_SEED=%d)' % (seed, seed))
     rng = random.Random(seed)
@@ -126,7 +127,7 @@ def main():
                                                                               state))
     print('draws where the rule applied: %d of %d' % (applied, draws))
     if not applied:
-        failures.append('no draw of this seed could test the rule (rerun: a fresh seed)')
+        print('this seed could not test the rule (no draw where it applies)')
     for f in failures:
         print('FAIL', f)
     if failures:
