@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -1325,9 +1326,16 @@ void read_unnamed_volume_terms(const SampleSet& set, const Split& s, const Diagn
 // alone, which already reads much of the sensor's delay, so a lag the joint
 // fit sizes well earned no step of its own (docs/science.md, "Method rule:
 // a depth lag beside a named pump lag").
+// The pump lag as the selection read it, alone (no depth lag beside): its
+// value, training sigma and held-out errors, for hold_traded_lag.
+struct LagReadAlone {
+  double value = 0.0, sigma = 0.0;
+  HeldOut heldout;
+};
+
 void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const DiagnoseOptions& options,
                                     const std::vector<ScreenedPair>& aliases, Candidate& current,
-                                    FitResult& current_fit, Diagnosis& d) {
+                                    FitResult& current_fit, std::optional<LagReadAlone>& alone, Diagnosis& d) {
   const auto fitted = [&](Effect e) {
     return std::find(current.fitted.begin(), current.fitted.end(), e) != current.fitted.end();
   };
@@ -1363,8 +1371,115 @@ void read_pump_lag_beside_depth_lag(const SampleSet& set, const Split& s, const 
   if (!plausible(Effect::kDepthLag, lag) || f.heldout_score > current_fit.heldout_score) return;
   add_intervals(set, joint, s.train, options.intervals, f);
   if (lag >= kZDetectable * f.sigma.back()) d.findings.push_back(new_finding(Effect::kDepthLag, f.heldout_rms, d));
+  const auto j = static_cast<std::size_t>(std::find(current.fitted.begin(), current.fitted.end(), Effect::kPumpLag) -
+                                          current.fitted.begin());
+  if (j < current_fit.sigma.size()) {
+    alone = LagReadAlone{std::abs(current_fit.parameters.values[static_cast<std::size_t>(Effect::kPumpLag)]),
+                         current_fit.sigma[j], HeldOut{current_fit.heldout_score, current_fit.heldout_rms}};
+  }
   current = std::move(joint);
   current_fit = std::move(f);
+}
+
+// The pump lag and the depth lag trade at the inflections, the only place
+// either shows: a depth read late looks like a pump acting late, and their
+// joint fit slides along a curved valley whose Jacobian interval sees only
+// its local slope (independent truth, deep logs: a 20.4 s pump lag read
+// 21.3 s [19.0, 23.5] alone and 15.2 s [11.8, 18.6] beside a 1.2 s depth lag
+// the truth's 0.3 s sensor does not have, the held-out RMS 0.23 % apart; a
+// 2.21 s sensor lag read 2.97 s [2.63, 3.29] alone and 2.75 s beside a 1.9 s
+// pump lag (truth 5.3 s), 0.14 % apart; docs/science.md, "The pump lag and
+// the depth lag traded"). Where one lag is named and the held-out yos cannot
+// tell the model with the other beside it from the model without it
+// (fitting_core::indistinguishable: the selection's margins, either view -
+// the ambiguity statement's test), the log has not said which of the two
+// readings is the lag's: the finding's interval holds both, weighed alike
+// (fitting_core::mixture_interval, as hold_aliased_readings), and the pair is
+// stated (`read_beside`, ambiguous, what would separate them). Values,
+// findings and selection are unchanged.
+// - A pump lag named with the depth lag fitted beside it
+//   (read_pump_lag_beside_depth_lag): the other reading is the pump lag
+//   alone (`alone`, the selection's fit; its training sigma).
+// - A depth lag named, no pump lag fitted: the pump lag is fitted beside it
+//   (fit_beside, shared with hold_aliased_readings) and the depth lag's
+//   reading there is the other.
+void hold_traded_lag(const SampleSet& set, const Split& s, const DiagnoseOptions& options, const Candidate& current,
+                     const FitResult& current_fit, const std::optional<LagReadAlone>& alone, BesideFits& fits,
+                     Diagnosis& d) {
+  const auto index_of = [&](Effect e) {
+    return static_cast<std::size_t>(std::find(current.fitted.begin(), current.fitted.end(), e) -
+                                    current.fitted.begin());
+  };
+  const auto named = [&](Effect e) {
+    return std::find_if(d.findings.begin(), d.findings.end(),
+                        [&](const Finding& x) { return x.fitted && x.effect == e; });
+  };
+  const HeldOut selected{current_fit.heldout_score, current_fit.heldout_rms};
+  // The finding's interval holds the other reading: the mixture of the two,
+  // never narrower than what it holds already.
+  const auto hold = [&](Finding& finding, double other, double other_sigma, Effect partner) {
+    const std::size_t j = index_of(finding.effect);
+    if (j >= current_fit.sigma.size() || !std::isfinite(other) || !std::isfinite(other_sigma)) return;
+    const std::array<double, 2> means{finding.value, other}, sigmas{current_fit.sigma[j], other_sigma};
+    const fitting_core::Estimate m = fitting_core::mixture_interval(means, sigmas);
+    finding.ci95_low = std::min(finding.ci95_low, std::max(0.0, m.low));
+    finding.ci95_high = std::max(finding.ci95_high, m.high);
+    if (std::find(finding.interval_holds_with.begin(), finding.interval_holds_with.end(), partner) ==
+        finding.interval_holds_with.end()) {
+      finding.interval_holds_with.push_back(partner);
+    }
+  };
+  const auto state = [&](Effect finding, Effect partner, double finding_value, double finding_sigma,
+                         double partner_value, double partner_sigma, const HeldOut& with, const HeldOut& without) {
+    const bool stated = std::any_of(d.beside.begin(), d.beside.end(), [&](const BesideReading& b) {
+      return b.finding == finding && b.partner == partner;
+    });
+    if (stated) return;
+    BesideReading r;
+    r.finding = finding;
+    r.partner = partner;
+    for (const Diagnosis::ScreenedCorrelation& c : d.screen) {  // the screen's, where it paired them
+      if (c.chosen == finding && c.alternative == partner) r.correlation = c.correlation;
+    }
+    r.finding_value = finding_value;
+    r.finding_ci95_low = std::max(0.0, finding_value - kZ95 * finding_sigma);
+    r.finding_ci95_high = finding_value + kZ95 * finding_sigma;
+    r.partner_value = partner_value;
+    r.partner_ci95_low = std::max(0.0, partner_value - kZ95 * partner_sigma);
+    r.partner_ci95_high = partner_value + kZ95 * partner_sigma;
+    r.heldout_rms_m_s = with.rms;
+    r.heldout_score_m_s = with.score;
+    r.chosen_heldout_rms_m_s = without.rms;
+    r.chosen_heldout_score_m_s = without.score;
+    r.seen = partner_value > kZ95 * partner_sigma;
+    r.ambiguous = true;
+    r.lags_traded = true;
+    r.separate = what_separates(finding, partner);
+    d.beside.push_back(r);
+  };
+  const auto pump = named(Effect::kPumpLag);
+  if (alone && pump != d.findings.end() && indistinguishable(alone->heldout, selected, options.margins)) {
+    if (index_of(Effect::kDepthLag) < current_fit.sigma.size()) {
+      // Stated as the pump lag read with the depth lag at none beside it
+      // (partner 0 s), the model the selection chose before.
+      hold(*pump, alone->value, alone->sigma, Effect::kDepthLag);
+      state(Effect::kPumpLag, Effect::kDepthLag, alone->value, alone->sigma, 0.0, 0.0, alone->heldout, selected);
+    }
+  }
+  const auto depth = named(Effect::kDepthLag);
+  if (depth == d.findings.end() || index_of(Effect::kPumpLag) < current.fitted.size()) return;
+  FitResult& f = fit_beside(set, s, options, current, current_fit, Effect::kPumpLag, fits);
+  const double lag = std::abs(f.parameters.values[static_cast<std::size_t>(Effect::kPumpLag)]);
+  const double other = std::abs(f.parameters.values[static_cast<std::size_t>(Effect::kDepthLag)]);
+  const HeldOut beside{f.heldout_score, f.heldout_rms};
+  if (!plausible(Effect::kPumpLag, lag) || !indistinguishable(beside, selected, options.margins)) return;
+  Candidate joint = current;
+  joint.fitted.push_back(Effect::kPumpLag);
+  if (f.sigma.size() != joint.fitted.size()) add_intervals(set, joint, s.train, options.intervals, f);
+  if (f.sigma.size() != joint.fitted.size()) return;
+  const std::size_t k = index_of(Effect::kDepthLag);
+  hold(*depth, other, f.sigma[k], Effect::kPumpLag);
+  state(Effect::kDepthLag, Effect::kPumpLag, other, f.sigma[k], lag, f.sigma.back(), beside, selected);
 }
 
 // The depth lag in the form the held-out yos prefer (depth_lag.hpp). The
@@ -1515,8 +1630,9 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
     aliases =
         state_identifiability(set, s, options, pool, current, current_fit, tied_delay ? &*tied_delay : nullptr, d);
   }
+  std::optional<LagReadAlone> pump_lag_alone;
   if (options.fit_only.empty() && dynamic)
-    read_pump_lag_beside_depth_lag(set, s, options, aliases, current, current_fit, d);
+    read_pump_lag_beside_depth_lag(set, s, options, aliases, current, current_fit, pump_lag_alone, d);
   check_by_heldout_replicate(set, s, options, current, current_fit);
   std::vector<double> prior_shift;
   if (flies_reynolds_prior(given, options.drag_reynolds_exponent)) {
@@ -1534,6 +1650,8 @@ Diagnosis diagnose(const model::VehicleParams& given, const Observations& obs, c
   }
   BesideFits beside_fits;
   hold_aliased_readings(set, s, options, current, current_fit, aliases, beside_fits, d);
+  if (options.fit_only.empty() && dynamic)
+    hold_traded_lag(set, s, options, current, current_fit, pump_lag_alone, beside_fits, d);
   if (options.fit_only.empty()) read_unnamed_volume_terms(set, s, options, pool, current, current_fit, beside_fits, d);
   hold_other_depth_lag_form(d);
   if (dynamic) widen_lift_at_stall(nominal, obs.track, d);

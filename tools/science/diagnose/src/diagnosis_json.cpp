@@ -148,7 +148,8 @@ ordered_json diagnosis_json(const Diagnosis& d, const std::string& vehicle_sourc
                       {"selected_heldout_rms_depth_rate_m_s", b.chosen_heldout_rms_m_s},
                       {"selected_heldout_block_rms_depth_rate_m_s", b.chosen_heldout_score_m_s},
                       {"partner_seen", b.seen},
-                      {"ambiguous", b.ambiguous}});
+                      {"ambiguous", b.ambiguous},
+                      {"lags_traded", b.lags_traded}});
   }
   j["read_beside"] = beside;
   // The hull's volume terms not named, each read beside the findings (a statement, not a finding).

@@ -141,13 +141,26 @@ void print_text(const Diagnosis& d, const std::string& log, const std::string& v
   }
   for (const auto& b : d.beside) {
     if (!b.ambiguous) continue;
+    if (b.lags_traded && b.partner_value == 0.0) {  // the pump lag read alone
+      std::printf(
+          "    ambiguous: %s as read (with %s beside it), or %+.4g %s (95%% CI %.4g .. %.4g) alone: the held-out yos "
+          "tell them apart by less than the selection's margins (%.4f vs %.4f m/s); the interval above holds both "
+          "readings; what would tell them apart: %s\n",
+          info(b.finding).id, info(b.partner).id, b.finding_value, info(b.finding).unit, b.finding_ci95_low,
+          b.finding_ci95_high, b.heldout_rms_m_s, b.chosen_heldout_rms_m_s, b.separate.c_str());
+      continue;
+    }
+    // A reading beside that the held-out yos prefer but this log cannot
+    // size, or one of the two lags traded (hold_traded_lag).
+    const char* why = b.lags_traded ? "tell them apart by less than the selection's margins" : "prefer it";
     std::printf(
         "    ambiguous: %s as read, or %+.4g %s (95%% CI %.4g .. %.4g) with %s %+.4g %s (95%% CI %.4g .. %.4g) beside "
-        "it: the held-out yos prefer it (%.4f vs %.4f m/s) but this log cannot size it; the interval above holds "
-        "both readings; what would tell them apart: %s\n",
+        "it: the held-out yos %s (%.4f vs %.4f m/s)%s; the interval above holds both readings; what would tell them "
+        "apart: %s\n",
         info(b.finding).id, b.finding_value, info(b.finding).unit, b.finding_ci95_low, b.finding_ci95_high,
-        info(b.partner).id, b.partner_value, info(b.partner).unit, b.partner_ci95_low, b.partner_ci95_high,
-        b.heldout_rms_m_s, b.chosen_heldout_rms_m_s, b.separate.c_str());
+        info(b.partner).id, b.partner_value, info(b.partner).unit, b.partner_ci95_low, b.partner_ci95_high, why,
+        b.heldout_rms_m_s, b.chosen_heldout_rms_m_s, b.lags_traded ? "" : " but this log cannot size it",
+        b.separate.c_str());
   }
   for (const auto& u : d.unnamed) {
     if (u.ruled_out_by_prior) {

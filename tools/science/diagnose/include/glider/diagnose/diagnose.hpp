@@ -101,6 +101,11 @@ struct BesideReading {
   double chosen_heldout_rms_m_s = 0.0, chosen_heldout_score_m_s = 0.0;  // of the selected fit
   bool seen = false;
   bool ambiguous = false;
+  // The pump lag and the depth lag traded (diagnose.cpp, hold_traded_lag):
+  // the held-out yos tell the two readings apart by less than the
+  // selection's margins. A pump lag's entry is its reading alone (the depth
+  // lag at none, partner 0 s) beside the finding's, read with the depth lag.
+  bool lags_traded = false;
   std::string separate;
 };
 
