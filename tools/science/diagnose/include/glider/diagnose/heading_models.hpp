@@ -158,6 +158,11 @@ class AutopilotReplay {
 // pole"); at most the delay keeps the response continuous from no delay
 // (its lumped lag d + min(d, centre)).
 double carried_fast_pole(double prior_centre_s, double yaw_delay_s);
+// The roll's turn over the vehicle file's for a lift factor (the
+// kLiftFactor rival): the lift force holds the glide, so a lift slope x
+// times stronger flies it at ~1/x of the angle of attack the turn goes
+// through (the independent truth's alpha_effective, dynamics.cpp).
+double roll_turn_per_lift(double lift_factor);
 
 // One step h of the yaw through the fast pole p (HeadingTrack::
 // yaw_fast_pole_s; 0: none) and the lag tau, the goal held over it (exact):
