@@ -66,6 +66,7 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
   const double yaw_delay = std::abs(at(values, HeadingEffect::kYawDelay));
   const double fin_gain = hd.fin_yaw_gain_per_m * at(values, HeadingEffect::kFinEffectiveness);
   const double roll_offset = at(values, HeadingEffect::kRollOffset);
+  const double roll_turn = roll_turn_per_lift(at(values, HeadingEffect::kLiftFactor));
   const double tau = std::max(0.05, std::abs(at(values, HeadingEffect::kYawTimeConstant)));
   const double fast_pole = yaw_fast_pole(t, yaw_delay);
   const StepDecay decay(tau, kStepS), fast_decay(fast_pole, kStepS);
@@ -107,7 +108,7 @@ std::vector<ClosedLoopGlide> fly_closed_loop(const HeadingTrack& t, const model:
       const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
       const double f = yaw_delay > 0.0 ? fin_history.at(now - yaw_delay) : fin;
       const double from_shear = shear != nullptr ? shear_at(*shear, t.depth_m[k]) * shear_yaw_per_unit(t, k) : 0.0;
-      return speed * (fin_gain * f + hd.roll_yaw_gain_per_m * lift * std::sin(roll)) + from_shear;
+      return speed * (fin_gain * f + hd.roll_yaw_gain_per_m * roll_turn * lift * std::sin(roll)) + from_shear;
     };
     std::vector<double> simulated(end - first, kNaN);
     simulated[0] = psi;

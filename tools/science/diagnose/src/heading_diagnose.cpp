@@ -38,6 +38,7 @@ const std::array<HeadingEffectInfo, kHeadingEffectCount> kInfo{{
     {"autopilot_dgain", "s", HeadingLink::kAutopilot, 1.0, -30.0, 30.0, false},
     {"autopilot_delay", "s", HeadingLink::kAutopilot, 2.0, 0.0, 60.0, true},
     {"autopilot_deadband", "rad", HeadingLink::kAutopilot, 0.01, 0.0, 0.2, true, true},
+    {"lift_factor", "ratio", HeadingLink::kVehicle, 0.1, 0.3, 3.0, false, false, 0.0, true},
 }};
 
 // A finding must also cut the held-out error by this much (the link's unit):
@@ -75,7 +76,10 @@ std::vector<HeadingEffect> effects_of(HeadingLink link, const std::vector<Headin
 
 std::vector<HeadingEffect> all_effects() {
   std::vector<HeadingEffect> out;
-  for (std::size_t i = 0; i < kHeadingEffectCount; ++i) out.push_back(static_cast<HeadingEffect>(i));
+  for (std::size_t i = 0; i < kHeadingEffectCount; ++i) {
+    const auto e = static_cast<HeadingEffect>(i);
+    if (!info(e).rival_only) out.push_back(e);
+  }
   return out;
 }
 

@@ -606,7 +606,15 @@ LinkFit select_heading_effects(HeadingLink link, const std::vector<HeadingEffect
     std::vector<int> ids;
     for (HeadingEffect e : candidates) ids.push_back(static_cast<int>(e));
     chosen = backward_eliminate(selection, forward_select(selection, {}, ids, rules), rules, worth);
-    judge_pairs(problem, selection, chosen, candidates, options, out);
+    // Every unused candidate, and the link's rivals (never selected: the
+    // wings' lift, which turns the roll as a roll offset does where the roll
+    // hardly varies - docs/science.md "A roll offset or the wings' lift").
+    std::vector<HeadingEffect> alternatives = candidates;
+    for (std::size_t i = 0; i < kHeadingEffectCount; ++i) {
+      const auto e = static_cast<HeadingEffect>(i);
+      if (info(e).rival_only && info(e).link == link) alternatives.push_back(e);
+    }
+    judge_pairs(problem, selection, chosen, alternatives, options, out);
   }
   Trial final_fit = selection.trial(chosen);
   profile_intervals(problem, final_fit);

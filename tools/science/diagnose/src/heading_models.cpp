@@ -83,6 +83,7 @@ HeadingValues nominal_heading_values(const model::VehicleParams& vehicle, const 
   at(v, HeadingEffect::kAutopilotDgain) = autopilot.dgain;
   at(v, HeadingEffect::kAutopilotDelay) = 0.0;
   at(v, HeadingEffect::kAutopilotDeadband) = autopilot.heading_deadband_rad;
+  at(v, HeadingEffect::kLiftFactor) = 1.0;
   return v;
 }
 
@@ -490,6 +491,7 @@ struct YawPlant {
   const model::HeadingModel& hd;
   double delay, fin_gain, roll_offset, tau, fin_rate;
   double fin_dead_time;  // the servo's (its link's finding): when the fin leaves a reading
+  double roll_turn;      // the roll's turn over the vehicle file's (roll_turn_per_lift)
   YawPlant(const HeadingTrack& track, const model::VehicleParams& vehicle, const HeadingValues& values)
       : t(track),
         hd(vehicle.heading),
@@ -499,6 +501,7 @@ struct YawPlant {
         tau(std::max(0.05, std::abs(value(values, HeadingEffect::kYawTimeConstant)))),
         fin_rate(vehicle.heading.fin_rate_rad_s > 0.0 ? vehicle.heading.fin_rate_rad_s : 1e9),
         fin_dead_time(std::abs(value(values, HeadingEffect::kFinDelay))),
+        roll_turn(roll_turn_per_lift(value(values, HeadingEffect::kLiftFactor))),
         fast(yaw_fast_pole(track, delay)) {}
   double fast;  // the yaw's fast pole (s; 0: none): yaw_fast_pole
   // The roll as logged between samples k and k + 1, with the offset: the
@@ -515,11 +518,14 @@ struct YawPlant {
     const double lift = t.lift_factor[k] + w * (t.lift_factor[k + 1] - t.lift_factor[k]);
     const double roll = roll_at(k, w);
     const double fin = fin_between_rows(t.row_time_s, t.row_fin_filled_rad, now - delay, fin_rate, fin_dead_time);
-    return speed * (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * lift * std::sin(roll));
+    return speed *
+           (fin_gain * (std::isfinite(fin) ? fin : 0.0) + hd.roll_yaw_gain_per_m * roll_turn * lift * std::sin(roll));
   }
 };
 
 }  // namespace
+
+double roll_turn_per_lift(double lift_factor) { return 1.0 / std::max(0.05, std::abs(lift_factor)); }
 
 double carried_fast_pole(double prior_centre_s, double yaw_delay_s) {
   return yaw_delay_s > 0.0 ? std::min(prior_centre_s, yaw_delay_s) : 0.0;

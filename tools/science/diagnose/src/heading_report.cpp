@@ -11,6 +11,16 @@
 namespace glider::diagnose {
 namespace {
 
+// The roll offset against the wings' lift (docs/science.md "A roll offset or
+// the wings' lift"): what the log would need to tell them apart.
+bool is_roll_or_lift(const HeadingAmbiguity& a) {
+  return a.chosen == HeadingEffect::kLiftFactor || a.alternative == HeadingEffect::kLiftFactor;
+}
+constexpr const char* kRollOrLiftSeparate =
+    "glides at a different roll (a bank the fin holds, turns), or a lift change named by the vertical plane: where "
+    "the roll hardly varies, a roll offset and the wings' lift turn the glider alike (lift_factor x: the roll's turn "
+    "scaled by 1/x, the glide's angle of attack at a lift slope x times the vehicle file's)";
+
 using nlohmann::ordered_json;
 
 ordered_json number_or_null(double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr); }
@@ -86,6 +96,7 @@ ordered_json link_json(const LinkFit& f) {
                      {"chosen_heldout_rms", a.chosen_heldout_rms},
                      {"alternative_heldout_rms", a.alternative_heldout_rms},
                      {"verdict", a.ambiguous ? "ambiguous" : "told apart by the held-out yos"}});
+    if (a.ambiguous && is_roll_or_lift(a)) pairs.back()["separate"] = kRollOrLiftSeparate;
   }
   j["identifiability"] = pairs;
   ordered_json screen = ordered_json::array();
@@ -234,6 +245,16 @@ std::string heading_text(const HeadingDiagnosis& d) {
       add("            %-20s %+.4g %s (nominal %.4g; 95%% CI %.4g .. %.4g) held-out %.4g, gain %.0f %%\n",
           info(x.effect).id, x.value, info(x.effect).unit, x.nominal, x.ci95_low, x.ci95_high, x.heldout_rms,
           100.0 * x.gain);
+    }
+    for (const HeadingAmbiguity& a : f->identifiability) {
+      if (!a.ambiguous || !is_roll_or_lift(a)) continue;
+      add("            ambiguous: %s as read, or %s %.4g %s in its place (held-out %.4g vs %.4g; signatures "
+          "correlate %.3f)\n",
+          info(a.chosen).id, info(a.alternative).id, a.alternative_value, info(a.alternative).unit,
+          a.chosen_heldout_rms, a.alternative_heldout_rms, a.correlation);
+      out += "              separate them by ";
+      out += kRollOrLiftSeparate;
+      out += "\n";
     }
     for (const HeadingFinding& x : f->dropped) {
       add("            not %-16s %+.4g %s (95%% CI %.4g .. %.4g on the heading's innovations, noise modelled: holds "

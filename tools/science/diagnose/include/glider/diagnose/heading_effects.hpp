@@ -25,6 +25,13 @@ enum class HeadingEffect : int {
   kAutopilotDelay,     // autopilot: heading reading -> c_fin (the loop's cycle) (s)
   kAutopilotDeadband,  // autopilot: |error| below which (and a rate inside u_heading_rate_deadband) the fin is held
                        // (rad)
+  // vehicle: the wings' lift as the roll's turn reads it (ratio; a rival,
+  // never selected): the turn scaled by 1/x - at a given lift force a lift
+  // slope x times the vehicle file's flies the glide at ~1/x of its angle of
+  // attack, and the model turns the roll through that angle. Fitted in a
+  // roll offset's place where the two read alike (docs/science.md "A roll
+  // offset or the wings' lift").
+  kLiftFactor,
   kCount
 };
 constexpr std::size_t kHeadingEffectCount = static_cast<std::size_t>(HeadingEffect::kCount);
@@ -47,6 +54,9 @@ struct HeadingEffectInfo {
   // residual turns sharply at the truth (a servo's deadband replayed free
   // running: docs/science.md "The servo after unlogged cycles").
   double grid_fine_step = 0.0;
+  // Never selected: fitted only in a finding's place to judge whether the
+  // log tells them apart (select_heading_effects' identifiability).
+  bool rival_only = false;
 };
 
 const HeadingEffectInfo& info(HeadingEffect effect);

@@ -172,6 +172,12 @@ double carried_fast_pole(double prior_centre_s, double yaw_delay_s);
 // carried_fast_pole's.
 double yaw_fast_pole(const HeadingTrack& track, double yaw_delay_s);
 
+// The roll's turn over the vehicle file's for a lift factor (the
+// kLiftFactor rival): the lift force holds the glide, so a lift slope x
+// times stronger flies it at ~1/x of the angle of attack the turn goes
+// through (the independent truth's alpha_effective, dynamics.cpp).
+double roll_turn_per_lift(double lift_factor);
+
 // One step h of the yaw through the fast pole p (HeadingTrack::
 // yaw_fast_pole_s; 0: none) and the lag tau, the goal held over it (exact):
 // `lead`, the goal as the fast pole passes it, moves toward the goal; the
