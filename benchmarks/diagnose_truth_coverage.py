@@ -168,6 +168,12 @@ def run_draw(args, case, seed):
         paired |= {side for a in link.get('identifiability', []) or [] if a.get('verdict') == 'ambiguous'
                    for side in (a.get('chosen'), a.get('alternative'))}
     result['stated_ambiguous'] = sorted(paired)
+    # The pairs themselves, so a finding stated beside the hidden effect can be told from one stated beside another.
+    pairs = [[a.get('effect'), a.get('alternative')] for a in document.get('ambiguous', [])]
+    for link in ((document.get('heading') or {}).get('links') or {}).values():
+        pairs += [[a.get('chosen'), a.get('alternative')] for a in link.get('identifiability', []) or []
+                  if a.get('verdict') == 'ambiguous']
+    result['ambiguous_pairs'] = pairs
     result['findings'] = [(e, v, lo, hi, bool(f.get('ambiguous') or f.get('alternatives') or e in paired))
                           for e, v, lo, hi, f in findings_of(document)]
     if args.identifiability:
@@ -216,6 +222,25 @@ def score(r):
     return per, spurious, ambiguous
 
 
+# A rival fitted in one plane that stands for an effect of the other: the heading plane's lift factor is the
+# vertical plane's lift change as the roll's turn reads it (docs/science.md "A roll offset or the wings' lift").
+STANDS_FOR = {'lift_factor': 'lift_change'}
+
+
+def stated_beside_hidden(r, spurious):
+    """The spurious findings stated ambiguous with a hidden effect (the pair's other side is hidden, directly or
+    through STANDS_FOR): the log could not tell them apart and the diagnosis said so, with both readings. Still
+    counted as spurious in the tables' spurious columns; this is the part of them that was stated. Runs saved
+    before the pairs were recorded have none."""
+    hidden = set(r['truth'])
+    stated = set()
+    for a, b in r.get('ambiguous_pairs') or []:
+        for finding, other in ((a, b), (b, a)):
+            if finding in spurious and STANDS_FOR.get(other, other) in hidden:
+                stated.add(finding)
+    return sorted(stated)
+
+
 def plane_of(effect):
     return 'heading' if effect in HEADING else 'vertical'
 
@@ -258,10 +283,11 @@ def table(results, cases):
             pct(spur, len(ok)), pct(spur_v, len(ok)), pct(spur_h, len(ok)), pct(amb, len(ok)),
             pct(clean, len(ok)) if case == 'none' else '-'))
     lines += ['', '| variant | draws | hidden effects named | within 15 % | 95 % coverage | spurious vertical | '
-              'spurious heading | clean logs with no finding |', '|---|---|---|---|---|---|---|---|']
+              'spurious heading | spurious, not stated ambiguous with a hidden effect: vertical / heading | '
+              'clean logs with no finding |', '|---|---|---|---|---|---|---|---|---|']
     for variant in ('shallow', 'deep'):
         ok = [r for r in results if r['ok'] and r.get('variant') == variant]
-        slots = named = within = covered = valued = spur_v = spur_h = 0
+        slots = named = within = covered = valued = spur_v = spur_h = bare_v = bare_h = 0
         for r in ok:
             per, spurious, _ = score(r)
             for n, w, c, _ in per.values():
@@ -272,11 +298,14 @@ def table(results, cases):
                 covered += bool(c)
             spur_v += any(plane_of(e) == 'vertical' for e in spurious)
             spur_h += any(plane_of(e) == 'heading' for e in spurious)
+            bare = set(spurious) - set(stated_beside_hidden(r, spurious))
+            bare_v += any(plane_of(e) == 'vertical' for e in bare)
+            bare_h += any(plane_of(e) == 'heading' for e in bare)
         clean = [r for r in ok if r['case'] == 'none']
         empty = sum(1 for r in clean if not [f for f in r['findings'] if f[0] not in INPUTS])
-        lines.append('| %s | %d | %s | %s | %s | %s | %s | %s |' % (
+        lines.append('| %s | %d | %s | %s | %s | %s | %s | %s / %s | %s |' % (
             variant, len(ok), pct(named, slots), pct(within, slots), pct(covered, valued), pct(spur_v, len(ok)),
-            pct(spur_h, len(ok)), pct(empty, len(clean))))
+            pct(spur_h, len(ok)), pct(bare_v, len(ok)), pct(bare_h, len(ok)), pct(empty, len(clean))))
     return '\n'.join(lines + [''] + effect_table(results))
 
 
