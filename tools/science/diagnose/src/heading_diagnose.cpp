@@ -13,6 +13,7 @@
 #include "glider/diagnose/heading_select_delay_side.hpp"
 #include "glider/diagnose/heading_select_resolution.hpp"
 #include "glider/diagnose/thin.hpp"
+#include "glider/fitting_core/intervals.hpp"
 
 namespace glider::diagnose {
 namespace {
@@ -460,14 +461,14 @@ void read_beside_fast_pole(const HeadingTrack& track, const model::VehicleParams
   }
   // Each interval: the equal-weight mixture of the allowed readings
   // (fitting_core::mixture_interval, each reading its value +- its
-  // interval's half-width / 1.96), never narrower than the likeliest's.
+  // interval's half-width / kZ95), never narrower than the likeliest's.
   for (HeadingFinding& f : chosen) {
     std::vector<double> means, sigmas;
     for (const Reading* r : allowed) {
       for (const HeadingFinding& g : r->findings) {
         if (g.effect != f.effect) continue;
         means.push_back(g.value);
-        sigmas.push_back(0.5 * (g.ci95_high - g.ci95_low) / 1.96);
+        sigmas.push_back(0.5 * (g.ci95_high - g.ci95_low) / fitting_core::kZ95);
       }
     }
     const fitting_core::Estimate mixed = fitting_core::mixture_interval(means, sigmas);
