@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """A campaign on a real Slurm: a single-node cluster of its own
 (single_node_cluster.py), `campaign submit` of box_small.toml in 3 shards,
-one running array task killed, `status` on the partial results, `submit
+one running array task killed (every run held at its start until then, so
+the task cannot finish first), `status` on the partial results, `submit
 --resubmit` of the missing shard, and the merged result compared byte for
 byte with the same campaign run locally in a different number of shards.
 Exit 77 (CTest: skipped) where a cluster cannot be started, with the reason.
@@ -79,6 +80,22 @@ def fleet_on_slurm(cluster, diagnose):
     return same_results(slurm_dir, local_dir, 2)
 
 
+def held_sil(cluster, sil_binary):
+    """A glider-sil that waits at the start of every run while the file HOLD
+    exists (300 s at most), then runs the real one with the same arguments.
+    A task killed while HOLD exists has flown nothing and written no shard,
+    however fast the machine: the kill cannot lose a race with the task."""
+    hold = cluster.path("HOLD")
+    wrapper = cluster.path("glider-sil-held")
+    with open(wrapper, "w") as f:
+        f.write(f"#!/bin/sh\ni=0\nwhile [ -e '{hold}' ] && [ $i -lt 3000 ]; do sleep 0.1; i=$((i + 1)); done\n"
+                f"exec '{sil_binary}' \"$@\"\n")
+    os.chmod(wrapper, 0o755)
+    with open(hold, "w"):
+        pass
+    return wrapper, hold
+
+
 def main(sil, diagnose):
     try:
         cluster = single_node_cluster.Cluster()
@@ -89,9 +106,10 @@ def main(sil, diagnose):
         cluster.start()
         print(f"cluster up in {cluster.dir}: node {cluster.host}, {cluster.cpus} CPUs", flush=True)
         slurm_dir = cluster.path("results-slurm")
+        wrapper, hold = held_sil(cluster, sil[1])
         # Every task takes all CPUs: the shards run one after another, so the
         # first one can be seen running and killed while the others wait.
-        out = tool(cluster, sil, "submit", CAMPAIGN, "--out", slurm_dir, "--shards", str(SHARDS),
+        out = tool(cluster, ["--sil", wrapper], "submit", CAMPAIGN, "--out", slurm_dir, "--shards", str(SHARDS),
                    "--cpus-per-task", str(cluster.cpus), "--time", "00:10:00")
         job = out.split()[2].rstrip(":")
         running = {}
@@ -100,7 +118,11 @@ def main(sil, diagnose):
                                                              if v == "RUNNING"}) or running, 60)
         victim = min(running)
         cluster.run(["scancel", f"{job}_{victim}"])
-        print(f"killed array task {job}_{victim} while it ran", flush=True)
+        print(f"killed array task {job}_{victim} while it ran (its run held at the start)", flush=True)
+        single_node_cluster.wait_for(f"array task {victim} to leave the queue",
+                                     lambda: victim not in queue(cluster), 120,
+                                     [cluster.path("slurmctld.log"), cluster.path("slurmd.log")])
+        os.remove(hold)  # the others fly now
         wait_queue_empty(cluster, 300)
         if os.path.exists(shard_file(slurm_dir, victim)):
             raise AssertionError(f"shard {victim} was written although its task was killed (finished first?)")
