@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "glider/diagnose/heading_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -100,11 +101,18 @@ ordered_json link_json(const LinkFit& f) {
   }
   j["identifiability"] = pairs;
   ordered_json screen = ordered_json::array();
+  // Judged: fitted in the finding's place (over the screen, or a dead time
+  // whatever its correlation: heading_fit.cpp judge_pairs).
+  auto judged = [&](const LinkFit::ScreenedCorrelation& c) {
+    return std::any_of(f.identifiability.begin(), f.identifiability.end(), [&](const HeadingAmbiguity& a) {
+      return a.chosen == c.chosen && a.alternative == c.alternative;
+    });
+  };
   for (const auto& c : f.screen) {
     screen.push_back({{"chosen", info(c.chosen).id},
                       {"alternative", info(c.alternative).id},
                       {"correlation", number_or_null(c.correlation)},
-                      {"judged", c.correlation >= f.screen_correlation}});
+                      {"judged", judged(c)}});
   }
   j["identifiability_screen"] = {{"screen_correlation", f.screen_correlation}, {"pairs", screen}};
   j["extended"] = {{"rms", number_or_null(f.extended_rms)}, {"heldout_rms", number_or_null(f.extended_heldout_rms)}};
